@@ -1,0 +1,109 @@
+#include "cli/Commands.h"
+#include "cli/Options.h"
+
+#include "core/Results.h"
+#include "core/hmf/HmfLoader.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace tlmhub::cli {
+
+namespace {
+
+bool writeCsv(const System& root, const std::string& path, std::string& error)
+{
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) {
+        error = "cannot write '" + path + "'";
+        return false;
+    }
+    const std::vector<LoggedVariable> vars = listLoggedVariables(root);
+    std::vector<std::vector<double>> columns;
+    columns.reserve(vars.size());
+    for (const auto& v : vars) columns.push_back(loggedData(*v.port, v.slot, v.count));
+    std::fprintf(f, "time");
+    for (const auto& v : vars) std::fprintf(f, ",%s", v.fullName.c_str());
+    std::fprintf(f, "\n");
+    const auto& time = root.logTime();
+    const std::size_t rows = root.numLoggedSamples();
+    for (std::size_t r = 0; r < rows; ++r) {
+        std::fprintf(f, "%.17g", time[r]);
+        for (const auto& col : columns) {
+            if (r < col.size()) std::fprintf(f, ",%.17g", col[r]);
+            else std::fprintf(f, ",");
+        }
+        std::fprintf(f, "\n");
+    }
+    const bool ok = std::fclose(f) == 0;
+    if (!ok) error = "error writing '" + path + "'";
+    return ok;
+}
+
+} // namespace
+
+int runCommand(const std::vector<std::string>& args)
+{
+    Options opt(args);
+    if (opt.positional.size() != 1) {
+        std::cerr << "tlmhub-cli run: expected one model file\n";
+        return 2;
+    }
+    const std::string& path = opt.positional[0];
+    LoadedModel model = loadHmfFile(path);
+    if (model.hasErrors()) {
+        std::cerr << "error: " << model.firstError() << "\n";
+        return 1;
+    }
+    System& root = *model.root;
+    double start = root.startTime, stop = root.stopTime;
+    std::string err;
+    if (!opt.number("start", start, err) || !opt.number("stop", stop, err) ||
+        !opt.number("step", root.desiredTimestep, err)) {
+        std::cerr << "error: " << err << "\n";
+        return 2;
+    }
+    double samples = static_cast<double>(root.requestedLogSamples);
+    if (!opt.number("samples", samples, err)) {
+        std::cerr << "error: " << err << "\n";
+        return 2;
+    }
+    root.requestedLogSamples = static_cast<std::size_t>(samples);
+    const std::string csv = opt.value("csv");
+    if (!csv.empty() && root.requestedLogSamples == 0) root.requestedLogSamples = 1024;
+    if (!(stop >= start) || !(root.desiredTimestep > 0.0)) {
+        std::cerr << "error: need stop >= start and a positive time step\n";
+        return 2;
+    }
+
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!root.checkModel(err)) {
+        std::cerr << "error: " << path << ": " << err << "\n";
+        return 1;
+    }
+    bool ok = root.initialize(start, stop);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (ok) ok = root.simulate(stop);
+    const auto t2 = std::chrono::steady_clock::now();
+    root.finalize();
+    for (const auto& m : root.messages())
+        if (m.type == MessageType::Error || m.type == MessageType::Fatal)
+            std::cerr << "error: " << m.text << "\n";
+    if (!ok) {
+        std::cerr << "error: " << path << ": simulation failed\n";
+        return 1;
+    }
+    if (!csv.empty() && !writeCsv(root, csv, err)) {
+        std::cerr << "error: " << err << "\n";
+        return 1;
+    }
+    const double init = std::chrono::duration<double>(t1 - t0).count();
+    const double sim = std::chrono::duration<double>(t2 - t1).count();
+    std::printf("ok: %s: %zu steps, t=[%g, %g], init %.3f s, simulation %.3f s%s%s\n", path.c_str(),
+                root.takenSteps(), start, stop, init, sim, csv.empty() ? "" : ", csv ",
+                csv.c_str());
+    return 0;
+}
+
+} // namespace tlmhub::cli

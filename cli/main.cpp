@@ -1,0 +1,43 @@
+// tlmhub-cli: run a Hopsan model, write CSV, validate an .hvc, describe models and components.
+#include "cli/Commands.h"
+
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace {
+
+void usage(std::ostream& os)
+{
+    os << "usage:\n"
+          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--csv OUT.csv]\n"
+          "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
+          "  tlmhub-cli info MODEL.hmf\n"
+          "  tlmhub-cli components [--json]\n"
+          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N]\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+        usage(argc < 2 ? std::cerr : std::cout);
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string command = argv[1];
+    std::vector<std::string> args(argv + 2, argv + argc);
+    try {
+        if (command == "run") return tlmhub::cli::runCommand(args);
+        if (command == "validate") return tlmhub::cli::validateCommand(args);
+        if (command == "info") return tlmhub::cli::infoCommand(args);
+        if (command == "components") return tlmhub::cli::componentsCommand(args);
+        if (command == "bench") return tlmhub::cli::benchCommand(args);
+    } catch (const std::exception& e) {
+        std::cerr << "tlmhub-cli: " << e.what() << "\n";
+        return 1;
+    }
+    std::cerr << "tlmhub-cli: unknown command '" << command << "'\n";
+    usage(std::cerr);
+    return 2;
+}

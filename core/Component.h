@@ -1,0 +1,194 @@
+#pragma once
+// Component base class: the authoring API every component type uses (core.md §2).
+//
+// A component type derives from ComponentC, ComponentQ or ComponentSignal and overrides
+//   configure()            register ports, constants, input/output variables
+//   initialize()           bind node pointers, write initial c/Zc or outputs
+//   simulateOneTimestep()  the equations of one step (mTime already advanced)
+//   finalize()             optional
+// and registers itself with TLMHUB_REGISTER_COMPONENT in its own .cpp file.
+#include "core/Node.h"
+#include "core/NodeTypes.h"
+#include "core/Parameter.h"
+#include "core/Port.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tlmhub {
+
+class System;
+
+enum class CqsKind { C, Q, S, Undefined };
+const char* cqsKindName(CqsKind kind);
+
+enum class MessageType { Info, Warning, Error, Fatal, Debug };
+
+struct Message {
+    MessageType type;
+    std::string text;
+    std::string tag;
+};
+
+class Component {
+public:
+    explicit Component(CqsKind kind);
+    virtual ~Component();
+    Component(const Component&) = delete;
+    Component& operator=(const Component&) = delete;
+
+    // --- life cycle (called by the system) ---
+    virtual void configure() {}
+    virtual void preInitialize() {}
+    virtual void initialize() {}
+    virtual void simulateOneTimestep() {}
+    virtual void finalize() {}
+    virtual bool isSystem() const { return false; }
+
+    // --- identity ---
+    const std::string& name() const { return mName; }
+    void setNameRaw(std::string name) { mName = std::move(name); }
+    const std::string& typeName() const { return mTypeName; }
+    void setTypeName(std::string t) { mTypeName = std::move(t); }
+    const std::string& subTypeName() const { return mSubTypeName; }
+    void setSubTypeName(std::string t) { mSubTypeName = std::move(t); }
+    virtual CqsKind kind() const { return mKind; }
+    System* parentSystem() const { return mParent; }
+    void setParentSystem(System* s) { mParent = s; }
+    bool isDisabled() const { return mDisabled; }
+    void setDisabled(bool d) { mDisabled = d; }
+    // Depth below the root (root = 0).
+    int depth() const;
+
+    // --- ports ---
+    Port* port(const std::string& name) const;
+    // Ports in byte-wise name order (the order Hopsan iterates them).
+    const std::map<std::string, Port*>& portsByName() const { return mPortsByName; }
+    // Ports in declaration order.
+    std::vector<Port*> ports() const;
+    bool renamePort(const std::string& oldName, const std::string& newName);
+    Port* addPortRaw(std::unique_ptr<Port> port);
+    bool removePort(const std::string& name);
+
+    // --- parameters ---
+    ParameterSet& parameters() { return mParameters; }
+    const ParameterSet& parameters() const { return mParameters; }
+
+    // Bind input/output variable pointers to the current nodes (before initialize).
+    void bindAutoVariables();
+
+    // --- time ---
+    double mTime = 0.0;
+    double mTimestep = 0.001;
+    double time() const { return mTime; }
+    double timestep() const { return mTimestep; }
+    virtual void setTimestep(double ts) { mTimestep = ts; }
+
+    // --- messages and stopping ---
+    void addMessage(MessageType type, const std::string& text, const std::string& tag = {});
+    void addInfoMessage(const std::string& t) { addMessage(MessageType::Info, t); }
+    void addWarningMessage(const std::string& t) { addMessage(MessageType::Warning, t); }
+    void addErrorMessage(const std::string& t) { addMessage(MessageType::Error, t); }
+    void addDebugMessage(const std::string& t) { addMessage(MessageType::Debug, t); }
+    // Ask the root system to stop the running simulation (reported as failure).
+    void stopSimulation(const std::string& reason = {});
+    // Directory of the model file (for components reading data files).
+    std::string modelDirectory() const;
+    // Resolve a possibly relative path against the model directory.
+    std::string findFilePath(const std::string& path) const;
+
+    // Catalogue metadata (filled by the factory).
+    std::string libraryDomain;
+
+    // Model-file content the core does not interpret (GUI data such as <hopsangui>),
+    // serialized XML of the element's other children, written back unchanged on save.
+    std::string preservedXml;
+
+protected:
+    // --- port registration ---
+    Port* addPowerPort(const std::string& name, NodeType type, bool required = true);
+    Port* addReadPort(const std::string& name, NodeType type, bool required = true);
+    Port* addWritePort(const std::string& name, NodeType type, bool required = false);
+    Port* addPowerMultiPort(const std::string& name, NodeType type, bool required = true);
+    Port* addReadMultiPort(const std::string& name, NodeType type, bool required = false);
+
+    // Input variable: an optional signal read port `name` whose value, when unconnected,
+    // is the parameter `name#Value` (default `defaultValue`). *data is bound to the node.
+    Port* addInputVariable(const std::string& name, const std::string& description,
+                           const std::string& unit, double defaultValue, double** data);
+    // Output variable without start value parameter (node starts at 0).
+    Port* addOutputVariable(const std::string& name, const std::string& description,
+                            const std::string& unit, double** data);
+    // Output variable with a start value parameter `name#Value`.
+    Port* addOutputVariable(const std::string& name, const std::string& description,
+                            const std::string& unit, double defaultValue, double** data);
+
+    // --- constants ---
+    void addConstant(const std::string& name, const std::string& description,
+                     const std::string& unit, double defaultValue, double& variable);
+    void addConstant(const std::string& name, const std::string& description,
+                     const std::string& unit, int defaultValue, int& variable);
+    void addConstant(const std::string& name, const std::string& description, bool defaultValue,
+                     bool& variable);
+    void addConstant(const std::string& name, const std::string& description,
+                     const std::string& defaultValue, std::string& variable,
+                     ParameterType type = ParameterType::String);
+    void addConditionalConstant(const std::string& name, const std::string& description,
+                                std::vector<std::string> alternatives, int defaultIndex,
+                                int& variable);
+
+    // --- start values ---
+    void setDefaultStartValue(Port* port, int id, double value);
+    void disableStartValue(Port* port, int id);
+    double getDefaultStartValue(const Port* port, int id) const;
+
+    // --- node access for initialize() ---
+    // Pointer to slot `id` of the port's node (a multiport: of its first sub-port, or a
+    // zero dummy when it has none).
+    double* getSafeNodeDataPtr(Port* port, int id);
+    double* getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id);
+    // Number of sub-ports of a multiport (connections), 1 for other ports.
+    std::size_t getNumPorts(const Port* port) const;
+    double readNodeSafe(Port* port, int id) { return *getSafeNodeDataPtr(port, id); }
+    void writeNodeSafe(Port* port, int id, double v) { *getSafeNodeDataPtr(port, id) = v; }
+
+private:
+    Port* addPortInternal(const std::string& name, PortKind kind, NodeType type, bool required);
+    void registerStartValueParameters(Port* port);
+
+    struct AutoBinding {
+        Port* port;
+        double** data;
+    };
+
+    std::string mName;
+    std::string mTypeName;
+    std::string mSubTypeName;
+    CqsKind mKind;
+    System* mParent = nullptr;
+    bool mDisabled = false;
+    std::vector<std::unique_ptr<Port>> mPorts;
+    std::map<std::string, Port*> mPortsByName;
+    ParameterSet mParameters;
+    std::vector<AutoBinding> mAutoBindings;
+    double mDummy[32] = {};
+};
+
+class ComponentC : public Component {
+public:
+    ComponentC() : Component(CqsKind::C) {}
+};
+
+class ComponentQ : public Component {
+public:
+    ComponentQ() : Component(CqsKind::Q) {}
+};
+
+class ComponentSignal : public Component {
+public:
+    ComponentSignal() : Component(CqsKind::S) {}
+};
+
+} // namespace tlmhub

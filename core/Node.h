@@ -1,0 +1,51 @@
+#pragma once
+// A node: the data vector shared by every port of one connection group (core.md §1, §2.5).
+#include "core/NodeTypes.h"
+
+#include <string>
+#include <vector>
+
+namespace tlmhub {
+
+class Port;
+class System;
+
+class Node {
+public:
+    explicit Node(NodeType type);
+
+    NodeType type() const { return mType; }
+    std::size_t size() const { return mSize; }
+    double* data() { return mData; }
+    const double* data() const { return mData; }
+    double value(int id) const { return mData[id]; }
+    void setValue(int id, double v) { mData[id] = v; }
+    void resetToCreatedValues();
+
+    // Move the data into external storage (contiguous node arena); values are kept.
+    void relocate(double* storage);
+    // Return to own storage (before the arena is freed).
+    void unrelocate();
+
+    const std::vector<Port*>& ports() const { return mPorts; }
+    void attach(Port* port);
+    void detach(Port* port);
+
+    // Signal quantity/unit label (§1.5); label only.
+    std::string signalQuantity;
+    std::string signalUnit;
+
+    // --- logging (§4) ---
+    // Logged samples, nSamples * size() doubles (sample-major).
+    std::vector<double> logData;
+    System* logOwner = nullptr;   // system whose time vector belongs to logData
+
+private:
+    NodeType mType;
+    std::size_t mSize;
+    std::vector<double> mOwnData;
+    double* mData;
+    std::vector<Port*> mPorts;
+};
+
+} // namespace tlmhub

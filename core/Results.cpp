@@ -1,0 +1,127 @@
+#include "core/Results.h"
+
+#include <sstream>
+
+namespace tlmhub {
+
+namespace {
+
+void splitOn(const std::string& s, char sep, std::vector<std::string>& out)
+{
+    out.clear();
+    std::string cur;
+    for (char c : s) {
+        if (c == sep) {
+            out.push_back(cur);
+            cur.clear();
+        } else {
+            cur += c;
+        }
+    }
+    out.push_back(cur);
+}
+
+void collect(const System& sys, const std::string& prefix, std::vector<LoggedVariable>& out)
+{
+    const std::size_t count = sys.numLoggedSamples();
+    for (Component* c : sys.componentsByName()) {
+        for (const auto& [pname, p] : c->portsByName()) {
+            if (!p->wantsLogging || p->isMultiport()) continue;
+            const Node* n = p->node();
+            if (!n || n->logData.empty()) continue;
+            const auto& vars = nodeTypeInfo(n->type()).variables;
+            for (std::size_t i = 0; i < vars.size(); ++i) {
+                LoggedVariable v;
+                v.fullName = prefix + c->name() + "#" + pname + "#" + std::string(vars[i].name);
+                v.unit = n->type() == NodeType::Signal ? n->signalUnit : std::string(vars[i].unit);
+                v.port = p;
+                v.slot = static_cast<int>(i);
+                v.count = count;
+                out.push_back(std::move(v));
+            }
+        }
+        if (c->isSystem()) {
+            const auto* sub = static_cast<const System*>(c);
+            collect(*sub, prefix + sub->name() + "$", out);
+        }
+    }
+}
+
+} // namespace
+
+std::vector<LoggedVariable> listLoggedVariables(const System& root)
+{
+    std::vector<LoggedVariable> out;
+    collect(root, "", out);
+    return out;
+}
+
+const std::vector<double>* loggedTime(const Port& port)
+{
+    const Node* n = port.node();
+    if (!n || !n->logOwner) return nullptr;
+    return &n->logOwner->logTime();
+}
+
+std::vector<double> loggedData(const Port& port, int slot, std::size_t count)
+{
+    std::vector<double> out;
+    const Node* n = port.node();
+    if (!n || n->logData.empty()) return out;
+    const std::size_t sz = n->size();
+    const std::size_t slots = n->logData.size() / sz;
+    if (count > slots) count = slots;
+    out.resize(count);
+    for (std::size_t i = 0; i < count; ++i) out[i] = n->logData[i * sz + slot];
+    return out;
+}
+
+bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,
+                     std::string& error)
+{
+    std::vector<std::string> fields;
+    splitOn(fullName, '$', fields);
+    const std::size_t m = fields.size() - 1;
+    std::vector<std::string> parts;
+    splitOn(fields[m], '#', parts);
+    if (parts.size() != 3) {
+        error = "variable name '" + fullName + "' is not Component#Port#Variable";
+        return false;
+    }
+    System* sys = &root;
+    for (std::size_t s = 0; s < m; ++s) {
+        if (System* sub = sys->subsystem(fields[s])) {
+            sys = sub;
+        } else if (s == 0 && m == 1) {
+            // "Root$Comp#Port#Var": the first field names the root itself.
+        } else if (s == 0 && m >= 2) {
+            System* alt = root.subsystem(fields[1]);
+            if (!alt) {
+                error = "no subsystem '" + fields[1] + "' in '" + root.name() + "'";
+                return false;
+            }
+            sys = alt;
+        } else {
+            error = "no subsystem '" + fields[s] + "' in '" + sys->name() + "'";
+            return false;
+        }
+    }
+    Component* c = sys->component(parts[0]);
+    if (!c) {
+        error = "no component '" + parts[0] + "' in system '" + sys->name() + "'";
+        return false;
+    }
+    port = c->port(parts[1]);
+    if (!port) {
+        error = "component '" + parts[0] + "' has no port '" + parts[1] + "'";
+        return false;
+    }
+    slot = nodeVariableIndex(port->nodeType(), parts[2]);
+    if (slot < 0) {
+        error = "port '" + parts[0] + "#" + parts[1] + "' has no variable '" + parts[2] + "'";
+        return false;
+    }
+    return true;
+}
+
+} // namespace tlmhub

@@ -1,0 +1,30 @@
+#pragma once
+// Reading logged results by Hopsan's names (core.md §1.8, §4.4, §4.5).
+#include "core/System.h"
+
+#include <string>
+#include <vector>
+
+namespace tlmhub {
+
+struct LoggedVariable {
+    std::string fullName;   // "Sub1$Comp#Port#Var"
+    std::string unit;
+    const Port* port = nullptr;
+    int slot = 0;
+    std::size_t count = 0;  // samples written (log counter of the component's system)
+};
+
+// Every logged port variable in HopsanCLI's export order: sub-components by name, ports by
+// name, slots in storage order; subsystem content right after the subsystem.
+std::vector<LoggedVariable> listLoggedVariables(const System& root);
+
+// Data of a logged port variable (empty if not logged) and its time vector.
+std::vector<double> loggedData(const Port& port, int slot, std::size_t count);
+const std::vector<double>* loggedTime(const Port& port);
+
+// Resolve "[Sys$...]Comp#Port#Var" from the root, with the .hvc lookup quirk of core.md §7.3.
+bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,
+                     std::string& error);
+
+} // namespace tlmhub

@@ -1,0 +1,155 @@
+#pragma once
+// A system: components, their connections, system parameters and system ports, and the
+// simulation loop (core.md §2.5-§4). Systems nest: a subsystem is a component of its parent.
+#include "core/Component.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tlmhub {
+
+class System : public Component {
+public:
+    System();
+    ~System() override;
+
+    bool isSystem() const override { return true; }
+    CqsKind kind() const override { return mSystemKind; }
+    System* rootSystem();
+    const System* rootSystem() const;
+    bool isRoot() const { return parentSystem() == nullptr; }
+
+    // Conditional subsystem: simulates only while its input `on` > 0.
+    void makeConditional();
+    bool isConditional() const { return mOnPort != nullptr; }
+
+    // ---- editing (names are sanitised and made unique; the actual name is returned) ----
+    std::string addComponent(std::unique_ptr<Component> component);
+    bool removeComponent(const std::string& name, std::string& error);
+    std::string renameComponent(const std::string& oldName, const std::string& newName,
+                                std::string& error);
+    Component* component(const std::string& name) const;
+    System* subsystem(const std::string& name) const;
+    // Sub-components in byte-wise name order.
+    std::vector<Component*> componentsByName() const;
+    // Sub-components in insertion order (the simulation lists derive from it).
+    const std::vector<Component*>& componentsInOrder() const { return mOrder; }
+
+    Port* addSystemPort(const std::string& desiredName);
+    bool renameSystemPort(const std::string& oldName, const std::string& newName, std::string& error);
+    bool deleteSystemPort(const std::string& name, std::string& error);
+    Port* systemPort(const std::string& name) const;
+
+    bool connect(const std::string& compA, const std::string& portA, const std::string& compB,
+                 const std::string& portB, std::string& error);
+    bool disconnect(const std::string& compA, const std::string& portA, const std::string& compB,
+                    const std::string& portB, std::string& error);
+
+    // System parameters live in parameters(); type given by name ("double", ...).
+    bool setSystemParameter(const std::string& name, const std::string& value,
+                            const std::string& type, const std::string& description,
+                            const std::string& unit, bool internal, std::string& error);
+    bool removeSystemParameter(const std::string& name);
+
+    // ---- names ----
+    bool isNameTaken(const std::string& name) const;
+    std::string uniqueName(const std::string& desired) const;
+
+    // ---- simulation settings ----
+    double desiredTimestep = 0.001;
+    bool inheritTimestep = true;
+    std::size_t requestedLogSamples = 0;
+    double logStartTime = 0.0;
+    void setTimestep(double ts) override;
+
+    // ---- running ----
+    bool checkModel(std::string& error);
+    bool initialize(double startTime, double stopTime);
+    bool simulate(double stopTime);   // root: runs until stopTime
+    void finalize();
+    void requestStop() { mStopRequested = true; }
+    bool stopRequested() const { return mStopRequested; }
+    // Progress callback for long runs (root only): called every `interval` steps.
+    using ProgressCallback = void (*)(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
+    void setProgressCallback(ProgressCallback cb, void* user, std::size_t interval);
+
+    std::size_t takenSteps() const { return mTakenSteps; }
+
+    // ---- results ----
+    const std::vector<double>& logTime() const { return mLogTime; }
+    std::size_t numLoggedSamples() const { return mLogCounter; }
+    std::size_t numLogSlots() const { return mLogSteps.size(); }
+
+    // ---- messages (root) ----
+    std::vector<Message>& messages() { return rootSystem()->mMessages; }
+    std::string modelDirectory;   // root: directory of the loaded model file
+
+    // Used by the loader: a system parameter value string may fail to evaluate until
+    // everything is loaded; it is stored anyway ("forced").
+    double startTime = 0.0;   // root: from <simulationtime start>
+    double stopTime = 2.0;
+
+    // Subsystem step driven by the parent (internal).
+    void simulateTo(double parentTime);
+
+    // Aliases: alias name -> "Comp#Port#Var".
+    std::map<std::string, std::string> aliases;
+
+    // An external subsystem's file (relative to the parent model); empty if embedded.
+    std::string externalPath;
+
+    // Preserved model-file content (see Component::preservedXml): root document extras,
+    // per system port, per connection ("a.pa|b.pb"), and unknown objects.
+    std::string preservedDocumentXml;
+    std::map<std::string, std::string> preservedSystemPortXml;
+    std::map<std::string, std::string> preservedConnectionXml;
+    std::vector<std::string> preservedObjectsXml;
+
+private:
+    friend class Component;
+    void determineKind();
+    void moveToEnd(Component* c);
+    void buildRunLists();
+    bool sortList(std::vector<Component*>& list, bool failOnLoop, std::string& error);
+    void computeSortHintsOfSystemPorts();
+    bool evaluateAllParameters(std::string& error);
+    void loadStartValues();
+    void computeLogSchedule(double t0, double t1);
+    void allocateLogStorage();
+    void logSample();
+    void stepOnce();
+    bool initializeInternal(double startTime, double stopTime);
+    void propagateTimestep();
+    Port* resolvePort(const std::string& compName, const std::string& portName,
+                      std::string& error) const;
+    bool connectPorts(Port* a, Port* b, std::string& error);
+
+    CqsKind mSystemKind = CqsKind::Undefined;
+    std::map<std::string, std::unique_ptr<Component>> mComponents;
+    std::vector<Component*> mOrder;                // insertion order
+    std::vector<Component*> mS, mC, mQ;            // run lists (sorted at initialize)
+    std::vector<Component*> mDisabled;
+    Port* mOnPort = nullptr;
+    double* mpOn = nullptr;
+
+    std::vector<Message> mMessages;
+    bool mStopRequested = false;
+    std::size_t mTakenSteps = 0;
+
+    // logging
+    std::vector<std::size_t> mLogSteps;
+    std::vector<double> mLogTime;
+    std::size_t mLogCounter = 0;
+    std::vector<Node*> mLoggedNodes;
+
+    ProgressCallback mProgress = nullptr;
+    void* mProgressUser = nullptr;
+    std::size_t mProgressInterval = 0;
+};
+
+// Sanitise a name as Hopsan does: bytes other than [A-Za-z0-9_] become '_'; empty -> noName.
+std::string sanitizeName(const std::string& name);
+
+} // namespace tlmhub

@@ -1,0 +1,20 @@
+#pragma once
+#include "core/Component.h"
+
+namespace tlmhub {
+
+// Q-type ideal fixed-displacement pump with prescribed shaft speed and leakage.
+class HydraulicFixedDisplacementPump : public ComponentQ {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    Port *mpP1 = nullptr, *mpP2 = nullptr;
+    double *mpN = nullptr, *mpDp = nullptr, *mpClp = nullptr, *mpA = nullptr;
+    double *mpP1_p = nullptr, *mpP1_q = nullptr, *mpP1_c = nullptr, *mpP1_Zc = nullptr;
+    double *mpP2_p = nullptr, *mpP2_q = nullptr, *mpP2_c = nullptr, *mpP2_Zc = nullptr;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,21 @@
+#pragma once
+#include "core/Component.h"
+
+namespace tlmhub {
+
+// Q-type laminar restrictor: q = Kc * (p1 - p2).
+class HydraulicLaminarOrifice : public ComponentQ {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    Port* mpP1 = nullptr;
+    Port* mpP2 = nullptr;
+    double* mpKc = nullptr;
+    double *mpP1_p = nullptr, *mpP1_q = nullptr, *mpP1_c = nullptr, *mpP1_Zc = nullptr;
+    double *mpP2_p = nullptr, *mpP2_q = nullptr, *mpP2_c = nullptr, *mpP2_Zc = nullptr;
+};
+
+} // namespace tlmhub

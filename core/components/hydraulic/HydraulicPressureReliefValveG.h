@@ -1,0 +1,37 @@
+#pragma once
+#include "core/Component.h"
+#include "core/numerics/EquationSystemSolver.h"
+#include "core/numerics/Matrix.h"
+
+namespace tlmhub {
+
+// Q-type generated pressure relief valve: spool with spring, damping and flow
+// force (bilinear discretisation) and a turbulent orifice, solved by two Newton
+// iterations per step.
+class HydraulicPressureReliefValveG : public ComponentQ {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    double delayedPart() const;
+
+    Port *mpP1 = nullptr, *mpP2 = nullptr;
+    double *mpPref = nullptr, *mpRho = nullptr, *mpVisc = nullptr, *mpDv = nullptr, *mpFrac = nullptr;
+    double *mpBv = nullptr, *mpXvmax = nullptr, *mpCq = nullptr, *mpPhi = nullptr, *mpKs = nullptr;
+    double *mpP0 = nullptr, *mpXvOut = nullptr;
+    double *mpP1_p = nullptr, *mpP1_q = nullptr, *mpP1_c = nullptr, *mpP1_Zc = nullptr;
+    double *mpP2_p = nullptr, *mpP2_q = nullptr, *mpP2_c = nullptr, *mpP2_Zc = nullptr;
+
+    // Member state persisting between steps (generated-component convention).
+    double pref = 0, rho = 0, Dv = 0, frac = 0, Bv = 0, Xvmax = 0, Cq = 0, phi = 0, ks = 0, p0 = 0;
+    double xv = 0, q1 = 0, q2 = 0, p1 = 0, p2 = 0, c1 = 0, Zc1 = 0, c2 = 0, Zc2 = 0;
+    double Av = 0, w = 0, kf = 0, ke = 0, D1 = 0;
+
+    Matrix mJ{4, 4};
+    Vec mF{4}, mX{4};
+    EquationSystemSolver mSolver{4};
+};
+
+} // namespace tlmhub

@@ -1,0 +1,36 @@
+#pragma once
+#include "core/Component.h"
+
+#include <vector>
+
+namespace tlmhub {
+
+// C-type cylinder with a constant spring (pre-load) force; like
+// HydraulicCylinderC but with non-negative wave variables and no cavitation flags.
+class HydraulicSpringLoadedPistonC : public ComponentC {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    void limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me, double sl);
+
+    static constexpr double mWfak = 0.1;
+    static constexpr double mAlpha = 0.1;
+    bool mUseEndStops = true;
+    double ci1 = 0.0, cl1 = 0.0, ci2 = 0.0, cl2 = 0.0;
+    // End-stop filter state (an uninitialised local in Hopsan; 0-initialised member here).
+    double mCxLim = 0.0;
+
+    Port *mpP1 = nullptr, *mpP2 = nullptr, *mpP3 = nullptr;
+    double *mpA1 = nullptr, *mpA2 = nullptr, *mpSl = nullptr, *mpFs = nullptr;
+    double *mpV01 = nullptr, *mpV02 = nullptr, *mpBp = nullptr, *mpBetae = nullptr, *mpCLeak = nullptr;
+    std::size_t mNumPorts1 = 0, mNumPorts2 = 0;
+    std::vector<double*> mvpP1_p, mvpP1_q, mvpP1_c, mvpP1_Zc;
+    std::vector<double*> mvpP2_p, mvpP2_q, mvpP2_c, mvpP2_Zc;
+    double *mpP3_x = nullptr, *mpP3_v = nullptr, *mpP3_c = nullptr, *mpP3_Zx = nullptr;
+    double* mpP3_me = nullptr;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,26 @@
+#pragma once
+#include "core/Component.h"
+
+#include <vector>
+
+namespace tlmhub {
+
+// C-type lumped volume with any number of connections on one multiport; all
+// connections share one pressure.
+class HydraulicVolumeMultiPort : public ComponentC {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    Port* mpP1 = nullptr;
+    double* mpV = nullptr;
+    double* mpBetae = nullptr;
+    double* mpAlpha = nullptr;
+    double mPhigh = 2e7;
+    std::size_t mNumPorts = 0;
+    std::vector<double*> mvpP1_p, mvpP1_q, mvpP1_c, mvpP1_Zc;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,19 @@
+#pragma once
+#include "core/Component.h"
+
+namespace tlmhub {
+
+// Signal-type temperature sensor: copies one node variable to a signal output.
+class PneumaticTsensor : public ComponentSignal {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    Port* mpPp1 = nullptr;
+    double* mpIn = nullptr;
+    double* mpOut = nullptr;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,52 @@
+#include "core/components/signal/ActivityDiagramForkN.h"
+
+#include "core/ComponentFactory.h"
+#include "core/numerics/AuxiliarySimulationFunctions.h"
+
+namespace tlmhub {
+
+// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
+constexpr int kState = 0;
+constexpr int kFlow = 1;
+
+void ActivityDiagramForkN::configure()
+{
+    addInputVariable("event", "Firing event", "", 1.0, &mpEvent);
+    addInputVariable("diffevent", "0 = level trigger, 1 = edge trigger", "", 0.0, &mpDiffevent);
+    addOutputVariable("state", "Firing flag", "", 0.0, &mpState);
+    mpPpn1 = addPowerMultiPort("Ppn1", NodeType::PetriNet);
+    mpPpn2 = addPowerPort("Ppn2", NodeType::PetriNet);
+}
+
+void ActivityDiagramForkN::initialize()
+{
+    const std::size_t n = getNumPorts(mpPpn1);
+    mpS.assign(n, nullptr);
+    mpQ.assign(n, nullptr);
+    for (std::size_t i = 0; i < n; ++i) {
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow);
+    }
+    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
+    mOldEvent = 0.0;
+}
+
+void ActivityDiagramForkN::simulateOneTimestep()
+{
+    const double event = *mpEvent;
+    const double state = onPositive(-0.5 + event - *mpDiffevent * mOldEvent);
+    mOldEvent = event;
+    const std::size_t n = mpS.size();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) { sum = sum + *mpS[i]; }
+    const double se = (n > 0) ? onPositive(sum - 0.5) : 0.0;
+    const double s2 = *mpS2;
+    for (std::size_t i = 0; i < n; ++i) { *mpQ[i] = state * onPositive(s2 - se - 0.5); }
+    *mpQ2 = -state * onPositive(s2 - se - 0.5);
+    *mpState = state;
+}
+
+TLMHUB_REGISTER_COMPONENT(ActivityDiagramForkN, "Other")
+
+} // namespace tlmhub

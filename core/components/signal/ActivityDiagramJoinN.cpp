@@ -1,0 +1,44 @@
+#include "core/components/signal/ActivityDiagramJoinN.h"
+
+#include "core/ComponentFactory.h"
+#include "core/numerics/AuxiliarySimulationFunctions.h"
+
+namespace tlmhub {
+
+// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
+constexpr int kState = 0;
+constexpr int kFlow = 1;
+
+void ActivityDiagramJoinN::configure()
+{
+
+    mpPpn1 = addPowerMultiPort("Ppn1", NodeType::PetriNet);
+    mpPpn2 = addPowerPort("Ppn2", NodeType::PetriNet);
+}
+
+void ActivityDiagramJoinN::initialize()
+{
+    const std::size_t n = getNumPorts(mpPpn1);
+    mpS.assign(n, nullptr);
+    mpQ.assign(n, nullptr);
+    for (std::size_t i = 0; i < n; ++i) {
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow);
+    }
+    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
+}
+
+void ActivityDiagramJoinN::simulateOneTimestep()
+{
+    const std::size_t n = mpS.size();
+    const double s2 = *mpS2;
+    double g = 1.0;
+    for (std::size_t i = 0; i < n; ++i) { g = g * onPositive(onPositive(*mpS[i] - 0.5) - s2 - 0.5); }
+    for (std::size_t i = 0; i < n; ++i) { *mpQ[i] = -g; }
+    *mpQ2 = g;
+}
+
+TLMHUB_REGISTER_COMPONENT(ActivityDiagramJoinN, "Other")
+
+} // namespace tlmhub

@@ -1,0 +1,21 @@
+#pragma once
+#include "core/Component.h"
+
+#include <cmath>
+
+namespace tlmhub {
+
+// Arc sine; inputs outside [-1, 1] are clamped and flagged on `error`.
+class SignalAsin : public ComponentSignal {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    double* mpIn = nullptr;
+    double* mpOut = nullptr;
+    double* mpError = nullptr;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,23 @@
+#pragma once
+#include "core/Component.h"
+
+namespace tlmhub {
+
+// FFB loop/branch selector: a rising edge of in0 activates the block and is routed
+// to out0 (divert < 0.5) or out1 (divert > 0.5).
+class SignalFFBloop : public ComponentSignal {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    double* mpIn0 = nullptr;
+    double* mpDivert = nullptr;
+    double* mpState = nullptr;
+    double* mpOut0 = nullptr;
+    double* mpOut1 = nullptr;
+    double mOldState = 0.0, mOldIn0 = 0.0, mOldOut0 = 0.0, mOldOut1 = 0.0;
+};
+
+} // namespace tlmhub

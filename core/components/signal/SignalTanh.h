@@ -1,0 +1,20 @@
+#pragma once
+#include "core/Component.h"
+
+#include <cmath>
+
+namespace tlmhub {
+
+// out = tanh(in).
+class SignalTanh : public ComponentSignal {
+public:
+    void configure() override;
+    void initialize() override;
+    void simulateOneTimestep() override;
+
+private:
+    double* mpIn = nullptr;
+    double* mpOut = nullptr;
+};
+
+} // namespace tlmhub

@@ -1,0 +1,27 @@
+#include "core/components/signal/SignalXor.h"
+
+#include "core/ComponentFactory.h"
+#include "core/numerics/AuxiliarySimulationFunctions.h"
+
+namespace tlmhub {
+
+void SignalXor::configure()
+{
+    addInputVariable("in1", "Input 1", "", 0.0, &mpIn1);
+    addInputVariable("in2", "Input 2", "", 0.0, &mpIn2);
+    addOutputVariable("out", "Output", "", &mpOut);
+}
+
+void SignalXor::initialize()
+{
+    simulateOneTimestep();
+}
+
+void SignalXor::simulateOneTimestep()
+{
+    *mpOut = boolToDouble(doubleToBool(*mpIn1) != doubleToBool(*mpIn2));
+}
+
+TLMHUB_REGISTER_COMPONENT(SignalXor, "Signal")
+
+} // namespace tlmhub

@@ -1,0 +1,304 @@
+#include "core/hmf/HmfLoader.h"
+
+#include "core/ComponentFactory.h"
+#include "core/hmf/LegacyNames.h"
+#include "core/hmf/PreservedXml.h"
+
+#include <pugixml.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace tlmhub {
+
+bool LoadedModel::hasErrors() const
+{
+    for (const auto& m : messages)
+        if (m.type == MessageType::Error || m.type == MessageType::Fatal) return true;
+    return !root;
+}
+
+std::string LoadedModel::firstError() const
+{
+    for (const auto& m : messages)
+        if (m.type == MessageType::Error || m.type == MessageType::Fatal) return m.text;
+    return root ? std::string() : std::string("model could not be loaded");
+}
+
+namespace {
+
+class Loader {
+public:
+    Loader(std::string sourceName, std::string directory, std::vector<Message>& messages)
+        : mSource(std::move(sourceName)), mDirectory(std::move(directory)), mMessages(messages)
+    {}
+
+    std::unique_ptr<System> loadDocument(const pugi::xml_document& doc)
+    {
+        pugi::xml_node top = doc.child("hopsanmodelfile");
+        if (!top) {
+            error("the root element is not <hopsanmodelfile>");
+            return nullptr;
+        }
+        mVersion.text = top.attribute("hopsancoreversion").as_string("0");
+        pugi::xml_node sysNode = top.child("system");
+        if (!sysNode) {
+            error("<hopsanmodelfile> has no <system> element");
+            return nullptr;
+        }
+        auto root = std::make_unique<System>();
+        root->modelDirectory = mDirectory;
+        pugi::xml_node simTime = sysNode.child("simulationtime");
+        root->startTime = simTime.attribute("start").as_double(0.0);
+        root->stopTime = simTime.attribute("stop").as_double(2.0);
+        // Keep everything of the file the core does not interpret, for saving.
+        preserved::storeDocumentExtras(*root, top);
+        loadSystem(*root, sysNode, true);
+        return root;
+    }
+
+private:
+    void message(MessageType type, const std::string& text)
+    {
+        mMessages.push_back({type, mSource + ": " + text, {}});
+    }
+    void error(const std::string& text) { message(MessageType::Error, text); }
+    void warning(const std::string& text) { message(MessageType::Warning, text); }
+
+    static bool parseBool(const pugi::xml_attribute& a, bool def)
+    {
+        if (!a) return def;
+        std::string v = a.as_string();
+        return v == "true" || v == "1";
+    }
+
+    void loadSimulationSettings(System& sys, pugi::xml_node node, bool isRoot)
+    {
+        if (pugi::xml_node st = node.child("simulationtime")) {
+            double ts = st.attribute("timestep").as_double(0.001);
+            sys.desiredTimestep = ts;
+            sys.mTimestep = ts;
+            sys.inheritTimestep = parseBool(st.attribute("inherit_timestep"), true);
+            if (isRoot) sys.inheritTimestep = false;
+        }
+        if (pugi::xml_node ls = node.child("simulationlogsettings")) {
+            if (ls.attribute("numsamples")) sys.requestedLogSamples = ls.attribute("numsamples").as_ullong(0);
+            sys.logStartTime = ls.attribute("starttime").as_double(0.0);
+        } else if (node.attribute("logsamples")) {
+            sys.requestedLogSamples = node.attribute("logsamples").as_ullong(0);
+        }
+    }
+
+    void loadSystemParameters(System& sys, pugi::xml_node node)
+    {
+        for (pugi::xml_node p : node.child("parameters").children("parameter")) {
+            std::string name = p.attribute("name").as_string();
+            std::string value = p.attribute("value").as_string();
+            std::string type = p.attribute("type").as_string("double");
+            std::string unit = p.attribute("unit").as_string(p.attribute("quantity").as_string());
+            std::string err;
+            if (!sys.setSystemParameter(name, value, type, p.attribute("description").as_string(), unit,
+                                        parseBool(p.attribute("internal"), false), err))
+                warning("system '" + sys.name() + "', parameter '" + name + "': " + err);
+        }
+    }
+
+    void setComponentParameter(Component& comp, const std::string& rawName, const std::string& value,
+                               const std::string& originalType)
+    {
+        std::string name = legacy::currentParameterName(originalType, rawName, mVersion);
+        Parameter* p = comp.parameters().find(name);
+        if (!p && name.find('#') == std::string::npos) p = comp.parameters().find(name + "#Value");
+        if (!p) {
+            warning("component '" + comp.name() + "' (" + comp.typeName() + ") has no parameter '" +
+                    rawName + "'; ignored, the default is kept");
+            return;
+        }
+        p->value = value;
+    }
+
+    void loadComponent(System& sys, pugi::xml_node node)
+    {
+        const std::string originalType = node.attribute("typename").as_string();
+        const std::string type = legacy::currentTypeName(originalType);
+        std::unique_ptr<Component> comp = ComponentFactory::instance().create(type);
+        if (!comp) {
+            error("component '" + std::string(node.attribute("name").as_string()) + "' in system '" +
+                  sys.name() + "': unknown component type '" + originalType + "'");
+            mFailed = true;
+            return;
+        }
+        comp->setNameRaw(sanitizeName(node.attribute("name").as_string()));
+        comp->setSubTypeName(node.attribute("subtypename").as_string());
+        comp->setDisabled(parseBool(node.attribute("disabled"), false));
+        preserved::storeComponentExtras(*comp, node);
+        const std::string desired = comp->name();
+        Component* raw = comp.get();
+        const std::string actual = sys.addComponent(std::move(comp));
+        if (actual != desired) mRenames[&sys][desired] = actual;
+        for (pugi::xml_node p : node.child("parameters").children("parameter"))
+            setComponentParameter(*raw, p.attribute("name").as_string(), p.attribute("value").as_string(),
+                                  originalType);
+        for (pugi::xml_node sv : node.child("startvalues").children("startvalue")) {
+            std::string pname = std::string(sv.attribute("portname").as_string()) + "#" +
+                                sv.attribute("variable").as_string();
+            setComponentParameter(*raw, pname, sv.attribute("value").as_string(), originalType);
+        }
+        for (pugi::xml_node port : node.child("ports").children("port")) {
+            if (pugi::xml_attribute q = port.attribute("signalquantity")) {
+                std::string pn = legacy::currentPortName(type, port.attribute("name").as_string(),
+                                                         mVersion.refusedByHopsanCore());
+                if (Port* p = raw->port(pn)) {
+                    p->signalQuantity = q.as_string();
+                    if (p->node()) p->node()->signalQuantity = q.as_string();
+                }
+            }
+        }
+    }
+
+    void loadSubsystem(System& parent, pugi::xml_node node)
+    {
+        std::unique_ptr<System> sub;
+        const std::string external = node.attribute("external_path").as_string();
+        if (!external.empty()) {
+            namespace fs = std::filesystem;
+            fs::path p = fs::path(mDirectory) / external;
+            LoadedModel loaded = loadHmfFile(p.string());
+            for (auto& m : loaded.messages) mMessages.push_back(m);
+            if (!loaded.root) {
+                error("external subsystem '" + std::string(node.attribute("name").as_string()) +
+                      "' (" + external + ") could not be loaded");
+                mFailed = true;
+                return;
+            }
+            sub = std::move(loaded.root);
+            sub->externalPath = external;
+            sub->setNameRaw(sanitizeName(node.attribute("name").as_string()));
+            System* raw = sub.get();
+            parent.addComponent(std::move(sub));
+            loadSystemParameters(*raw, node);
+            return;
+        }
+        sub = std::make_unique<System>();
+        if (std::string(node.attribute("typename").as_string()) == "ConditionalSubsystem") sub->makeConditional();
+        sub->setNameRaw(sanitizeName(node.attribute("name").as_string()));
+        sub->setDisabled(parseBool(node.attribute("disabled"), false));
+        System* raw = sub.get();
+        const std::string desired = raw->name();
+        const std::string actual = parent.addComponent(std::move(sub));
+        if (actual != desired) mRenames[&parent][desired] = actual;
+        loadSystem(*raw, node, false);
+    }
+
+    void loadSystem(System& sys, pugi::xml_node node, bool isRoot)
+    {
+        if (isRoot) sys.setNameRaw(sanitizeName(node.attribute("name").as_string()));
+        sys.setSubTypeName(node.attribute("subtypename").as_string());
+        loadSimulationSettings(sys, node, isRoot);
+        loadSystemParameters(sys, node);
+        if (!isRoot) preserved::storeComponentExtras(sys, node);
+        else preserved::storeSystemExtras(sys, node);
+
+        for (pugi::xml_node child : node.child("objects").children()) {
+            const std::string tag = child.name();
+            if (tag == "component") {
+                loadComponent(sys, child);
+            } else if (tag == "system") {
+                std::string t = child.attribute("typename").as_string("Subsystem");
+                if (!child.attribute("external_path") && t != "Subsystem" && t != "ConditionalSubsystem") {
+                    warning("system '" + std::string(child.attribute("name").as_string()) +
+                            "' has type '" + t + "'; the rest of system '" + sys.name() + "' is not loaded");
+                    return;
+                }
+                loadSubsystem(sys, child);
+            } else if (tag == "systemport") {
+                Port* p = sys.addSystemPort(sanitizeName(child.attribute("name").as_string()));
+                preserved::storeSystemPortExtras(sys, p->name(), child);
+            } else {
+                preserved::storeOtherObject(sys, child);
+            }
+        }
+        const bool fullRenames = mVersion.refusedByHopsanCore();
+        for (pugi::xml_node c : node.child("connections").children("connect")) {
+            std::string a = resolveName(sys, sanitizeName(c.attribute("startcomponent").as_string()));
+            std::string b = resolveName(sys, sanitizeName(c.attribute("endcomponent").as_string()));
+            std::string pa = sanitizeName(c.attribute("startport").as_string());
+            std::string pb = sanitizeName(c.attribute("endport").as_string());
+            if (Component* ca = sys.component(a)) pa = legacy::currentPortName(ca->typeName(), pa, fullRenames);
+            if (Component* cb = sys.component(b)) pb = legacy::currentPortName(cb->typeName(), pb, fullRenames);
+            std::string err;
+            if (!sys.connect(a, pa, b, pb, err)) {
+                error("system '" + sys.name() + "', <connect> " + a + "." + pa + " - " + b + "." + pb +
+                      ": " + err);
+            } else {
+                preserved::storeConnectionExtras(sys, a, pa, b, pb, c);
+            }
+        }
+        // Again: start values of C-type subsystem ports exist only after connecting.
+        loadSystemParameters(sys, node);
+        for (pugi::xml_node al : node.child("aliases").children("alias")) {
+            std::string name = al.attribute("name").as_string();
+            std::string full = al.child_value("fullname");
+            if (!name.empty()) sys.aliases[name] = full;
+        }
+    }
+
+    std::string resolveName(System& sys, const std::string& name)
+    {
+        auto it = mRenames.find(&sys);
+        if (it != mRenames.end()) {
+            auto jt = it->second.find(name);
+            if (jt != it->second.end()) return jt->second;
+        }
+        return name;
+    }
+
+    std::string mSource;
+    std::string mDirectory;
+    std::vector<Message>& mMessages;
+    legacy::CoreVersion mVersion;
+    std::map<System*, std::map<std::string, std::string>> mRenames;
+
+public:
+    bool mFailed = false;
+};
+
+} // namespace
+
+LoadedModel loadHmfString(const std::string& xml, const std::string& modelDirectory,
+                          const std::string& sourceName)
+{
+    LoadedModel result;
+    pugi::xml_document doc;
+    pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
+    if (!parsed) {
+        std::ostringstream os;
+        os << sourceName << ": broken XML at byte " << parsed.offset << ": " << parsed.description();
+        result.messages.push_back({MessageType::Error, os.str(), {}});
+        return result;
+    }
+    Loader loader(sourceName, modelDirectory, result.messages);
+    result.root = loader.loadDocument(doc);
+    if (loader.mFailed) result.root.reset();
+    return result;
+}
+
+LoadedModel loadHmfFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        LoadedModel result;
+        result.messages.push_back({MessageType::Error, path + ": cannot open the file", {}});
+        return result;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    namespace fs = std::filesystem;
+    std::string dir = fs::path(path).parent_path().string();
+    if (dir.empty()) dir = ".";
+    return loadHmfString(ss.str(), dir, path);
+}
+
+} // namespace tlmhub

@@ -1,0 +1,75 @@
+#include "core/hmf/PreservedXml.h"
+
+#include "core/System.h"
+
+#include <set>
+#include <sstream>
+
+namespace tlmhub::preserved {
+
+namespace {
+
+std::string serializeChildrenExcept(pugi::xml_node element, const std::set<std::string>& skip)
+{
+    std::ostringstream os;
+    for (pugi::xml_node child : element.children()) {
+        if (child.type() == pugi::node_element && skip.count(child.name())) continue;
+        child.print(os, "", pugi::format_raw);
+    }
+    return os.str();
+}
+
+} // namespace
+
+void storeComponentExtras(Component& component, pugi::xml_node element)
+{
+    component.preservedXml = serializeChildrenExcept(
+        element, {"parameters", "startvalues", "simulationtime", "simulationlogsettings", "objects",
+                  "connections", "aliases", "numhopscript"});
+}
+
+void storeSystemExtras(System& root, pugi::xml_node element)
+{
+    root.preservedXml = serializeChildrenExcept(
+        element, {"parameters", "simulationtime", "simulationlogsettings", "objects", "connections",
+                  "aliases", "numhopscript"});
+}
+
+void storeDocumentExtras(System& root, pugi::xml_node top)
+{
+    root.preservedDocumentXml = serializeChildrenExcept(top, {"system"});
+}
+
+void storeSystemPortExtras(System& system, const std::string& portName, pugi::xml_node element)
+{
+    system.preservedSystemPortXml[portName] = serializeChildrenExcept(element, {});
+}
+
+std::string connectionKey(const std::string& a, const std::string& pa, const std::string& b,
+                          const std::string& pb)
+{
+    return a + "." + pa + "|" + b + "." + pb;
+}
+
+void storeConnectionExtras(System& system, const std::string& a, const std::string& pa,
+                           const std::string& b, const std::string& pb, pugi::xml_node element)
+{
+    system.preservedConnectionXml[connectionKey(a, pa, b, pb)] = serializeChildrenExcept(element, {});
+}
+
+void storeOtherObject(System& system, pugi::xml_node element)
+{
+    std::ostringstream os;
+    element.print(os, "", pugi::format_raw);
+    system.preservedObjectsXml.push_back(os.str());
+}
+
+void appendFragment(pugi::xml_node parent, const std::string& xml)
+{
+    if (xml.empty()) return;
+    pugi::xml_document frag;
+    if (!frag.load_buffer(xml.data(), xml.size(), pugi::parse_default | pugi::parse_fragment)) return;
+    for (pugi::xml_node child : frag.children()) parent.append_copy(child);
+}
+
+} // namespace tlmhub::preserved

@@ -1,0 +1,31 @@
+#pragma once
+// Keeping the parts of a model file the core does not interpret (GUI layout, icons, notes),
+// so that load -> save round-trips a model without losing them.
+#include <pugixml.hpp>
+
+#include <string>
+
+namespace tlmhub {
+class Component;
+class System;
+}
+
+namespace tlmhub::preserved {
+
+// Children of a <component>/<system> element other than the ones the loader reads.
+void storeComponentExtras(Component& component, pugi::xml_node element);
+// Children of the root <system> the loader does not read (hopsangui, ...).
+void storeSystemExtras(System& root, pugi::xml_node element);
+// Children of <hopsanmodelfile> other than <system> (requirements, info) and its attributes.
+void storeDocumentExtras(System& root, pugi::xml_node top);
+void storeSystemPortExtras(System& system, const std::string& portName, pugi::xml_node element);
+void storeConnectionExtras(System& system, const std::string& a, const std::string& pa,
+                           const std::string& b, const std::string& pb, pugi::xml_node element);
+void storeOtherObject(System& system, pugi::xml_node element);
+
+std::string connectionKey(const std::string& a, const std::string& pa, const std::string& b,
+                          const std::string& pb);
+// Append the serialized children in `xml` to `parent`.
+void appendFragment(pugi::xml_node parent, const std::string& xml);
+
+} // namespace tlmhub::preserved
