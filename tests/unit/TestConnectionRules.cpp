@@ -1,0 +1,159 @@
+// Connection rules of core.md §2.5: every refusal names both ports and a reason.
+#include "TestHelpers.h"
+
+using namespace tlmhub;
+using namespace tlmhub::test;
+
+namespace {
+
+std::string refuse(System& s, const std::string& a, const std::string& pa, const std::string& b,
+                   const std::string& pb)
+{
+    std::string err;
+    EXPECT_FALSE(s.connect(a, pa, b, pb, err));
+    return err;
+}
+
+} // namespace
+
+TEST(ConnectionRules, CToQHydraulicIsAccepted)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    connectOk(s, "V", "P1", "O", "P1");
+    EXPECT_EQ(s.component("V")->port("P1")->node(), s.component("O")->port("P1")->node());
+}
+
+TEST(ConnectionRules, WrongNodeTypeIsRefused)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "MechanicTranslationalMass", "M");
+    const std::string err = refuse(s, "V", "P1", "M", "P1");
+    EXPECT_NE(err.find("V.P1"), std::string::npos);
+    EXPECT_NE(err.find("M.P1"), std::string::npos);
+    EXPECT_NE(err.find("node types differ"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, TwoCComponentsAreRefused)
+{
+    System s;
+    add(s, "HydraulicVolume", "V1");
+    add(s, "HydraulicVolume", "V2");
+    const std::string err = refuse(s, "V1", "P1", "V2", "P1");
+    EXPECT_NE(err.find("two C-type"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, TwoQComponentsAreRefused)
+{
+    System s;
+    add(s, "HydraulicLaminarOrifice", "O1");
+    add(s, "HydraulicLaminarOrifice", "O2");
+    const std::string err = refuse(s, "O1", "P2", "O2", "P1");
+    EXPECT_NE(err.find("two Q-type"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, TwoWritePortsOnOneSignalNodeAreRefused)
+{
+    System s;
+    add(s, "SignalConstant", "A");
+    add(s, "SignalConstant", "B");
+    add(s, "SignalGain", "G");
+    connectOk(s, "A", "y", "G", "in");
+    const std::string err = refuse(s, "B", "y", "G", "in");
+    EXPECT_NE(err.find("only one write port"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, WritePortOnPowerNodeIsRefused)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    add(s, "HydraulicPressureSensor", "S");
+    connectOk(s, "V", "P1", "O", "P1");
+    connectOk(s, "S", "P1", "V", "P1");   // a sensor may read a power node
+    std::string err;
+    EXPECT_FALSE(s.connect("S", "out", "V", "P2", err));
+    EXPECT_FALSE(err.empty());
+}
+
+TEST(ConnectionRules, ReadPortToMultiportIsRefused)
+{
+    System s;
+    add(s, "SignalGain", "G");
+    add(s, "SignalSink", "Sink");
+    const std::string err = refuse(s, "G", "in", "Sink", "in");
+    EXPECT_NE(err.find("read port cannot be connected to a multiport"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, UnknownComponentOrPortIsNamed)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    std::string err = refuse(s, "V", "P9", "Nope", "P1");
+    EXPECT_NE(err.find("P9"), std::string::npos) << err;
+    err = refuse(s, "V", "P1", "Nope", "P1");
+    EXPECT_NE(err.find("Nope"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, ReadPortToNothingFailsTheModelCheck)
+{
+    // A required read port left unconnected is reported by the model check.
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    connectOk(s, "V", "P1", "O", "P1");
+    std::string err;
+    EXPECT_FALSE(s.checkModel(err));
+    EXPECT_NE(err.find("not connected"), std::string::npos) << err;
+}
+
+TEST(ConnectionRules, DisconnectSplitsTheNode)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    connectOk(s, "V", "P1", "O", "P1");
+    std::string err;
+    ASSERT_TRUE(s.disconnect("V", "P1", "O", "P1", err)) << err;
+    EXPECT_NE(s.component("V")->port("P1")->node(), s.component("O")->port("P1")->node());
+    EXPECT_FALSE(s.disconnect("V", "P1", "O", "P1", err));
+}
+
+TEST(ConnectionRules, MultiportTakesManyConnectionsWithOneNodeEach)
+{
+    System s;
+    add(s, "HydraulicVolumeMultiPort", "V");
+    add(s, "HydraulicLaminarOrifice", "O1");
+    add(s, "HydraulicLaminarOrifice", "O2");
+    connectOk(s, "V", "P1", "O1", "P1");
+    connectOk(s, "V", "P1", "O2", "P1");
+    Port* mp = s.component("V")->port("P1");
+    ASSERT_EQ(mp->subPorts.size(), 2u);
+    EXPECT_NE(mp->subPorts[0]->node(), mp->subPorts[1]->node());
+}
+
+TEST(ConnectionRules, NamesStayUniqueOnAddAndRename)
+{
+    System s;
+    EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol");
+    EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_1");
+    EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_2");
+    std::string err;
+    EXPECT_EQ(s.renameComponent("Vol_2", "Vol", err), "Vol_3");
+    EXPECT_EQ(s.renameComponent("Vol_3", "2/2 Valve", err), "2_2_Valve");
+    EXPECT_EQ(add(s, "HydraulicVolume", "time"), "time_1");   // reserved name
+}
+
+TEST(ConnectionRules, RemoveComponentDisconnectsFirst)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    connectOk(s, "V", "P1", "O", "P1");
+    std::string err;
+    ASSERT_TRUE(s.removeComponent("O", err));
+    EXPECT_FALSE(s.component("V")->port("P1")->isConnected());
+    EXPECT_FALSE(s.removeComponent("O", err));
+}

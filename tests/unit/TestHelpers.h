@@ -1,0 +1,57 @@
+#pragma once
+// Small helpers shared by the unit tests: build systems through the string API.
+#include "core/ComponentFactory.h"
+#include "core/System.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace tlmhub::test {
+
+inline std::string add(System& s, const std::string& type, const std::string& name)
+{
+    auto c = ComponentFactory::instance().create(type);
+    EXPECT_TRUE(c) << "unknown type " << type;
+    if (!c) return {};
+    c->setNameRaw(name);
+    return s.addComponent(std::move(c));
+}
+
+inline void connectOk(System& s, const std::string& a, const std::string& pa, const std::string& b,
+                      const std::string& pb)
+{
+    std::string err;
+    ASSERT_TRUE(s.connect(a, pa, b, pb, err)) << err;
+}
+
+inline void setParam(System& s, const std::string& comp, const std::string& name, const std::string& value)
+{
+    Component* c = s.component(comp);
+    ASSERT_TRUE(c) << comp;
+    Parameter* p = c->parameters().find(name);
+    ASSERT_TRUE(p) << comp << "." << name;
+    p->value = value;
+}
+
+inline bool run(System& s, double t0, double t1, double ts, std::size_t samples)
+{
+    s.desiredTimestep = ts;
+    s.requestedLogSamples = samples;
+    std::string err;
+    if (!s.checkModel(err)) {
+        ADD_FAILURE() << err;
+        return false;
+    }
+    bool ok = s.initialize(t0, t1) && s.simulate(t1);
+    s.finalize();
+    return ok;
+}
+
+inline std::string sharedDir()
+{
+    return std::string(TLMHUB_SOURCE_DIR) + "/../shared";
+}
+
+} // namespace tlmhub::test
