@@ -141,8 +141,11 @@ TEST(ConnectionRules, NamesStayUniqueOnAddAndRename)
     EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_1");
     EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_2");
     std::string err;
-    EXPECT_EQ(s.renameComponent("Vol_2", "Vol", err), "Vol_3");
-    EXPECT_EQ(s.renameComponent("Vol_3", "2/2 Valve", err), "2_2_Valve");
+    // Renaming to a taken name: Vol -> Vol_1 (taken) -> Vol_2 (freed by this rename).
+    EXPECT_EQ(s.renameComponent("Vol_2", "Vol", err), "Vol_2");
+    EXPECT_EQ(s.renameComponent("Vol_2", "2/2 Valve", err), "2_2_Valve");
+    EXPECT_EQ(s.renameComponent("Vol_1", "Valve_3", err), "Valve_3");
+    EXPECT_EQ(add(s, "HydraulicVolume", "Valve_3"), "Valve_1");
     EXPECT_EQ(add(s, "HydraulicVolume", "time"), "time_1");   // reserved name
 }
 

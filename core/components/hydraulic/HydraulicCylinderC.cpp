@@ -198,11 +198,11 @@ void HydraulicCylinderC::simulateOneTimestep()
     // A chamber whose pressure was floored last step acts on the piston with
     // c >= 0 and no impedance.
     double ci1m = ci1, Zc1m = Zc1, ci2m = ci2, Zc2m = Zc2;
-    if (false && p1cav) {
+    if (p1cav) {
         ci1m = std::max(ci1, 0.0);
         Zc1m = 0.0;
     }
-    if (false && p2cav) {
+    if (p2cav) {
         ci2m = std::max(ci2, 0.0);
         Zc2m = 0.0;
     }

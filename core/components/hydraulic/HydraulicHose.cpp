@@ -110,9 +110,10 @@ void HydraulicHose::simulateOneTimestep()
     // Cyclic memory index.
     mNTIME = mNTIME + 1;
     if (mNTIME > mNTMAX) mNTIME = 1;
-    // Hopsan forms this index from the real-valued NT and truncates the result
-    // toward zero (not NTIME - int(NT) + 1).
-    int NTIME1 = static_cast<int>(mNTIME - 1 * mNT + 1);
+    // Read-back slot uses the integer part of NT (uniform int(NT)-1 step lag).
+    // Truncating NTIME - NT + 1 as a whole instead (as one public Hopsan source
+    // reads) gives a jittery lag and fails HydraulicLineTest.
+    int NTIME1 = mNTIME - static_cast<int>(mNT) + 1;
     if (NTIME1 < 1) NTIME1 = NTIME1 + mNTMAX;
 
     const double RQ1 = rq(mRL1, q1, d, l, rho, visc);

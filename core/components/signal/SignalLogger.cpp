@@ -150,8 +150,12 @@ void SignalLogger::simulateOneTimestep()
         for (std::size_t i = 0; i < numVars; ++i) mFile << "," << *mInData[i];
         mFile << "\n";
     } else if (mFileType == PlainRowWiseCsv || mFileType == HopsanRowWiseCsv) {
-        mRows[0] += "," + numberText(mTime);
-        for (std::size_t i = 0; i < numVars; ++i) mRows[i + 1] += "," + numberText(*mInData[i]);
+        mRows[0] += ',';
+        mRows[0] += numberText(mTime);
+        for (std::size_t i = 0; i < numVars; ++i) {
+            mRows[i + 1] += ',';
+            mRows[i + 1] += numberText(*mInData[i]);
+        }
     } else if (mFileType == HopsanPlo) {
         std::string row = "  " + scientificText(mTime);
         for (std::size_t i = 0; i < numVars; ++i) {
