@@ -91,7 +91,13 @@ int runCommand(const std::vector<std::string>& args)
         if (m.type == MessageType::Error || m.type == MessageType::Fatal)
             std::cerr << "error: " << m.text << "\n";
     if (!ok) {
-        std::cerr << "error: " << path << ": simulation failed\n";
+        std::fprintf(stderr, "error: %s: simulation stopped at t=%g before the stop time %g\n",
+                     path.c_str(), root.time(), stop);
+        return 1;
+    }
+    std::string where;
+    if (opt.has("check-finite") && findNonFinite(root, where)) {
+        std::cerr << "error: " << path << ": non-finite value: " << where << "\n";
         return 1;
     }
     if (!csv.empty() && !writeCsv(root, csv, err)) {

@@ -10,7 +10,7 @@ namespace {
 void usage(std::ostream& os)
 {
     os << "usage:\n"
-          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--csv OUT.csv]\n"
+          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--csv OUT.csv] [--check-finite]\n"
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"

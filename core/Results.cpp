@@ -1,5 +1,6 @@
 #include "core/Results.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace tlmhub {
@@ -74,6 +75,47 @@ std::vector<double> loggedData(const Port& port, int slot, std::size_t count)
     out.resize(count);
     for (std::size_t i = 0; i < count; ++i) out[i] = n->logData[i * sz + slot];
     return out;
+}
+
+bool findNonFinite(const System& root, std::string& where)
+{
+    for (const LoggedVariable& v : listLoggedVariables(root)) {
+        const std::vector<double> data = loggedData(*v.port, v.slot, v.count);
+        const std::vector<double>* time = loggedTime(*v.port);
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            if (!std::isfinite(data[i])) {
+                std::ostringstream os;
+                os << v.fullName << " = " << data[i];
+                if (time && i < time->size()) os << " at t=" << (*time)[i];
+                where = os.str();
+                return true;
+            }
+        }
+    }
+    // Models without logging: the final node values.
+    struct Walker {
+        static bool walk(const System& s, const std::string& prefix, std::string& where)
+        {
+            for (Component* c : s.componentsByName()) {
+                for (const auto& [pname, p] : c->portsByName()) {
+                    if (p->isMultiport() || !p->node()) continue;
+                    const Node* n = p->node();
+                    for (std::size_t i = 0; i < n->size(); ++i) {
+                        if (!std::isfinite(n->value(static_cast<int>(i)))) {
+                            where = prefix + c->name() + "#" + pname + "#" +
+                                    std::string(nodeTypeInfo(n->type()).variables[i].name) +
+                                    " (final value)";
+                            return true;
+                        }
+                    }
+                }
+                if (c->isSystem() && walk(*static_cast<const System*>(c), prefix + c->name() + "$", where))
+                    return true;
+            }
+            return false;
+        }
+    };
+    return Walker::walk(root, "", where);
 }
 
 bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,

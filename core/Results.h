@@ -23,6 +23,10 @@ std::vector<LoggedVariable> listLoggedVariables(const System& root);
 std::vector<double> loggedData(const Port& port, int slot, std::size_t count);
 const std::vector<double>* loggedTime(const Port& port);
 
+// First non-finite value (NaN or infinity) among the logged data and the current node values;
+// false if everything is finite, else true with `where` naming the variable (and time).
+bool findNonFinite(const System& root, std::string& where);
+
 // Resolve "[Sys$...]Comp#Port#Var" from the root, with the .hvc lookup quirk of core.md §7.3.
 bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,
                      std::string& error);
