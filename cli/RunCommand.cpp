@@ -84,7 +84,12 @@ int runCommand(const std::vector<std::string>& args)
     }
     bool ok = root.initialize(start, stop);
     const auto t1 = std::chrono::steady_clock::now();
-    if (ok) ok = root.simulate(stop);
+    double threads = 1;
+    if (!opt.number("threads", threads, err) || threads < 0) {
+        std::cerr << "error: --threads needs a count >= 0\n";
+        return 2;
+    }
+    if (ok) ok = root.simulateMultiThreaded(stop, static_cast<unsigned>(threads));
     const auto t2 = std::chrono::steady_clock::now();
     root.finalize();
     for (const auto& m : root.messages())

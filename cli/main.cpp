@@ -10,7 +10,8 @@ namespace {
 void usage(std::ostream& os)
 {
     os << "usage:\n"
-          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--csv OUT.csv] [--check-finite]\n"
+          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--threads N]\n"
+          "                 [--csv OUT.csv] [--check-finite]\n"
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"

@@ -23,14 +23,6 @@ void Node::relocate(double* storage)
     mData = storage;
 }
 
-void Node::unrelocate()
-{
-    if (mData != mOwnData.data()) {
-        if (mSize) std::memcpy(mOwnData.data(), mData, mSize * sizeof(double));
-        mData = mOwnData.data();
-    }
-}
-
 void Node::attach(Port* port)
 {
     if (std::find(mPorts.begin(), mPorts.end(), port) == mPorts.end()) mPorts.push_back(port);

@@ -24,8 +24,6 @@ public:
 
     // Move the data into external storage (contiguous node arena); values are kept.
     void relocate(double* storage);
-    // Return to own storage (before the arena is freed).
-    void unrelocate();
 
     const std::vector<Port*>& ports() const { return mPorts; }
     void attach(Port* port);

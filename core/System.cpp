@@ -931,10 +931,50 @@ void System::propagateTimestep()
     }
 }
 
+namespace {
+
+void collectNodes(System& s, std::vector<Node*>& out, std::set<Node*>& seen)
+{
+    auto take = [&](Port* p) {
+        if (p->isMultiport()) {
+            for (auto& sub : p->subPorts)
+                if (seen.insert(sub->node()).second) out.push_back(sub->node());
+        } else if (p->node() && seen.insert(p->node()).second) {
+            out.push_back(p->node());
+        }
+    };
+    for (Port* p : s.ports()) take(p);
+    for (Component* c : s.componentsInOrder()) {
+        for (Port* p : c->ports()) take(p);
+        if (c->isSystem()) collectNodes(*static_cast<System*>(c), out, seen);
+    }
+}
+
+} // namespace
+
+// Move every node's data into one contiguous block, in component order, so the step loop
+// walks memory mostly forwards. Pointers are bound after this, in initialize().
+void System::packNodeData()
+{
+    std::vector<Node*> nodes;
+    std::set<Node*> seen;
+    collectNodes(*this, nodes, seen);
+    std::size_t total = 0;
+    for (Node* n : nodes) total += n->size();
+    std::vector<double> arena(total);
+    std::size_t offset = 0;
+    for (Node* n : nodes) {
+        n->relocate(arena.data() + offset);   // copies from the old block, still alive here
+        offset += n->size();
+    }
+    mNodeArena.swap(arena);
+}
+
 bool System::initialize(double t0, double t1)
 {
     mStopRequested = false;
     if (isRoot()) {
+        packNodeData();
         mTimestep = desiredTimestep;
         startTime = t0;
         stopTime = t1;
@@ -999,21 +1039,22 @@ bool System::initializeInternal(double t0, double t1)
     return true;
 }
 
+void System::runComponent(Component* c, double time)
+{
+    if (c->isSystem()) {
+        static_cast<System*>(c)->simulateTo(time);
+    } else {
+        c->mTime = time;
+        c->simulateOneTimestep();
+    }
+}
+
 void System::stepOnce()
 {
     const double t = mTime;
-    for (Component* c : mS) {
-        if (c->isSystem()) static_cast<System*>(c)->simulateTo(t);
-        else { c->mTime = t; c->simulateOneTimestep(); }
-    }
-    for (Component* c : mC) {
-        if (c->isSystem()) static_cast<System*>(c)->simulateTo(t);
-        else { c->mTime = t; c->simulateOneTimestep(); }
-    }
-    for (Component* c : mQ) {
-        if (c->isSystem()) static_cast<System*>(c)->simulateTo(t);
-        else { c->mTime = t; c->simulateOneTimestep(); }
-    }
+    for (Component* c : mS) runComponent(c, t);
+    for (Component* c : mC) runComponent(c, t);
+    for (Component* c : mQ) runComponent(c, t);
     ++mTakenSteps;
     logSample();
 }

@@ -68,6 +68,9 @@ public:
     bool checkModel(std::string& error);
     bool initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
+    // The same steps with the root's C and Q lists split over `threads` threads (0 = one per
+    // core); S components run on the calling thread. Results are identical to simulate().
+    bool simulateMultiThreaded(double stopTime, unsigned threads);
     void finalize();
     void requestStop() { mStopRequested = true; }
     bool stopRequested() const { return mStopRequested; }
@@ -120,6 +123,8 @@ private:
     void allocateLogStorage();
     void logSample();
     void stepOnce();
+    void packNodeData();
+    static void runComponent(Component* c, double time);
     bool initializeInternal(double startTime, double stopTime);
     void propagateTimestep();
     Port* resolvePort(const std::string& compName, const std::string& portName,
@@ -143,6 +148,9 @@ private:
     std::vector<double> mLogTime;
     std::size_t mLogCounter = 0;
     std::vector<Node*> mLoggedNodes;
+
+    // Root: every node's data in one contiguous block (filled at initialize).
+    std::vector<double> mNodeArena;
 
     ProgressCallback mProgress = nullptr;
     void* mProgressUser = nullptr;

@@ -43,6 +43,16 @@ const std::vector<Rename>& portRenames()
         {"HydraulicPressureSourceC", "In", "p"},
         {"HydraulicPressureSourceC", "in", "p"},
         {"HydraulicFlowSourceQ", "in", "q"},
+        // Renamed outputs/inputs of aero and mechanic types (matched by position and default
+        // value against the current ports).
+        {"AeroAtmosphere", "rho", "rhoa"},
+        {"AeroAtmosphere", "T", "Ta"},
+        {"AeroAtmosphere", "Tav", "Ta"},
+        {"AeroCombustionChamberMono", "p0", "pa"},
+        {"AeroCombustionChamberMono", "pt", "pc"},
+        {"AeroCombustionChamberMono", "Tt", "Tc"},
+        {"AeroCombustionChamberMono", "mc", "rhogas"},
+        {"MechanicThetaSource", "win", "omega"},
     };
     return v;
 }
@@ -151,6 +161,13 @@ std::string currentParameterName(const std::string& typeName, const std::string&
     if (full) {
         for (const Rename& r : parameterRenames())
             if (typeName == r.type && name == r.from) return r.to;
+        // Start values of renamed ports follow the port: "<old>#Var" -> "<new>#Var".
+        const auto hash = name.find('#');
+        if (hash != std::string::npos) {
+            const std::string port = name.substr(0, hash);
+            const std::string renamed = currentPortName(typeName, port, true);
+            if (renamed != port) return renamed + name.substr(hash);
+        }
     }
     return name;
 }
