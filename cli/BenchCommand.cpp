@@ -14,14 +14,6 @@ namespace tlmhub::cli {
 
 namespace {
 
-std::size_t countComponents(const System& s)
-{
-    std::size_t n = 0;
-    for (Component* c : s.componentsInOrder())
-        n += c->isSystem() ? countComponents(*static_cast<System*>(c)) : 1;
-    return n;
-}
-
 long peakRssKiB()
 {
     std::ifstream in("/proc/self/status");
@@ -74,7 +66,7 @@ int benchCommand(const std::vector<std::string>& args)
     }
     std::sort(times.begin(), times.end());
     const double median = times[times.size() / 2];
-    const std::size_t comps = countComponents(root);
+    const std::size_t comps = root.countComponents();
     std::printf("model %s: %zu components, %zu steps, load %.3f s\n", opt.positional[0].c_str(), comps,
                 steps, std::chrono::duration<double>(l1 - l0).count());
     std::printf("simulation min %.4f s, median %.4f s, max %.4f s (%zu runs, %g thread(s))\n",

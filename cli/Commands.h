@@ -9,5 +9,6 @@ int validateCommand(const std::vector<std::string>& args);
 int infoCommand(const std::vector<std::string>& args);
 int componentsCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);
+int batchCommand(const std::vector<std::string>& args);
 
 } // namespace tlmhub::cli

@@ -15,7 +15,8 @@ void usage(std::ostream& os)
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"
-          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N]\n";
+          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N]\n"
+          "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n";
 }
 
 } // namespace
@@ -34,6 +35,7 @@ int main(int argc, char** argv)
         if (command == "info") return tlmhub::cli::infoCommand(args);
         if (command == "components") return tlmhub::cli::componentsCommand(args);
         if (command == "bench") return tlmhub::cli::benchCommand(args);
+        if (command == "batch") return tlmhub::cli::batchCommand(args);
     } catch (const std::exception& e) {
         std::cerr << "tlmhub-cli: " << e.what() << "\n";
         return 1;

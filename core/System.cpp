@@ -170,6 +170,13 @@ std::vector<Component*> System::componentsByName() const
     return out;
 }
 
+std::size_t System::countComponents() const
+{
+    std::size_t n = 0;
+    for (Component* c : mOrder) n += c->isSystem() ? static_cast<System*>(c)->countComponents() : 1;
+    return n;
+}
+
 bool System::removeComponent(const std::string& name, std::string& error)
 {
     Component* c = component(name);

@@ -34,6 +34,8 @@ public:
     System* subsystem(const std::string& name) const;
     // Sub-components in byte-wise name order.
     std::vector<Component*> componentsByName() const;
+    // Number of ordinary components, counting into subsystems.
+    std::size_t countComponents() const;
     // Sub-components in insertion order (the simulation lists derive from it).
     const std::vector<Component*>& componentsInOrder() const { return mOrder; }
 
