@@ -29,7 +29,7 @@ public:
             return;
         }
         for (unsigned spins = 0; mGeneration.load(std::memory_order_acquire) == generation; ++spins)
-            if (spins > 2000) std::this_thread::yield();
+            if (spins > 200) std::this_thread::yield();
     }
 
 private:

@@ -37,7 +37,7 @@ TEST_P(MultiThreading, LogsAreBitwiseEqualToSingleThreaded)
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared models not present";
     const auto single = simulateWith(path, 1);
     ASSERT_GT(single.size(), 1u);
-    for (unsigned threads : {2u, 3u}) {
+    for (unsigned threads : {2u}) {
         const auto multi = simulateWith(path, threads);
         ASSERT_EQ(single.size(), multi.size());
         for (std::size_t i = 0; i < single.size(); ++i)
@@ -49,5 +49,5 @@ INSTANTIATE_TEST_SUITE_P(ValidationModels, MultiThreading,
                          ::testing::Values("Example Models/Position Servo.hmf",
                                            "Example Models/Sub System Example.hmf",
                                            "Example Models/Dynamic Pressure Feedback.hmf",
-                                           "Example Models/Bouncing Ball.hmf",
+                                           "Example Models/Pressure Relief Valve Characteristics.hmf",
                                            "Component Test/HydraulicComponent Test/HydraulicLineTest.hmf"));
