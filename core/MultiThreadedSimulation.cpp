@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -15,22 +16,26 @@ namespace tlmhub {
 
 namespace {
 
-// Sense-reversing barrier: spins briefly, then yields (threads may outnumber cores).
+// Sense-reversing barrier: spins, then yields (threads may outnumber cores). The last
+// thread to arrive runs `onComplete` before anyone is released.
 class SpinBarrier {
 public:
     explicit SpinBarrier(unsigned count) : mCount(count), mWaiting(0), mGeneration(0) {}
 
-    void arriveAndWait()
+    template <typename OnComplete>
+    void arriveAndWait(OnComplete onComplete)
     {
         const unsigned generation = mGeneration.load(std::memory_order_acquire);
         if (mWaiting.fetch_add(1, std::memory_order_acq_rel) + 1 == mCount) {
+            onComplete();
             mWaiting.store(0, std::memory_order_relaxed);
             mGeneration.fetch_add(1, std::memory_order_acq_rel);
             return;
         }
         for (unsigned spins = 0; mGeneration.load(std::memory_order_acquire) == generation; ++spins)
-            if (spins > 200) std::this_thread::yield();
+            if (spins > 20000) std::this_thread::yield();
     }
+    void arriveAndWait() { arriveAndWait([] {}); }
 
 private:
     const unsigned mCount;
@@ -44,27 +49,100 @@ std::size_t roundSteps(double x)
     return static_cast<std::size_t>(x + 0.5);
 }
 
-// Greedy partition by measured cost: most expensive first, onto the least loaded thread;
-// each thread keeps its components in list order.
-std::vector<std::vector<Component*>> partition(const std::vector<Component*>& list,
-                                               const std::vector<double>& cost, unsigned threads)
+} // namespace
+
+namespace {
+
+// Signal clusters (core.md §10): S components linked by signal connections, directly or
+// through other S components, form one cluster; clusters share no signal node, so whole
+// clusters can run on different threads. Returns a cluster id per entry of `list`.
+std::vector<std::size_t> signalClusters(const std::vector<Component*>& list)
 {
-    std::vector<std::size_t> order(list.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
-    std::vector<double> load(threads, 0.0);
-    std::vector<std::vector<std::size_t>> picks(threads);
-    for (std::size_t i : order) {
-        const auto t = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-        load[t] += cost[i];
-        picks[t].push_back(i);
+    std::vector<std::size_t> parent(list.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](std::size_t i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    std::map<const Component*, std::size_t> index;
+    for (std::size_t i = 0; i < list.size(); ++i) index[list[i]] = i;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        for (Port* p : list[i]->ports()) {
+            std::vector<Node*> nodes;
+            if (p->isMultiport())
+                for (auto& sub : p->subPorts) nodes.push_back(sub->node());
+            else if (p->node())
+                nodes.push_back(p->node());
+            for (Node* n : nodes) {
+                for (Port* q : n->ports()) {
+                    // Owners inside subsystems count as the subsystem in this list.
+                    const Component* owner = q->component();
+                    while (owner && !index.count(owner)) owner = owner->parentSystem();
+                    if (!owner) continue;
+                    const std::size_t a = find(i), b = find(index[owner]);
+                    if (a != b) parent[a] = b;
+                }
+            }
+        }
     }
-    std::vector<std::vector<Component*>> out(threads);
-    for (unsigned t = 0; t < threads; ++t) {
-        std::sort(picks[t].begin(), picks[t].end());
-        for (std::size_t i : picks[t]) out[t].push_back(list[i]);
+    std::vector<std::size_t> cluster(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) cluster[i] = find(i);
+    return cluster;
+}
+
+// Threads get contiguous regions of the model (insertion order, which is also the order
+// of the node data) with about equal measured cost. A C component and the Q component it
+// talks to are usually neighbours, so they share a thread and their node stays in that
+// core's cache; interleaving would bounce every node between cores twice per step.
+// Signal clusters go whole to the thread of their first member.
+struct Partition {
+    std::vector<std::vector<Component*>> s, c, q;
+};
+
+Partition partitionByRegion(const std::vector<Component*>& order, const std::vector<Component*>& listS,
+                            const std::vector<double>& costS, const std::vector<Component*>& listC,
+                            const std::vector<double>& costC, const std::vector<Component*>& listQ,
+                            const std::vector<double>& costQ, unsigned threads)
+{
+    std::map<const Component*, double> cost;
+    for (std::size_t i = 0; i < listS.size(); ++i) cost[listS[i]] = costS[i];
+    for (std::size_t i = 0; i < listC.size(); ++i) cost[listC[i]] = costC[i];
+    for (std::size_t i = 0; i < listQ.size(); ++i) cost[listQ[i]] = costQ[i];
+    double total = 0.0;
+    for (const auto& [comp, c] : cost) total += c;
+    std::map<const Component*, unsigned> threadOf;
+    double done = 0.0;
+    unsigned t = 0;
+    for (const Component* comp : order) {
+        auto it = cost.find(comp);
+        if (it == cost.end()) continue;   // disabled
+        while (t + 1 < threads && done >= total * (t + 1) / threads) ++t;
+        threadOf[comp] = t;
+        done += it->second;
     }
-    return out;
+    Partition p;
+    p.s.resize(threads);
+    p.c.resize(threads);
+    p.q.resize(threads);
+    const std::vector<std::size_t> cluster = signalClusters(listS);
+    std::map<std::size_t, unsigned> clusterThread;
+    for (std::size_t i = 0; i < listS.size(); ++i) {
+        auto [it, inserted] = clusterThread.emplace(cluster[i], threadOf[listS[i]]);
+        p.s[it->second].push_back(listS[i]);
+    }
+    for (const Component* comp : listC) p.c[threadOf[comp]].push_back(const_cast<Component*>(comp));
+    for (const Component* comp : listQ) p.q[threadOf[comp]].push_back(const_cast<Component*>(comp));
+    return p;
+}
+
+template <typename Clock>
+void timedRun(const std::vector<Component*>& list, std::vector<double>& cost, double t)
+{
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const auto a = Clock::now();
+        System::runComponentAt(list[i], t);
+        cost[i] += std::chrono::duration<double>(Clock::now() - a).count();
+    }
 }
 
 } // namespace
@@ -75,66 +153,60 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     const std::size_t n = roundSteps(std::max(tStop - mTime, 0.0) / mTimestep);
     if (threads == 1 || n == 0) return simulate(tStop);
 
-    // Measure each C and Q component's cost over the first steps (real steps of the run).
-    const std::size_t probeSteps = std::min<std::size_t>(100, n);
-    std::vector<double> costC(mC.size(), 0.0), costQ(mQ.size(), 0.0);
+    // Measure each component's cost over the first steps (real steps of the run).
     using Clock = std::chrono::steady_clock;
+    const std::size_t probeSteps = std::min<std::size_t>(100, n);
+    std::vector<double> costS(mS.size(), 0.0), costC(mC.size(), 0.0), costQ(mQ.size(), 0.0);
     for (std::size_t step = 0; step < probeSteps; ++step) {
         if (mStopRequested) return false;
         mTime += mTimestep;
-        const double t = mTime;
-        for (Component* c : mS) runComponent(c, t);
-        for (std::size_t i = 0; i < mC.size(); ++i) {
-            const auto a = Clock::now();
-            runComponent(mC[i], t);
-            costC[i] += std::chrono::duration<double>(Clock::now() - a).count();
-        }
-        for (std::size_t i = 0; i < mQ.size(); ++i) {
-            const auto a = Clock::now();
-            runComponent(mQ[i], t);
-            costQ[i] += std::chrono::duration<double>(Clock::now() - a).count();
-        }
+        timedRun<Clock>(mS, costS, mTime);
+        timedRun<Clock>(mC, costC, mTime);
+        timedRun<Clock>(mQ, costQ, mTime);
         ++mTakenSteps;
         logSample();
     }
-    const auto partC = partition(mC, costC, threads);
-    const auto partQ = partition(mQ, costQ, threads);
+    const Partition part = partitionByRegion(mOrder, mS, costS, mC, costC, mQ, costQ, threads);
+    const auto& partS = part.s;
+    const auto& partC = part.c;
+    const auto& partQ = part.q;
 
+    // Per step: S | C | Q phases with a barrier after each. Every thread advances its own
+    // copy of the time by the same additions, so all see the same value. After the Q
+    // barrier the master logs; on steps that store a sample the others wait for it at one
+    // more barrier, so the next step's S phase never overwrites what is being logged.
+    std::vector<char> logsAfter(n - probeSteps, 0);
+    for (std::size_t k = mLogCounter; k < mLogSteps.size(); ++k) {
+        const std::size_t taken = mLogSteps[k];
+        if (taken > mTakenSteps && taken - mTakenSteps - 1 < logsAfter.size()) logsAfter[taken - mTakenSteps - 1] = 1;
+    }
     SpinBarrier barrier(threads);
-    std::atomic<bool> abort{false};
-    const std::size_t remaining = n - probeSteps;
-    auto worker = [&](unsigned id) {
-        for (std::size_t step = 0; step < remaining; ++step) {
-            barrier.arriveAndWait();   // S phase done (master)
-            if (abort.load(std::memory_order_acquire)) return;
-            const double t = mTime;
+    bool stopSnapshot = false;   // written only by the last thread at the Q barrier
+    const double startTime = mTime;
+    auto run = [&](unsigned id) {
+        double t = startTime;
+        for (std::size_t step = 0; step < logsAfter.size(); ++step) {
+            t += mTimestep;
+            for (Component* c : partS[id]) runComponent(c, t);
+            barrier.arriveAndWait();
             for (Component* c : partC[id]) runComponent(c, t);
-            barrier.arriveAndWait();   // C phase done
+            barrier.arriveAndWait();
             for (Component* c : partQ[id]) runComponent(c, t);
-            barrier.arriveAndWait();   // Q phase done
+            barrier.arriveAndWait([&] { stopSnapshot = mStopRequested; });
+            if (id == 0) {
+                mTime = t;
+                ++mTakenSteps;
+                logSample();
+                if (mProgress && mProgressInterval && (mTakenSteps % mProgressInterval) == 0)
+                    mProgress(mProgressUser, probeSteps + step + 1, n);
+            }
+            if (logsAfter[step]) barrier.arriveAndWait();
+            if (stopSnapshot) return;
         }
     };
     std::vector<std::thread> pool;
-    for (unsigned id = 1; id < threads; ++id) pool.emplace_back(worker, id);
-    for (std::size_t step = 0; step < remaining; ++step) {
-        if (mStopRequested) {
-            abort.store(true, std::memory_order_release);
-            barrier.arriveAndWait();
-            break;
-        }
-        mTime += mTimestep;
-        const double t = mTime;
-        for (Component* c : mS) runComponent(c, t);
-        barrier.arriveAndWait();
-        for (Component* c : partC[0]) runComponent(c, t);
-        barrier.arriveAndWait();
-        for (Component* c : partQ[0]) runComponent(c, t);
-        barrier.arriveAndWait();
-        ++mTakenSteps;
-        logSample();
-        if (mProgress && mProgressInterval && (probeSteps + step + 1) % mProgressInterval == 0)
-            mProgress(mProgressUser, probeSteps + step + 1, n);
-    }
+    for (unsigned id = 1; id < threads; ++id) pool.emplace_back(run, id);
+    run(0);
     for (auto& th : pool) th.join();
     return !mStopRequested;
 }

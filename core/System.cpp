@@ -1046,7 +1046,7 @@ bool System::initializeInternal(double t0, double t1)
     return true;
 }
 
-void System::runComponent(Component* c, double time)
+void System::runComponentAt(Component* c, double time)
 {
     if (c->isSystem()) {
         static_cast<System*>(c)->simulateTo(time);
