@@ -2,6 +2,7 @@
 // A node: the data vector shared by every port of one connection group (core.md §1, §2.5).
 #include "core/NodeTypes.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,30 @@ namespace tlmhub {
 
 class Port;
 class System;
+
+// Storage for logged samples. Not zero-filled: every slot is written before it is read
+// (readers stop at the number of samples logged), and skipping the fill keeps the start
+// of a run with large logs fast. Kept between runs of the same size.
+class LogBuffer {
+public:
+    void allocate(std::size_t n)
+    {
+        if (n != mSize) {
+            mData = n ? std::make_unique_for_overwrite<double[]>(n) : nullptr;
+            mSize = n;
+        }
+    }
+    void clear() { mData.reset(); mSize = 0; }
+    bool empty() const { return mSize == 0; }
+    std::size_t size() const { return mSize; }
+    double* data() { return mData.get(); }
+    const double* data() const { return mData.get(); }
+    double operator[](std::size_t i) const { return mData[i]; }
+
+private:
+    std::unique_ptr<double[]> mData;
+    std::size_t mSize = 0;
+};
 
 class Node {
 public:
@@ -35,7 +60,7 @@ public:
 
     // --- logging (§4) ---
     // Logged samples, nSamples * size() doubles (sample-major).
-    std::vector<double> logData;
+    LogBuffer logData;
     System* logOwner = nullptr;   // system whose time vector belongs to logData
 
 private:

@@ -889,14 +889,16 @@ void System::allocateLogStorage()
         Node* n = p->node();
         if (!n || !seen.insert(n).second) return;
         if (nodeOwner(n) != this) return;
-        n->logData.clear();
         n->logOwner = this;
         const auto& ps = n->ports();
-        if (ps.size() < 2 && (ps.empty() || ps.front()->kind() == PortKind::Read)) return;
         bool wants = false;
         for (Port* q : ps) wants = wants || q->wantsLogging;
-        if (!wants || mLogSteps.empty() || n->size() == 0) return;
-        n->logData.assign(mLogSteps.size() * n->size(), 0.0);
+        const bool loneInput = ps.size() < 2 && (ps.empty() || ps.front()->kind() == PortKind::Read);
+        if (loneInput || !wants || mLogSteps.empty() || n->size() == 0) {
+            n->logData.clear();
+            return;
+        }
+        n->logData.allocate(mLogSteps.size() * n->size());
         mLoggedNodes.push_back(n);
     };
     for (Component* c : mOrder) {
