@@ -1,6 +1,7 @@
 #include "core/Parameter.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 
@@ -95,13 +96,10 @@ bool ParameterSet::rename(const std::string& oldName, const std::string& newName
 
 std::string formatNumber(double value)
 {
+    // Shortest text that reads back as the same double.
     char buf[64];
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, value);
-        if (std::strtod(buf, nullptr) == value) return buf;
-    }
-    std::snprintf(buf, sizeof buf, "%.17g", value);
-    return buf;
+    const auto result = std::to_chars(buf, buf + sizeof buf, value);
+    return std::string(buf, result.ptr);
 }
 
 } // namespace tlmhub

@@ -51,8 +51,8 @@ private:
     std::vector<std::unique_ptr<Parameter>> mParameters;
 };
 
-// Number formatting used for parameter strings: 17 significant digits, shortest form
-// that round-trips ("%.17g" then trimmed when a shorter form gives the same double).
+// Number formatting used for parameter strings: the shortest form that reads back as the
+// same double.
 std::string formatNumber(double value);
 
 } // namespace tlmhub
