@@ -1,0 +1,120 @@
+// Subsystems (core.md §2.7, §3.3, §3.5): system ports are pass-throughs to one shared node,
+// the subsystem's kind follows what is connected inside, and a subsystem may run with a
+// shorter time step of its own.
+#include "TestHelpers.h"
+
+#include "core/Results.h"
+
+using namespace tlmhub;
+using namespace tlmhub::test;
+
+namespace {
+
+System& addSubsystem(System& parent, const std::string& name)
+{
+    auto sub = std::make_unique<System>();
+    sub->setNameRaw(name);
+    System* raw = sub.get();
+    parent.addComponent(std::move(sub));
+    return *raw;
+}
+
+} // namespace
+
+TEST(Subsystems, SystemPortsPassSignalsThroughOneNode)
+{
+    System root;
+    add(root, "SignalConstant", "C");
+    add(root, "SignalSink", "Sink");
+    System& sub = addSubsystem(root, "Sub");
+    sub.addSystemPort("in");
+    sub.addSystemPort("out");
+    add(sub, "SignalGain", "G");
+    connectOk(sub, "in", "in", "G", "in");
+    connectOk(sub, "G", "out", "out", "out");
+    connectOk(root, "C", "y", "Sub", "in");
+    connectOk(root, "Sub", "out", "Sink", "in");
+    setParam(root, "C", "y#Value", "3");
+    sub.component("G")->parameters().find("k#Value")->value = "2";
+    EXPECT_EQ(sub.kind(), CqsKind::S);
+    // Outside and inside ports share the node: no copies.
+    EXPECT_EQ(root.component("C")->port("y")->node(), sub.component("G")->port("in")->node());
+    ASSERT_TRUE(run(root, 0, 0.01, 0.001, 11));
+    EXPECT_DOUBLE_EQ(sub.component("G")->port("out")->node()->value(0), 6.0);
+    // The crossing node is logged by the outer system under both names.
+    std::string err;
+    Port* p = nullptr;
+    int slot = -1;
+    ASSERT_TRUE(resolveVariable(root, "Sub$G#out#Value", p, slot, err)) << err;
+    EXPECT_EQ(loggedData(*p, slot, root.numLoggedSamples()).back(), 6.0);
+}
+
+TEST(Subsystems, KindFollowsInsideConnectionsAndTLMRulesHoldAcrossPorts)
+{
+    System root;
+    System& sub = addSubsystem(root, "Sub");
+    sub.addSystemPort("P");
+    add(sub, "HydraulicVolume", "V");
+    add(sub, "HydraulicPlugQ", "Plug");
+    connectOk(sub, "V", "P2", "Plug", "P1");
+    connectOk(sub, "V", "P1", "P", "P");
+    EXPECT_EQ(sub.kind(), CqsKind::C);
+    // A C-type subsystem carries start values for its power port.
+    EXPECT_NE(sub.parameters().find("P#Pressure"), nullptr);
+    add(root, "HydraulicVolume", "Outside");
+    std::string err;
+    EXPECT_FALSE(root.connect("Outside", "P1", "Sub", "P", err));
+    EXPECT_NE(err.find("two C-type"), std::string::npos) << err;
+    ASSERT_TRUE(root.removeComponent("Outside", err)) << err;
+    add(root, "HydraulicFlowSourceQ", "Pump");
+    connectOk(root, "Pump", "P1", "Sub", "P");
+    setParam(root, "Pump", "q#Value", "1e-5");
+    ASSERT_TRUE(run(root, 0, 0.1, 1e-4, 11));
+    // The pump fills the inner volume: pressure rises by about Beta*q*t/V = 1e6 Pa.
+    const double p = sub.component("V")->port("P2")->node()->value(NodeHydraulic::Pressure);
+    EXPECT_NEAR(p, 1e5 + 1e9 * 1e-5 * 0.1 / 1e-3, 0.02e6);
+}
+
+TEST(Subsystems, OwnShorterTimeStepRunsSeveralStepsPerParentStep)
+{
+    System root;
+    System& sub = addSubsystem(root, "Fast");
+    sub.inheritTimestep = false;
+    sub.desiredTimestep = 0.00025;   // four sub-steps per parent step of 1 ms
+    add(sub, "SignalTime", "Clock");
+    add(sub, "SignalSink", "Sink");
+    connectOk(sub, "Clock", "out", "Sink", "in");
+    add(root, "SignalTime", "Clock");
+    add(root, "SignalSink", "Sink");
+    connectOk(root, "Clock", "out", "Sink", "in");
+    ASSERT_TRUE(run(root, 0, 0.01, 0.001, 41));
+    EXPECT_EQ(root.takenSteps(), 10u);
+    EXPECT_EQ(sub.takenSteps(), 40u);
+    // The subsystem logs its own nodes against its own time vector, with its own steps.
+    ASSERT_EQ(sub.numLoggedSamples(), 41u);
+    EXPECT_NEAR(sub.logTime()[1], 0.00025, 1e-15);
+    const auto y = loggedData(*sub.component("Clock")->port("out"), 0, sub.numLoggedSamples());
+    EXPECT_EQ(y, sub.logTime());
+    EXPECT_EQ(root.numLoggedSamples(), 11u);   // limited to the parent's steps + 1
+}
+
+TEST(Subsystems, ConditionalSubsystemFreezesWhileOff)
+{
+    System root;
+    auto cond = std::make_unique<System>();
+    cond->setNameRaw("Cond");
+    cond->makeConditional();
+    System* sub = cond.get();
+    root.addComponent(std::move(cond));
+    add(*sub, "SignalConstant", "One");
+    add(*sub, "SignalIntegrator2", "Integrator");
+    add(*sub, "SignalSink", "Sink");
+    connectOk(*sub, "One", "y", "Integrator", "in");
+    connectOk(*sub, "Integrator", "out", "Sink", "in");
+    // `on` is unconnected and 0: the integrator must not move.
+    ASSERT_TRUE(run(root, 0, 0.1, 0.001, 11));
+    EXPECT_EQ(sub->component("Integrator")->port("out")->node()->value(0), 0.0);
+    sub->parameters().find("on#Value")->value = "1";
+    ASSERT_TRUE(run(root, 0, 0.1, 0.001, 11));
+    EXPECT_NEAR(sub->component("Integrator")->port("out")->node()->value(0), 0.1, 1e-12);
+}
