@@ -322,7 +322,7 @@ void Component::addMessage(MessageType type, const std::string& text, const std:
     System* root = mParent ? mParent->rootSystem() : nullptr;
     if (!root && isSystem()) root = static_cast<System*>(this)->rootSystem();
     const std::string full = mName.empty() ? text : mName + ": " + text;
-    if (root) root->messages().push_back({type, full, tag});
+    if (root) root->postMessage({type, full, tag});
 }
 
 void Component::stopSimulation(const std::string& reason)

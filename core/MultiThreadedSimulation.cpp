@@ -158,7 +158,7 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     const std::size_t probeSteps = std::min<std::size_t>(100, n);
     std::vector<double> costS(mS.size(), 0.0), costC(mC.size(), 0.0), costQ(mQ.size(), 0.0);
     for (std::size_t step = 0; step < probeSteps; ++step) {
-        if (mStopRequested) return false;
+        if (stopRequested()) return false;
         mTime += mTimestep;
         timedRun<Clock>(mS, costS, mTime);
         timedRun<Clock>(mC, costC, mTime);
@@ -192,7 +192,7 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
             for (Component* c : partC[id]) runComponent(c, t);
             barrier.arriveAndWait();
             for (Component* c : partQ[id]) runComponent(c, t);
-            barrier.arriveAndWait([&] { stopSnapshot = mStopRequested; });
+            barrier.arriveAndWait([&] { stopSnapshot = stopRequested(); });
             if (id == 0) {
                 mTime = t;
                 ++mTakenSteps;
@@ -208,7 +208,7 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     for (unsigned id = 1; id < threads; ++id) pool.emplace_back(run, id);
     run(0);
     for (auto& th : pool) th.join();
-    return !mStopRequested;
+    return !stopRequested();
 }
 
 } // namespace tlmhub

@@ -981,7 +981,7 @@ void System::packNodeData()
 
 bool System::initialize(double t0, double t1)
 {
-    mStopRequested = false;
+    mStopRequested.store(false);
     if (isRoot()) {
         packNodeData();
         mTimestep = desiredTimestep;
@@ -1013,14 +1013,14 @@ bool System::initializeInternal(double t0, double t1)
             if (c->isSystem()) static_cast<System*>(c)->computeSortHintsOfSystemPorts();
     std::string error;
     if (!sortList(mS, true, error)) {
-        root->messages().push_back({MessageType::Error, error, "AlgebraicLoop"});
+        root->postMessage({MessageType::Error, error, "AlgebraicLoop"});
         return false;
     }
     sortList(mC, false, error);
     sortList(mQ, false, error);
     if (isRoot()) {
         if (!evaluateAllParameters(error)) {
-            root->messages().push_back({MessageType::Error, error, "Parameter"});
+            root->postMessage({MessageType::Error, error, "Parameter"});
             return false;
         }
         loadStartValues();
@@ -1087,13 +1087,20 @@ bool System::simulate(double tStop)
 {
     const std::size_t n = roundSteps(std::max(tStop - mTime, 0.0) / mTimestep);
     for (std::size_t i = 0; i < n; ++i) {
-        if (mStopRequested) return false;
+        if (stopRequested()) return false;
         mTime += mTimestep;
         stepOnce();
         if (mProgress && mProgressInterval && (i + 1) % mProgressInterval == 0)
             mProgress(mProgressUser, i + 1, n);
     }
-    return !mStopRequested;
+    return !stopRequested();
+}
+
+void System::postMessage(Message m)
+{
+    System* root = rootSystem();
+    std::lock_guard<std::mutex> lock(root->mMessagesMutex);
+    root->mMessages.push_back(std::move(m));
 }
 
 void System::finalize()

@@ -3,7 +3,9 @@
 // simulation loop (core.md §2.5-§4). Systems nest: a subsystem is a component of its parent.
 #include "core/Component.h"
 
+#include <atomic>
 #include <map>
+#include <mutex>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,8 +76,9 @@ public:
     // core); S components run on the calling thread. Results are identical to simulate().
     bool simulateMultiThreaded(double stopTime, unsigned threads);
     void finalize();
-    void requestStop() { mStopRequested = true; }
-    bool stopRequested() const { return mStopRequested; }
+    // Safe to call from any thread (a server's cancel, a component on a worker thread).
+    void requestStop() { mStopRequested.store(true, std::memory_order_relaxed); }
+    bool stopRequested() const { return mStopRequested.load(std::memory_order_relaxed); }
     // Progress callback for long runs (root only): called every `interval` steps.
     using ProgressCallback = void (*)(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
     void setProgressCallback(ProgressCallback cb, void* user, std::size_t interval);
@@ -88,7 +91,10 @@ public:
     std::size_t numLogSlots() const { return mLogSteps.size(); }
 
     // ---- messages (root) ----
+    // Messages of the last load/run. Not for use while a run is going on.
     std::vector<Message>& messages() { return rootSystem()->mMessages; }
+    // Thread-safe append (components report through Component::addMessage).
+    void postMessage(Message m);
     std::string modelDirectory;   // root: directory of the loaded model file
 
     // Used by the loader: a system parameter value string may fail to evaluate until
@@ -148,7 +154,8 @@ private:
     double* mpOn = nullptr;
 
     std::vector<Message> mMessages;
-    bool mStopRequested = false;
+    std::atomic<bool> mStopRequested{false};
+    std::mutex mMessagesMutex;
     std::size_t mTakenSteps = 0;
 
     // logging

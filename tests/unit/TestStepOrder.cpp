@@ -4,6 +4,9 @@
 
 #include "core/Results.h"
 
+#include <chrono>
+#include <thread>
+
 using namespace tlmhub;
 using namespace tlmhub::test;
 
@@ -59,4 +62,29 @@ TEST(StepOrder, TimeAdvancesBeforeComponentsAndAccumulates)
     EXPECT_EQ(s.logTime().back(), t);
     std::vector<double> y = loggedData(*s.component("T")->port("out"), 0, s.numLoggedSamples());
     EXPECT_EQ(y.back(), t);
+}
+
+TEST(StepOrder, RequestStopFromAnotherThreadEndsARunKeepingItsLog)
+{
+    // A run that could never finish (1e9 steps) is cancelled from another thread; the
+    // samples logged so far are kept and the run reports failure.
+    System s;
+    add(s, "SignalTime", "T");
+    add(s, "SignalSink", "Sink");
+    connectOk(s, "T", "out", "Sink", "in");
+    s.desiredTimestep = 1e-3;
+    s.requestedLogSamples = 1000001;
+    s.logStartTime = 0.0;
+    ASSERT_TRUE(s.initialize(0.0, 1e6));
+    std::thread canceller([&s] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        s.requestStop();
+    });
+    const bool finished = s.simulate(1e6);
+    canceller.join();
+    s.finalize();
+    EXPECT_FALSE(finished);
+    EXPECT_GT(s.takenSteps(), 0u);
+    EXPECT_LT(s.takenSteps(), 1000000000u);
+    EXPECT_GT(s.numLoggedSamples(), 0u);
 }
