@@ -140,9 +140,6 @@ bool evaluateExpressionDepth(Component& owner, const std::string& expression, do
         error = "cannot evaluate '" + expression + "': " + e.GetMsg();
         return false;
     }
-    if (std::isnan(result) && expression.find("nan") == std::string::npos) {
-        // NaN results are legal IEEE values; keep them but do not fail.
-    }
     return true;
 }
 

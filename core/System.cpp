@@ -466,6 +466,7 @@ void System::determineKind()
 {
     if (isRoot()) {
         mSystemKind = CqsKind::S;   // the root's kind is irrelevant; never Undefined
+        return;
     }
     int nC = 0, nQ = 0, nS = 0;
     for (Port* sp : ports()) {
@@ -483,7 +484,6 @@ void System::determineKind()
             }
         }
     }
-    if (isRoot()) return;
     CqsKind k = CqsKind::Undefined;
     if (nC > 0 && nQ == 0) k = CqsKind::C;
     else if (nQ > 0 && nC == 0) k = CqsKind::Q;
@@ -1048,7 +1048,7 @@ bool System::initializeInternal(double t0, double t1)
     return true;
 }
 
-void System::runComponentAt(Component* c, double time)
+void System::runComponent(Component* c, double time)
 {
     if (c->isSystem()) {
         static_cast<System*>(c)->simulateTo(time);

@@ -132,11 +132,10 @@ private:
     void logSample();
     void stepOnce();
     void packNodeData();
-    static void runComponent(Component* c, double time) { runComponentAt(c, time); }
 
 public:
     // One step of one component at `time` (a subsystem runs its own steps up to it).
-    static void runComponentAt(Component* c, double time);
+    static void runComponent(Component* c, double time);
 
 private:
     bool initializeInternal(double startTime, double stopTime);

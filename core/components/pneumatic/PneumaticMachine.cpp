@@ -42,18 +42,8 @@ void PneumaticMachine::computeDelayedParts(double& d11, double& d12, double& d21
 
 void PneumaticMachine::initialize()
 {
-    mpPp1_p = getSafeNodeDataPtr(mpPp1, NodePneumatic::Pressure);
-    mpPp1_qm = getSafeNodeDataPtr(mpPp1, NodePneumatic::MassFlow);
-    mpPp1_T = getSafeNodeDataPtr(mpPp1, NodePneumatic::Temperature);
-    mpPp1_dE = getSafeNodeDataPtr(mpPp1, NodePneumatic::EnergyFlow);
-    mpPp1_c = getSafeNodeDataPtr(mpPp1, NodePneumatic::WaveVariable);
-    mpPp1_Zc = getSafeNodeDataPtr(mpPp1, NodePneumatic::CharImpedance);
-    mpPp2_p = getSafeNodeDataPtr(mpPp2, NodePneumatic::Pressure);
-    mpPp2_qm = getSafeNodeDataPtr(mpPp2, NodePneumatic::MassFlow);
-    mpPp2_T = getSafeNodeDataPtr(mpPp2, NodePneumatic::Temperature);
-    mpPp2_dE = getSafeNodeDataPtr(mpPp2, NodePneumatic::EnergyFlow);
-    mpPp2_c = getSafeNodeDataPtr(mpPp2, NodePneumatic::WaveVariable);
-    mpPp2_Zc = getSafeNodeDataPtr(mpPp2, NodePneumatic::CharImpedance);
+    mPp1.bind(mpPp1);
+    mPp2.bind(mpPp2);
     mpPmr1_t = getSafeNodeDataPtr(mpPmr1, NodeMechanicRotational::Torque);
     mpPmr1_a = getSafeNodeDataPtr(mpPmr1, NodeMechanicRotational::Angle);
     mpPmr1_w = getSafeNodeDataPtr(mpPmr1, NodeMechanicRotational::AngularVelocity);
@@ -62,11 +52,11 @@ void PneumaticMachine::initialize()
     mpPmr1_J = getSafeNodeDataPtr(mpPmr1, NodeMechanicRotational::EquivalentInertia);
 
     // Start values form the first Newton guess.
-    mP1 = *mpPp1_p;
-    mDE1 = *mpPp1_dE;
-    mP2 = *mpPp2_p;
-    mQm2 = *mpPp2_qm;
-    mDE2 = *mpPp2_dE;
+    mP1 = *mPp1.p;
+    mDE1 = *mPp1.dE;
+    mP2 = *mPp2.p;
+    mQm2 = *mPp2.qm;
+    mDE2 = *mPp2.dE;
     mTorque = *mpPmr1_t;
     mTheta = *mpPmr1_a;
     mW = *mpPmr1_w;
@@ -90,8 +80,8 @@ void PneumaticMachine::initialize()
 
 void PneumaticMachine::simulateOneTimestep()
 {
-    const double T1 = *mpPp1_T, c1 = *mpPp1_c, Zc1 = *mpPp1_Zc;
-    const double T2 = *mpPp2_T, c2 = *mpPp2_c, Zc2 = *mpPp2_Zc;
+    const double T1 = *mPp1.T, c1 = *mPp1.c, Zc1 = *mPp1.Zc;
+    const double T2 = *mPp2.T, c2 = *mPp2.c, Zc2 = *mPp2.Zc;
     const double cm = *mpPmr1_c, Zcm = *mpPmr1_Zc;
     const double dt = mTimestep, dt2 = dt * dt;
     const double Dm = mDm, Cim = mCim, Bm = mBm, Jm = mJm, R = mR;
@@ -180,12 +170,12 @@ void PneumaticMachine::simulateOneTimestep()
     mD12Used = mD12Buffer.getIdx(0);
     mD12Buffer.update(d12);
 
-    *mpPp1_p = mP1;
-    *mpPp1_qm = -mQm2;
-    *mpPp1_dE = mDE1;
-    *mpPp2_p = mP2;
-    *mpPp2_qm = mQm2;
-    *mpPp2_dE = mDE2;
+    *mPp1.p = mP1;
+    *mPp1.qm = -mQm2;
+    *mPp1.dE = mDE1;
+    *mPp2.p = mP2;
+    *mPp2.qm = mQm2;
+    *mPp2.dE = mDE2;
     *mpPmr1_t = mTorque;
     *mpPmr1_a = mTheta;
     *mpPmr1_w = mW;

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/Component.h"
+#include "core/components/pneumatic/PneumaticPortData.h"
 #include "core/numerics/Delay.h"
 #include "core/numerics/EquationSystemSolver.h"
 #include "core/numerics/Matrix.h"
@@ -19,10 +20,7 @@ private:
 
     Port *mpPp1 = nullptr, *mpPp2 = nullptr, *mpPmr1 = nullptr;
     double *mpDm = nullptr, *mpCim = nullptr, *mpBm = nullptr, *mpJm = nullptr, *mpR = nullptr, *mpCv = nullptr;
-    double *mpPp1_p = nullptr, *mpPp1_qm = nullptr, *mpPp1_T = nullptr, *mpPp1_dE = nullptr, *mpPp1_c = nullptr,
-           *mpPp1_Zc = nullptr;
-    double *mpPp2_p = nullptr, *mpPp2_qm = nullptr, *mpPp2_T = nullptr, *mpPp2_dE = nullptr, *mpPp2_c = nullptr,
-           *mpPp2_Zc = nullptr;
+    PneumaticPortData mPp1, mPp2;
     double *mpPmr1_t = nullptr, *mpPmr1_a = nullptr, *mpPmr1_w = nullptr, *mpPmr1_c = nullptr, *mpPmr1_Zc = nullptr,
            *mpPmr1_J = nullptr;
 

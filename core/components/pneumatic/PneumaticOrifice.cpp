@@ -22,25 +22,15 @@ void PneumaticOrifice::configure()
 
 void PneumaticOrifice::initialize()
 {
-    mpPp1_p = getSafeNodeDataPtr(mpPp1, NodePneumatic::Pressure);
-    mpPp1_qm = getSafeNodeDataPtr(mpPp1, NodePneumatic::MassFlow);
-    mpPp1_T = getSafeNodeDataPtr(mpPp1, NodePneumatic::Temperature);
-    mpPp1_dE = getSafeNodeDataPtr(mpPp1, NodePneumatic::EnergyFlow);
-    mpPp1_c = getSafeNodeDataPtr(mpPp1, NodePneumatic::WaveVariable);
-    mpPp1_Zc = getSafeNodeDataPtr(mpPp1, NodePneumatic::CharImpedance);
-    mpPp2_p = getSafeNodeDataPtr(mpPp2, NodePneumatic::Pressure);
-    mpPp2_qm = getSafeNodeDataPtr(mpPp2, NodePneumatic::MassFlow);
-    mpPp2_T = getSafeNodeDataPtr(mpPp2, NodePneumatic::Temperature);
-    mpPp2_dE = getSafeNodeDataPtr(mpPp2, NodePneumatic::EnergyFlow);
-    mpPp2_c = getSafeNodeDataPtr(mpPp2, NodePneumatic::WaveVariable);
-    mpPp2_Zc = getSafeNodeDataPtr(mpPp2, NodePneumatic::CharImpedance);
+    mPp1.bind(mpPp1);
+    mPp2.bind(mpPp2);
 
     // Start values form the first Newton guess.
-    mP1 = *mpPp1_p;
-    mDE1 = *mpPp1_dE;
-    mP2 = *mpPp2_p;
-    mQm2 = *mpPp2_qm;
-    mDE2 = *mpPp2_dE;
+    mP1 = *mPp1.p;
+    mDE1 = *mPp1.dE;
+    mP2 = *mPp2.p;
+    mQm2 = *mPp2.qm;
+    mDE2 = *mPp2.dE;
     mQma = *mpQma;
     mQmb = *mpQmb;
 
@@ -54,8 +44,8 @@ void PneumaticOrifice::initialize()
 
 void PneumaticOrifice::simulateOneTimestep()
 {
-    const double T1 = *mpPp1_T, c1 = *mpPp1_c, Zc1 = *mpPp1_Zc;
-    const double T2 = *mpPp2_T, c2 = *mpPp2_c, Zc2 = *mpPp2_Zc;
+    const double T1 = *mPp1.T, c1 = *mPp1.c, Zc1 = *mPp1.Zc;
+    const double T2 = *mPp2.T, c2 = *mPp2.c, Zc2 = *mPp2.Zc;
     const double A0 = *mpA0;
     const double Cd = mCd, R = mR, cv = mCv, eps = mEps;
 
@@ -156,12 +146,12 @@ void PneumaticOrifice::simulateOneTimestep()
     mP1 = mX[5];
     mP2 = mX[6];
 
-    *mpPp1_p = mP1;
-    *mpPp1_qm = -mQm2;
-    *mpPp1_dE = mDE1;
-    *mpPp2_p = mP2;
-    *mpPp2_qm = mQm2;
-    *mpPp2_dE = mDE2;
+    *mPp1.p = mP1;
+    *mPp1.qm = -mQm2;
+    *mPp1.dE = mDE1;
+    *mPp2.p = mP2;
+    *mPp2.qm = mQm2;
+    *mPp2.dE = mDE2;
     *mpQma = mQma;
     *mpQmb = mQmb;
 }

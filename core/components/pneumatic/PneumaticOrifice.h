@@ -1,5 +1,6 @@
 #pragma once
 #include "core/Component.h"
+#include "core/components/pneumatic/PneumaticPortData.h"
 #include "core/numerics/EquationSystemSolver.h"
 #include "core/numerics/Matrix.h"
 
@@ -17,10 +18,7 @@ private:
     Port *mpPp1 = nullptr, *mpPp2 = nullptr;
     double *mpA0 = nullptr, *mpCd = nullptr, *mpR = nullptr, *mpCv = nullptr, *mpEps = nullptr;
     double *mpQma = nullptr, *mpQmb = nullptr;
-    double *mpPp1_p = nullptr, *mpPp1_qm = nullptr, *mpPp1_T = nullptr, *mpPp1_dE = nullptr, *mpPp1_c = nullptr,
-           *mpPp1_Zc = nullptr;
-    double *mpPp2_p = nullptr, *mpPp2_qm = nullptr, *mpPp2_T = nullptr, *mpPp2_dE = nullptr, *mpPp2_c = nullptr,
-           *mpPp2_Zc = nullptr;
+    PneumaticPortData mPp1, mPp2;
 
     // Frozen inputs.
     double mCd = 0.0, mR = 0.0, mCv = 0.0, mEps = 0.0;

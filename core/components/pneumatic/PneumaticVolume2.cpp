@@ -21,23 +21,13 @@ void PneumaticVolume2::configure()
 
 void PneumaticVolume2::initialize()
 {
-    mpPp1_p = getSafeNodeDataPtr(mpPp1, NodePneumatic::Pressure);
-    mpPp1_qm = getSafeNodeDataPtr(mpPp1, NodePneumatic::MassFlow);
-    mpPp1_T = getSafeNodeDataPtr(mpPp1, NodePneumatic::Temperature);
-    mpPp1_dE = getSafeNodeDataPtr(mpPp1, NodePneumatic::EnergyFlow);
-    mpPp1_c = getSafeNodeDataPtr(mpPp1, NodePneumatic::WaveVariable);
-    mpPp1_Zc = getSafeNodeDataPtr(mpPp1, NodePneumatic::CharImpedance);
-    mpPp2_p = getSafeNodeDataPtr(mpPp2, NodePneumatic::Pressure);
-    mpPp2_qm = getSafeNodeDataPtr(mpPp2, NodePneumatic::MassFlow);
-    mpPp2_T = getSafeNodeDataPtr(mpPp2, NodePneumatic::Temperature);
-    mpPp2_dE = getSafeNodeDataPtr(mpPp2, NodePneumatic::EnergyFlow);
-    mpPp2_c = getSafeNodeDataPtr(mpPp2, NodePneumatic::WaveVariable);
-    mpPp2_Zc = getSafeNodeDataPtr(mpPp2, NodePneumatic::CharImpedance);
+    mPp1.bind(mpPp1);
+    mPp2.bind(mpPp2);
 
-    const double p1 = *mpPp1_p, qm1 = *mpPp1_qm, T1 = *mpPp1_T;
-    const double p2 = *mpPp2_p, qm2 = *mpPp2_qm, T2 = *mpPp2_T;
-    mC1 = *mpPp1_c;
-    mC2 = *mpPp2_c;
+    const double p1 = *mPp1.p, qm1 = *mPp1.qm, T1 = *mPp1.T;
+    const double p2 = *mPp2.p, qm2 = *mPp2.qm, T2 = *mPp2.T;
+    mC1 = *mPp1.c;
+    mC2 = *mPp2.c;
     // Hopsan quirk: all inputs are sampled only here.
     mV = *mpV;
     mR = *mpR;
@@ -57,8 +47,8 @@ void PneumaticVolume2::initialize()
 
 void PneumaticVolume2::simulateOneTimestep()
 {
-    const double p1 = *mpPp1_p, qm1 = *mpPp1_qm, dE1 = *mpPp1_dE;
-    const double p2 = *mpPp2_p, qm2 = *mpPp2_qm, dE2 = *mpPp2_dE;
+    const double p1 = *mPp1.p, qm1 = *mPp1.qm, dE1 = *mPp1.dE;
+    const double p2 = *mPp2.p, qm2 = *mPp2.qm, dE2 = *mPp2.dE;
     const double dt = mTimestep, V = mV, R = mR, cv = mCv, ka = mKa, T0 = mT0, pmin = mPmin;
 
     const double pav = pmin / 2.0 + (p1 + p2 - pmin) * onPositive(p1 + p2 - pmin) / 2.0;
@@ -81,12 +71,12 @@ void PneumaticVolume2::simulateOneTimestep()
 
     mDelayed1 = (-2.0 * mMass - dt * qm1 - dt * qm2) / 2.0;
 
-    *mpPp1_T = Tav;
-    *mpPp1_c = mC1;
-    *mpPp1_Zc = ZcEP;
-    *mpPp2_T = Tav;
-    *mpPp2_c = mC2;
-    *mpPp2_Zc = ZcEP;
+    *mPp1.T = Tav;
+    *mPp1.c = mC1;
+    *mPp1.Zc = ZcEP;
+    *mPp2.T = Tav;
+    *mPp2.c = mC2;
+    *mPp2.Zc = ZcEP;
     *mpMass = mMass;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/Component.h"
+#include "core/components/pneumatic/PneumaticPortData.h"
 
 namespace tlmhub {
 
@@ -17,10 +18,7 @@ private:
     double* mpMass = nullptr;
     double mV = 0.0, mR = 0.0, mCv = 0.0, mKa = 0.0, mT0 = 0.0, mPmin = 0.0, mFak = 0.0;
     double mMass = 0.0, mC1 = 0.0, mC2 = 0.0, mDelayed1 = 0.0;
-    double *mpPp1_p = nullptr, *mpPp1_qm = nullptr, *mpPp1_T = nullptr, *mpPp1_dE = nullptr, *mpPp1_c = nullptr,
-           *mpPp1_Zc = nullptr;
-    double *mpPp2_p = nullptr, *mpPp2_qm = nullptr, *mpPp2_T = nullptr, *mpPp2_dE = nullptr, *mpPp2_c = nullptr,
-           *mpPp2_Zc = nullptr;
+    PneumaticPortData mPp1, mPp2;
 };
 
 } // namespace tlmhub
