@@ -2,7 +2,8 @@
 # Install the Debian 12 packages tlmhub builds against (skips what is already there).
 set -euo pipefail
 packages=(build-essential cmake pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev)
+          libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
+          libsqlitecpp-dev libsodium-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

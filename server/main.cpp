@@ -1,0 +1,2 @@
+// Placeholder until the HTTP layer lands.
+int main() { return 0; }
