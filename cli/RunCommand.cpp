@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 #include "cli/Options.h"
 
+#include "core/ResultTable.h"
 #include "core/Results.h"
 #include "core/hmf/HmfLoader.h"
 
@@ -19,24 +20,9 @@ bool writeCsv(const System& root, const std::string& path, std::string& error)
         error = "cannot write '" + path + "'";
         return false;
     }
-    const std::vector<LoggedVariable> vars = listLoggedVariables(root);
-    std::vector<std::vector<double>> columns;
-    columns.reserve(vars.size());
-    for (const auto& v : vars) columns.push_back(loggedData(*v.port, v.slot, v.count));
-    std::fprintf(f, "time");
-    for (const auto& v : vars) std::fprintf(f, ",%s", v.fullName.c_str());
-    std::fprintf(f, "\n");
-    const auto& time = root.logTime();
-    const std::size_t rows = root.numLoggedSamples();
-    for (std::size_t r = 0; r < rows; ++r) {
-        std::fprintf(f, "%.17g", time[r]);
-        for (const auto& col : columns) {
-            if (r < col.size()) std::fprintf(f, ",%.17g", col[r]);
-            else std::fprintf(f, ",");
-        }
-        std::fprintf(f, "\n");
-    }
-    const bool ok = std::fclose(f) == 0;
+    const std::string csv = ResultTable::fromSystem(root).toCsv();
+    bool ok = std::fwrite(csv.data(), 1, csv.size(), f) == csv.size();
+    ok = std::fclose(f) == 0 && ok;
     if (!ok) error = "error writing '" + path + "'";
     return ok;
 }

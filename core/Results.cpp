@@ -38,6 +38,7 @@ void collect(const System& sys, const std::string& prefix, std::vector<LoggedVar
                 v.port = p;
                 v.slot = static_cast<int>(i);
                 v.count = count;
+                v.owner = &sys;
                 out.push_back(std::move(v));
             }
         }
@@ -75,6 +76,20 @@ std::vector<double> loggedData(const Port& port, int slot, std::size_t count)
     out.resize(count);
     for (std::size_t i = 0; i < count; ++i) out[i] = n->logData[i * sz + slot];
     return out;
+}
+
+void appendLoggedData(const Port& port, int slot, std::size_t from, std::size_t to,
+                      std::vector<double>& out)
+{
+    const Node* n = port.node();
+    if (!n || n->logData.empty()) return;
+    const std::size_t sz = n->size();
+    const std::size_t slots = n->logData.size() / sz;
+    if (to > slots) to = slots;
+    if (from >= to) return;
+    out.reserve(out.size() + (to - from));
+    const double* base = n->logData.data() + slot;
+    for (std::size_t i = from; i < to; ++i) out.push_back(base[i * sz]);
 }
 
 bool findNonFinite(const System& root, std::string& where)

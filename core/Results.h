@@ -13,6 +13,8 @@ struct LoggedVariable {
     const Port* port = nullptr;
     int slot = 0;
     std::size_t count = 0;  // samples written (log counter of the component's system)
+    const System* owner = nullptr;  // the component's system; owner->numLoggedSamples() is
+                                    // the live count while a run is going on
 };
 
 // Every logged port variable in HopsanCLI's export order: sub-components by name, ports by
@@ -22,6 +24,11 @@ std::vector<LoggedVariable> listLoggedVariables(const System& root);
 // Data of a logged port variable (empty if not logged) and its time vector.
 std::vector<double> loggedData(const Port& port, int slot, std::size_t count);
 const std::vector<double>* loggedTime(const Port& port);
+// Samples [from, to) of a logged port variable appended to `out`, read straight from the log
+// buffer (for streaming a run in progress without copying what was already sent). The range
+// is clipped to the buffer.
+void appendLoggedData(const Port& port, int slot, std::size_t from, std::size_t to,
+                      std::vector<double>& out);
 
 // First non-finite value (NaN or infinity) among the logged data and the current node values;
 // false if everything is finite, else true with `where` naming the variable (and time).

@@ -1,2 +1,78 @@
-// Placeholder until the HTTP layer lands.
-int main() { return 0; }
+// tlmhub-server: the simulation service. Parses the start-up options, opens the data
+// directory, seeds the examples, then serves HTTP and WebSocket until SIGTERM or SIGINT.
+#include "server/app/ServerOptions.h"
+#include "server/app/TlmhubApp.h"
+#include "server/http/Listener.h"
+
+#include "core/ComponentLibrary.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+
+#include <iostream>
+#include <thread>
+
+using namespace tlmhub::server;
+namespace net = boost::asio;
+
+int main(int argc, char** argv)
+{
+    ServerOptions options;
+    std::string error, help;
+    if (!parseServerOptions(argc, argv, options, error, help)) {
+        std::cerr << "tlmhub-server: " << error << "\n";
+        return 2;
+    }
+    if (!help.empty()) {
+        std::cout << help;
+        return 0;
+    }
+    // Component libraries run code with the server's rights: only this start-up flag,
+    // given by whoever starts the server, loads them.
+    for (const std::string& lib : options.componentLibs) {
+        std::vector<std::string> added;
+        if (!tlmhub::loadComponentLibrary(lib, added, error)) {
+            std::cerr << "tlmhub-server: " << error << "\n";
+            return 1;
+        }
+        std::cout << "loaded " << added.size() << " component types from " << lib << "\n";
+    }
+    try {
+        TlmhubApp app(options);
+        std::string seedLog;
+        if (const auto generated = app.bootstrap(seedLog))
+            std::cout << "created user 'admin' with password: " << *generated
+                      << "\n(shown once; set TLMHUB_ADMIN_PASSWORD on first start to choose it)\n";
+        if (!seedLog.empty()) std::cout << seedLog;
+        if (app.interruptedAtStart() > 0)
+            std::cout << app.interruptedAtStart() << " job(s) were running at the last stop; marked interrupted\n";
+
+        net::io_context ioc;
+        const auto address = net::ip::make_address(options.host);
+        auto listener = std::make_shared<Listener>(ioc, net::ip::tcp::endpoint(address, options.port), app,
+                                                   TransportLimits{options.maxBodyBytes, options.wsQueueLimit});
+        listener->run();
+        app.startJobs();
+
+        net::signal_set signals(ioc, SIGINT, SIGTERM);
+        signals.async_wait([&](const boost::system::error_code&, int) {
+            listener->stop();
+            app.shutdown();   // running jobs stop and are marked interrupted before we exit
+            ioc.stop();
+        });
+
+        const auto endpoint = listener->localEndpoint();
+        std::cout << "tlmhub-server listening on http://" << endpoint.address().to_string() << ":"
+                  << endpoint.port() << std::endl;
+
+        std::vector<std::thread> threads;
+        for (unsigned i = 1; i < options.ioThreads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
+        ioc.run();
+        for (auto& t : threads) t.join();
+        std::cout << "tlmhub-server stopped" << std::endl;
+    } catch (const std::exception& e) {
+        std::cerr << "tlmhub-server: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

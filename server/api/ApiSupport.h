@@ -1,0 +1,79 @@
+#pragma once
+// What every REST route handler works with: the services, the authenticated call, and
+// helpers for JSON bodies and the protocol's error shape.
+#include "server/auth/LoginRateLimiter.h"
+#include "server/auth/TokenService.h"
+#include "server/http/HttpTypes.h"
+#include "server/http/Router.h"
+#include "server/jobs/JobQueue.h"
+#include "server/jobs/StreamHub.h"
+#include "server/store/ModelStore.h"
+#include "server/store/UserStore.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct ServerOptions;
+
+// The long-lived objects of a running server (owned by TlmhubApp).
+struct Services {
+    const ServerOptions& options;
+    UserStore& users;
+    ModelStore& models;
+    TokenService& tokens;
+    LoginRateLimiter& loginLimiter;     // failures per user name
+    LoginRateLimiter& addressLimiter;   // failures per client address (looser: a lab shares one)
+    JobQueue& queue;
+    StreamHub& streams;
+};
+
+struct Call {
+    const Request& request;
+    const std::string& clientAddress;
+    RouteParams params;
+    std::optional<User> user;   // set on every route that needs authentication
+    std::string token;          // the bearer token it was authenticated with
+    const User& who() const { return *user; }
+};
+
+using RouteHandler = std::function<Response(Services&, Call&)>;
+
+struct RouteSpec {
+    http::verb method;
+    std::string pattern;   // below /api/v1
+    bool needsAuth;
+    RouteHandler handler;
+};
+
+Response jsonResponse(http::status status, const nlohmann::json& body);
+Response textResponse(http::status status, std::string body, const std::string& contentType);
+Response noContent();
+Response apiError(http::status status, const std::string& code, const std::string& message);
+
+// Parses the body as JSON and checks it against the protocol definition `definition`
+// (empty: no schema check). On failure returns false with the error response in `error`.
+bool readJsonBody(const Call& call, const std::string& definition, nlohmann::json& body,
+                  Response& error);
+std::optional<std::int64_t> parseId(const std::string& text);
+bool isXmlRequest(const Request& request);
+bool wantsXml(const Call& call);
+
+// Route tables, one per resource.
+void addAuthRoutes(std::vector<RouteSpec>& routes);
+void addUserRoutes(std::vector<RouteSpec>& routes);
+void addModelRoutes(std::vector<RouteSpec>& routes);
+void addJobRoutes(std::vector<RouteSpec>& routes);
+void addCatalogueRoutes(std::vector<RouteSpec>& routes);
+
+// Summaries as the API shows them.
+nlohmann::json userJson(const User& user);
+nlohmann::json modelSummaryJson(const ModelSummary& summary);
+// A model the caller may read, or nullopt (also when it does not exist: 404 either way).
+std::optional<ModelSummary> readableModel(Services& s, const User& who, std::int64_t id);
+
+} // namespace tlmhub::server

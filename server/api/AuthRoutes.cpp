@@ -1,0 +1,66 @@
+// POST /auth/login, POST /auth/logout, GET /auth/me, POST /auth/password
+#include "server/api/ApiSupport.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+Response login(Services& s, Call& call)
+{
+    nlohmann::json body;
+    Response error;
+    if (!readJsonBody(call, "LoginRequest", body, error)) return error;
+    const std::string username = body["username"];
+    // Failures are counted per user name and per address, so guessing one account's
+    // password and spraying one password over many accounts are both slowed down.
+    const std::string userKey = "user:" + username;
+    const std::string addressKey = "addr:" + call.clientAddress;
+    if (!s.loginLimiter.allowed(userKey) || !s.addressLimiter.allowed(addressKey))
+        return apiError(http::status::too_many_requests, "rate_limited",
+                        "too many failed logins; try again later");
+    const auto user = s.users.authenticate(username, body["password"]);
+    if (!user) {
+        s.loginLimiter.recordFailure(userKey);
+        s.addressLimiter.recordFailure(addressKey);
+        return apiError(http::status::unauthorized, "unauthorized", "wrong user name or password");
+    }
+    s.loginLimiter.recordSuccess(userKey);
+    const auto issued = s.tokens.issue(*user);
+    return jsonResponse(http::status::ok, {{"token", issued.token},
+                                           {"expires_at", issued.expiresAt},
+                                           {"user", userJson(*user)}});
+}
+
+Response logout(Services& s, Call& call)
+{
+    s.tokens.revoke(call.token);
+    return noContent();
+}
+
+Response me(Services&, Call& call)
+{
+    return jsonResponse(http::status::ok, userJson(call.who()));
+}
+
+Response changePassword(Services& s, Call& call)
+{
+    nlohmann::json body;
+    Response error;
+    if (!readJsonBody(call, "PasswordChange", body, error)) return error;
+    std::string why;
+    if (!s.users.changePassword(call.who().id, body["old_password"], body["new_password"], why))
+        return apiError(http::status::bad_request, "bad_request", why);
+    return noContent();
+}
+
+} // namespace
+
+void addAuthRoutes(std::vector<RouteSpec>& routes)
+{
+    routes.push_back({http::verb::post, "/auth/login", false, login});
+    routes.push_back({http::verb::post, "/auth/logout", true, logout});
+    routes.push_back({http::verb::get, "/auth/me", true, me});
+    routes.push_back({http::verb::post, "/auth/password", true, changePassword});
+}
+
+} // namespace tlmhub::server

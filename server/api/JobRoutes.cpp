@@ -1,0 +1,146 @@
+// /jobs: submit, list, status, cancel, re-run, results as CSV or JSON.
+#include "server/api/ApiSupport.h"
+
+#include "server/auth/AccessPolicy.h"
+
+#include <sstream>
+
+namespace tlmhub::server {
+
+namespace {
+
+http::status statusForSubmitError(const std::string& code)
+{
+    if (code == "limit_exceeded") return http::status::too_many_requests;
+    if (code == "not_found") return http::status::not_found;
+    return http::status::bad_request;
+}
+
+// A job the caller may see: own, or any for an admin, or a student's for a teacher.
+std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::string& idText)
+{
+    const auto id = parseId(idText);
+    if (!id) return std::nullopt;
+    auto job = s.queue.store().info(*id);
+    if (!job) return std::nullopt;
+    if (job->ownerId == who.id || who.role == "admin") return job;
+    if (who.role == "teacher") {
+        const auto owner = s.users.find(job->ownerId);
+        if (owner && owner->role == "user") return job;
+    }
+    return std::nullopt;
+}
+
+Response submitJob(Services& s, Call& call)
+{
+    nlohmann::json body;
+    Response error;
+    if (!readJsonBody(call, "JobRequest", body, error)) return error;
+    JobRequest request;
+    request.ownerId = call.who().id;
+    if (body.contains("model_id")) {
+        const auto model = readableModel(s, call.who(), body["model_id"].get<std::int64_t>());
+        if (!model) return apiError(http::status::not_found, "not_found", "no such model");
+        request.modelId = model->id;
+        request.hmf = s.models.hmf(model->id).value_or("");
+    } else if (body.contains("hmf")) {
+        request.hmf = body["hmf"];
+    } else {
+        return apiError(http::status::bad_request, "bad_request", "give model_id or hmf");
+    }
+    if (body.contains("parameters")) {
+        for (const auto& [name, value] : body["parameters"].items())
+            request.parameters[name] = value.is_string() ? value.get<std::string>() : value.dump();
+    }
+    if (body.contains("start")) request.settings.start = body["start"].get<double>();
+    if (body.contains("step")) request.settings.step = body["step"].get<double>();
+    if (body.contains("stop")) request.settings.stop = body["stop"].get<double>();
+    if (body.contains("log_samples")) request.settings.logSamples = body["log_samples"].get<std::size_t>();
+    const auto submitted = s.queue.submit(request);
+    if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
+    return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
+}
+
+Response listJobs(Services& s, Call& call)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const JobInfo& job : s.queue.store().listForOwner(call.who().id)) out.push_back(job.toJson());
+    return jsonResponse(http::status::ok, out);
+}
+
+Response getJob(Services& s, Call& call)
+{
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    return jsonResponse(http::status::ok, job->toJson());
+}
+
+Response cancelJob(Services& s, Call& call)
+{
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    if (job->ownerId != call.who().id && call.who().role != "admin")
+        return apiError(http::status::forbidden, "forbidden", "only the owner cancels a job");
+    s.queue.cancel(job->id);
+    return jsonResponse(http::status::ok, s.queue.store().info(job->id)->toJson());
+}
+
+Response rerunJob(Services& s, Call& call)
+{
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job || job->ownerId != call.who().id)
+        return apiError(http::status::not_found, "not_found", "no such job of yours");
+    const auto request = s.queue.store().request(job->id);
+    if (!request) return apiError(http::status::not_found, "not_found", "the job's input is gone");
+    const auto submitted = s.queue.submit(*request);
+    if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
+    return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
+}
+
+std::vector<std::string> splitList(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+Response jobResults(Services& s, Call& call)
+{
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    if (job->state != JobState::Done)
+        return apiError(http::status::conflict, "conflict",
+                        std::string("the job has no results (state ") + jobStateName(job->state) + ")");
+    const auto table = s.queue.store().result(job->id);
+    if (!table) return apiError(http::status::not_found, "not_found", "the job's results are gone");
+    const auto& q = call.params.query;
+    const std::vector<std::string> variables = q.count("variables") ? splitList(q.at("variables")) : std::vector<std::string>{};
+    for (const std::string& v : variables)
+        if (!table->hasColumn(v))
+            return apiError(http::status::bad_request, "bad_request", "no logged variable '" + v + "'");
+    const std::string format = q.count("format") ? q.at("format") : "json";
+    if (format == "csv") {
+        Response res = textResponse(http::status::ok, table->toCsv(variables), "text/csv");
+        res.set(http::field::content_disposition,
+                "attachment; filename=\"job-" + std::to_string(job->id) + ".csv\"");
+        return res;
+    }
+    if (format != "json") return apiError(http::status::bad_request, "bad_request", "format must be csv or json");
+    return jsonResponse(http::status::ok, table->toJson(variables));
+}
+
+} // namespace
+
+void addJobRoutes(std::vector<RouteSpec>& routes)
+{
+    routes.push_back({http::verb::post, "/jobs", true, submitJob});
+    routes.push_back({http::verb::get, "/jobs", true, listJobs});
+    routes.push_back({http::verb::get, "/jobs/{id}", true, getJob});
+    routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelJob});
+    routes.push_back({http::verb::post, "/jobs/{id}/rerun", true, rerunJob});
+    routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults});
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,137 @@
+// /models: list, create (upload .hmf, JSON, duplicate), read (.hmf or JSON), update, delete.
+#include "server/api/ApiSupport.h"
+
+#include "server/auth/AccessPolicy.h"
+#include "server/edit/ModelJson.h"
+
+#include "core/hmf/HmfLoader.h"
+#include "core/hmf/HmfSaver.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+// Loads `hmf` to check it; on failure `error` holds the 400 response naming the problem.
+std::unique_ptr<System> checkedModel(const std::string& hmf, Response& error)
+{
+    LoadedModel loaded = loadHmfString(hmf, "", "uploaded model");
+    if (loaded.hasErrors() || !loaded.root) {
+        error = apiError(http::status::bad_request, "invalid_model",
+                         loaded.firstError().empty() ? "the model does not load" : loaded.firstError());
+        return nullptr;
+    }
+    return std::move(loaded.root);
+}
+
+std::string emptyModelHmf(const std::string& name)
+{
+    System root;
+    root.setNameRaw(sanitizeName(name));
+    return saveHmfString(root);
+}
+
+Response listModels(Services& s, Call& call)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const ModelSummary& m : s.models.listVisibleTo(call.who())) out.push_back(modelSummaryJson(m));
+    return jsonResponse(http::status::ok, out);
+}
+
+Response created(Services& s, std::int64_t id)
+{
+    return jsonResponse(http::status::created, modelSummaryJson(*s.models.summary(id)));
+}
+
+Response createModel(Services& s, Call& call)
+{
+    Response error;
+    if (isXmlRequest(call.request)) {
+        const std::string& hmf = call.request.body();
+        auto root = checkedModel(hmf, error);
+        if (!root) return error;
+        const auto nameParam = call.params.query.find("name");
+        const std::string name = nameParam != call.params.query.end() && !nameParam->second.empty()
+                                     ? nameParam->second : root->name();
+        return created(s, s.models.create(call.who().id, name, hmf, false));
+    }
+    nlohmann::json body;
+    if (!readJsonBody(call, "ModelCreate", body, error)) return error;
+    const std::string name = body["name"];
+    if (body.contains("copy_of")) {
+        const auto source = readableModel(s, call.who(), body["copy_of"].get<std::int64_t>());
+        if (!source) return apiError(http::status::not_found, "not_found", "no such model to copy");
+        return created(s, s.models.create(call.who().id, name, *s.models.hmf(source->id), false));
+    }
+    if (body.contains("hmf")) {
+        const std::string hmf = body["hmf"];
+        if (!checkedModel(hmf, error)) return error;
+        return created(s, s.models.create(call.who().id, name, hmf, false));
+    }
+    return created(s, s.models.create(call.who().id, name, emptyModelHmf(name), false));
+}
+
+Response getModel(Services& s, Call& call)
+{
+    const auto id = parseId(call.params.path["id"]);
+    const auto summary = id ? readableModel(s, call.who(), *id) : std::nullopt;
+    if (!summary) return apiError(http::status::not_found, "not_found", "no such model");
+    const std::string hmf = s.models.hmf(summary->id).value_or("");
+    if (wantsXml(call)) {
+        Response res = textResponse(http::status::ok, hmf, "application/xml");
+        res.set(http::field::content_disposition, "attachment; filename=\"" + summary->name + ".hmf\"");
+        return res;
+    }
+    nlohmann::json out = modelSummaryJson(*summary);
+    out["writable"] = canWrite(call.who(), summary->ownerId, summary->isExample);
+    LoadedModel loaded = loadHmfString(hmf, "", summary->name);
+    if (loaded.root) out["model"] = modelToJson(*loaded.root, summary->name);
+    else out["load_error"] = loaded.firstError();
+    return jsonResponse(http::status::ok, out);
+}
+
+Response updateModel(Services& s, Call& call)
+{
+    const auto id = parseId(call.params.path["id"]);
+    const auto summary = id ? readableModel(s, call.who(), *id) : std::nullopt;
+    if (!summary) return apiError(http::status::not_found, "not_found", "no such model");
+    if (!canWrite(call.who(), summary->ownerId, summary->isExample))
+        return apiError(http::status::forbidden, "forbidden",
+                        "this model is read-only for you (duplicate it to change it)");
+    Response error;
+    std::optional<std::string> name, hmf;
+    if (isXmlRequest(call.request)) {
+        hmf = call.request.body();
+    } else {
+        nlohmann::json body;
+        if (!readJsonBody(call, "ModelUpdate", body, error)) return error;
+        if (body.contains("name")) name = body["name"].get<std::string>();
+        if (body.contains("hmf")) hmf = body["hmf"].get<std::string>();
+    }
+    if (hmf && !checkedModel(*hmf, error)) return error;
+    s.models.update(summary->id, name, hmf);
+    return jsonResponse(http::status::ok, modelSummaryJson(*s.models.summary(summary->id)));
+}
+
+Response deleteModel(Services& s, Call& call)
+{
+    const auto id = parseId(call.params.path["id"]);
+    const auto summary = id ? readableModel(s, call.who(), *id) : std::nullopt;
+    if (!summary) return apiError(http::status::not_found, "not_found", "no such model");
+    if (!canWrite(call.who(), summary->ownerId, summary->isExample))
+        return apiError(http::status::forbidden, "forbidden", "this model is read-only for you");
+    s.models.remove(summary->id);
+    return noContent();
+}
+
+} // namespace
+
+void addModelRoutes(std::vector<RouteSpec>& routes)
+{
+    routes.push_back({http::verb::get, "/models", true, listModels});
+    routes.push_back({http::verb::post, "/models", true, createModel});
+    routes.push_back({http::verb::get, "/models/{id}", true, getModel});
+    routes.push_back({http::verb::put, "/models/{id}", true, updateModel});
+    routes.push_back({http::verb::delete_, "/models/{id}", true, deleteModel});
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,185 @@
+#include "server/api/WsApi.h"
+
+#include "server/auth/AccessPolicy.h"
+#include "server/protocol/SchemaValidator.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+WsApi::Reply failure(const std::string& code, const std::string& message)
+{
+    WsApi::Reply r;
+    r.ok = false;
+    r.code = code;
+    r.message = message;
+    return r;
+}
+
+WsApi::Reply success(nlohmann::json data = nlohmann::json::object())
+{
+    WsApi::Reply r;
+    r.data = std::move(data);
+    return r;
+}
+
+constexpr std::size_t kMaxStreamedVariables = 16;
+
+} // namespace
+
+WsApi::WsApi(Services& services, User user, std::shared_ptr<WebSocketSender> sender)
+    : mServices(services), mUser(std::move(user)), mSender(std::move(sender))
+{
+    mSender->send(nlohmann::json{{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}.dump(),
+                  false);
+}
+
+WsApi::~WsApi() = default;
+
+void WsApi::onClose()
+{
+    for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
+    mSubscriptions.clear();
+}
+
+void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
+{
+    mSender->send(nlohmann::json{{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}.dump(),
+                  false);
+}
+
+void WsApi::onMessage(const std::string& text)
+{
+    const nlohmann::json msg = nlohmann::json::parse(text, nullptr, false);
+    if (msg.is_discarded()) return sendError(nullptr, "bad_json", "message is not valid JSON");
+    const nlohmann::json id = msg.is_object() && msg.contains("id") ? msg["id"] : nlohmann::json();
+    std::string code, why;
+    if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
+    Reply reply;
+    try {
+        reply = dispatch(msg["type"].get<std::string>(), msg);
+    } catch (const std::exception& e) {
+        reply = failure("internal", e.what());
+    }
+    if (!reply.ok) {
+        mAfterReply = nullptr;
+        return sendError(id, reply.code, reply.message);
+    }
+    mSender->send(nlohmann::json{{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}.dump(), false);
+    // Stream events start after the reply, so a client always knows the job id first.
+    if (mAfterReply) std::exchange(mAfterReply, nullptr)();
+}
+
+WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
+{
+    if (type == "ping") return success();
+    if (type == "model.open") return openModel(msg);
+    if (type == "model.create") return createModel(msg);
+    if (type == "model.save") return saveModel(msg);
+    if (type == "simulate.start") return startSimulation(msg);
+    if (type == "simulate.stop") return stopSimulation(msg);
+    if (type == "log.subscribe") return subscribe(msg);
+    if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
+    return mSession.handle(msg);
+}
+
+WsApi::Reply WsApi::openModel(const nlohmann::json& msg)
+{
+    const auto model = readableModel(mServices, mUser, msg["model_id"].get<std::int64_t>());
+    if (!model) return failure("not_found", "no such model");
+    std::string error;
+    if (!mSession.openHmf(mServices.models.hmf(model->id).value_or(""), model->name, error))
+        return failure("invalid_model", error);
+    mModelId = model->id;
+    mModelName = model->name;
+    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
+    data["model_id"] = model->id;
+    data["writable"] = canWrite(mUser, model->ownerId, model->isExample);
+    return success(data);
+}
+
+WsApi::Reply WsApi::createModel(const nlohmann::json& msg)
+{
+    const std::string name = msg["name"];
+    mSession.createEmpty(name);
+    mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
+    mModelName = name;
+    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
+    data["model_id"] = *mModelId;
+    data["writable"] = true;
+    return success(data);
+}
+
+WsApi::Reply WsApi::saveModel(const nlohmann::json& msg)
+{
+    if (!mSession.isOpen() || !mModelId) return failure("not_open", "open or create a model first");
+    const auto model = mServices.models.summary(*mModelId);
+    const bool asCopy = msg.value("as_copy", false) || !model ||
+                        !canWrite(mUser, model->ownerId, model->isExample);
+    const std::string name = msg.value("name", mModelName);
+    if (asCopy) {
+        mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
+    } else {
+        mServices.models.update(*mModelId, name, mSession.saveHmf());
+    }
+    mModelName = name;
+    const auto saved = mServices.models.summary(*mModelId);
+    return success({{"model_id", *mModelId}, {"name", name}, {"updated_at", saved ? saved->updatedAt : 0},
+                    {"copied", asCopy}});
+}
+
+void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
+{
+    std::vector<std::string> variables;
+    if (msg.contains("variables"))
+        for (const auto& v : msg["variables"]) variables.push_back(v.get<std::string>());
+    if (variables.size() > kMaxStreamedVariables) variables.resize(kMaxStreamedVariables);
+    const double rate = msg.value("rate", 30.0);
+    // The sink runs on the job's thread: it only serialises and queues, never waits.
+    std::weak_ptr<WebSocketSender> weakSender = mSender;
+    mSubscriptions.push_back(mServices.streams.subscribe(jobId, variables, rate, [weakSender](nlohmann::json event) {
+        auto sender = weakSender.lock();
+        if (!sender) return;
+        const bool isFrame = event.value("type", "") == "event.frame";
+        if (isFrame) event["dropped"] = sender->droppedCount();
+        sender->send(event.dump(), isFrame);
+    }));
+}
+
+WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)
+{
+    if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
+    JobRequest request;
+    request.ownerId = mUser.id;
+    request.modelId = mModelId;
+    request.hmf = mSession.saveHmf();
+    if (msg.contains("start")) request.settings.start = msg["start"].get<double>();
+    if (msg.contains("step")) request.settings.step = msg["step"].get<double>();
+    if (msg.contains("stop")) request.settings.stop = msg["stop"].get<double>();
+    if (msg.contains("log_samples")) request.settings.logSamples = msg["log_samples"].get<std::size_t>();
+    const auto submitted = mServices.queue.submit(request);
+    if (!submitted.id) return failure(submitted.code, submitted.message);
+    const std::int64_t jobId = *submitted.id;
+    mAfterReply = [this, jobId, msg] { subscribeToJob(jobId, msg); };
+    return success({{"job_id", jobId}});
+}
+
+WsApi::Reply WsApi::stopSimulation(const nlohmann::json& msg)
+{
+    const std::int64_t jobId = msg["job_id"];
+    const auto job = mServices.queue.store().info(jobId);
+    if (!job || (job->ownerId != mUser.id && mUser.role != "admin")) return failure("not_found", "no such job");
+    mServices.queue.cancel(jobId);
+    return success({{"state", jobStateName(mServices.queue.store().info(jobId)->state)}});
+}
+
+WsApi::Reply WsApi::subscribe(const nlohmann::json& msg)
+{
+    const std::int64_t jobId = msg["job_id"];
+    const auto job = mServices.queue.store().info(jobId);
+    if (!job || (job->ownerId != mUser.id && mUser.role != "admin")) return failure("not_found", "no such job");
+    mAfterReply = [this, jobId, msg] { subscribeToJob(jobId, msg); };
+    return success();
+}
+
+} // namespace tlmhub::server

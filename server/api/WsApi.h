@@ -1,0 +1,44 @@
+#pragma once
+// The WebSocket side of the protocol (tlmhub.v1) for one connection: checks each message
+// against the schema, edits the connection's open model through an EditSession, runs it as
+// a job and streams the job's events back.
+#include "server/api/ApiSupport.h"
+#include "server/edit/EditSession.h"
+#include "server/http/HttpApplication.h"
+
+#include <functional>
+
+namespace tlmhub::server {
+
+class WsApi : public WebSocketHandler {
+public:
+    WsApi(Services& services, User user, std::shared_ptr<WebSocketSender> sender);
+    ~WsApi() override;
+
+    void onMessage(const std::string& text) override;
+    void onClose() override;
+
+    using Reply = EditSession::Result;
+
+private:
+    Reply dispatch(const std::string& type, const nlohmann::json& msg);
+    Reply openModel(const nlohmann::json& msg);
+    Reply createModel(const nlohmann::json& msg);
+    Reply saveModel(const nlohmann::json& msg);
+    Reply startSimulation(const nlohmann::json& msg);
+    Reply stopSimulation(const nlohmann::json& msg);
+    Reply subscribe(const nlohmann::json& msg);
+    void subscribeToJob(std::int64_t jobId, const nlohmann::json& msg);
+    void sendError(const nlohmann::json& id, const std::string& code, const std::string& message);
+
+    Services& mServices;
+    User mUser;
+    std::shared_ptr<WebSocketSender> mSender;
+    EditSession mSession;
+    std::optional<std::int64_t> mModelId;
+    std::string mModelName;
+    std::vector<std::uint64_t> mSubscriptions;
+    std::function<void()> mAfterReply;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,100 @@
+#include "server/app/ServerOptions.h"
+
+#include <charconv>
+#include <filesystem>
+
+namespace tlmhub::server {
+
+namespace {
+
+const char* kHelp =
+    "usage: tlmhub-server [options]\n"
+    "  --listen HOST:PORT       address to listen on (default 127.0.0.1:8080; port 0 = any free)\n"
+    "  --data-dir DIR           SQLite database directory (default ./data)\n"
+    "  --web-root DIR           built web app to serve (default web/dist)\n"
+    "  --examples-dir DIR       seed *.hmf found here as examples on first sight (repeatable;\n"
+    "                           default ./examples)\n"
+    "  --workers N              simulation worker threads (default: number of cores)\n"
+    "  --component-lib PATH     load extra components from a shared library (repeatable)\n"
+    "  --token-ttl SECONDS      login token lifetime (default 43200)\n"
+    "  --max-steps N            steps per job (default 50000000)\n"
+    "  --max-log-samples N      log samples per job (default 100000)\n"
+    "  --max-wall-seconds S     wall time per job (default 300)\n"
+    "  --max-running-per-user N jobs running at once per user (default 2)\n"
+    "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
+    "  --max-body-bytes N       request body limit (default 8388608)\n"
+    "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
+
+template <typename T>
+bool parseNumber(const std::string& text, T& out)
+{
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end;
+}
+
+} // namespace
+
+bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& error,
+                        std::string& helpText)
+{
+    bool examplesGiven = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--help" || flag == "-h") {
+            helpText = kHelp;
+            return true;
+        }
+        if (i + 1 >= argc) {
+            error = "option " + flag + " needs a value (see --help)";
+            return false;
+        }
+        const std::string value = argv[++i];
+        bool ok = true;
+        if (flag == "--listen") {
+            const auto colon = value.rfind(':');
+            ok = colon != std::string::npos && colon > 0 &&
+                 parseNumber(value.substr(colon + 1), o.port);
+            if (ok) o.host = value.substr(0, colon);
+        } else if (flag == "--data-dir") {
+            o.dataDir = value;
+        } else if (flag == "--web-root") {
+            o.webRoot = value;
+        } else if (flag == "--examples-dir") {
+            o.exampleDirs.push_back(value);
+            examplesGiven = true;
+        } else if (flag == "--component-lib") {
+            o.componentLibs.push_back(value);
+        } else if (flag == "--workers") {
+            ok = parseNumber(value, o.workers);
+        } else if (flag == "--token-ttl") {
+            long long s = 0;
+            ok = parseNumber(value, s);
+            o.tokenTtl = std::chrono::seconds(s);
+        } else if (flag == "--max-steps") {
+            ok = parseNumber(value, o.limits.maxSteps);
+        } else if (flag == "--max-log-samples") {
+            ok = parseNumber(value, o.limits.maxLogSamples);
+        } else if (flag == "--max-wall-seconds") {
+            ok = parseNumber(value, o.limits.maxWallSeconds);
+        } else if (flag == "--max-running-per-user") {
+            ok = parseNumber(value, o.limits.maxRunningPerUser);
+        } else if (flag == "--max-queued-per-user") {
+            ok = parseNumber(value, o.limits.maxQueuedPerUser);
+        } else if (flag == "--max-body-bytes") {
+            ok = parseNumber(value, o.maxBodyBytes);
+        } else {
+            error = "unknown option " + flag + " (see --help)";
+            return false;
+        }
+        if (!ok) {
+            error = "bad value '" + value + "' for " + flag;
+            return false;
+        }
+    }
+    if (!examplesGiven && std::filesystem::is_directory("examples"))
+        o.exampleDirs.push_back("examples");
+    return true;
+}
+
+} // namespace tlmhub::server

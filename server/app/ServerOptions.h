@@ -1,0 +1,32 @@
+#pragma once
+// Start-up options of tlmhub-server: command-line flags over embedded defaults.
+#include "server/jobs/Job.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct ServerOptions {
+    std::string host = "127.0.0.1";
+    unsigned short port = 8080;
+    std::string dataDir = "data";
+    std::string webRoot = "web/dist";
+    std::vector<std::string> exampleDirs;       // default: examples (if it exists)
+    std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only
+    unsigned workers = 0;                       // simulation threads; 0 = one per core
+    unsigned ioThreads = 4;                     // HTTP/WebSocket threads
+    std::chrono::seconds tokenTtl{12 * 3600};
+    std::size_t maxBodyBytes = 8u << 20;
+    std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before drop-oldest
+    int loginMaxFailures = 5;
+    std::chrono::seconds loginWindow{60};
+    JobLimits limits;
+};
+
+// Parses argv. On a bad flag returns false with `error`; `--help` sets `helpText`.
+bool parseServerOptions(int argc, char** argv, ServerOptions& options, std::string& error,
+                        std::string& helpText);
+
+} // namespace tlmhub::server

@@ -1,0 +1,130 @@
+#include "server/app/TlmhubApp.h"
+
+#include "server/api/WsApi.h"
+#include "server/app/Bootstrap.h"
+#include "server/http/HttpSession.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace tlmhub::server {
+
+namespace {
+const std::string kApiPrefix = "/api/v1";
+} // namespace
+
+TlmhubApp::TlmhubApp(const ServerOptions& options)
+    : mOptions(options), mStaticFiles(options.webRoot)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(mOptions.dataDir, ec);
+    if (ec) throw std::runtime_error("cannot create data directory '" + mOptions.dataDir + "': " + ec.message());
+    mDatabase = std::make_unique<Database>((std::filesystem::path(mOptions.dataDir) / "tlmhub.sqlite").string());
+    mUsers = std::make_unique<UserStore>(*mDatabase);
+    mModels = std::make_unique<ModelStore>(*mDatabase);
+    mTokens = std::make_unique<TokenService>(*mDatabase, mOptions.tokenTtl, *mUsers);
+    mLoginLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures, mOptions.loginWindow);
+    mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures * 10, mOptions.loginWindow);
+    mJobStore = std::make_unique<JobStore>(*mDatabase);
+    // A job still marked running was cut off by a crash or kill: say so, keep its input.
+    mInterruptedAtStart = mJobStore->markRunningInterrupted();
+    mStreams = std::make_unique<StreamHub>();
+    unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
+    mQueue = std::make_unique<JobQueue>(*mJobStore, *mStreams, mOptions.limits, workers);
+    mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter, *mQueue, *mStreams});
+
+    std::vector<RouteSpec> routes;
+    addCatalogueRoutes(routes);
+    addAuthRoutes(routes);
+    addUserRoutes(routes);
+    addModelRoutes(routes);
+    addJobRoutes(routes);
+    for (RouteSpec& r : routes) {
+        const bool needsAuth = r.needsAuth;
+        RouteHandler handler = std::move(r.handler);
+        mRouter.add(r.method, kApiPrefix + r.pattern,
+                    [this, needsAuth, handler](Services& s, Call& call) -> Response {
+                        if (needsAuth) {
+                            call.user = authenticate(call.request, call.params, call.token);
+                            if (!call.user)
+                                return apiError(http::status::unauthorized, "unauthorized",
+                                                "log in first: send 'Authorization: Bearer <token>'");
+                        }
+                        return handler(s, call);
+                    });
+    }
+}
+
+TlmhubApp::~TlmhubApp()
+{
+    shutdown();
+}
+
+std::optional<std::string> TlmhubApp::bootstrap(std::string& log)
+{
+    const auto generated = ensureAdmin(*mUsers, std::getenv("TLMHUB_ADMIN_PASSWORD"));
+    seedExamples(*mModels, *mUsers, mOptions.exampleDirs, log);
+    return generated;
+}
+
+void TlmhubApp::startJobs()
+{
+    mQueue->start();
+}
+
+void TlmhubApp::shutdown()
+{
+    if (mQueue) mQueue->shutdown();
+}
+
+std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteParams& params,
+                                            std::string& token)
+{
+    const std::string header(request[http::field::authorization]);
+    const std::string bearer = "Bearer ";
+    if (header.rfind(bearer, 0) == 0) token = header.substr(bearer.size());
+    else if (auto q = params.query.find("token"); q != params.query.end()) token = q->second;
+    else return std::nullopt;
+    return mTokens->validate(token);
+}
+
+Response TlmhubApp::handle(const Incoming& in)
+{
+    const std::string target(in.request.target());
+    if (target.rfind(kApiPrefix + "/", 0) != 0 && target != kApiPrefix)
+        return mStaticFiles.serve(in.request, parseRequestTarget(target).pathOnly);
+    const RouteHandler* handler = nullptr;
+    RouteParams params;
+    switch (mRouter.find(in.request.method(), target, handler, params)) {
+    case Router<RouteHandler>::Match::None:
+        return apiError(http::status::not_found, "not_found", "no API route " + params.pathOnly);
+    case Router<RouteHandler>::Match::WrongMethod:
+        return apiError(http::status::method_not_allowed, "bad_request",
+                        std::string(in.request.method_string()) + " is not allowed on " + params.pathOnly);
+    case Router<RouteHandler>::Match::Found:
+        break;
+    }
+    Call call{in.request, in.clientAddress, std::move(params), std::nullopt, {}};
+    return (*handler)(*mServices, call);
+}
+
+std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,
+                                                             std::shared_ptr<WebSocketSender> sender,
+                                                             Response& refusal)
+{
+    const RouteParams params = parseRequestTarget(std::string(in.request.target()));
+    if (params.pathOnly != kApiPrefix + "/ws") {
+        refusal = errorResponse(http::status::not_found, "not_found", "WebSocket endpoint is " + kApiPrefix + "/ws");
+        return nullptr;
+    }
+    std::string token;
+    const auto user = authenticate(in.request, params, token);
+    if (!user) {
+        refusal = errorResponse(http::status::unauthorized, "unauthorized",
+                                "log in first: connect with ?token=<token> or 'Authorization: Bearer'");
+        return nullptr;
+    }
+    return std::make_shared<WsApi>(*mServices, *user, std::move(sender));
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,53 @@
+#pragma once
+// The composition root of a running server: opens the database, builds the stores, the job
+// queue and the routes, and answers the transport's requests.
+#include "server/api/ApiSupport.h"
+#include "server/app/ServerOptions.h"
+#include "server/http/HttpApplication.h"
+#include "server/http/StaticFiles.h"
+#include "server/jobs/JobStore.h"
+#include "server/store/Database.h"
+
+#include <memory>
+
+namespace tlmhub::server {
+
+class TlmhubApp : public HttpApplication {
+public:
+    // Opens (or creates) the data directory; throws std::runtime_error naming the problem.
+    explicit TlmhubApp(const ServerOptions& options);
+    ~TlmhubApp() override;
+
+    // First start: creates 'admin' (returns a generated password to print once, if any)
+    // and seeds the example models.
+    std::optional<std::string> bootstrap(std::string& log);
+    void startJobs();
+    void shutdown();   // stops running jobs (marked interrupted) and the workers
+
+    Response handle(const Incoming& in) override;
+    std::shared_ptr<WebSocketHandler> acceptWebSocket(const Incoming& in,
+                                                      std::shared_ptr<WebSocketSender> sender,
+                                                      Response& refusal) override;
+    int interruptedAtStart() const { return mInterruptedAtStart; }
+
+private:
+    std::optional<User> authenticate(const Request& request, const RouteParams& params,
+                                     std::string& token);
+
+    ServerOptions mOptions;
+    std::unique_ptr<Database> mDatabase;
+    std::unique_ptr<UserStore> mUsers;
+    std::unique_ptr<ModelStore> mModels;
+    std::unique_ptr<TokenService> mTokens;
+    std::unique_ptr<LoginRateLimiter> mLoginLimiter;
+    std::unique_ptr<LoginRateLimiter> mAddressLimiter;
+    std::unique_ptr<JobStore> mJobStore;
+    std::unique_ptr<StreamHub> mStreams;
+    std::unique_ptr<JobQueue> mQueue;
+    std::unique_ptr<Services> mServices;
+    Router<RouteHandler> mRouter;
+    StaticFiles mStaticFiles;
+    int mInterruptedAtStart = 0;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,18 @@
+#pragma once
+// Who may see and change a model or job. The one place these rules live; stores and
+// handlers ask here instead of comparing roles themselves.
+//   admin:   everything
+//   owner:   own objects
+//   example: readable by everyone, changed by admin only
+//   teacher: may also read (not change) objects owned by role "user" (lab supervision)
+#include "server/auth/User.h"
+
+#include <cstdint>
+#include <string>
+
+namespace tlmhub::server {
+
+bool canRead(const User& who, std::int64_t ownerId, const std::string& ownerRole, bool isExample);
+bool canWrite(const User& who, std::int64_t ownerId, bool isExample);
+
+} // namespace tlmhub::server

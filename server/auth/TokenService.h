@@ -1,0 +1,40 @@
+#pragma once
+// Login sessions as bearer tokens. A token is 32 random bytes (hex); only its BLAKE2b hash
+// (crypto_generichash) is stored in table sessions, so a copy of the database does not hand
+// out live sessions. Tokens expire `ttl` after issue and can be revoked (logout).
+#include "server/auth/User.h"
+#include "server/store/Database.h"
+#include "server/store/UserStore.h"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace tlmhub::server {
+
+class TokenService {
+public:
+    // Needs the users table, so construct after `users`.
+    TokenService(Database& db, std::chrono::seconds ttl, UserStore& users);
+
+    struct Issued {
+        std::string token;
+        std::int64_t expiresAt;   // unix seconds
+    };
+
+    Issued issue(const User& user);
+    // The token's user, read fresh (a changed role applies at once); nullopt when unknown,
+    // revoked or expired (an expired row is deleted on the way).
+    std::optional<User> validate(const std::string& token);
+    void revoke(const std::string& token);
+    // Ends every session of one user, e.g. after a password change.
+    void revokeAllFor(std::int64_t userId);
+
+private:
+    Database& mDb;
+    std::chrono::seconds mTtl;
+    UserStore& mUsers;
+};
+
+} // namespace tlmhub::server

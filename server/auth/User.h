@@ -1,0 +1,23 @@
+#pragma once
+// A server account as every layer above the store sees it (never the password hash).
+#include <cstdint>
+#include <string>
+
+namespace tlmhub::server {
+
+struct User {
+    std::int64_t id = 0;
+    std::string username;
+    std::string role;   // "admin" | "teacher" | "user"
+};
+
+inline constexpr const char* kRoleAdmin = "admin";
+inline constexpr const char* kRoleTeacher = "teacher";
+inline constexpr const char* kRoleUser = "user";
+
+inline bool isValidRole(const std::string& role)
+{
+    return role == kRoleAdmin || role == kRoleTeacher || role == kRoleUser;
+}
+
+} // namespace tlmhub::server

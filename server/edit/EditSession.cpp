@@ -1,0 +1,383 @@
+#include "server/edit/EditSession.h"
+
+#include "core/ComponentFactory.h"
+#include "core/ParameterEvaluator.h"
+#include "core/hmf/HmfLoader.h"
+#include "core/hmf/HmfSaver.h"
+#include "core/hmf/PreservedXml.h"
+#include "server/edit/GuiLayout.h"
+#include "server/edit/ModelJson.h"
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+namespace tlmhub::server {
+
+namespace {
+
+using nlohmann::json;
+using Result = EditSession::Result;
+
+Result fail(std::string code, std::string message)
+{
+    Result r;
+    r.ok = false;
+    r.code = std::move(code);
+    r.message = std::move(message);
+    return r;
+}
+
+Result success(json data = json::object())
+{
+    Result r;
+    r.data = std::move(data);
+    return r;
+}
+
+// A parameter value as the model stores it: strings as given, numbers in the shortest
+// form that reads back as the same double.
+std::string valueString(const json& value)
+{
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_number_integer()) return std::to_string(value.get<std::int64_t>());
+    if (value.is_number()) return formatNumber(value.get<double>());
+    throw std::invalid_argument("value: expected string or number");
+}
+
+// The component part of each end of a preserved connection key "a.pa|b.pb". Names are
+// sanitised to [A-Za-z0-9_], so '.' and '|' cannot occur inside them.
+std::pair<std::string, std::string> keyComponents(const std::string& key)
+{
+    const std::size_t bar = key.find('|');
+    const std::string a = key.substr(0, bar);
+    const std::string b = bar == std::string::npos ? std::string() : key.substr(bar + 1);
+    return {a.substr(0, a.find('.')), b.substr(0, b.find('.'))};
+}
+
+std::string renameKeyEnd(const std::string& end, const std::string& oldName, const std::string& newName)
+{
+    const std::size_t dot = end.find('.');
+    if (end.substr(0, dot) != oldName) return end;
+    return newName + (dot == std::string::npos ? std::string() : end.substr(dot));
+}
+
+// Whether comp.port names a port visible in `system`; a system port is named twice.
+bool portExists(const System& system, const std::string& comp, const std::string& port)
+{
+    if (const Component* c = system.component(comp)) return c->port(port) != nullptr;
+    return comp == port && system.systemPort(comp) != nullptr;
+}
+
+ConnectionEnds endsOf(const json& request)
+{
+    const json& from = request.at("from");
+    const json& to = request.at("to");
+    return {from.at("component").get<std::string>(), from.at("port").get<std::string>(),
+            to.at("component").get<std::string>(), to.at("port").get<std::string>()};
+}
+
+void eraseConnectionExtras(System& system, const ConnectionEnds& e)
+{
+    system.preservedConnectionXml.erase(
+        preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
+    system.preservedConnectionXml.erase(
+        preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- open / save
+
+bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::string& error)
+{
+    try {
+        LoadedModel loaded = loadHmfString(hmf, std::string(), name.empty() ? "<model>" : name);
+        if (!loaded.root) {
+            error = loaded.firstError().empty() ? "the model could not be loaded" : loaded.firstError();
+            return false;
+        }
+        mRoot = std::move(loaded.root);
+        mLoadMessages = std::move(loaded.messages);
+        mName = name;
+        return true;
+    } catch (const std::exception& e) {
+        error = std::string("the model could not be loaded: ") + e.what();
+        return false;
+    }
+}
+
+void EditSession::createEmpty(const std::string& name)
+{
+    mRoot = std::make_unique<System>();
+    mRoot->setNameRaw(sanitizeName(name));
+    mLoadMessages.clear();
+    mName = name;
+}
+
+void EditSession::close()
+{
+    mRoot.reset();
+    mLoadMessages.clear();
+    mName.clear();
+}
+
+std::string EditSession::saveHmf() const
+{
+    return mRoot ? saveHmfString(*mRoot) : std::string();
+}
+
+json EditSession::modelJson() const
+{
+    return mRoot ? modelToJson(*mRoot, mName) : json();
+}
+
+// ---------------------------------------------------------------- dispatch
+
+Result EditSession::handle(const json& request)
+{
+    using Handler = Result (EditSession::*)(System&, const json&);
+    static const std::map<std::string, Handler> handlers = {
+        {"component.add", &EditSession::componentAdd},
+        {"component.remove", &EditSession::componentRemove},
+        {"component.rename", &EditSession::componentRename},
+        {"component.move", &EditSession::componentMove},
+        {"connect", &EditSession::connect},
+        {"disconnect", &EditSession::disconnect},
+        {"parameter.get", &EditSession::parameterGet},
+        {"parameter.set", &EditSession::parameterSet},
+        {"sysparam.set", &EditSession::sysparamSet},
+    };
+    try {
+        if (!request.is_object()) return fail("bad_request", "a request must be a JSON object");
+        const std::string type = request.at("type").get<std::string>();
+        auto handler = handlers.find(type);
+        if (type != "model.get" && handler == handlers.end())
+            return fail("unknown_message_type", "the model editor does not handle \"" + type + "\"");
+        if (!isOpen()) return fail("not_open", "no model is open");
+        if (type == "model.get") return modelGet();
+        Result failure;
+        System* system = targetSystem(request, failure);
+        if (!system) return failure;
+        return (this->*(handler->second))(*system, request);
+    } catch (const json::exception& e) {
+        return fail("bad_request", std::string("malformed request: ") + e.what());
+    } catch (const std::invalid_argument& e) {
+        return fail("bad_request", e.what());
+    } catch (const std::exception& e) {
+        return fail("internal", e.what());
+    }
+}
+
+System* EditSession::targetSystem(const json& request, Result& failure)
+{
+    System* system = mRoot.get();
+    auto path = request.find("system");
+    if (path == request.end() || path->is_null()) return system;
+    if (!path->is_array()) {
+        failure = fail("bad_request", "system: expected an array of subsystem names");
+        return nullptr;
+    }
+    for (const json& step : *path) {
+        const std::string name = step.get<std::string>();
+        System* sub = system->subsystem(name);
+        if (!sub) {
+            failure = fail("not_found", "no subsystem '" + name + "' in system '" + system->name() + "'");
+            return nullptr;
+        }
+        system = sub;
+    }
+    return system;
+}
+
+Result EditSession::modelGet()
+{
+    return success({{"model", modelJson()}});
+}
+
+// ---------------------------------------------------------------- components
+
+Result EditSession::componentAdd(System& system, const json& request)
+{
+    const std::string type = request.at("component_type").get<std::string>();
+    std::unique_ptr<Component> component;
+    if (type == "Subsystem" || type == "ConditionalSubsystem") {
+        auto sub = std::make_unique<System>();
+        if (type == "ConditionalSubsystem") sub->makeConditional();
+        sub->setNameRaw(type);
+        component = std::move(sub);
+    } else {
+        component = ComponentFactory::instance().create(type);
+    }
+    if (!component) return fail("unknown_component_type", "unknown component type '" + type + "'");
+    if (request.contains("name")) component->setNameRaw(request.at("name").get<std::string>());
+    // The pose goes where the loader keeps <hopsangui>, so saving writes it to the .hmf.
+    const Pose pose = request.contains("pose") ? request.at("pose").get<Pose>() : Pose{};
+    writePose(component->preservedXml, pose);
+    Component* added = component.get();
+    system.addComponent(std::move(component));
+    return success({{"component", componentToJson(*added)}});
+}
+
+Result EditSession::componentRemove(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    std::string error;
+    if (!system.removeComponent(name, error)) return fail("not_found", error);
+    // Drop what was kept for its connections and aliases, so a later component of the same
+    // name does not inherit them.
+    for (auto it = system.preservedConnectionXml.begin(); it != system.preservedConnectionXml.end();) {
+        auto [a, b] = keyComponents(it->first);
+        it = (a == name || b == name) ? system.preservedConnectionXml.erase(it) : std::next(it);
+    }
+    for (auto it = system.aliases.begin(); it != system.aliases.end();)
+        it = it->second.rfind(name + "#", 0) == 0 ? system.aliases.erase(it) : std::next(it);
+    return success();
+}
+
+Result EditSession::componentRename(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    const std::string newName = request.at("new_name").get<std::string>();
+    std::string error;
+    const std::string actual = system.renameComponent(name, newName, error);
+    if (actual.empty()) return fail("not_found", error);
+    if (actual != name) {
+        // Connection extras and aliases are keyed by component name.
+        std::map<std::string, std::string> rekeyed;
+        for (auto& [key, xml] : system.preservedConnectionXml) {
+            const std::size_t bar = key.find('|');
+            std::string a = renameKeyEnd(key.substr(0, bar), name, actual);
+            std::string b = bar == std::string::npos ? std::string()
+                                                     : "|" + renameKeyEnd(key.substr(bar + 1), name, actual);
+            rekeyed[a + b] = std::move(xml);
+        }
+        system.preservedConnectionXml = std::move(rekeyed);
+        for (auto& [alias, full] : system.aliases)
+            if (full.rfind(name + "#", 0) == 0) full = actual + full.substr(name.size());
+    }
+    return success({{"name", actual}});
+}
+
+Result EditSession::componentMove(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    const Pose pose = request.at("pose").get<Pose>();
+    if (Component* c = system.component(name)) {
+        writePose(c->preservedXml, pose);
+        return success();
+    }
+    if (system.systemPort(name)) {
+        writePose(system.preservedSystemPortXml[name], pose);
+        return success();
+    }
+    return fail("not_found", "no component or system port named '" + name + "' in system '" + system.name() + "'");
+}
+
+// ---------------------------------------------------------------- connections
+
+Result EditSession::connect(System& system, const json& request)
+{
+    const ConnectionEnds e = endsOf(request);
+    for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
+        if (!portExists(system, comp, port))
+            return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
+    std::string error;
+    if (!system.connect(e.fromComponent, e.fromPort, e.toComponent, e.toPort, error))
+        return fail("illegal_connection", error);
+    eraseConnectionExtras(system, e);
+    if (request.contains("points")) {
+        std::vector<LinePoint> points;
+        for (const json& p : request.at("points")) points.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+        if (!points.empty())
+            writeLinePoints(system.preservedConnectionXml[preserved::connectionKey(
+                                e.fromComponent, e.fromPort, e.toComponent, e.toPort)],
+                            points);
+    }
+    return success({{"connection", connectionToJson(system, e)}});
+}
+
+Result EditSession::disconnect(System& system, const json& request)
+{
+    const ConnectionEnds e = endsOf(request);
+    for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
+        if (!portExists(system, comp, port))
+            return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
+    std::string error;
+    if (!system.disconnect(e.fromComponent, e.fromPort, e.toComponent, e.toPort, error))
+        return fail("not_found", error);
+    eraseConnectionExtras(system, e);
+    return success();
+}
+
+// ---------------------------------------------------------------- parameters
+
+Result EditSession::parameterGet(System& system, const json& request)
+{
+    const std::string compName = request.at("component").get<std::string>();
+    const std::string paramName = request.at("parameter").get<std::string>();
+    Component* c = system.component(compName);
+    if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
+    const Parameter* p = c->parameters().find(paramName);
+    if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
+    return success({{"parameter", parameterToJson(*p)}});
+}
+
+Result EditSession::parameterSet(System& system, const json& request)
+{
+    const std::string compName = request.at("component").get<std::string>();
+    const std::string paramName = request.at("parameter").get<std::string>();
+    const std::string value = valueString(request.at("value"));
+    Component* c = system.component(compName);
+    if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
+    Parameter* p = c->parameters().find(paramName);
+    if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
+    const std::string old = p->value;
+    p->value = value;
+    std::string error;
+    if (!ParameterEvaluator::evaluate(*c, *p, error)) {
+        // Keep the model as it was: the old string, and its value in the target variable.
+        p->value = old;
+        std::string ignored;
+        ParameterEvaluator::evaluate(*c, *p, ignored);
+        return fail("invalid_parameter", compName + "." + paramName + ": " + error);
+    }
+    return success({{"parameter", parameterToJson(*p)}});
+}
+
+Result EditSession::sysparamSet(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    const std::string value = valueString(request.at("value"));
+    const Parameter* existing = system.parameters().find(name);
+    const std::optional<Parameter> before =
+        existing ? std::optional<Parameter>(*existing) : std::optional<Parameter>();
+    auto field = [&](const char* key, const std::string& current) {
+        return request.contains(key) ? request.at(key).get<std::string>() : current;
+    };
+    const std::string type = field("param_type", existing ? parameterTypeName(existing->type) : "double");
+    const std::string unit = field("unit", existing ? existing->unit : std::string());
+    const std::string description = field("description", existing ? existing->description : std::string());
+    const bool internal = existing && existing->internal;
+
+    std::string error;
+    if (!system.setSystemParameter(name, value, type, description, unit, internal, error))
+        return fail("invalid_parameter", error);
+    Parameter* p = system.parameters().find(name);
+    if (!p) return fail("internal", "system parameter '" + name + "' vanished after setting it");
+    if (!ParameterEvaluator::evaluate(system, *p, error)) {
+        std::string ignored;
+        if (before) {
+            system.setSystemParameter(name, before->value, parameterTypeName(before->type), before->description,
+                                      before->unit, before->internal, ignored);
+            if (Parameter* restored = system.parameters().find(name))
+                ParameterEvaluator::evaluate(system, *restored, ignored);
+        } else {
+            system.removeSystemParameter(name);
+        }
+        return fail("invalid_parameter", name + ": " + error);
+    }
+    return success({{"parameter", systemParameterToJson(*p)}});
+}
+
+} // namespace tlmhub::server

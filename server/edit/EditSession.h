@@ -1,0 +1,63 @@
+#pragma once
+// One open model being edited: applies the WebSocket editing requests (model.get,
+// component.*, connect, disconnect, parameter.*, sysparam.set) to an in-memory System.
+// It knows nothing of users, stores or sockets; the caller loads and saves the .hmf text.
+//
+// Requests arrive schema-validated, but handle() still checks every field it reads and
+// never throws: a bad request becomes a Result with a stable error code.
+#include "core/System.h"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+class EditSession {
+public:
+    // Replaces any open model. Fails (error = the loader's message) only when the model
+    // cannot be built at all; problems the loader could work around are in loadMessages().
+    bool openHmf(const std::string& hmf, const std::string& name, std::string& error);
+    void createEmpty(const std::string& name);
+    void close();
+
+    struct Result {
+        bool ok = true;
+        nlohmann::json data = nlohmann::json::object();
+        std::string code, message;
+    };
+    Result handle(const nlohmann::json& request);
+
+    std::string saveHmf() const;   // empty if nothing is open
+    bool isOpen() const { return mRoot != nullptr; }
+
+    const std::string& name() const { return mName; }
+    void setName(const std::string& name) { mName = name; }
+    nlohmann::json modelJson() const;   // ModelJson; null if nothing is open
+    // The open model, e.g. for starting a simulation of its current state.
+    const System* root() const { return mRoot.get(); }
+    const std::vector<Message>& loadMessages() const { return mLoadMessages; }
+
+private:
+    Result modelGet();
+    Result componentAdd(System& system, const nlohmann::json& request);
+    Result componentRemove(System& system, const nlohmann::json& request);
+    Result componentRename(System& system, const nlohmann::json& request);
+    Result componentMove(System& system, const nlohmann::json& request);
+    Result connect(System& system, const nlohmann::json& request);
+    Result disconnect(System& system, const nlohmann::json& request);
+    Result parameterGet(System& system, const nlohmann::json& request);
+    Result parameterSet(System& system, const nlohmann::json& request);
+    Result sysparamSet(System& system, const nlohmann::json& request);
+
+    // The subsystem named by request["system"] (absent or [] = root), or null with `failure`.
+    System* targetSystem(const nlohmann::json& request, Result& failure);
+
+    std::unique_ptr<System> mRoot;
+    std::string mName;
+    std::vector<Message> mLoadMessages;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,39 @@
+#pragma once
+// The boundary between the transport (sockets, HTTP parsing, WebSocket framing) and the
+// application (routes, users, jobs). The transport knows nothing of tlmhub's API.
+#include "server/http/HttpTypes.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace tlmhub::server {
+
+// Sending side of one WebSocket connection; safe to call from any thread.
+class WebSocketSender {
+public:
+    virtual ~WebSocketSender() = default;
+    // Queues a text message. `droppable` messages (stream frames) are the ones thrown away,
+    // oldest first, when the connection's queue is full; replies are never dropped.
+    virtual void send(std::string text, bool droppable) = 0;
+    virtual std::uint64_t droppedCount() const = 0;
+};
+
+// Receiving side: one per connection, called on the connection's strand (one at a time).
+class WebSocketHandler {
+public:
+    virtual ~WebSocketHandler() = default;
+    virtual void onMessage(const std::string& text) = 0;
+    virtual void onClose() = 0;
+};
+
+class HttpApplication {
+public:
+    virtual ~HttpApplication() = default;
+    virtual Response handle(const Incoming& in) = 0;
+    // A WebSocket upgrade request: a handler to accept it, or null with `refusal` filled.
+    virtual std::shared_ptr<WebSocketHandler> acceptWebSocket(
+        const Incoming& in, std::shared_ptr<WebSocketSender> sender, Response& refusal) = 0;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,90 @@
+#include "server/jobs/Job.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+constexpr std::pair<JobState, const char*> kStateNames[] = {
+    {JobState::Queued, "queued"},       {JobState::Running, "running"},
+    {JobState::Done, "done"},           {JobState::Failed, "failed"},
+    {JobState::Cancelled, "cancelled"}, {JobState::Interrupted, "interrupted"},
+};
+
+nlohmann::json timeOrNull(std::int64_t t) { return t ? nlohmann::json(t) : nlohmann::json(nullptr); }
+
+} // namespace
+
+const char* jobStateName(JobState state)
+{
+    for (const auto& [s, name] : kStateNames)
+        if (s == state) return name;
+    return "unknown";
+}
+
+bool jobStateFromName(const std::string& name, JobState& out)
+{
+    for (const auto& [s, n] : kStateNames) {
+        if (name == n) {
+            out = s;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool isFinished(JobState state)
+{
+    return state != JobState::Queued && state != JobState::Running;
+}
+
+nlohmann::json JobRequest::toJson() const
+{
+    nlohmann::json settingsJson = nlohmann::json::object();
+    if (settings.start) settingsJson["start"] = *settings.start;
+    if (settings.step) settingsJson["step"] = *settings.step;
+    if (settings.stop) settingsJson["stop"] = *settings.stop;
+    if (settings.logSamples) settingsJson["log_samples"] = *settings.logSamples;
+    return {{"owner_id", ownerId},
+            {"model_id", modelId ? nlohmann::json(*modelId) : nlohmann::json(nullptr)},
+            {"hmf", hmf},
+            {"parameters", parameters},
+            {"settings", std::move(settingsJson)},
+            {"model_directory", modelDirectory}};
+}
+
+bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
+{
+    try {
+        JobRequest r;
+        r.ownerId = j.at("owner_id").get<std::int64_t>();
+        if (!j.at("model_id").is_null()) r.modelId = j.at("model_id").get<std::int64_t>();
+        r.hmf = j.at("hmf").get<std::string>();
+        r.parameters = j.at("parameters").get<std::map<std::string, std::string>>();
+        const auto& s = j.at("settings");
+        if (s.contains("start")) r.settings.start = s.at("start").get<double>();
+        if (s.contains("step")) r.settings.step = s.at("step").get<double>();
+        if (s.contains("stop")) r.settings.stop = s.at("stop").get<double>();
+        if (s.contains("log_samples")) r.settings.logSamples = s.at("log_samples").get<std::size_t>();
+        r.modelDirectory = j.value("model_directory", std::string());
+        out = std::move(r);
+        return true;
+    } catch (const nlohmann::json::exception&) {
+        return false;
+    }
+}
+
+nlohmann::json JobInfo::toJson() const
+{
+    return {{"id", id},
+            {"model_id", modelId ? nlohmann::json(*modelId) : nlohmann::json(nullptr)},
+            {"state", jobStateName(state)},
+            {"progress", progress},
+            {"error", error},
+            {"created_at", createdAt},
+            {"started_at", timeOrNull(startedAt)},
+            {"finished_at", timeOrNull(finishedAt)},
+            {"steps", steps},
+            {"settings", {{"start", start}, {"step", step}, {"stop", stop}, {"log_samples", logSamples}}}};
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,69 @@
+#pragma once
+// A simulation job: what was asked (JobRequest), what the server knows about it (JobInfo) and
+// the limits every job is held to (JobLimits).
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace tlmhub::server {
+
+// queued -> running -> done | failed | cancelled | interrupted; queued -> cancelled.
+// interrupted: the server stopped (shutdown or crash) while the job was running.
+enum class JobState { Queued, Running, Done, Failed, Cancelled, Interrupted };
+
+const char* jobStateName(JobState state);
+// False for a name that is not a state.
+bool jobStateFromName(const std::string& name, JobState& out);
+// Done, failed, cancelled and interrupted jobs never change again.
+bool isFinished(JobState state);
+
+// Settings that override the model's own; unset ones come from the model.
+struct JobSettings {
+    std::optional<double> start, step, stop;   // s
+    std::optional<std::size_t> logSamples;
+};
+
+struct JobRequest {
+    std::int64_t ownerId = 0;
+    std::optional<std::int64_t> modelId;   // recorded only; `hmf` is what runs
+    std::string hmf;                       // the model file text
+    // "Comp.Param", "Sub$Comp.Param" or a bare system parameter name -> value string.
+    std::map<std::string, std::string> parameters;
+    JobSettings settings;
+    // Directory relative paths in the model resolve against (data files); empty for none.
+    std::string modelDirectory;
+
+    // Stored with the job so that it can be run again (rerun, restart).
+    nlohmann::json toJson() const;
+    static bool fromJson(const nlohmann::json& j, JobRequest& out);
+};
+
+struct JobInfo {
+    std::int64_t id = 0, ownerId = 0;
+    std::optional<std::int64_t> modelId;
+    JobState state = JobState::Queued;
+    double progress = 0.0;                  // 0..1
+    std::string error;                      // why it failed; empty otherwise
+    std::int64_t createdAt = 0, startedAt = 0, finishedAt = 0;   // unix s; 0 = not yet
+    std::uint64_t steps = 0;                // planned steps; taken steps once finished
+    double start = 0.0, step = 0.0, stop = 0.0;   // s, as resolved at submit
+    std::size_t logSamples = 0;
+
+    // {id, model_id, state, progress, error, created_at, started_at, finished_at, steps,
+    //  settings:{start,step,stop,log_samples}}; unset times and model_id are null.
+    nlohmann::json toJson() const;
+};
+
+struct JobLimits {
+    std::uint64_t maxSteps = 50'000'000;      // ceil((stop-start)/step) per job
+    std::size_t maxLogSamples = 100'000;
+    double maxWallSeconds = 300;              // s of simulation per job
+    std::size_t maxResultBytes = 64u << 20;   // ResultTable::byteSize()
+    int maxQueuedPerUser = 20;
+    int maxRunningPerUser = 2;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,140 @@
+#include "server/jobs/PreparedJob.h"
+
+#include "core/ParameterEvaluator.h"
+#include "core/hmf/HmfLoader.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace tlmhub::server {
+
+namespace {
+
+std::string describe(double v)
+{
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+Component* findComponent(System& root, const std::string& path, std::string& error)
+{
+    System* system = &root;
+    std::size_t begin = 0;
+    for (std::size_t dollar; (dollar = path.find('$', begin)) != std::string::npos; begin = dollar + 1) {
+        const std::string name = path.substr(begin, dollar - begin);
+        System* sub = system->subsystem(name);
+        if (!sub) {
+            error = "no subsystem '" + name + "' in system '" + system->name() + "'";
+            return nullptr;
+        }
+        system = sub;
+    }
+    const std::string name = path.substr(begin);
+    Component* c = system->component(name);
+    if (!c) error = "no component '" + name + "' in system '" + system->name() + "'";
+    return c;
+}
+
+bool setAndEvaluate(Component& owner, Parameter& p, const std::string& value, const std::string& key,
+                    std::string& error)
+{
+    const std::string old = p.value;
+    p.value = value;
+    std::string why;
+    if (!ParameterEvaluator::evaluate(owner, p, why)) {
+        p.value = old;
+        error = "parameter '" + key + "' = '" + value + "': " + why;
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+bool applyParameter(System& root, const std::string& key, const std::string& value, std::string& error)
+{
+    const std::size_t dot = key.find('.');
+    if (dot == std::string::npos) {
+        Parameter* p = root.parameters().find(key);
+        if (!p || p->isStartValue) {
+            error = "no system parameter '" + key + "' in system '" + root.name() + "'";
+            return false;
+        }
+        return setAndEvaluate(root, *p, value, key, error);
+    }
+    Component* c = findComponent(root, key.substr(0, dot), error);
+    if (!c) return false;
+    const std::string name = key.substr(dot + 1);
+    Parameter* p = c->parameters().find(name);
+    if (!p) p = c->parameters().find(name + "#Value");
+    if (!p) {
+        error = "component '" + c->name() + "' has no parameter '" + name + "'";
+        return false;
+    }
+    return setAndEvaluate(*c, *p, value, key, error);
+}
+
+bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out, PrepareError& error)
+{
+    if (request.hmf.empty()) {
+        error = {"invalid_model", "the job has no model"};
+        return false;
+    }
+    const std::string source = request.modelId ? "model " + std::to_string(*request.modelId) : "model";
+    LoadedModel loaded = loadHmfString(request.hmf, request.modelDirectory, source);
+    if (!loaded.root || loaded.hasErrors()) {
+        error = {"invalid_model", loaded.firstError().empty() ? "the model does not load" : loaded.firstError()};
+        return false;
+    }
+    System& root = *loaded.root;
+
+    // System parameters first: component values may refer to them.
+    std::string why;
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const auto& [key, value] : request.parameters) {
+            const bool isSystemParameter = key.find('.') == std::string::npos;
+            if (isSystemParameter != (pass == 0)) continue;
+            if (!applyParameter(root, key, value, why)) {
+                error = {"invalid_parameter", why};
+                return false;
+            }
+        }
+    }
+
+    const JobSettings& s = request.settings;
+    out.start = s.start.value_or(root.startTime);
+    out.stop = s.stop.value_or(root.stopTime);
+    out.step = s.step.value_or(root.desiredTimestep);
+    out.logSamples = s.logSamples.value_or(root.requestedLogSamples ? root.requestedLogSamples
+                                                                    : kDefaultLogSamples);
+    if (!std::isfinite(out.start) || !std::isfinite(out.stop) || !std::isfinite(out.step) ||
+        !(out.step > 0.0) || !(out.stop >= out.start)) {
+        error = {"bad_request", "need finite times with stop >= start and step > 0 (start " +
+                                    describe(out.start) + ", step " + describe(out.step) + ", stop " +
+                                    describe(out.stop) + ")"};
+        return false;
+    }
+    const double steps = std::ceil((out.stop - out.start) / out.step);
+    if (steps > static_cast<double>(limits.maxSteps)) {
+        error = {"limit_exceeded", "the job needs " + describe(steps) + " steps; the limit is " +
+                                       std::to_string(limits.maxSteps)};
+        return false;
+    }
+    out.steps = static_cast<std::uint64_t>(steps);
+    if (out.logSamples > limits.maxLogSamples) {
+        error = {"limit_exceeded", "log_samples " + std::to_string(out.logSamples) +
+                                       " is above the limit of " + std::to_string(limits.maxLogSamples)};
+        return false;
+    }
+    root.desiredTimestep = out.step;
+    root.requestedLogSamples = out.logSamples;
+    if (!root.checkModel(why)) {
+        error = {"invalid_model", why};
+        return false;
+    }
+    out.root = std::move(loaded.root);
+    return true;
+}
+
+} // namespace tlmhub::server

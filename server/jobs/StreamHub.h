@@ -1,0 +1,77 @@
+#pragma once
+// Live events of running jobs for whoever subscribed (WebSocket sessions): event.progress,
+// event.frame (new logged samples since the subscriber's previous frame, at most `rate` per
+// second) and event.done. The job's thread publishes; sinks run on that thread, with the
+// hub's lock held, so a sink must not block and must not call back into the hub (the WS
+// layer only queues the event onto its session).
+//
+// Frames of one subscription, concatenated, equal the job's stored result: each
+// subscription remembers how many samples of each of its variables it has sent, and the final
+// frames (from the stored ResultTable) send the rest before event.done.
+#include "server/jobs/FrameSource.h"
+#include "server/jobs/Job.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+using EventSink = std::function<void(nlohmann::json event)>;
+
+class StreamHub {
+public:
+    static constexpr std::size_t kMaxFrameVariables = 16;
+    static constexpr double kDefaultRate = 30.0;   // frames per second
+    static constexpr double kMaxRate = 120.0;
+
+    // `variables`: ResultTable column names (unknown ones are ignored, at most 16 kept);
+    // empty = the first 16 logged variables. `rate` <= 0 means the default.
+    std::uint64_t subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
+                            EventSink sink);
+    void unsubscribe(std::uint64_t subscription);
+    bool hasSubscribers(std::int64_t jobId) const;
+    std::size_t subscriptionCount() const;
+
+    // --- for the job's thread ---
+    void publishProgress(std::int64_t jobId, double progress);
+    // A frame for every subscription of the job whose interval has passed and that has new
+    // samples.
+    void publishFrames(std::int64_t jobId, const FrameSource& source);
+    // The remaining samples (if `source`), then event.done; the job's subscriptions end.
+    void finish(std::int64_t jobId, const FrameSource* source, JobState state, const std::string& error);
+    // Same for one subscription (a subscriber arriving after the job finished); nothing if
+    // the subscription has already ended.
+    void finishSubscription(std::uint64_t subscription, const FrameSource* source, JobState state,
+                            const std::string& error);
+
+private:
+    struct Subscription {
+        std::int64_t jobId = 0;
+        std::vector<std::string> wanted;
+        std::chrono::steady_clock::duration interval{};
+        EventSink sink;
+        std::uint64_t seq = 0;
+        std::chrono::steady_clock::time_point lastFrame{};
+        bool resolved = false;
+        std::vector<std::string> names;   // the variables it streams, resolved at its first frame
+        std::vector<std::size_t> sent;    // samples sent per variable
+        std::size_t timeSent = 0;
+    };
+
+    static void sendFrame(Subscription& s, const FrameSource& source);
+    static void sendDone(Subscription& s, JobState state, const std::string& error);
+
+    mutable std::mutex mMutex;
+    std::uint64_t mNextId = 1;
+    std::map<std::uint64_t, Subscription> mSubscriptions;
+    std::multimap<std::int64_t, std::uint64_t> mByJob;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,53 @@
+#pragma once
+// Accounts (table users): name, argon2id password hash, role. Hashing happens outside the
+// database lock because it takes about 0.1 s.
+#include "server/auth/User.h"
+#include "server/store/Database.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+// Error texts of create()/changePassword(), fixed so callers can map them to API codes
+// (kUsernameTaken -> conflict, the rest -> bad_request / unauthorized).
+inline constexpr const char* kUsernameTaken = "username is already taken";
+inline constexpr const char* kBadUsername =
+    "username must be 1-64 characters of A-Z, a-z, 0-9, '_', '.', '-'";
+inline constexpr const char* kBadRole = "role must be admin, teacher or user";
+inline constexpr const char* kShortPassword = "password must be at least 8 characters";
+inline constexpr const char* kWrongPassword = "old password is wrong";
+inline constexpr const char* kNoSuchUser = "no such user";
+
+inline constexpr std::size_t kMinPasswordLength = 8;
+
+bool isValidUsername(const std::string& username);
+
+class UserStore {
+public:
+    explicit UserStore(Database& db);
+
+    std::optional<User> create(const std::string& username, const std::string& password,
+                               const std::string& role, std::string& error);
+    // The user when the password matches; nullopt for unknown user or wrong password (both
+    // take the time of one hash, so timing does not reveal which names exist).
+    std::optional<User> authenticate(const std::string& username, const std::string& password);
+    std::optional<User> find(std::int64_t id);
+    std::optional<User> findByName(const std::string& username);
+    std::vector<User> list();   // by id
+    std::size_t count();
+    bool changePassword(std::int64_t id, const std::string& oldPw, const std::string& newPw,
+                        std::string& error);
+
+    Database& database() { return mDb; }
+
+private:
+    std::optional<std::string> passwordHash(const std::string& username, std::int64_t& id);
+
+    Database& mDb;
+};
+
+} // namespace tlmhub::server

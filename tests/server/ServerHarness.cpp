@@ -1,0 +1,187 @@
+#include "ServerHarness.h"
+
+#include <boost/asio/connect.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <poll.h>
+#include <sstream>
+#include <stdexcept>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace tlmhub::test {
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+std::string readFile(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::filesystem::path freshTempDir(const std::string& name)
+{
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("tlmhub-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs)
+{
+    std::filesystem::create_directories(dataDir);
+    int fds[2];
+    if (::pipe(fds) != 0) throw std::runtime_error("pipe failed");
+    std::vector<std::string> args = {TLMHUB_SERVER_BIN, "--listen", "127.0.0.1:0", "--data-dir",
+                                     dataDir.string(), "--workers", "2", "--examples-dir",
+                                     std::string(TLMHUB_SOURCE_DIR) + "/examples", "--web-root",
+                                     (dataDir / "no-web").string()};
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    mPid = ::fork();
+    if (mPid == 0) {
+        ::dup2(fds[1], STDOUT_FILENO);
+        ::close(fds[0]);
+        ::close(fds[1]);
+        ::setenv("TLMHUB_ADMIN_PASSWORD", kAdminPassword, 1);
+        std::vector<char*> argv;
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(fds[1]);
+    mStdout = fds[0];
+    // Read stdout until the "listening on" line (at most 30 s).
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    const std::string marker = "listening on http://127.0.0.1:";
+    while (std::chrono::steady_clock::now() < deadline) {
+        pollfd p{mStdout, POLLIN, 0};
+        if (::poll(&p, 1, 200) <= 0) continue;
+        char buf[512];
+        const ssize_t n = ::read(mStdout, buf, sizeof buf);
+        if (n <= 0) break;
+        mOutput.append(buf, static_cast<std::size_t>(n));
+        const auto at = mOutput.find(marker);
+        if (at != std::string::npos && mOutput.find('\n', at) != std::string::npos) {
+            mPort = static_cast<unsigned short>(std::stoi(mOutput.substr(at + marker.size())));
+            return;
+        }
+    }
+    throw std::runtime_error("tlmhub-server did not start; output: " + mOutput);
+}
+
+ServerProcess::~ServerProcess()
+{
+    if (mPid > 0) terminate();
+    if (mStdout >= 0) ::close(mStdout);
+}
+
+void ServerProcess::kill9()
+{
+    ::kill(mPid, SIGKILL);
+    int status = 0;
+    ::waitpid(mPid, &status, 0);
+    mPid = -1;
+}
+
+int ServerProcess::terminate()
+{
+    ::kill(mPid, SIGTERM);
+    int status = 0;
+    ::waitpid(mPid, &status, 0);
+    mPid = -1;
+    char buf[4096];
+    ssize_t n;
+    while ((n = ::read(mStdout, buf, sizeof buf)) > 0) mOutput.append(buf, static_cast<std::size_t>(n));
+    return status;
+}
+
+HttpReply HttpClient::request(http::verb method, const std::string& target, const std::string& body,
+                              const std::string& contentType)
+{
+    net::io_context ioc;
+    beast::tcp_stream stream(ioc);
+    stream.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), mPort));
+    http::request<http::string_body> req{method, target, 11};
+    req.set(http::field::host, "127.0.0.1");
+    if (!mToken.empty()) req.set(http::field::authorization, "Bearer " + mToken);
+    if (!body.empty()) {
+        req.set(http::field::content_type, contentType);
+        req.body() = body;
+    }
+    req.prepare_payload();
+    // The server may answer (413) and close before the whole body is sent: read anyway.
+    beast::error_code writeError;
+    http::write(stream, req, writeError);
+    beast::flat_buffer buffer;
+    http::response_parser<http::string_body> parser;
+    parser.body_limit(1u << 30);
+    http::read(stream, buffer, parser);
+    auto res = parser.release();
+    HttpReply reply;
+    reply.status = static_cast<int>(res.result_int());
+    reply.body = res.body();
+    for (const auto& field : res) reply.headers[std::string(field.name_string())] = std::string(field.value());
+    beast::error_code ignored;
+    stream.socket().shutdown(tcp::socket::shutdown_both, ignored);
+    return reply;
+}
+
+std::string HttpClient::login(const std::string& user, const std::string& password)
+{
+    const HttpReply r = post("/api/v1/auth/login", {{"username", user}, {"password", password}});
+    if (r.status != 200) throw std::runtime_error("login failed: " + r.body);
+    mToken = r.json()["token"];
+    return mToken;
+}
+
+WsClient::WsClient(unsigned short port, const std::string& token) : mWs(mIoc)
+{
+    mWs.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+    mWs.handshake("127.0.0.1", "/api/v1/ws?token=" + token);
+    hello = receive();
+}
+
+void WsClient::sendText(const std::string& text)
+{
+    mWs.text(true);
+    mWs.write(net::buffer(text));
+}
+
+nlohmann::json WsClient::receive(int timeoutMs)
+{
+    timeval tv{timeoutMs / 1000, (timeoutMs % 1000) * 1000};
+    ::setsockopt(mWs.next_layer().native_handle(), SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    beast::flat_buffer buffer;
+    beast::error_code ec;
+    mWs.read(buffer, ec);
+    if (ec) return nlohmann::json();
+    return nlohmann::json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
+}
+
+nlohmann::json WsClient::call(const std::string& type, nlohmann::json fields)
+{
+    const int id = mNextId++;
+    fields["id"] = id;
+    fields["type"] = type;
+    sendText(fields.dump());
+    for (int i = 0; i < 100000; ++i) {
+        nlohmann::json m = receive();
+        if (m.is_null()) return m;
+        if (m.contains("id") && m["id"] == id) return m;
+        events.push_back(std::move(m));
+    }
+    return nlohmann::json();
+}
+
+} // namespace tlmhub::test

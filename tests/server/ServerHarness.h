@@ -1,0 +1,86 @@
+#pragma once
+// Integration-test support: a real tlmhub-server process on an ephemeral loopback port,
+// and plain HTTP and WebSocket clients (Boost.Beast, synchronous, with timeouts).
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tlmhub::test {
+
+// Starts build/bin/tlmhub-server with a data directory; stops it with SIGTERM on destruction.
+class ServerProcess {
+public:
+    // `dataDir` is created if missing and kept (so a test can restart on the same data).
+    ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs = {});
+    ~ServerProcess();
+    ServerProcess(const ServerProcess&) = delete;
+    ServerProcess& operator=(const ServerProcess&) = delete;
+
+    unsigned short port() const { return mPort; }
+    const std::string& output() const { return mOutput; }
+    void kill9();          // crash: no cleanup at all
+    int terminate();       // SIGTERM, wait; returns the exit status
+
+private:
+    int mPid = -1;
+    int mStdout = -1;
+    unsigned short mPort = 0;
+    std::string mOutput;
+};
+
+struct HttpReply {
+    int status = 0;
+    std::string body;
+    std::map<std::string, std::string> headers;
+    nlohmann::json json() const { return nlohmann::json::parse(body, nullptr, false); }
+};
+
+class HttpClient {
+public:
+    explicit HttpClient(unsigned short port) : mPort(port) {}
+    void setToken(std::string token) { mToken = std::move(token); }
+    HttpReply request(boost::beast::http::verb method, const std::string& target,
+                      const std::string& body = {}, const std::string& contentType = "application/json");
+    HttpReply get(const std::string& target) { return request(boost::beast::http::verb::get, target); }
+    HttpReply post(const std::string& target, const nlohmann::json& body)
+    {
+        return request(boost::beast::http::verb::post, target, body.dump());
+    }
+    // Logs in and keeps the token for later requests; returns the token.
+    std::string login(const std::string& user, const std::string& password);
+
+private:
+    unsigned short mPort;
+    std::string mToken;
+};
+
+class WsClient {
+public:
+    WsClient(unsigned short port, const std::string& token);
+    void sendText(const std::string& text);
+    // Next message, or a null json after `timeoutMs`.
+    nlohmann::json receive(int timeoutMs = 10000);
+    // Sends {"id", "type", ...fields} and returns the reply or error with that id; events
+    // that arrive in between are kept in `events`.
+    nlohmann::json call(const std::string& type, nlohmann::json fields = nlohmann::json::object());
+    std::vector<nlohmann::json> events;
+    nlohmann::json hello;
+
+private:
+    boost::asio::io_context mIoc;
+    boost::beast::websocket::stream<boost::asio::ip::tcp::socket> mWs;
+    int mNextId = 1;
+};
+
+std::string readFile(const std::filesystem::path& path);
+std::filesystem::path freshTempDir(const std::string& name);
+constexpr const char* kAdminPassword = "admin-secret-pw";
+
+} // namespace tlmhub::test

@@ -1,0 +1,535 @@
+// Jobs: submit/validate, the fair worker pool, cancel, limits, shutdown/restart, results and
+// streamed frames.
+#include "core/ResultTable.h"
+#include "core/hmf/HmfLoader.h"
+#include "server/jobs/JobQueue.h"
+#include "server/jobs/JobStore.h"
+#include "server/jobs/PreparedJob.h"
+#include "server/jobs/StreamHub.h"
+#include "server/store/Database.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+using namespace tlmhub;
+using namespace tlmhub::server;
+
+namespace {
+
+std::string readFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream os;
+    os << in.rdbuf();
+    return os.str();
+}
+
+const std::string kExample = std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf";
+const std::string kServo =
+    std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Example Models/Position Servo.hmf";
+
+bool waitUntil(const std::function<bool()>& condition, std::chrono::seconds timeout = std::chrono::seconds(60))
+{
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+        if (condition()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return condition();
+}
+
+bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// The result of running a model directly with the core, as the CLI does.
+ResultTable directRun(const std::string& hmf, const std::map<std::string, std::string>& parameters = {},
+                      std::optional<double> stop = std::nullopt)
+{
+    LoadedModel m = loadHmfString(hmf, "", "direct");
+    EXPECT_FALSE(m.hasErrors()) << m.firstError();
+    System& root = *m.root;
+    std::string err;
+    for (const auto& [k, v] : parameters) EXPECT_TRUE(applyParameter(root, k, v, err)) << err;
+    const double t1 = stop.value_or(root.stopTime);
+    EXPECT_TRUE(root.checkModel(err)) << err;
+    EXPECT_TRUE(root.initialize(root.startTime, t1));
+    EXPECT_TRUE(root.simulate(t1));
+    root.finalize();
+    return ResultTable::fromSystem(root);
+}
+
+// Every event a subscription received, thread-safe.
+struct EventLog {
+    std::mutex mutex;
+    std::vector<nlohmann::json> events;
+
+    EventSink sink()
+    {
+        return [this](nlohmann::json e) {
+            std::lock_guard lock(mutex);
+            events.push_back(std::move(e));
+        };
+    }
+    std::vector<nlohmann::json> snapshot()
+    {
+        std::lock_guard lock(mutex);
+        return events;
+    }
+    bool done()
+    {
+        std::lock_guard lock(mutex);
+        return !events.empty() && events.back().at("type") == "event.done";
+    }
+};
+
+class Jobs : public ::testing::Test {
+protected:
+    Database db{":memory:"};
+    JobStore store{db};
+    StreamHub hub;
+
+    JobRequest request(const std::string& path, std::int64_t owner = 1)
+    {
+        JobRequest r;
+        r.ownerId = owner;
+        r.hmf = readFile(path);
+        return r;
+    }
+    // Position Servo running long enough to be cancelled, limited or interrupted.
+    JobRequest longRequest(std::int64_t owner = 1)
+    {
+        JobRequest r = request(kServo, owner);
+        r.settings.stop = 4000.0;   // 4e7 steps: far longer than any test waits
+        return r;
+    }
+    JobState state(std::int64_t id) { return store.info(id)->state; }
+    bool reaches(std::int64_t id, JobState s)
+    {
+        return waitUntil([&] { return state(id) == s; });
+    }
+    bool finishes(std::int64_t id)
+    {
+        return waitUntil([&] { return isFinished(state(id)); });
+    }
+    void SetUp() override
+    {
+        if (!std::filesystem::exists(kServo)) GTEST_SKIP() << "shared models not present";
+    }
+};
+
+} // namespace
+
+TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
+{
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    const auto submitted = queue.submit(request(kExample));
+    ASSERT_TRUE(submitted.id) << submitted.code << ": " << submitted.message;
+    ASSERT_TRUE(finishes(*submitted.id));
+    const JobInfo info = *store.info(*submitted.id);
+    EXPECT_EQ(info.state, JobState::Done) << info.error;
+    EXPECT_EQ(info.progress, 1.0);
+    EXPECT_EQ(info.steps, 20000u);
+    EXPECT_EQ(info.start, 0.0);
+    EXPECT_EQ(info.stop, 2.0);
+    EXPECT_EQ(info.step, 1e-4);
+    EXPECT_EQ(info.logSamples, 501u);
+    EXPECT_GT(info.startedAt, 0);
+    EXPECT_GE(info.finishedAt, info.startedAt);
+    const auto result = store.result(*submitted.id);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->toCsv(), directRun(readFile(kExample)).toCsv());
+}
+
+TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
+{
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    JobRequest r = request(kExample);
+    r.parameters = {{"Orifice.Kc", "2e-10"}, {"pump_flow", "2e-4"}};
+    r.settings.stop = 1.0;
+    r.settings.logSamples = 101;
+    const auto submitted = queue.submit(r);
+    ASSERT_TRUE(submitted.id) << submitted.message;
+    ASSERT_TRUE(finishes(*submitted.id));
+    ASSERT_EQ(state(*submitted.id), JobState::Done) << store.info(*submitted.id)->error;
+    const auto result = store.result(*submitted.id);
+    ASSERT_TRUE(result);
+    ASSERT_EQ(result->time.size(), 101u);
+    EXPECT_DOUBLE_EQ(result->time.back(), 1.0);
+
+    // The same overrides applied directly give the same numbers, and they differ from the
+    // model's own values.
+    LoadedModel m = loadHmfString(readFile(kExample), "", "direct");
+    std::string err;
+    ASSERT_TRUE(applyParameter(*m.root, "Orifice.Kc", "2e-10", err)) << err;
+    ASSERT_TRUE(applyParameter(*m.root, "pump_flow", "2e-4", err)) << err;
+    m.root->requestedLogSamples = 101;
+    ASSERT_TRUE(m.root->initialize(0.0, 1.0) && m.root->simulate(1.0));
+    m.root->finalize();
+    const ResultTable direct = ResultTable::fromSystem(*m.root);
+    EXPECT_EQ(result->toCsv(), direct.toCsv());
+    const ResultTable plain = directRun(readFile(kExample), {}, 1.0);
+    ASSERT_EQ(plain.columns.size(), result->columns.size());
+    bool differs = false;
+    for (std::size_t c = 0; c < plain.columns.size(); ++c)
+        differs = differs || plain.columns[c].data.back() != result->columns[c].data.back();
+    EXPECT_TRUE(differs);
+
+    const auto stored = store.request(*submitted.id);
+    ASSERT_TRUE(stored);
+    EXPECT_EQ(stored->parameters, r.parameters);
+    EXPECT_EQ(stored->settings.stop, 1.0);
+    EXPECT_EQ(stored->settings.logSamples, 101u);
+    EXPECT_FALSE(stored->settings.start);
+    EXPECT_EQ(stored->hmf, r.hmf);
+}
+
+TEST_F(Jobs, StoredRequestRunsAgainAsANewJob)
+{
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    JobRequest r = request(kExample);
+    r.modelId = 7;
+    const auto first = queue.submit(r);
+    ASSERT_TRUE(first.id);
+    ASSERT_TRUE(finishes(*first.id));
+    const auto again = queue.submit(*store.request(*first.id));
+    ASSERT_TRUE(again.id);
+    EXPECT_NE(*again.id, *first.id);
+    ASSERT_TRUE(finishes(*again.id));
+    EXPECT_EQ(store.info(*again.id)->modelId, 7);
+    EXPECT_EQ(store.result(*again.id)->toCsv(), store.result(*first.id)->toCsv());
+}
+
+TEST_F(Jobs, WorkersServeUsersRoundRobin)
+{
+    JobQueue queue(store, hub, {}, 1);
+    std::mutex mutex;
+    std::vector<std::int64_t> finishedOrder;
+    std::vector<std::int64_t> ids;
+    auto record = [&](std::int64_t id) {
+        return [&, id](nlohmann::json e) {
+            if (e.at("type") != "event.done") return;
+            std::lock_guard lock(mutex);
+            finishedOrder.push_back(id);
+        };
+    };
+    for (int i = 0; i < 6; ++i) ids.push_back(*queue.submit(request(kExample, 1)).id);
+    const std::int64_t userB = *queue.submit(request(kExample, 2)).id;
+    for (auto id : ids) queue.subscribe(id, {}, 0, record(id));
+    queue.subscribe(userB, {}, 0, record(userB));
+    queue.start();
+    ASSERT_TRUE(waitUntil([&] {
+        std::lock_guard lock(mutex);
+        return finishedOrder.size() == 7;
+    }));
+    // One worker: A1 first (submitted first), then B, then A's remaining five.
+    EXPECT_EQ(finishedOrder[0], ids[0]);
+    EXPECT_EQ(finishedOrder[1], userB);
+    EXPECT_NE(finishedOrder.back(), userB);
+}
+
+TEST_F(Jobs, UserAtRunningLimitWaitsWhileOthersRun)
+{
+    JobLimits limits;
+    limits.maxRunningPerUser = 1;
+    JobQueue queue(store, hub, limits, 2);
+    const auto a1 = *queue.submit(longRequest(1)).id;
+    const auto a2 = *queue.submit(longRequest(1)).id;
+    const auto b1 = *queue.submit(longRequest(2)).id;
+    queue.start();
+    ASSERT_TRUE(reaches(a1, JobState::Running));
+    ASSERT_TRUE(reaches(b1, JobState::Running));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    EXPECT_EQ(state(a2), JobState::Queued);   // a worker would be free, but A is at its limit
+    EXPECT_TRUE(queue.cancel(a1));
+    EXPECT_EQ(state(a1), JobState::Cancelled);
+    ASSERT_TRUE(reaches(a2, JobState::Running));
+    EXPECT_TRUE(queue.cancel(a2));
+    EXPECT_TRUE(queue.cancel(b1));
+}
+
+TEST_F(Jobs, CancelQueuedAndRunning)
+{
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    const auto running = *queue.submit(longRequest()).id;
+    const auto queued = *queue.submit(request(kExample)).id;
+    EventLog queuedEvents;
+    queue.subscribe(queued, {}, 0, queuedEvents.sink());
+    ASSERT_TRUE(reaches(running, JobState::Running));
+    ASSERT_EQ(state(queued), JobState::Queued);
+
+    EXPECT_TRUE(queue.cancel(queued));
+    EXPECT_EQ(state(queued), JobState::Cancelled);
+    ASSERT_TRUE(queuedEvents.done());
+    EXPECT_EQ(queuedEvents.snapshot().back().at("state"), "cancelled");
+
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_TRUE(queue.cancel(running));
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
+    const JobInfo info = *store.info(running);
+    EXPECT_EQ(info.state, JobState::Cancelled);
+    EXPECT_GT(info.steps, 0u);
+    EXPECT_LT(info.steps, 40'000'000u);
+    EXPECT_GT(info.finishedAt, 0);
+
+    EXPECT_FALSE(queue.cancel(running));   // already finished
+    EXPECT_FALSE(queue.cancel(12345));     // no such job
+}
+
+TEST_F(Jobs, LimitsAreCheckedAtSubmit)
+{
+    JobLimits limits;
+    limits.maxSteps = 10'000;
+    limits.maxLogSamples = 500;
+    limits.maxQueuedPerUser = 2;
+    JobQueue queue(store, hub, limits, 1);   // not started: jobs stay queued
+
+    auto tooLong = queue.submit(request(kExample));   // 20000 steps
+    EXPECT_FALSE(tooLong.id);
+    EXPECT_EQ(tooLong.code, "limit_exceeded");
+    EXPECT_NE(tooLong.message.find("20000"), std::string::npos) << tooLong.message;
+
+    JobRequest r = request(kExample);
+    r.settings.stop = 0.5;                 // 5000 steps, 501 samples from the model
+    auto tooManySamples = queue.submit(r);
+    EXPECT_EQ(tooManySamples.code, "limit_exceeded");
+    EXPECT_FALSE(tooManySamples.id);
+
+    r.settings.logSamples = 500;
+    EXPECT_TRUE(queue.submit(r).id);
+    EXPECT_TRUE(queue.submit(r).id);
+    auto third = queue.submit(r);
+    EXPECT_FALSE(third.id);
+    EXPECT_EQ(third.code, "limit_exceeded");
+    r.ownerId = 2;
+    EXPECT_TRUE(queue.submit(r).id);   // the limit is per user
+
+    r.settings.step = 0.0;
+    EXPECT_EQ(queue.submit(r).code, "bad_request");
+    EXPECT_EQ(store.listAll().size(), 3u);
+}
+
+TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
+{
+    JobQueue queue(store, hub, {}, 1);
+    auto submitWith = [&](const std::string& key, const std::string& value) {
+        JobRequest r = request(kExample);
+        r.parameters[key] = value;
+        return queue.submit(r);
+    };
+    auto unknownName = submitWith("Orifice.Kc", "no_such_name * 2");
+    EXPECT_EQ(unknownName.code, "invalid_parameter");
+    EXPECT_NE(unknownName.message.find("no_such_name"), std::string::npos) << unknownName.message;
+    EXPECT_EQ(submitWith("Orifice.Kc", "1e-10 +").code, "invalid_parameter");
+    EXPECT_EQ(submitWith("NoSuchComponent.Kc", "1").code, "invalid_parameter");
+    EXPECT_EQ(submitWith("Orifice.NoSuchParameter", "1").code, "invalid_parameter");
+    EXPECT_EQ(submitWith("no_such_system_parameter", "1").code, "invalid_parameter");
+    EXPECT_TRUE(submitWith("Orifice.Kc", "relief_pressure * 1e-17").id);   // names resolve
+    EXPECT_TRUE(submitWith("Orifice.Kc#Value", "3e-10").id);
+
+    JobRequest broken;
+    broken.ownerId = 1;
+    broken.hmf = "<hopsanmodelfile><system";
+    const auto bad = queue.submit(broken);
+    EXPECT_EQ(bad.code, "invalid_model");
+    EXPECT_FALSE(bad.message.empty());
+    broken.hmf.clear();
+    EXPECT_EQ(queue.submit(broken).code, "invalid_model");
+    EXPECT_EQ(store.listAll().size(), 2u);
+}
+
+TEST_F(Jobs, WallTimeLimitFailsTheJob)
+{
+    JobLimits limits;
+    limits.maxWallSeconds = 0.2;
+    JobQueue queue(store, hub, limits, 1);
+    queue.start();
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto id = *queue.submit(longRequest()).id;
+    ASSERT_TRUE(finishes(id));
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(10));
+    const JobInfo info = *store.info(id);
+    EXPECT_EQ(info.state, JobState::Failed);
+    EXPECT_EQ(info.error, "wall time limit (0.2 s) exceeded");
+}
+
+TEST_F(Jobs, ResultLargerThanTheLimitFailsTheJob)
+{
+    JobLimits limits;
+    limits.maxResultBytes = 4096;
+    JobQueue queue(store, hub, limits, 1);
+    queue.start();
+    const auto id = *queue.submit(request(kExample)).id;
+    ASSERT_TRUE(finishes(id));
+    const JobInfo info = *store.info(id);
+    EXPECT_EQ(info.state, JobState::Failed);
+    EXPECT_NE(info.error.find("larger than the limit of 4096 bytes"), std::string::npos) << info.error;
+    EXPECT_FALSE(store.result(id));
+}
+
+TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
+{
+    std::int64_t running = 0, queued = 0;
+    {
+        JobQueue queue(store, hub, {}, 1);
+        queue.start();
+        running = *queue.submit(longRequest()).id;
+        queued = *queue.submit(request(kExample)).id;
+        ASSERT_TRUE(reaches(running, JobState::Running));
+        queue.shutdown();
+        EXPECT_EQ(state(running), JobState::Interrupted);
+        EXPECT_EQ(state(queued), JobState::Queued);
+    }
+    JobQueue restarted(store, hub, {}, 1);
+    restarted.start();
+    ASSERT_TRUE(finishes(queued));
+    EXPECT_EQ(state(queued), JobState::Done);
+    EXPECT_EQ(state(running), JobState::Interrupted);
+}
+
+TEST_F(Jobs, JobsLeftRunningByACrashBecomeInterrupted)
+{
+    JobInfo resolved;
+    resolved.stop = 1;
+    resolved.step = 0.1;
+    const auto id = store.create(request(kExample), resolved);
+    ASSERT_TRUE(store.markRunning(id));
+    EXPECT_EQ(state(id), JobState::Running);
+    JobQueue queue(store, hub, {}, 1);   // the server starting again
+    queue.start();
+    EXPECT_EQ(state(id), JobState::Interrupted);
+    EXPECT_GT(store.info(id)->finishedAt, 0);
+    EXPECT_EQ(store.markRunningInterrupted(), 0);
+}
+
+TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
+{
+    JobQueue queue(store, hub, {}, 1);
+    JobRequest r = request(kServo);
+    r.settings.stop = 60.0;   // 600000 steps: long enough for frames during the run
+    r.settings.logSamples = 20000;
+    const auto id = *queue.submit(r).id;
+    EventLog all, picked;
+    queue.subscribe(id, {}, 100, all.sink());
+    const ResultTable expectedColumns = directRun(readFile(kServo), {}, 0.01);
+    ASSERT_GE(expectedColumns.columns.size(), 3u);
+    const std::string second = expectedColumns.columns[1].name, first = expectedColumns.columns[0].name;
+    queue.subscribe(id, {second, "No#Such#Var", first}, 20, picked.sink());
+    queue.start();
+    ASSERT_TRUE(finishes(id));
+    ASSERT_TRUE(waitUntil([&] { return all.done() && picked.done(); }));
+    const ResultTable result = *store.result(id);
+    ASSERT_EQ(state(id), JobState::Done);
+
+    auto check = [&](EventLog& log, std::size_t expectVariables) {
+        std::vector<double> time;
+        std::map<std::string, std::vector<double>> data;
+        int frames = 0, progress = 0;
+        std::uint64_t seq = 0;
+        const auto events = log.snapshot();
+        for (const auto& e : events) {
+            ASSERT_EQ(e.at("job_id"), id);
+            if (e.at("type") == "event.progress") {
+                ++progress;
+                EXPECT_GE(e.at("progress").get<double>(), 0.0);
+                EXPECT_LE(e.at("progress").get<double>(), 1.0);
+            }
+            if (e.at("type") != "event.frame") continue;
+            EXPECT_EQ(e.at("seq").get<std::uint64_t>(), seq++);
+            ++frames;
+            for (double t : e.at("time")) time.push_back(t);
+            EXPECT_EQ(e.at("variables").size(), expectVariables);
+            for (const auto& [name, values] : e.at("variables").items())
+                for (double v : values) data[name].push_back(v);
+        }
+        EXPECT_GE(frames, 2);
+        EXPECT_GE(progress, 1);
+        EXPECT_EQ(events.back().at("state"), "done");
+        EXPECT_TRUE(bitwiseEqual(time, result.time));
+        EXPECT_EQ(data.size(), expectVariables);
+        for (const auto& [name, values] : data) {
+            ASSERT_TRUE(result.hasColumn(name)) << name;
+            EXPECT_TRUE(bitwiseEqual(values, result.column(name)->data)) << name;
+        }
+    };
+    check(all, std::min<std::size_t>(result.columns.size(), StreamHub::kMaxFrameVariables));
+    check(picked, 2);
+    EXPECT_EQ(hub.subscriptionCount(), 0u);   // done ends every subscription
+}
+
+TEST_F(Jobs, LateSubscriberGetsEverythingAtOnce)
+{
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    const auto id = *queue.submit(request(kExample)).id;
+    ASSERT_TRUE(finishes(id));
+    const ResultTable result = *store.result(id);
+    EventLog late;
+    queue.subscribe(id, {result.columns[2].name}, 0, late.sink());
+    const auto events = late.snapshot();   // delivered during subscribe()
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].at("type"), "event.frame");
+    EXPECT_EQ(events[0].at("seq"), 0);
+    EXPECT_TRUE(bitwiseEqual(events[0].at("time").get<std::vector<double>>(), result.time));
+    EXPECT_TRUE(bitwiseEqual(events[0].at("variables").at(result.columns[2].name).get<std::vector<double>>(),
+                             result.columns[2].data));
+    EXPECT_EQ(events[1].at("type"), "event.done");
+    EXPECT_EQ(events[1].at("state"), "done");
+    EXPECT_FALSE(events[1].contains("error"));
+    EXPECT_EQ(hub.subscriptionCount(), 0u);
+}
+
+TEST_F(Jobs, UnsubscribedSinkHearsNothing)
+{
+    JobQueue queue(store, hub, {}, 1);
+    const auto id = *queue.submit(request(kExample)).id;
+    EventLog gone, kept;
+    const auto subscription = queue.subscribe(id, {}, 0, gone.sink());
+    queue.subscribe(id, {}, 0, kept.sink());
+    hub.unsubscribe(subscription);
+    queue.start();
+    ASSERT_TRUE(finishes(id));
+    ASSERT_TRUE(waitUntil([&] { return kept.done(); }));
+    EXPECT_TRUE(gone.snapshot().empty());
+}
+
+TEST(JobInfo, JsonHasTheApiFields)
+{
+    JobInfo info;
+    info.id = 3;
+    info.state = JobState::Running;
+    info.createdAt = 100;
+    info.startedAt = 101;
+    info.steps = 20000;
+    info.start = 0;
+    info.step = 1e-4;
+    info.stop = 2;
+    info.logSamples = 501;
+    const auto j = info.toJson();
+    EXPECT_EQ(j.at("id"), 3);
+    EXPECT_TRUE(j.at("model_id").is_null());
+    EXPECT_EQ(j.at("state"), "running");
+    EXPECT_EQ(j.at("started_at"), 101);
+    EXPECT_TRUE(j.at("finished_at").is_null());
+    EXPECT_EQ(j.at("settings").at("log_samples"), 501);
+    EXPECT_EQ(j.at("settings").at("step"), 1e-4);
+    JobState s;
+    for (auto st : {JobState::Queued, JobState::Running, JobState::Done, JobState::Failed,
+                    JobState::Cancelled, JobState::Interrupted}) {
+        ASSERT_TRUE(jobStateFromName(jobStateName(st), s));
+        EXPECT_EQ(s, st);
+    }
+    EXPECT_FALSE(jobStateFromName("paused", s));
+}
