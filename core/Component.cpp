@@ -1,5 +1,7 @@
 #include "core/Component.h"
 
+#include "core/FileAccess.h"
+
 #include "core/System.h"
 
 #include <filesystem>
@@ -340,9 +342,13 @@ std::string Component::modelDirectory() const
     return root ? root->modelDirectory : std::string();
 }
 
-std::string Component::findFilePath(const std::string& path) const
+std::string Component::findFilePath(const std::string& path)
 {
     namespace fs = std::filesystem;
+    if (!modelFileAccessAllowed()) {
+        addMessage(MessageType::Error, "file access is disabled for models on this server ('" + path + "')");
+        return {};
+    }
     fs::path p(path);
     if (p.is_absolute() || path.empty()) return path;
     fs::path candidate = fs::path(modelDirectory()) / p;

@@ -97,7 +97,8 @@ public:
     // Directory of the model file (for components reading data files).
     std::string modelDirectory() const;
     // Resolve a possibly relative path against the model directory.
-    std::string findFilePath(const std::string& path) const;
+    // Empty (with an error message) when model file access is off (core/FileAccess.h).
+    std::string findFilePath(const std::string& path);
 
     // Catalogue metadata (filled by the factory).
     std::string libraryDomain;

@@ -5,6 +5,7 @@
 #include "server/http/Listener.h"
 
 #include "core/ComponentLibrary.h"
+#include "core/FileAccess.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
@@ -27,6 +28,8 @@ int main(int argc, char** argv)
         std::cout << help;
         return 0;
     }
+    // Models come from users: they must not read or write the host's files.
+    tlmhub::setModelFileAccess(false);
     // Component libraries run code with the server's rights: only this start-up flag,
     // given by whoever starts the server, loads them.
     for (const std::string& lib : options.componentLibs) {

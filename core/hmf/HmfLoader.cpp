@@ -1,5 +1,7 @@
 #include "core/hmf/HmfLoader.h"
 
+#include "core/FileAccess.h"
+
 #include "core/ComponentFactory.h"
 #include "core/hmf/LegacyNames.h"
 #include "core/hmf/PreservedXml.h"
@@ -164,6 +166,12 @@ private:
         const std::string external = node.attribute("external_path").as_string();
         if (!external.empty()) {
             namespace fs = std::filesystem;
+            if (!modelFileAccessAllowed()) {
+                error("external subsystem '" + std::string(node.attribute("name").as_string()) +
+                      "' (" + external + "): loading files is disabled for models on this server");
+                mFailed = true;
+                return;
+            }
             fs::path p = fs::path(mDirectory) / external;
             LoadedModel loaded = loadHmfFile(p.string());
             for (auto& m : loaded.messages) mMessages.push_back(m);

@@ -23,7 +23,9 @@ Response createUser(Services& s, Call& call)
     if (!readJsonBody(call, "UserCreate", body, error)) return error;
     std::string why;
     const auto user = s.users.create(body["username"], body["password"], body.value("role", "user"), why);
-    if (!user) return apiError(http::status::conflict, "conflict", why);
+    if (!user)
+        return why == kUsernameTaken ? apiError(http::status::conflict, "conflict", why)
+                                     : apiError(http::status::bad_request, "bad_request", why);
     return jsonResponse(http::status::created, userJson(*user));
 }
 

@@ -137,7 +137,7 @@ void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
     const double rate = msg.value("rate", 30.0);
     // The sink runs on the job's thread: it only serialises and queues, never waits.
     std::weak_ptr<WebSocketSender> weakSender = mSender;
-    mSubscriptions.push_back(mServices.streams.subscribe(jobId, variables, rate, [weakSender](nlohmann::json event) {
+    mSubscriptions.push_back(mServices.queue.subscribe(jobId, variables, rate, [weakSender](nlohmann::json event) {
         auto sender = weakSender.lock();
         if (!sender) return;
         const bool isFrame = event.value("type", "") == "event.frame";

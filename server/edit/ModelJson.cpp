@@ -3,6 +3,7 @@
 #include "core/hmf/PreservedXml.h"
 #include "server/edit/GuiLayout.h"
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -100,20 +101,27 @@ std::vector<ConnectionEnds> connectionsOf(const System& system)
     return out;
 }
 
-const std::string* preservedConnectionXml(const System& system, const ConnectionEnds& e)
+const std::string* preservedConnectionXml(const System& system, const ConnectionEnds& e, bool& reversed)
 {
     const auto& extras = system.preservedConnectionXml;
+    reversed = false;
     auto it = extras.find(preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
-    if (it == extras.end())
+    if (it == extras.end()) {
         it = extras.find(preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
+        reversed = it != extras.end();
+    }
     return it == extras.end() ? nullptr : &it->second;
 }
 
 json connectionToJson(const System& system, const ConnectionEnds& e)
 {
     json points = json::array();
-    if (const std::string* xml = preservedConnectionXml(system, e))
-        for (const LinePoint& p : readLinePoints(*xml)) points.push_back({p[0], p[1]});
+    bool reversed = false;
+    if (const std::string* xml = preservedConnectionXml(system, e, reversed)) {
+        std::vector<LinePoint> line = readLinePoints(*xml);
+        if (reversed) std::reverse(line.begin(), line.end());
+        for (const LinePoint& p : line) points.push_back({p[0], p[1]});
+    }
     return {{"from", {{"component", e.fromComponent}, {"port", e.fromPort}}},
             {"to", {{"component", e.toComponent}, {"port", e.toPort}}},
             {"points", points}};

@@ -236,7 +236,8 @@ TEST(EditSession, ConnectAndDisconnectWithLinePoints)
     EditSession reloaded;
     std::string error;
     ASSERT_TRUE(reloaded.openHmf(session.saveHmf(), "again", error)) << error;
-    const json* c = findConnection(rootSystem(reloaded), "Step", "out", "Probe", "in");
+    const json reloadedSystem = rootSystem(reloaded);
+    const json* c = findConnection(reloadedSystem, "Step", "out", "Probe", "in");
     ASSERT_NE(c, nullptr);
     EXPECT_EQ(c->at("points"), json({{1.0, 2.0}, {3.0, 2.0}}));
 
@@ -248,7 +249,8 @@ TEST(EditSession, ConnectAndDisconnectWithLinePoints)
     const auto again = session.handle({{"id", 4}, {"type", "disconnect"},
                                        {"from", {{"component", "Probe"}, {"port", "in"}}},
                                        {"to", {{"component", "Step"}, {"port", "out"}}}});
-    EXPECT_EQ(again.code, "not_found");
+    EXPECT_EQ(again.code, "illegal_connection");
+    EXPECT_NE(again.message.find("not connected"), std::string::npos) << again.message;
 }
 
 TEST(EditSession, RemoveDropsTheComponentAndItsConnections)
@@ -318,7 +320,8 @@ TEST(EditSession, SystemParametersCanBeSetAndUsed)
     EXPECT_EQ(changed.data["parameter"]["unit"], "kg");
     const auto bad = session.handle({{"id", 4}, {"type", "sysparam.set"}, {"name", "heavy"}, {"value", "nothing+1"}});
     EXPECT_EQ(bad.code, "invalid_parameter");
-    const json* p = findByName(rootSystem(session).at("parameters"), "heavy");
+    const json system = rootSystem(session);
+    const json* p = findByName(system.at("parameters"), "heavy");
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->at("value"), "400");
     const auto newBad = session.handle({{"id", 5}, {"type", "sysparam.set"}, {"name", "fresh"}, {"value", "nothing+1"}});
@@ -332,7 +335,8 @@ TEST(EditSession, MoveChangesOnlyThePose)
     const json pose = {{"x", 1.25}, {"y", 2}, {"angle", 270}, {"flipped", true}};
     const auto r = session.handle({{"id", 1}, {"type", "component.move"}, {"name", "Mass"}, {"pose", pose}});
     expectReplyShape("component.move", r);
-    const json* mass = findByName(rootSystem(session).at("components"), "Mass");
+    const json system = rootSystem(session);
+    const json* mass = findByName(system.at("components"), "Mass");
     EXPECT_EQ(mass->at("pose"), json({{"x", 1.25}, {"y", 2.0}, {"angle", 270.0}, {"flipped", true}}));
     // Other GUI data of the component stays (Hopsan needs it).
     EXPECT_NE(session.saveHmf().find("hopsanobjectappearance"), std::string::npos);
@@ -365,6 +369,24 @@ TEST(EditSession, SaveAndReloadKeepsNewComponentPoseAndParameter)
     EXPECT_EQ(findByName(gain->at("parameters"), "k#Value")->at("value"), "3.5");
     EXPECT_EQ(findByName(system.at("components"), "Mass")->at("pose").at("x"), 5.0);
     EXPECT_EQ(system.at("connections").size(), 24u);
+}
+
+TEST(EditSession, SavingKeepsEveryConnectionLine)
+{
+    // Files list some connections in the other direction than the saver writes them.
+    for (const char* file : {"Position Servo.hmf", "Sub System Example.hmf", "Load Sensing System.hmf"}) {
+        EditSession session;
+        std::string error;
+        ASSERT_TRUE(session.openHmf(readFile(kModels + file), file, error)) << error;
+        EditSession reloaded;
+        ASSERT_TRUE(reloaded.openHmf(session.saveHmf(), file, error)) << error;
+        const json before = session.modelJson();
+        const json after = reloaded.modelJson();
+        EXPECT_EQ(before, after) << file;
+        std::size_t lines = 0;
+        for (const json& c : before["system"]["connections"]) lines += c["points"].empty() ? 0 : 1;
+        EXPECT_EQ(lines, before["system"]["connections"].size()) << file << ": every connection has a line";
+    }
 }
 
 TEST(EditSession, SystemPathNavigatesIntoSubsystems)

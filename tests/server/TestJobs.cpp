@@ -165,7 +165,7 @@ TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
     const auto result = store.result(*submitted.id);
     ASSERT_TRUE(result);
     ASSERT_EQ(result->time.size(), 101u);
-    EXPECT_DOUBLE_EQ(result->time.back(), 1.0);
+    EXPECT_NEAR(result->time.back(), 1.0, 1e-9);
 
     // The same overrides applied directly give the same numbers, and they differ from the
     // model's own values.
@@ -275,6 +275,8 @@ TEST_F(Jobs, CancelQueuedAndRunning)
     ASSERT_TRUE(queuedEvents.done());
     EXPECT_EQ(queuedEvents.snapshot().back().at("state"), "cancelled");
 
+    // Cancel in the middle of simulate(): progress is stored from its first callback on.
+    ASSERT_TRUE(waitUntil([&] { return store.info(running)->progress > 0.0; }));
     const auto t0 = std::chrono::steady_clock::now();
     EXPECT_TRUE(queue.cancel(running));
     EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
@@ -348,6 +350,45 @@ TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
     broken.hmf.clear();
     EXPECT_EQ(queue.submit(broken).code, "invalid_model");
     EXPECT_EQ(store.listAll().size(), 2u);
+}
+
+TEST_F(Jobs, NestedParametersReachIntoSubsystems)
+{
+    const std::string path =
+        std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Example Models/Sub System Example.hmf";
+    LoadedModel m = loadHmfFile(path);
+    ASSERT_TRUE(m.root);
+    System& root = *m.root;
+    std::string err;
+    EXPECT_TRUE(applyParameter(root, "Servo1$Translational_Mass.m", "400", err)) << err;
+    EXPECT_TRUE(applyParameter(root, "Servo1.PGain", "0.01", err)) << err;         // a subsystem's parameter
+    EXPECT_TRUE(applyParameter(root, "Servo1$Gain.k", "PGain * 2", err)) << err;   // its own scope
+    EXPECT_TRUE(applyParameter(root, "Force", "2000", err)) << err;
+    EXPECT_EQ(root.subsystem("Servo1")->component("Translational_Mass")->parameters().find("m")->value, "400");
+    EXPECT_EQ(root.subsystem("Servo1")->parameters().find("PGain")->value, "0.01");
+    EXPECT_EQ(root.subsystem("Servo1")->component("Gain")->parameters().find("k#Value")->value, "PGain * 2");
+    EXPECT_EQ(root.subsystem("Servo2")->component("Translational_Mass")->parameters().find("m")->value, "200");
+    EXPECT_FALSE(applyParameter(root, "Servo1$NoSuch.m", "1", err));
+    EXPECT_NE(err.find("NoSuch"), std::string::npos) << err;
+    EXPECT_FALSE(applyParameter(root, "NoSuch$Gain.k", "1", err));
+    EXPECT_FALSE(applyParameter(root, "Servo1$Gain.k", "Force2 * 2", err));   // unknown name
+    EXPECT_EQ(root.subsystem("Servo1")->component("Gain")->parameters().find("k#Value")->value, "PGain * 2");
+
+    JobQueue queue(store, hub, {}, 1);
+    queue.start();
+    JobRequest r = request(path);
+    r.parameters = {{"Servo1$Translational_Mass.m", "400"}};
+    const auto heavier = queue.submit(r);
+    ASSERT_TRUE(heavier.id) << heavier.message;
+    const auto plain = queue.submit(request(path));
+    ASSERT_TRUE(finishes(*heavier.id) && finishes(*plain.id));
+    ASSERT_EQ(state(*heavier.id), JobState::Done);
+    const ResultTable a = *store.result(*heavier.id), b = *store.result(*plain.id);
+    const ResultColumn* moved = a.column("Servo1$Translational_Mass#P1#Position");
+    ASSERT_TRUE(moved);
+    EXPECT_NE(moved->data, b.column("Servo1$Translational_Mass#P1#Position")->data);
+    EXPECT_EQ(a.column("Servo2$Translational_Mass#P1#Position")->data,
+              b.column("Servo2$Translational_Mass#P1#Position")->data);
 }
 
 TEST_F(Jobs, WallTimeLimitFailsTheJob)

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -397,9 +398,11 @@ TEST(ProtocolOpenApi, SchemasAreTheMessageSchemaShapes)
     for (auto& [name, def] : defs.items()) {
         ASSERT_TRUE(copies.contains(name)) << name << ": re-run protocol/make-openapi.py";
         const json& copy = copies[name];
+        const json defProperties = def.value("properties", json::object());
+        const json copyProperties = copy.value("properties", json::object());
         std::set<std::string> a, b;
-        for (auto& [p, _] : def.value("properties", json::object()).items()) a.insert(p);
-        for (auto& [p, _] : copy.value("properties", json::object()).items()) b.insert(p);
+        for (auto& [p, _] : defProperties.items()) a.insert(p);
+        for (auto& [p, _] : copyProperties.items()) b.insert(p);
         EXPECT_EQ(a, b) << name << ": re-run protocol/make-openapi.py";
         EXPECT_EQ(def.value("required", json::array()), copy.value("required", json::array())) << name;
     }

@@ -330,3 +330,49 @@ TEST(ServerRestart, SigtermStopsRunningJobsAsInterrupted)
     EXPECT_EQ(admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"], "interrupted");
     fs::remove_all(dir);
 }
+
+TEST(ServerComponentLibrary, LoadsOnlyThroughTheStartupFlag)
+{
+    const fs::path dir = freshTempDir("complib");
+    {
+        ServerProcess plain(dir / "plain");
+        HttpClient c(plain.port());
+        c.login("admin", kAdminPassword);
+        EXPECT_EQ(c.get("/api/v1/components").body.find("ExampleSquare"), std::string::npos);
+    }
+    ServerProcess withLib(dir / "lib", {"--component-lib", TLMHUB_EXAMPLE_COMPONENT_LIB});
+    EXPECT_NE(withLib.output().find("loaded 1 component types"), std::string::npos) << withLib.output();
+    HttpClient c(withLib.port());
+    const std::string token = c.login("admin", kAdminPassword);
+    EXPECT_NE(c.get("/api/v1/components").body.find("ExampleSquare"), std::string::npos);
+    WsClient ws(withLib.port(), token);
+    const auto created = ws.call("model.create", {{"name", "squares"}});
+    ASSERT_EQ(created["type"], "reply") << created.dump();
+    const auto added = ws.call("component.add", {{"component_type", "ExampleSquare"}});
+    EXPECT_EQ(added["type"], "reply") << added.dump();
+    fs::remove_all(dir);
+}
+
+TEST_F(ServerApi, ASlowClientDoesNotHoldUpTheJobOrOthers)
+{
+    HttpClient alice = as("alice");
+    const auto id = uploadModel(alice, kPositionServo, "servo-slow");
+    WsClient slow(server->port(), alice.login("alice", "alice-password"));
+    ASSERT_EQ(slow.call("model.open", {{"model_id", id}})["type"], "reply");
+    // Many frames per second, and this client reads none of them while the job runs.
+    const auto started = slow.call("simulate.start", {{"stop", 1500.0}, {"log_samples", 50000}, {"rate", 120}});
+    ASSERT_EQ(started["type"], "reply") << started.dump();
+    const std::int64_t job = started["data"]["job_id"];
+    HttpClient other = as("bob");
+    const auto done = waitForJob(alice, job, 60);
+    EXPECT_EQ(done["state"], "done");
+    EXPECT_EQ(other.get("/api/v1/health").status, 200);
+    // The slow client still gets its events, ending with event.done (never dropped).
+    std::string finalState;
+    for (int i = 0; i < 100000 && finalState.empty(); ++i) {
+        const auto e = slow.receive(20000);
+        ASSERT_FALSE(e.is_null());
+        if (e["type"] == "event.done") finalState = e["state"];
+    }
+    EXPECT_EQ(finalState, "done");
+}

@@ -5,12 +5,14 @@
 #include "core/Results.h"
 #include "core/hmf/HmfLoader.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <random>
 #include <sstream>
 
 using namespace tlmhub;
@@ -219,4 +221,24 @@ TEST(ResultTable, DeserializeRefusesDamagedInput)
     EXPECT_FALSE(ResultTable::deserialize("XXXX" + bytes.substr(4), out));
     EXPECT_FALSE(ResultTable::deserialize("", out));
     EXPECT_EQ(out.time, std::vector<double>{42.0});   // unchanged on failure
+}
+
+TEST(ResultTable, NumbersFormatExactlyAsPrintf)
+{
+    // Random bit patterns cover subnormals, infinities, NaNs and every exponent.
+    std::mt19937_64 rng(12345);
+    ResultTable t;
+    ResultColumn c{"x", "", {}};
+    for (int i = 0; i < 100000; ++i) {
+        t.time.push_back(static_cast<double>(i));
+        c.data.push_back(std::bit_cast<double>(rng()));
+    }
+    t.columns.push_back(c);
+    std::string expected = "time,x\n";
+    char buf[64];
+    for (std::size_t i = 0; i < t.time.size(); ++i) {
+        std::snprintf(buf, sizeof buf, "%.17g,%.17g\n", t.time[i], c.data[i]);
+        expected += buf;
+    }
+    EXPECT_EQ(t.toCsv(), expected);
 }
