@@ -1,0 +1,84 @@
+// REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
+import { ApiError } from './ApiError';
+import type {
+    CatalogueEntry, JobInfo, Model, ModelSummary, ResultsJson, User,
+} from '../protocol/types';
+
+export interface LoginResult { token: string; expires_at: number; user: User }
+
+export class RestClient {
+    constructor(
+        private token: string | null = null,
+        private readonly base = '/api/v1',
+        private readonly fetchFn: typeof fetch = (...args) => fetch(...args),
+    ) {}
+
+    setToken(token: string | null): void { this.token = token; }
+    getToken(): string | null { return this.token; }
+
+    async call<T>(method: string, path: string, body?: unknown, contentType = 'application/json',
+        accept = 'application/json'): Promise<T> {
+        const headers: Record<string, string> = { Accept: accept };
+        if (this.token) headers.Authorization = `Bearer ${this.token}`;
+        let payload: string | undefined;
+        if (body !== undefined) {
+            headers['Content-Type'] = contentType;
+            payload = typeof body === 'string' ? body : JSON.stringify(body);
+        }
+        const response = await this.fetchFn(this.base + path, { method, headers, body: payload });
+        const text = await response.text();
+        if (!response.ok) throw errorFromResponse(response.status, text);
+        if (response.status === 204 || text === '') return undefined as T;
+        if (accept === 'application/json') return JSON.parse(text) as T;
+        return text as T;
+    }
+
+    login(username: string, password: string): Promise<LoginResult> {
+        return this.call('POST', '/auth/login', { username, password });
+    }
+    logout(): Promise<void> { return this.call('POST', '/auth/logout'); }
+    me(): Promise<User> { return this.call('GET', '/auth/me'); }
+
+    listModels(): Promise<ModelSummary[]> { return this.call('GET', '/models'); }
+    getModel(id: number): Promise<ModelSummary & { model: Model; writable?: boolean }> { return this.call('GET', `/models/${id}`); }
+    createModel(name: string): Promise<ModelSummary> { return this.call('POST', '/models', { name }); }
+    duplicateModel(id: number, name: string): Promise<ModelSummary> {
+        return this.call('POST', '/models', { name, copy_of: id });
+    }
+    uploadHmf(hmf: string, name?: string): Promise<ModelSummary> {
+        const query = name ? `?name=${encodeURIComponent(name)}` : '';
+        return this.call('POST', `/models${query}`, hmf, 'application/xml');
+    }
+    downloadHmf(id: number): Promise<string> {
+        return this.call('GET', `/models/${id}?format=hmf`, undefined, undefined, 'application/xml');
+    }
+    replaceHmf(id: number, hmf: string): Promise<ModelSummary> {
+        return this.call('PUT', `/models/${id}`, hmf, 'application/xml');
+    }
+    renameModel(id: number, name: string): Promise<ModelSummary> {
+        return this.call('PUT', `/models/${id}`, { name });
+    }
+    deleteModel(id: number): Promise<void> { return this.call('DELETE', `/models/${id}`); }
+
+    components(): Promise<CatalogueEntry[]> { return this.call('GET', '/components'); }
+
+    job(id: number): Promise<JobInfo> { return this.call('GET', `/jobs/${id}`); }
+    resultsJson(id: number, variables: string[]): Promise<ResultsJson> {
+        const list = variables.map(encodeURIComponent).join(',');
+        return this.call('GET', `/jobs/${id}/results?format=json&variables=${list}`);
+    }
+    resultsCsv(id: number, variables: string[]): Promise<string> {
+        const list = variables.map(encodeURIComponent).join(',');
+        return this.call('GET', `/jobs/${id}/results?format=csv&variables=${list}`, undefined, undefined, 'text/csv');
+    }
+}
+
+function errorFromResponse(status: number, text: string): ApiError {
+    try {
+        const body = JSON.parse(text) as { error?: { code?: string; message?: string } };
+        if (body.error?.code) return new ApiError(body.error.code, body.error.message ?? body.error.code, status);
+    } catch {
+        // not JSON: fall through to a generic error
+    }
+    return new ApiError(status === 404 ? 'not_found' : 'http_error', text || `HTTP ${status}`, status);
+}

@@ -1,0 +1,46 @@
+// The logged-in user: token kept in sessionStorage (per tab) so a reload stays logged in.
+import { RestClient } from '../api/RestClient';
+import type { User } from '../protocol/types';
+
+const TOKEN_KEY = 'tlmhub.token';
+
+export class Session {
+    readonly rest = new RestClient(sessionStorage.getItem(TOKEN_KEY));
+    user: User | null = null;
+
+    get token(): string | null { return this.rest.getToken(); }
+
+    async login(username: string, password: string): Promise<User> {
+        const result = await this.rest.login(username, password);
+        this.rest.setToken(result.token);
+        sessionStorage.setItem(TOKEN_KEY, result.token);
+        this.user = result.user;
+        return result.user;
+    }
+
+    /** Checks a stored token; false when there is none or it expired. */
+    async restore(): Promise<boolean> {
+        if (!this.token) return false;
+        try {
+            this.user = await this.rest.me();
+            return true;
+        } catch {
+            this.forget();
+            return false;
+        }
+    }
+
+    async logout(): Promise<void> {
+        try {
+            await this.rest.logout();
+        } finally {
+            this.forget();
+        }
+    }
+
+    private forget(): void {
+        this.rest.setToken(null);
+        sessionStorage.removeItem(TOKEN_KEY);
+        this.user = null;
+    }
+}

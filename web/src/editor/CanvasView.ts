@@ -1,0 +1,447 @@
+// The model drawn on an SVG canvas, derived from the store on every change. Pointer input
+// becomes commands: move, connect (port to port), select (click, shift-drag box), pan, zoom.
+import { EditorStore } from './EditorStore';
+import { AddComponent, Connect, MoveComponents, type Move } from './commands';
+import { componentIcon } from './icons';
+import {
+    anchorsFromSystem, connectionPath, isInputVariablePort, layoutComponent, objectCentre, orientedPoints, toScene,
+    type Anchors, type ComponentLayout, type Point,
+} from '../model/geometry';
+import { nodeColour } from '../model/nodeTypes';
+import { sameRef, uniqueName } from '../model/modelState';
+import { abbreviation } from './icons';
+import { s, h, errorText } from '../ui/dom';
+import type { Component, Port, PortRef, Pose, System } from '../protocol/types';
+
+export interface CanvasCallbacks {
+    /** A port was clicked (not dragged): offer its variables for plotting. */
+    onPortClick(ref: PortRef, client: Point): void;
+    /** A component was double-clicked (subsystems are entered by the canvas itself). */
+    onComponentDoubleClick(name: string): void;
+}
+
+type Drag =
+    | { kind: 'move'; start: Point; names: string[]; origin: Map<string, Pose>; moved: boolean }
+    | { kind: 'connect'; from: PortRef; fromPoint: Point; current: Point; startClient: Point; moved: boolean }
+    | { kind: 'pan'; startClient: Point; tx: number; ty: number }
+    | { kind: 'marquee'; start: Point; current: Point };
+
+const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
+
+export class CanvasView {
+    readonly element: HTMLDivElement;
+    private readonly svg: SVGSVGElement;
+    private readonly world: SVGGElement;
+    private view = { tx: 0, ty: 0, scale: 1 };
+    private readonly anchors = new Map<string, Anchors>();
+    private readonly loadedPoses = new Map<string, Pose>();
+    private readonly poseOverride = new Map<string, Pose>();
+    private drag: Drag | null = null;
+    private lastPress: { name: string; time: number } | null = null;
+    private generation = 0;
+    private portError: { ref: PortRef; message: string; timer: number } | null = null;
+    private fittedPath: string | null = null;
+    /** A clicked connection (Delete removes it). */
+    selectedConnection: { from: PortRef; to: PortRef } | null = null;
+    /** Layouts of the components on screen, by name (for hit tests and tests). */
+    layouts = new Map<string, ComponentLayout>();
+
+    constructor(private readonly store: EditorStore, private readonly callbacks: CanvasCallbacks) {
+        this.world = s('g', { class: 'world' });
+        this.svg = s('svg', { class: 'canvas', tabindex: 0, 'data-testid': 'canvas' }, this.world);
+        this.element = h('div', { class: 'canvas-wrap' }, this.svg);
+        this.svg.addEventListener('pointerdown', (e) => this.onPointerDown(e));
+        this.svg.addEventListener('pointermove', (e) => this.onPointerMove(e));
+        this.svg.addEventListener('pointerup', (e) => void this.onPointerUp(e));
+        this.svg.addEventListener('wheel', (e) => this.onWheel(e), { passive: false });
+        this.svg.addEventListener('dragover', (e) => {
+            if (e.dataTransfer?.types.includes('application/x-tlmhub-type')) e.preventDefault();
+        });
+        this.svg.addEventListener('drop', (e) => {
+            const type = e.dataTransfer?.getData('application/x-tlmhub-type');
+            if (!type) return;
+            e.preventDefault();
+            void this.addComponent(type, this.sceneFromClient(e.clientX, e.clientY));
+        });
+        store.subscribe(() => this.render());
+        new ResizeObserver(() => { if (this.fittedPath === null) this.render(); }).observe(this.element);
+    }
+
+    private get pathKey(): string { return this.store.path.join('$'); }
+    private key(name: string): string { return `${this.pathKey}/${name}`; }
+
+    // ---- coordinates ----
+    sceneFromClient(clientX: number, clientY: number): Point {
+        const r = this.svg.getBoundingClientRect();
+        return { x: (clientX - r.left - this.view.tx) / this.view.scale, y: (clientY - r.top - this.view.ty) / this.view.scale };
+    }
+
+    /** Screen (client) position of a scene point. */
+    clientFromScene(p: Point): Point {
+        const r = this.svg.getBoundingClientRect();
+        return { x: r.left + this.view.tx + p.x * this.view.scale, y: r.top + this.view.ty + p.y * this.view.scale };
+    }
+
+    private applyView(): void {
+        this.world.setAttribute('transform', `translate(${this.view.tx},${this.view.ty}) scale(${this.view.scale})`);
+    }
+
+    zoomBy(factor: number, aroundClient?: Point): void {
+        const r = this.svg.getBoundingClientRect();
+        const cx = aroundClient ? aroundClient.x - r.left : r.width / 2;
+        const cy = aroundClient ? aroundClient.y - r.top : r.height / 2;
+        const scale = Math.min(8, Math.max(0.1, this.view.scale * factor));
+        const k = scale / this.view.scale;
+        this.view = { scale, tx: cx - (cx - this.view.tx) * k, ty: cy - (cy - this.view.ty) * k };
+        this.applyView();
+    }
+
+    /** Shows the whole system. */
+    fit(): void {
+        const system = this.store.system;
+        const r = this.svg.getBoundingClientRect();
+        if (r.width === 0 || r.height === 0) return;
+        const xs: number[] = [];
+        const ys: number[] = [];
+        for (const c of system.components) {
+            const l = this.layouts.get(c.name);
+            const ext = l ? Math.max(l.halfWidth, l.halfHeight) : 30;
+            xs.push(c.pose.x - ext, c.pose.x + ext);
+            ys.push(c.pose.y - ext, c.pose.y + ext + 16);
+        }
+        for (const p of system.ports) { xs.push(p.pose.x - 20, p.pose.x + 20); ys.push(p.pose.y - 20, p.pose.y + 20); }
+        if (xs.length === 0) {
+            this.view = { scale: 1, tx: r.width / 2, ty: r.height / 2 };
+        } else {
+            const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+            const scale = Math.min(2, Math.max(0.1, Math.min((r.width - 40) / (x1 - x0 || 1), (r.height - 40) / (y1 - y0 || 1))));
+            this.view = { scale, tx: r.width / 2 - ((x0 + x1) / 2) * scale, ty: r.height / 2 - ((y0 + y1) / 2) * scale };
+        }
+        this.fittedPath = this.pathKey;
+        this.applyView();
+    }
+
+    /** Centre of the visible area in scene coordinates. */
+    viewCentre(): Point {
+        const r = this.svg.getBoundingClientRect();
+        return this.sceneFromClient(r.left + r.width / 2, r.top + r.height / 2);
+    }
+
+    // ---- drawing ----
+    private anchorsFor(system: System): Anchors {
+        let anchors = this.anchors.get(this.pathKey);
+        if (!anchors) {
+            anchors = anchorsFromSystem(system);
+            this.anchors.set(this.pathKey, anchors);
+            for (const c of system.components) this.loadedPoses.set(this.key(c.name), { ...c.pose });
+        }
+        return anchors;
+    }
+
+    // where a component was when its lines were drawn (the points were oriented then)
+    private loadedCentre(system: System, name: string): Point | undefined {
+        const loaded = this.loadedPoses.get(this.key(name));
+        return loaded ? { x: loaded.x, y: loaded.y } : objectCentre(system, name);
+    }
+
+    private poseOf(c: Component): Pose { return this.poseOverride.get(c.name) ?? c.pose; }
+
+    /** Scene position of a port (a system port is its own pose). */
+    portPoint(system: System, ref: PortRef): Point | null {
+        const comp = system.components.find((c) => c.name === ref.component);
+        if (comp) {
+            const local = this.layouts.get(comp.name)?.ports.get(ref.port);
+            return local ? toScene(this.poseOf(comp), local) : toScene(this.poseOf(comp), { x: 0, y: 0 });
+        }
+        const sp = system.ports.find((p) => p.name === ref.component);
+        return sp ? { x: sp.pose.x, y: sp.pose.y } : null;
+    }
+
+    render(): void {
+        if (this.generation !== this.store.generation) {
+            // another model (or the same one reopened): the author's drawing is read afresh
+            this.generation = this.store.generation;
+            this.anchors.clear();
+            this.loadedPoses.clear();
+            this.fittedPath = null;
+        }
+        const system = this.store.system;
+        const anchors = this.anchorsFor(system);
+        this.layouts = new Map(system.components.map((c) => [c.name, layoutComponent(c, anchors.get(c.name))]));
+        if (this.fittedPath !== this.pathKey) this.fit();
+
+        const connections = s('g', { class: 'connections' });
+        for (const conn of system.connections) {
+            const a = this.portPoint(system, conn.from);
+            const b = this.portPoint(system, conn.to);
+            if (!a || !b) continue;
+            const unmoved = [conn.from.component, conn.to.component].every((name) => {
+                const comp = system.components.find((c) => c.name === name);
+                const loaded = this.loadedPoses.get(this.key(name));
+                if (!comp) return true;   // system port
+                const pose = this.poseOf(comp);
+                return loaded !== undefined && loaded.x === pose.x && loaded.y === pose.y && loaded.angle === pose.angle && loaded.flipped === pose.flipped;
+            });
+            const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
+            const nodeType = this.portOf(system, conn.from)?.node_type ?? this.portOf(system, conn.to)?.node_type;
+            const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
+            connections.append(s('polyline', {
+                class: `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`,
+                points: pts.map((p) => `${p.x},${p.y}`).join(' '),
+                stroke: nodeColour(nodeType),
+                'data-from': `${conn.from.component}.${conn.from.port}`,
+                'data-to': `${conn.to.component}.${conn.to.port}`,
+            }));
+        }
+
+        const components = s('g', { class: 'components' });
+        for (const comp of system.components) components.append(this.drawComponent(comp));
+        for (const sp of system.ports) components.append(this.drawSystemPort(sp.name, sp.node_type, sp.pose));
+
+        const overlay = s('g', { class: 'overlay' });
+        const drag = this.drag;
+        if (drag?.kind === 'connect' && drag.moved) {
+            overlay.append(s('line', { class: 'drag-line', x1: drag.fromPoint.x, y1: drag.fromPoint.y, x2: drag.current.x, y2: drag.current.y }));
+        }
+        if (drag?.kind === 'marquee') {
+            const [x0, y0, x1, y1] = [Math.min(drag.start.x, drag.current.x), Math.min(drag.start.y, drag.current.y),
+                Math.max(drag.start.x, drag.current.x), Math.max(drag.start.y, drag.current.y)];
+            overlay.append(s('rect', { class: 'marquee', x: x0, y: y0, width: x1 - x0, height: y1 - y0 }));
+        }
+        if (this.portError) {
+            const at = this.portPoint(system, this.portError.ref);
+            if (at) overlay.append(this.drawBubble(at, this.portError.message));
+        }
+        this.world.replaceChildren(connections, components, overlay);
+        this.applyView();
+    }
+
+    private portOf(system: System, ref: PortRef): Port | undefined {
+        return system.components.find((c) => c.name === ref.component)?.ports.find((p) => p.name === ref.port);
+    }
+
+    private drawComponent(comp: Component): SVGGElement {
+        const layout = this.layouts.get(comp.name)!;
+        const pose = this.poseOf(comp);
+        const selected = this.store.selection.has(comp.name);
+        const transform = `translate(${pose.x},${pose.y}) rotate(${pose.angle})${pose.flipped ? ' scale(-1,1)' : ''}`;
+        const body = s('g', { class: 'component-body', transform },
+            componentIcon(comp.type, layout.halfWidth, layout.halfHeight),
+            ...comp.ports.map((p) => this.drawPort(comp, p, layout.ports.get(p.name) ?? { x: 0, y: 0 })));
+        // the label stays upright below the rotated box
+        const quarter = Math.round(pose.angle / 90) % 2 !== 0;
+        const below = (quarter ? layout.halfWidth : layout.halfHeight) + 11;
+        const label = s('text', { class: 'component-label', x: pose.x, y: pose.y + below, 'text-anchor': 'middle' }, comp.name);
+        return s('g', {
+            class: `component${selected ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`,
+            'data-name': comp.name, 'data-type': comp.type,
+        }, s('title', {}, `${comp.name} (${comp.type})`), body, label);
+    }
+
+    private drawPort(comp: Component, port: Port, at: Point): SVGElement {
+        const colour = nodeColour(port.node_type);
+        const hidden = !port.connected && port.kind === 'read' && isInputVariablePort(comp, port.name);
+        const size = hidden ? 3 : 4.5;
+        const attrs = {
+            class: `port port-${port.kind}${port.connected ? ' connected' : ''}${hidden ? ' optional' : ''}${port.multiport ? ' multiport' : ''}`,
+            'data-component': comp.name, 'data-port': port.name,
+            stroke: colour, fill: port.connected ? colour : '#fff',
+        };
+        let shape: SVGElement;
+        if (port.kind === 'read') {
+            shape = s('polygon', { ...attrs, points: `${at.x - size},${at.y - size} ${at.x + size},${at.y} ${at.x - size},${at.y + size}` });
+        } else if (port.kind === 'write') {
+            shape = s('rect', { ...attrs, x: at.x - size, y: at.y - size, width: 2 * size, height: 2 * size });
+        } else {
+            shape = s('circle', { ...attrs, cx: at.x, cy: at.y, r: port.multiport ? size + 1 : size });
+        }
+        shape.append(s('title', {}, `${comp.name}.${port.name} (${port.node_type.replace(/^Node/, '')}, ${port.kind}${port.multiport ? ', multiport' : ''})`));
+        return shape;
+    }
+
+    private drawSystemPort(name: string, nodeType: string | null, pose: Pose): SVGGElement {
+        const r = 8;
+        const colour = nodeColour(nodeType);
+        return s('g', { class: 'component system-port', 'data-name': name, 'data-type': 'SystemPort' },
+            s('polygon', { class: 'system-port-shape', points: `${pose.x - r},${pose.y} ${pose.x},${pose.y - r} ${pose.x + r},${pose.y} ${pose.x},${pose.y + r}`, fill: '#fff', stroke: colour }),
+            s('circle', { class: 'port port-system', 'data-component': name, 'data-port': name, cx: pose.x, cy: pose.y, r: 3.5, fill: colour, stroke: colour }),
+            s('text', { class: 'component-label', x: pose.x, y: pose.y + r + 11, 'text-anchor': 'middle' }, name));
+    }
+
+    private drawBubble(at: Point, message: string): SVGGElement {
+        const text = s('text', { x: at.x + 12, y: at.y - 14, class: 'port-error-text' }, message);
+        const width = Math.min(600, message.length * 6.2 + 12);
+        return s('g', { class: 'port-error', role: 'alert' },
+            s('rect', { x: at.x + 6, y: at.y - 28, width, height: 20, rx: 4 }), text);
+    }
+
+    /** Shows a refused connection's reason next to the port for a while. */
+    showPortError(ref: PortRef, message: string): void {
+        if (this.portError) clearTimeout(this.portError.timer);
+        const timer = window.setTimeout(() => { this.portError = null; this.render(); }, 10000);
+        this.portError = { ref, message, timer };
+        this.render();
+    }
+
+    // ---- commands started from the canvas ----
+    async addComponent(type: string, at: Point): Promise<string | null> {
+        const system = this.store.system;
+        const base = type === 'Subsystem' ? 'Subsystem' : type.replace(/^(Hydraulic|Mechanic|Signal|Electric|Pneumatic|Aero)/, '') || abbreviation(type);
+        const command = new AddComponent(this.store.path, type, uniqueName(system, base), { x: Math.round(at.x), y: Math.round(at.y), angle: 0, flipped: false });
+        try {
+            await this.store.execute(command);
+            this.store.select([command.addedName]);
+            return command.addedName;
+        } catch (e) {
+            this.notifyError(e);
+            return null;
+        }
+    }
+
+    private notifyError(e: unknown): void {
+        this.element.dispatchEvent(new CustomEvent('editor-error', { bubbles: true, detail: errorText(e) }));
+    }
+
+    // ---- pointer input ----
+    private onPointerDown(e: PointerEvent): void {
+        this.svg.focus();
+        const target = e.target as Element;
+        const scene = this.sceneFromClient(e.clientX, e.clientY);
+        const portEl = target.closest('[data-port]');
+        const compEl = target.closest('.component');
+        const connEl = target.closest('.connection');
+        if (e.button === 0 && connEl && !portEl) {
+            const split = (text: string) => ({ component: text.slice(0, text.lastIndexOf('.')), port: text.slice(text.lastIndexOf('.') + 1) });
+            this.selectedConnection = { from: split(connEl.getAttribute('data-from')!), to: split(connEl.getAttribute('data-to')!) };
+            this.store.select([]);
+            return;
+        }
+        if (this.selectedConnection) {
+            this.selectedConnection = null;
+            this.render();
+        }
+        if (e.button === 1 || (e.button === 0 && !portEl && !compEl && !e.shiftKey)) {
+            this.drag = { kind: 'pan', startClient: { x: e.clientX, y: e.clientY }, tx: this.view.tx, ty: this.view.ty };
+        } else if (e.button !== 0) {
+            return;
+        } else if (portEl) {
+            const from = { component: portEl.getAttribute('data-component')!, port: portEl.getAttribute('data-port')! };
+            const fromPoint = this.portPoint(this.store.system, from) ?? scene;
+            this.drag = { kind: 'connect', from, fromPoint, current: scene, startClient: { x: e.clientX, y: e.clientY }, moved: false };
+        } else if (compEl) {
+            const name = compEl.getAttribute('data-name')!;
+            if (compEl.classList.contains('system-port')) return;
+            // the drawing is rebuilt between two clicks, so the browser's dblclick cannot be used
+            const now = performance.now();
+            const last = this.lastPress;
+            this.lastPress = { name, time: now };
+            if (last && last.name === name && now - last.time < 450) {
+                this.lastPress = null;
+                this.onDoubleClick(name);
+                return;
+            }
+            if (e.shiftKey || e.ctrlKey || e.metaKey) {
+                const next = new Set(this.store.selection);
+                if (next.has(name)) next.delete(name); else next.add(name);
+                this.store.select(next);
+                return;
+            }
+            if (!this.store.selection.has(name)) this.store.select([name]);
+            const names = [...this.store.selection];
+            const origin = new Map(this.store.system.components.filter((c) => names.includes(c.name)).map((c) => [c.name, { ...c.pose }]));
+            this.drag = { kind: 'move', start: scene, names, origin, moved: false };
+        } else {
+            this.drag = { kind: 'marquee', start: scene, current: scene };
+        }
+        this.svg.setPointerCapture(e.pointerId);
+    }
+
+    private onPointerMove(e: PointerEvent): void {
+        const drag = this.drag;
+        if (!drag) return;
+        const scene = this.sceneFromClient(e.clientX, e.clientY);
+        if (drag.kind === 'pan') {
+            this.view.tx = drag.tx + e.clientX - drag.startClient.x;
+            this.view.ty = drag.ty + e.clientY - drag.startClient.y;
+            this.applyView();
+        } else if (drag.kind === 'connect') {
+            drag.current = scene;
+            if (Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD) drag.moved = true;
+            this.render();
+        } else if (drag.kind === 'move') {
+            const dx = scene.x - drag.start.x;
+            const dy = scene.y - drag.start.y;
+            if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD) drag.moved = true;
+            if (!drag.moved) return;
+            for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + dx), y: Math.round(pose.y + dy) });
+            this.render();
+        } else {
+            drag.current = scene;
+            this.render();
+        }
+    }
+
+    private async onPointerUp(e: PointerEvent): Promise<void> {
+        const drag = this.drag;
+        this.drag = null;
+        if (this.svg.hasPointerCapture(e.pointerId)) this.svg.releasePointerCapture(e.pointerId);
+        if (!drag) return;
+        if (drag.kind === 'pan') {
+            if (Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) <= DRAG_THRESHOLD) this.store.select([]);
+        } else if (drag.kind === 'marquee') {
+            this.selectInBox(drag.start, drag.current);
+        } else if (drag.kind === 'connect') {
+            this.render();
+            if (!drag.moved) {
+                this.callbacks.onPortClick(drag.from, { x: e.clientX, y: e.clientY });
+                return;
+            }
+            const target = document.elementFromPoint(e.clientX, e.clientY)?.closest('[data-port]');
+            if (!target) return;
+            const to = { component: target.getAttribute('data-component')!, port: target.getAttribute('data-port')! };
+            if (to.component === drag.from.component && to.port === drag.from.port) return;
+            try {
+                await this.store.execute(new Connect(this.store.path, drag.from, to));
+            } catch (err) {
+                this.showPortError(to, errorText(err));
+            }
+        } else if (drag.kind === 'move') {
+            if (!drag.moved) return;
+            const moves: Move[] = [];
+            for (const [name, from] of drag.origin) {
+                const to = this.poseOverride.get(name);
+                if (to) moves.push({ name, from, to });
+            }
+            try {
+                await this.store.execute(new MoveComponents(this.store.path, moves));
+            } catch (err) {
+                this.notifyError(err);
+            } finally {
+                for (const name of drag.origin.keys()) this.poseOverride.delete(name);
+                this.render();
+            }
+        }
+    }
+
+    private selectInBox(a: Point, b: Point): void {
+        const [x0, x1, y0, y1] = [Math.min(a.x, b.x), Math.max(a.x, b.x), Math.min(a.y, b.y), Math.max(a.y, b.y)];
+        const inside = this.store.system.components
+            .filter((c) => c.pose.x >= x0 && c.pose.x <= x1 && c.pose.y >= y0 && c.pose.y <= y1)
+            .map((c) => c.name);
+        this.store.select(inside);
+    }
+
+    private onDoubleClick(name: string): void {
+        const comp = this.store.system.components.find((c) => c.name === name);
+        if (comp?.system) {
+            this.store.enterSystem([...this.store.path, name]);
+        } else {
+            this.callbacks.onComponentDoubleClick(name);
+        }
+    }
+
+    private onWheel(e: WheelEvent): void {
+        e.preventDefault();
+        this.zoomBy(Math.exp(-e.deltaY * 0.0015), { x: e.clientX, y: e.clientY });
+    }
+}

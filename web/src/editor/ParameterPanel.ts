@@ -1,0 +1,176 @@
+// Right-hand panel: the selected component's name and parameters (values with units;
+// numbers, expressions and system-parameter names; errors inline), or the system's
+// parameters when nothing is selected.
+import { EditorStore } from './EditorStore';
+import { RenameComponent, SetParameter, SetSystemParameter } from './commands';
+import { errorText, h } from '../ui/dom';
+import type { Component, PortRef, System } from '../protocol/types';
+
+export interface PanelActions {
+    rotate(): void;
+    flip(): void;
+    remove(): void;
+    group(): void;
+    plotPort(ref: PortRef, anchor: HTMLElement): void;
+}
+
+export class ParameterPanel {
+    readonly element = h('aside', { class: 'parameter-panel', 'aria-label': 'Parameters' });
+    private signature = '';
+    /** Values the server refused, kept with its message until changed. */
+    private readonly refused = new Map<string, { value: string; message: string }>();
+    private nameError = '';
+
+    constructor(private readonly store: EditorStore, private readonly actions: PanelActions) {
+        store.subscribe(() => this.render());
+        this.render();
+    }
+
+    focusName(): void {
+        const input = this.element.querySelector<HTMLInputElement>('input[name="component-name"]');
+        input?.focus();
+        input?.select();
+    }
+
+    render(): void {
+        const system = this.store.system;
+        const selected = [...this.store.selection];
+        const comp = selected.length === 1 ? system.components.find((c) => c.name === selected[0]) : undefined;
+        const signature = JSON.stringify([this.store.path, selected, comp ?? system.parameters, this.nameError, [...this.refused]]);
+        if (signature === this.signature) return;
+        this.signature = signature;
+        if (comp) this.element.replaceChildren(...this.componentView(comp));
+        else if (selected.length > 1) this.element.replaceChildren(...this.multiView(selected.length));
+        else this.element.replaceChildren(...this.systemView(system));
+    }
+
+    private run(work: Promise<void>, onError: (message: string) => void): void {
+        work.catch((e) => onError(errorText(e)));
+    }
+
+    private componentView(comp: Component): HTMLElement[] {
+        const path = this.store.path;
+        const name = h('input', { name: 'component-name', value: comp.name, 'aria-label': 'Component name' });
+        const commitName = () => {
+            const wanted = name.value.trim();
+            if (wanted === '' || wanted === comp.name) return;
+            if (this.store.system.components.some((c) => c.name === wanted) || this.store.system.ports.some((p) => p.name === wanted)) {
+                this.nameError = `The name ${wanted} is already used in this system`;
+                this.render();
+                return;
+            }
+            const command = new RenameComponent(path, comp.name, wanted);
+            this.run(this.store.execute(command).then(() => {
+                this.nameError = '';
+                this.store.select([command.newName]);
+            }), (m) => { this.nameError = m; this.render(); });
+        };
+        name.addEventListener('keydown', (e) => { if (e.key === 'Enter') commitName(); if (e.key === 'Escape') name.value = comp.name; });
+        name.addEventListener('change', commitName);
+
+        const rows = comp.parameters.map((p) => {
+            const key = `${comp.name}.${p.name}`;
+            const refused = this.refused.get(key);
+            const input = h('input', {
+                name: `param-${p.name}`, value: refused?.value ?? p.value, class: refused ? 'invalid' : '',
+                'aria-label': `${p.name} value`, 'aria-invalid': refused ? 'true' : 'false',
+            });
+            const commit = () => {
+                const value = input.value.trim();
+                if (value === p.value && !refused) return;
+                if (value === p.value) { this.refused.delete(key); this.render(); return; }
+                this.run(this.store.execute(new SetParameter(path, comp.name, p.name, value)).then(() => {
+                    this.refused.delete(key);
+                    this.render();
+                }), (message) => { this.refused.set(key, { value, message }); this.render(); });
+            };
+            input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+            input.addEventListener('change', commit);
+            return h('tr', { 'data-param': p.name, title: p.description },
+                h('th', {}, p.name),
+                h('td', {}, input, refused ? h('div', { class: 'field-error', role: 'alert' }, refused.message) : null),
+                h('td', { class: 'unit' }, p.unit));
+        });
+
+        const ports = comp.ports.map((p) => {
+            const button: HTMLButtonElement = h('button', {
+                class: 'small', title: 'Plot a variable of this port',
+                onclick: () => this.actions.plotPort({ component: comp.name, port: p.name }, button),
+            }, 'Plot');
+            return h('li', { 'data-port-name': p.name }, `${p.name} `, h('span', { class: 'muted' }, `${p.node_type.replace(/^Node/, '')} ${p.kind}${p.multiport ? ' multi' : ''}`), ' ', button);
+        });
+
+        return [
+            h('h2', {}, 'Component'),
+            h('label', { class: 'stacked' }, 'Name', name),
+            this.nameError ? h('div', { class: 'field-error', role: 'alert' }, this.nameError) : h('span'),
+            h('p', { class: 'muted' }, `${comp.type} · ${comp.kind === 'system' ? 'subsystem' : `${comp.kind}-type`}`),
+            h('div', { class: 'button-row' },
+                h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)' }, 'Rotate'),
+                h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)' }, 'Flip'),
+                comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
+                h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)' }, 'Delete')),
+            h('h3', {}, 'Parameters'),
+            rows.length ? h('table', { class: 'param-table' }, h('tbody', {}, ...rows)) : h('p', { class: 'muted' }, 'No parameters.'),
+            h('h3', {}, 'Ports'),
+            h('ul', { class: 'port-list' }, ...ports),
+        ];
+    }
+
+    private multiView(count: number): HTMLElement[] {
+        return [
+            h('h2', {}, `${count} components selected`),
+            h('div', { class: 'button-row' },
+                h('button', { onclick: () => this.actions.rotate() }, 'Rotate'),
+                h('button', { onclick: () => this.actions.flip() }, 'Flip'),
+                h('button', { onclick: () => this.actions.group(), 'data-testid': 'group' }, 'Group into subsystem'),
+                h('button', { class: 'danger', onclick: () => this.actions.remove() }, 'Delete')),
+            h('p', { class: 'muted' }, 'Ctrl+C / Ctrl+V copies them with the connections among them.'),
+        ];
+    }
+
+    private systemView(system: System): HTMLElement[] {
+        const path = this.store.path;
+        const rows = system.parameters.map((p) => {
+            const key = `$sys.${p.name}`;
+            const refused = this.refused.get(key);
+            const input = h('input', { name: `sysparam-${p.name}`, value: refused?.value ?? p.value, class: refused ? 'invalid' : '', 'aria-label': `${p.name} value` });
+            const commit = () => {
+                const value = input.value.trim();
+                if (value === p.value) return;
+                this.run(this.store.execute(new SetSystemParameter(path, { ...p, value })).then(() => { this.refused.delete(key); this.render(); }),
+                    (message) => { this.refused.set(key, { value, message }); this.render(); });
+            };
+            input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+            input.addEventListener('change', commit);
+            return h('tr', { 'data-sysparam': p.name, title: p.description },
+                h('th', {}, p.name),
+                h('td', {}, input, refused ? h('div', { class: 'field-error', role: 'alert' }, refused.message) : null),
+                h('td', { class: 'unit' }, p.unit));
+        });
+        const newName = h('input', { name: 'new-sysparam-name', placeholder: 'name', 'aria-label': 'New parameter name' });
+        const newValue = h('input', { name: 'new-sysparam-value', placeholder: 'value', 'aria-label': 'New parameter value' });
+        const newUnit = h('input', { name: 'new-sysparam-unit', placeholder: 'unit', 'aria-label': 'New parameter unit' });
+        const addError = this.refused.get('$new');
+        const add = h('form', {
+            class: 'sysparam-add',
+            onsubmit: (e: Event) => {
+                e.preventDefault();
+                const name = newName.value.trim();
+                if (!name) return;
+                const param = { name, value: newValue.value.trim() || '0', type: 'double' as const, unit: newUnit.value.trim(), description: '' };
+                this.run(this.store.execute(new SetSystemParameter(path, param)).then(() => { this.refused.delete('$new'); this.render(); }),
+                    (message) => { this.refused.set('$new', { value: name, message }); this.render(); });
+            },
+        }, newName, newValue, newUnit, h('button', { type: 'submit' }, 'Add'));
+        return [
+            h('h2', {}, path.length ? `Subsystem ${system.name}` : `Model ${system.name}`),
+            h('p', { class: 'muted' }, `${system.components.length} components, ${system.connections.length} connections`),
+            h('h3', {}, 'System parameters'),
+            rows.length ? h('table', { class: 'param-table' }, h('tbody', {}, ...rows)) : h('p', { class: 'muted' }, 'None.'),
+            add,
+            addError ? h('div', { class: 'field-error', role: 'alert' }, addError.message) : h('span'),
+            h('p', { class: 'muted hint' }, 'Parameter values accept numbers, expressions and system parameter names.'),
+        ];
+    }
+}

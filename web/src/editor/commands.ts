@@ -1,0 +1,264 @@
+// Editor commands: each user action is one object that makes its change through edit requests
+// and knows how to take it back (undo = the inverse requests).
+import {
+    connectionsOf, findComponent, sameRef, systemAt, uniqueName,
+    type EditRequest, type SystemPath,
+} from '../model/modelState';
+import type { Component, Connection, Model, Param, PortRef, Pose, SysParam } from '../protocol/types';
+
+export interface EditContext {
+    /** Sends one edit request; the reply is applied to the local model before this resolves. */
+    send(request: EditRequest): Promise<Record<string, unknown>>;
+    model(): Model;
+}
+
+export interface Command {
+    readonly label: string;
+    /** False when the change cannot be taken back; the history is cleared after it. */
+    readonly undoable: boolean;
+    do(ctx: EditContext): Promise<void>;
+    undo(ctx: EditContext): Promise<void>;
+}
+
+export class AddComponent implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private actualName = '';
+
+    constructor(private readonly path: SystemPath, private readonly type: string,
+        private readonly name: string, private readonly pose: Pose) {
+        this.label = `Add ${type}`;
+    }
+
+    get addedName(): string { return this.actualName; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const reply = await ctx.send({ type: 'component.add', system: this.path, component_type: this.type, name: this.name, pose: this.pose });
+        this.actualName = (reply.component as Component).name;
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'component.remove', system: this.path, name: this.actualName });
+    }
+}
+
+/** What is needed to put a component back: its type, name, pose, parameters. */
+export interface ComponentSnapshot { type: string; name: string; pose: Pose; parameters: Param[] }
+
+function snapshot(c: Component): ComponentSnapshot {
+    return { type: c.type, name: c.name, pose: { ...c.pose }, parameters: c.parameters.map((p) => ({ ...p })) };
+}
+
+// Adds a component as in a snapshot: add, then set the parameters whose value differs.
+async function restoreComponent(ctx: EditContext, path: SystemPath, snap: ComponentSnapshot, name: string): Promise<string> {
+    const reply = await ctx.send({ type: 'component.add', system: path, component_type: snap.type, name, pose: snap.pose });
+    const added = reply.component as Component;
+    for (const p of snap.parameters) {
+        const fresh = added.parameters.find((q) => q.name === p.name);
+        if (fresh && fresh.value !== p.value) {
+            await ctx.send({ type: 'parameter.set', system: path, component: added.name, parameter: p.name, value: p.value });
+        }
+    }
+    return added.name;
+}
+
+export class RemoveComponents implements Command {
+    readonly label: string;
+    private removed: ComponentSnapshot[] = [];
+    private cut: Connection[] = [];
+    private hasSubsystem = false;
+
+    constructor(private readonly path: SystemPath, private readonly names: string[]) {
+        this.label = names.length === 1 ? `Delete ${names[0]}` : `Delete ${names.length} components`;
+    }
+
+    // Subsystems cannot be re-created through the protocol, so removing one is final.
+    get undoable(): boolean { return !this.hasSubsystem; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        if (!system) throw new Error('no such system');
+        this.removed = [];
+        this.cut = [];
+        for (const name of this.names) {
+            const c = findComponent(system, name);
+            if (!c) continue;
+            if (c.system) this.hasSubsystem = true;
+            this.removed.push(snapshot(c));
+            for (const conn of connectionsOf(system, name)) {
+                if (!this.cut.some((k) => sameRef(k.from, conn.from) && sameRef(k.to, conn.to))) this.cut.push(conn);
+            }
+        }
+        for (const snap of this.removed) await ctx.send({ type: 'component.remove', system: this.path, name: snap.name });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        for (const snap of this.removed) await restoreComponent(ctx, this.path, snap, snap.name);
+        for (const conn of this.cut) await ctx.send({ type: 'connect', system: this.path, from: conn.from, to: conn.to });
+    }
+}
+
+export class RenameComponent implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private actual = '';
+
+    constructor(private readonly path: SystemPath, private readonly from: string, private readonly to: string) {
+        this.label = `Rename ${from}`;
+    }
+
+    get newName(): string { return this.actual; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const reply = await ctx.send({ type: 'component.rename', system: this.path, name: this.from, new_name: this.to });
+        this.actual = (reply.name as string | undefined) ?? this.to;
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'component.rename', system: this.path, name: this.actual, new_name: this.from });
+    }
+}
+
+export interface Move { name: string; from: Pose; to: Pose }
+
+/** Moves, rotations and flips: all are new poses. */
+export class MoveComponents implements Command {
+    readonly undoable = true;
+
+    constructor(private readonly path: SystemPath, private readonly moves: Move[], readonly label = 'Move') {}
+
+    async do(ctx: EditContext): Promise<void> {
+        for (const m of this.moves) await ctx.send({ type: 'component.move', system: this.path, name: m.name, pose: m.to });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        for (const m of this.moves) await ctx.send({ type: 'component.move', system: this.path, name: m.name, pose: m.from });
+    }
+}
+
+export class Connect implements Command {
+    readonly label = 'Connect';
+    readonly undoable = true;
+
+    constructor(private readonly path: SystemPath, private readonly from: PortRef, private readonly to: PortRef) {}
+
+    async do(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'connect', system: this.path, from: this.from, to: this.to });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'disconnect', system: this.path, from: this.from, to: this.to });
+    }
+}
+
+export class Disconnect implements Command {
+    readonly label = 'Disconnect';
+    readonly undoable = true;
+
+    constructor(private readonly path: SystemPath, private readonly from: PortRef, private readonly to: PortRef) {}
+
+    async do(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'disconnect', system: this.path, from: this.from, to: this.to });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'connect', system: this.path, from: this.from, to: this.to });
+    }
+}
+
+export class SetParameter implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private previous = '';
+
+    constructor(private readonly path: SystemPath, private readonly component: string,
+        private readonly parameter: string, private readonly value: string) {
+        this.label = `Set ${component}.${parameter}`;
+    }
+
+    async do(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        const old = system && findComponent(system, this.component)?.parameters.find((p) => p.name === this.parameter);
+        this.previous = old?.value ?? '';
+        await ctx.send({ type: 'parameter.set', system: this.path, component: this.component, parameter: this.parameter, value: this.value });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'parameter.set', system: this.path, component: this.component, parameter: this.parameter, value: this.previous });
+    }
+}
+
+// The request's "type" is the message type; the parameter's own type travels as param_type.
+function sysParamRequest(path: SystemPath, p: SysParam): EditRequest {
+    return { type: 'sysparam.set', system: path, name: p.name, value: p.value, param_type: p.type, unit: p.unit, description: p.description };
+}
+
+export class SetSystemParameter implements Command {
+    readonly label: string;
+    private previous: SysParam | undefined;
+
+    constructor(private readonly path: SystemPath, private readonly parameter: SysParam) {
+        this.label = `Set system parameter ${parameter.name}`;
+    }
+
+    // The protocol has no way to delete a system parameter, so creating one is final.
+    get undoable(): boolean { return this.previous !== undefined; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        const old = system?.parameters.find((p) => p.name === this.parameter.name);
+        this.previous = old ? { ...old } : undefined;
+        await ctx.send(sysParamRequest(this.path, this.parameter));
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        if (this.previous) await ctx.send(sysParamRequest(this.path, this.previous));
+    }
+}
+
+/** Copied components with the connections among them. */
+export interface Clipboard { components: ComponentSnapshot[]; connections: { from: PortRef; to: PortRef }[] }
+
+export function copySelection(model: Model, path: SystemPath, names: Iterable<string>): Clipboard | null {
+    const system = systemAt(model, path);
+    if (!system) return null;
+    const chosen = new Set(names);
+    const components = system.components.filter((c) => chosen.has(c.name) && !c.system).map(snapshot);
+    if (components.length === 0) return null;
+    const kept = new Set(components.map((c) => c.name));
+    const connections = system.connections
+        .filter((c) => kept.has(c.from.component) && kept.has(c.to.component))
+        .map((c) => ({ from: { ...c.from }, to: { ...c.to } }));
+    return { components, connections };
+}
+
+export class Paste implements Command {
+    readonly label = 'Paste';
+    readonly undoable = true;
+    private added: string[] = [];
+
+    constructor(private readonly path: SystemPath, private readonly clip: Clipboard, private readonly offset = 40) {}
+
+    get addedNames(): string[] { return [...this.added]; }
+
+    async do(ctx: EditContext): Promise<void> {
+        this.added = [];
+        const renamed = new Map<string, string>();
+        for (const snap of this.clip.components) {
+            const system = systemAt(ctx.model(), this.path)!;
+            const name = uniqueName(system, snap.name);
+            const pose = { ...snap.pose, x: snap.pose.x + this.offset, y: snap.pose.y + this.offset };
+            const actual = await restoreComponent(ctx, this.path, { ...snap, pose }, name);
+            renamed.set(snap.name, actual);
+            this.added.push(actual);
+        }
+        const map = (ref: PortRef): PortRef => ({ component: renamed.get(ref.component)!, port: ref.port });
+        for (const c of this.clip.connections) {
+            await ctx.send({ type: 'connect', system: this.path, from: map(c.from), to: map(c.to) });
+        }
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        for (const name of [...this.added].reverse()) await ctx.send({ type: 'component.remove', system: this.path, name });
+    }
+}

@@ -1,0 +1,77 @@
+// App entry: hash routes #/login, #/models, #/model/<id>.
+import 'uplot/dist/uPlot.min.css';
+import './styles.css';
+import { Session } from './app/Session';
+import { renderLogin } from './views/LoginView';
+import { renderModelList } from './views/ModelListView';
+import { renderEditor, type EditorPage } from './views/EditorView';
+import { h } from './ui/dom';
+
+const session = new Session();
+const app = document.getElementById('app')!;
+const page = h('div', { class: 'page' });
+const topbar = h('header', { class: 'topbar' });
+app.replaceChildren(topbar, page);
+
+let editor: EditorPage | null = null;
+let currentHash = '';
+let ignoreNextHash = false;
+
+function navigate(hash: string, replace = false): void {
+    if (replace) {
+        // same page, new address (e.g. saved as a copy): no reload of the view
+        history.replaceState(null, '', hash);
+        currentHash = hash;
+        return;
+    }
+    location.hash = hash;
+}
+
+function renderTopbar(): void {
+    const user = session.user;
+    topbar.replaceChildren(
+        h('a', { href: '#/models', class: 'brand' }, 'tlmhub'),
+        h('span', { class: 'spacer' }),
+        user ? h('span', { class: 'user', 'data-testid': 'user' }, `${user.username} (${user.role})`) : '',
+        user ? h('button', {
+            onclick: async () => {
+                if (editor?.dirty() && !confirm('Discard unsaved changes?')) return;
+                await session.logout().catch(() => undefined);
+                location.hash = '#/login';
+            },
+        }, 'Log out') : '');
+}
+
+async function route(): Promise<void> {
+    if (ignoreNextHash) {
+        ignoreNextHash = false;
+        return;
+    }
+    const hash = location.hash || '#/models';
+    if (editor && hash !== currentHash) {
+        if (editor.dirty() && !confirm('The model has unsaved changes. Leave anyway?')) {
+            ignoreNextHash = true;
+            location.hash = currentHash;
+            return;
+        }
+        editor.dispose();
+        editor = null;
+    }
+    currentHash = hash;
+    if (!session.user && !(await session.restore()) && hash !== '#/login') {
+        location.hash = '#/login';
+        return;
+    }
+    renderTopbar();
+    const model = /^#\/model\/(\d+)$/.exec(hash);
+    if (hash === '#/login') {
+        renderLogin(page, session, () => { location.hash = '#/models'; });
+    } else if (model) {
+        editor = await renderEditor(page, session, Number(model[1]), navigate);
+    } else {
+        await renderModelList(page, session, (id) => { location.hash = `#/model/${id}`; });
+    }
+}
+
+window.addEventListener('hashchange', () => void route());
+void route();

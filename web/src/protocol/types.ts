@@ -1,0 +1,18 @@
+// The protocol shapes the app uses, re-exported from the generated types
+// (src/protocol/generated.ts, from protocol/*.schema.json) under the names the app reads best.
+import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Reply } from './generated';
+
+export type {
+    CatalogueEntry, Component, Connection, DoneEvent, FrameEvent, JobInfo, JobState, Model,
+    ModelSummary, Param, Port, PortRef, Pose, ProgressEvent, ResultsJson, SimulationSettings,
+    SysParam, System, SystemPort, User,
+} from './generated';
+
+export type HelloMessage = Hello;
+export type ErrorMessage = ErrorReply;
+/** A reply; data's shape depends on the request. */
+export type ReplyMessage = Omit<Reply, 'data'> & { data: Record<string, unknown> };
+export type PortKind = Port['kind'];
+export type ServerEvent = ProgressEvent | FrameEvent | DoneEvent;
+export type ServerMessage = HelloMessage | ReplyMessage | ErrorMessage | ServerEvent;
+

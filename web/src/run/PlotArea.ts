@@ -1,0 +1,84 @@
+// The plot windows under the editor. Clicked variables go to the active window.
+import { PlotWindow } from './PlotWindow';
+import type { RunController } from './RunController';
+import { h, toast, errorText } from '../ui/dom';
+
+export class PlotArea {
+    readonly element: HTMLElement;
+    readonly windows: PlotWindow[] = [];
+    private active: PlotWindow | null = null;
+    private nextId = 1;
+    private readonly list: HTMLElement;
+    private scheduled = false;
+    private fetchedFor = 0;
+
+    constructor(private readonly runs: RunController) {
+        this.list = h('div', { class: 'plot-list' });
+        this.element = h('div', { class: 'plot-area' },
+            h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window')),
+            this.list);
+        runs.subscribe(() => {
+            // variables added during a run were not streamed: load them when it ends
+            const run = runs.current;
+            if (run?.finished && run.jobId !== this.fetchedFor) {
+                this.fetchedFor = run.jobId;
+                runs.ensure(this.allVariables()).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
+            }
+            this.scheduleUpdate();
+        });
+    }
+
+    addWindow(): PlotWindow {
+        const w = new PlotWindow(this.nextId++, {
+            close: (x) => this.close(x),
+            activate: (x) => this.activate(x),
+            changed: (x) => this.refresh(x),
+        });
+        this.windows.push(w);
+        this.list.append(w.element);
+        this.activate(w);
+        return w;
+    }
+
+    private activate(w: PlotWindow): void {
+        this.active = w;
+        for (const x of this.windows) x.setActive(x === w);
+    }
+
+    private close(w: PlotWindow): void {
+        const i = this.windows.indexOf(w);
+        if (i >= 0) this.windows.splice(i, 1);
+        w.destroy();
+        if (this.active === w) this.active = this.windows.at(-1) ?? null;
+        if (this.active) this.activate(this.active);
+    }
+
+    /** Adds a variable to the active plot window (a new one if there is none). */
+    addVariable(name: string): void {
+        const w = this.active ?? this.addWindow();
+        w.add(name);
+        this.refresh(w);
+    }
+
+    /** Every plotted variable, in window order, without repeats. */
+    allVariables(): string[] {
+        return [...new Set(this.windows.flatMap((w) => w.variables))];
+    }
+
+    private refresh(w: PlotWindow): void {
+        w.update(this.runs.current, this.runs.previous);
+        if (!this.runs.running) {
+            this.runs.ensure(w.variables).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
+        }
+    }
+
+    // at most one redraw per animation frame while frames stream in
+    private scheduleUpdate(): void {
+        if (this.scheduled) return;
+        this.scheduled = true;
+        requestAnimationFrame(() => {
+            this.scheduled = false;
+            for (const w of this.windows) w.update(this.runs.current, this.runs.previous);
+        });
+    }
+}

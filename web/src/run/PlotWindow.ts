@@ -1,0 +1,168 @@
+// One plot window: chosen variables of the current run (and the previous one to compare),
+// live while the run goes on; zoom by dragging, cursor read-out in the legend, CSV and PNG.
+import uPlot from 'uplot';
+import { alignSeries, toCsv, type RunData, type SeriesSource } from './RunData';
+import { variableLabel } from '../model/variables';
+import { downloadBlob, downloadText, h } from '../ui/dom';
+
+const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
+
+interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string }
+
+export class PlotWindow {
+    readonly element: HTMLElement;
+    readonly variables: string[] = [];
+    compare = false;
+    private readonly body: HTMLElement;
+    private readonly chips: HTMLElement;
+    private readonly compareBox: HTMLInputElement;
+    private plot: uPlot | null = null;
+    private seriesKey = '';
+    private plotted: Plotted[] = [];
+    /** x range to show while a run is filling the plot. */
+    private span: [number, number] | null = null;
+
+    constructor(readonly id: number, private readonly actions: { close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void }) {
+        this.body = h('div', { class: 'plot-body' }, h('p', { class: 'muted plot-empty' }, 'Click a port to plot its variables here.'));
+        this.chips = h('div', { class: 'plot-chips' });
+        this.compareBox = h('input', {
+            type: 'checkbox', name: 'compare',
+            onchange: () => { this.compare = this.compareBox.checked; this.actions.changed(this); },
+        });
+        this.element = h('section', { class: 'plot-window', 'data-plot-id': String(id), onpointerdown: () => this.actions.activate(this) },
+            h('header', { class: 'plot-header' },
+                h('strong', {}, `Plot ${id}`), this.chips,
+                h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
+                h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
+                h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
+                h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
+            this.body);
+        new ResizeObserver(() => this.resize()).observe(this.body);
+    }
+
+    setActive(active: boolean): void { this.element.classList.toggle('active', active); }
+
+    add(name: string): void {
+        if (this.variables.includes(name)) return;
+        this.variables.push(name);
+        this.drawChips();
+    }
+
+    remove(name: string): void {
+        const i = this.variables.indexOf(name);
+        if (i >= 0) this.variables.splice(i, 1);
+        this.drawChips();
+        this.actions.changed(this);
+    }
+
+    private drawChips(): void {
+        this.chips.replaceChildren(...this.variables.map((v) => h('span', { class: 'chip', 'data-variable': v },
+            variableLabel(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
+    }
+
+    /** Redraws with the runs' current data. */
+    update(current: RunData | null, previous: RunData | null): void {
+        const plotted: Plotted[] = [];
+        this.variables.forEach((name, i) => {
+            const colour = COLOURS[i % COLOURS.length];
+            const col = current?.columns.get(name);
+            if (current && col) plotted.push({ name, label: variableLabel(name), source: { time: current.time, data: col }, previous: false, colour });
+            const old = previous?.columns.get(name);
+            if (this.compare && previous && old) {
+                plotted.push({ name, label: `${variableLabel(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour });
+            }
+        });
+        this.plotted = plotted;
+        this.span = current && !current.finished ? current.span : null;
+        this.element.dataset.job = current ? String(current.jobId) : '';
+        this.element.dataset.state = current?.state ?? '';
+        if (plotted.length === 0) {
+            this.plot?.destroy();
+            this.plot = null;
+            this.seriesKey = '';
+            this.element.dataset.points = '0';
+            this.body.replaceChildren(h('p', { class: 'muted plot-empty' }, this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
+            return;
+        }
+        const data = alignSeries(plotted.map((p) => p.source));
+        this.element.dataset.points = String(data[0].length);
+        const key = plotted.map((p) => p.label).join('|');
+        if (!this.plot || key !== this.seriesKey) {
+            this.plot?.destroy();
+            this.seriesKey = key;
+            this.body.replaceChildren();
+            this.plot = new uPlot(this.options(plotted), data as uPlot.AlignedData, this.body);
+        } else {
+            this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
+        }
+    }
+
+    // keep the user's zoom while new samples arrive
+    private zoomed(): boolean {
+        const u = this.plot;
+        if (!u) return false;
+        const xs = u.data[0];
+        const min = u.scales.x.min;
+        const max = u.scales.x.max;
+        if (min === undefined || max === undefined || xs.length === 0) return false;
+        return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
+    }
+
+    private options(plotted: Plotted[]): uPlot.Options {
+        return {
+            width: Math.max(200, this.body.clientWidth),
+            height: Math.max(160, this.body.clientHeight - 40),
+            scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
+            cursor: { drag: { x: true, y: false } },
+            legend: { live: true },
+            axes: [{ label: 'time [s]', size: 36 }, { size: 60 }],
+            series: [
+                { label: 'time [s]' },
+                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true })),
+            ],
+        };
+    }
+
+    private resize(): void {
+        if (!this.plot) return;
+        this.plot.setSize({ width: Math.max(200, this.body.clientWidth), height: Math.max(160, this.body.clientHeight - 40) });
+    }
+
+    /** Values of a variable of the current run as plotted (tests read the last one). */
+    seriesData(name: string, previous = false): number[] {
+        return this.plotted.find((p) => p.name === name && p.previous === previous)?.source.data ?? [];
+    }
+
+    private exportCsv(): void {
+        if (this.plotted.length === 0) return;
+        const aligned = alignSeries(this.plotted.map((p) => p.source));
+        const names = this.plotted.map((p) => (p.previous ? `${p.name} (previous)` : p.name));
+        downloadText(`plot-${this.id}.csv`, toCsv(names, aligned), 'text/csv');
+    }
+
+    private exportPng(): void {
+        const u = this.plot;
+        if (!u) return;
+        const source = u.ctx.canvas;
+        const dpr = devicePixelRatio || 1;
+        const legend = 22 * dpr * this.plotted.length;
+        const out = document.createElement('canvas');
+        out.width = source.width;
+        out.height = source.height + legend + 10 * dpr;
+        const ctx = out.getContext('2d')!;
+        ctx.fillStyle = '#fff';
+        ctx.fillRect(0, 0, out.width, out.height);
+        ctx.drawImage(source, 0, 0);
+        ctx.font = `${12 * dpr}px sans-serif`;
+        this.plotted.forEach((p, i) => {
+            ctx.fillStyle = p.colour;
+            ctx.fillText(`${p.previous ? '- - ' : '—— '}${p.label}`, 10 * dpr, source.height + (18 + i * 22) * dpr);
+        });
+        out.toBlob((blob) => { if (blob) downloadBlob(`plot-${this.id}.png`, blob); });
+    }
+
+    destroy(): void {
+        this.plot?.destroy();
+        this.element.remove();
+    }
+}

@@ -1,0 +1,78 @@
+import { describe, expect, it, vi } from 'vitest';
+import { RunController } from './RunController';
+import type { ResultsJson, ServerEvent } from '../protocol/types';
+
+function fakeTransport() {
+    let listener: ((e: ServerEvent) => void) | null = null;
+    let nextJob = 10;
+    const sent: { type: string; fields: Record<string, unknown> }[] = [];
+    const results = vi.fn(async (_id: number, names: string[]): Promise<ResultsJson> => ({
+        time: [0, 1], variables: names.map((n) => ({ name: n, unit: '', data: [42, 43] })),
+    }));
+    return {
+        sent,
+        results,
+        emit: (e: ServerEvent) => listener?.(e),
+        transport: {
+            request: (async (type: string, fields: Record<string, unknown> = {}) => {
+                sent.push({ type, fields });
+                return type === 'simulate.start' ? { job_id: nextJob++ } : { state: 'cancelled' };
+            }) as never,
+            onEvent: (l: (e: ServerEvent) => void) => { listener = l; return () => { listener = null; }; },
+            resultsJson: results,
+        },
+    };
+}
+
+describe('RunController', () => {
+    it('starts a run streaming the chosen variables and fills it from events', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        const run = await runs.start({ stop: 2 }, ['A#out#Value']);
+        expect(f.sent[0]).toEqual({ type: 'simulate.start', fields: { stop: 2, rate: 30, variables: ['A#out#Value'] } });
+        f.emit({ type: 'event.progress', job_id: 10, progress: 0.5 });
+        f.emit({ type: 'event.frame', job_id: 10, seq: 0, time: [0, 1], variables: { 'A#out#Value': [1, 2] }, dropped: 0 });
+        expect(runs.running).toBe(true);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        expect(run.progress).toBe(1);
+        expect(run.columns.get('A#out#Value')).toEqual([1, 2]);
+        expect(runs.running).toBe(false);
+    });
+
+    it('streams at most 16 variables', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, Array.from({ length: 20 }, (_, i) => `V${i}#p#Value`));
+        expect((f.sent[0].fields.variables as string[]).length).toBe(16);
+    });
+
+    it('keeps the finished run as the previous one for comparison', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        await runs.start({}, []);
+        expect(runs.previous?.jobId).toBe(10);
+        expect(runs.current?.jobId).toBe(11);
+    });
+
+    it('loads stored results of finished runs for variables that were not streamed', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        await runs.ensure(['B#p#Pressure']);
+        expect(f.results).toHaveBeenCalledWith(10, ['B#p#Pressure']);
+        expect(runs.current?.columns.get('B#p#Pressure')).toEqual([42, 43]);
+    });
+
+    it('cancel sends simulate.stop for the running job', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        await runs.cancel();
+        expect(f.sent[1]).toEqual({ type: 'simulate.stop', fields: { job_id: 10 } });
+        f.emit({ type: 'event.done', job_id: 10, state: 'cancelled' });
+        expect(runs.current?.state).toBe('cancelled');
+    });
+});

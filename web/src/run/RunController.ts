@@ -1,0 +1,107 @@
+// Runs of the open model: simulate.start over the socket, events into RunData, cancel, and
+// the stored results for variables that were not streamed. Keeps the previous run to compare.
+import { RunData } from './RunData';
+import type { RestClient } from '../api/RestClient';
+import type { WsClient } from '../api/WsClient';
+import type { ServerEvent } from '../protocol/types';
+
+export interface RunSettings { start: number; step: number; stop: number; log_samples: number }
+
+/** The socket and REST calls the controller needs (fakes in tests). */
+export interface RunTransport {
+    request: WsClient['request'];
+    onEvent: WsClient['onEvent'];
+    resultsJson: RestClient['resultsJson'];
+}
+
+export const MAX_STREAMED = 16;
+
+export class RunController {
+    current: RunData | null = null;
+    previous: RunData | null = null;
+    private readonly early = new Map<number, ServerEvent[]>();
+    private readonly listeners = new Set<() => void>();
+    private readonly detach: () => void;
+
+    constructor(private readonly transport: RunTransport) {
+        this.detach = transport.onEvent((event) => this.onEvent(event));
+    }
+
+    dispose(): void { this.detach(); }
+
+    subscribe(listener: () => void): () => void {
+        this.listeners.add(listener);
+        return () => this.listeners.delete(listener);
+    }
+
+    get running(): boolean { return this.current !== null && !this.current.finished; }
+
+    /** Starts a run of the socket's open model, streaming `variables` (at most 16). */
+    async start(settings: Partial<RunSettings>, variables: string[], span: [number, number] | null = null): Promise<RunData> {
+        const streamed = variables.slice(0, MAX_STREAMED);
+        const fields: Record<string, unknown> = { ...settings, rate: 30 };
+        if (streamed.length > 0) fields.variables = streamed;
+        const reply = await this.transport.request<{ job_id: number }>('simulate.start', fields);
+        if (this.current?.finished) this.previous = this.current;
+        const run = new RunData(reply.job_id, streamed);
+        run.state = 'running';
+        run.span = span;
+        this.current = run;
+        for (const event of this.early.get(run.jobId) ?? []) this.apply(run, event);
+        this.early.clear();
+        this.emit();
+        return run;
+    }
+
+    async cancel(): Promise<void> {
+        if (!this.current || this.current.finished) return;
+        await this.transport.request('simulate.stop', { job_id: this.current.jobId });
+    }
+
+    /** Loads stored results of finished runs for variables they lack. */
+    async ensure(names: string[]): Promise<void> {
+        const runs = [this.current, this.previous].filter((r): r is RunData => r !== null && r.state === 'done');
+        await Promise.all(runs.map(async (run) => {
+            const missing = names.filter((n) => !run.has(n));
+            if (missing.length === 0) return;
+            const results = await this.transport.resultsJson(run.jobId, missing);
+            run.setResults(results);
+        }));
+        this.emit();
+    }
+
+    private onEvent(event: ServerEvent): void {
+        const run = this.current;
+        if (!run || run.jobId !== event.job_id) {
+            // events may overtake the reply to simulate.start
+            if (!run || event.job_id > run.jobId) {
+                const list = this.early.get(event.job_id) ?? [];
+                list.push(event);
+                this.early.set(event.job_id, list);
+            }
+            return;
+        }
+        this.apply(run, event);
+        this.emit();
+    }
+
+    private apply(run: RunData, event: ServerEvent): void {
+        if (event.type === 'event.progress') {
+            run.progress = event.progress;
+        } else if (event.type === 'event.frame') {
+            run.addFrame(event);
+        } else if (event.type === 'event.done') {
+            run.state = event.state;
+            run.error = event.error ?? '';
+            if (event.state === 'done') {
+                run.progress = 1;
+                // frames were lost: take the stored result so the plot is exact
+                if (run.gap && run.variables.length > 0) {
+                    void this.transport.resultsJson(run.jobId, run.variables).then((r) => { run.setResults(r); this.emit(); });
+                }
+            }
+        }
+    }
+
+    private emit(): void { for (const l of this.listeners) l(); }
+}

@@ -1,0 +1,93 @@
+// Columnar data of one run, filled by event.frame messages (new samples per frame) or by a
+// results download; and the alignment of several runs onto one time axis for uPlot.
+import type { FrameEvent, JobState, ResultsJson } from '../protocol/types';
+
+export class RunData {
+    time: number[] = [];
+    readonly columns = new Map<string, number[]>();
+    state: JobState = 'queued';
+    progress = 0;
+    error = '';
+    lastSeq = -1;
+    /** A frame went missing or the server dropped some: the streamed data is incomplete. */
+    gap = false;
+
+    /** Time span the run covers, when known: plots show all of it while the run fills it. */
+    span: [number, number] | null = null;
+
+    constructor(readonly jobId: number, readonly variables: string[], readonly label = `run ${jobId}`) {}
+
+    /** Appends a frame's samples; frames of another job are ignored. */
+    addFrame(frame: FrameEvent): void {
+        if (frame.job_id !== this.jobId) return;
+        if (frame.dropped > 0 || frame.seq !== this.lastSeq + 1) this.gap = true;
+        this.lastSeq = frame.seq;
+        for (const t of frame.time) this.time.push(t);
+        for (const [name, values] of Object.entries(frame.variables)) {
+            let column = this.columns.get(name);
+            if (!column) {
+                column = [];
+                this.columns.set(name, column);
+            }
+            for (const x of values) column.push(x);
+        }
+    }
+
+    /** Replaces the streamed columns with the stored result (exact). */
+    setResults(results: ResultsJson): void {
+        this.time = [...results.time];
+        for (const v of results.variables) this.columns.set(v.name, [...v.data]);
+        this.gap = false;
+    }
+
+    has(name: string): boolean { return this.columns.has(name); }
+
+    get finished(): boolean { return this.state !== 'queued' && this.state !== 'running'; }
+}
+
+export interface SeriesSource { time: number[]; data: number[] }
+
+/**
+ * Puts series with possibly different time vectors on one sorted x axis (uPlot's AlignedData);
+ * a series has null where it has no sample.
+ */
+export function alignSeries(series: SeriesSource[]): [number[], ...(number | null)[][]] {
+    if (series.length === 0) return [[]];
+    const first = series[0].time;
+    const same = series.every((s) => s.time === first || sameArray(s.time, first));
+    if (same) {
+        const n = first.length;
+        return [first.slice(0, n), ...series.map((s) => padTo(s.data, n))];
+    }
+    const xs = [...new Set(series.flatMap((s) => s.time))].sort((a, b) => a - b);
+    const index = new Map(xs.map((x, i) => [x, i]));
+    const columns = series.map((s) => {
+        const column: (number | null)[] = new Array(xs.length).fill(null);
+        const n = Math.min(s.time.length, s.data.length);
+        for (let i = 0; i < n; ++i) column[index.get(s.time[i])!] = s.data[i];
+        return column;
+    });
+    return [xs, ...columns];
+}
+
+function sameArray(a: number[], b: number[]): boolean {
+    if (a.length !== b.length) return false;
+    for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) return false;
+    return true;
+}
+
+// a column still filling up during a run is shorter than its time vector
+function padTo(data: number[], n: number): (number | null)[] {
+    if (data.length >= n) return data.slice(0, n);
+    return [...data, ...new Array<null>(n - data.length).fill(null)];
+}
+
+/** CSV of aligned series, like the server's: header then "%.17g"-like rows (JS shortest form). */
+export function toCsv(names: string[], aligned: [number[], ...(number | null)[][]]): string {
+    const [xs, ...cols] = aligned;
+    const lines = [['time', ...names].join(',')];
+    for (let i = 0; i < xs.length; ++i) {
+        lines.push([xs[i], ...cols.map((c) => (c[i] === null || c[i] === undefined ? '' : String(c[i])))].join(','));
+    }
+    return lines.join('\n') + '\n';
+}

@@ -1,0 +1,151 @@
+// An in-memory stand-in for the server's edit session, for unit tests: it answers edit
+// requests the way the protocol describes (replies and refusals) on its own copy of a model.
+import { ApiError } from '../api/ApiError';
+import { systemAt, type EditRequest } from '../model/modelState';
+import type { Component, Model, Param, PortRef, System } from '../protocol/types';
+
+interface TypeInfo { kind: Component['kind']; ports: [string, 'power' | 'read' | 'write', string][]; params: [string, string][] }
+
+export const fakeCatalogue: Record<string, TypeInfo> = {
+    SignalStep: { kind: 'S', ports: [['out', 'write', 'NodeSignal']], params: [['y_0#Value', '0'], ['y_A#Value', '1']] },
+    SignalGain: { kind: 'S', ports: [['in', 'read', 'NodeSignal'], ['out', 'write', 'NodeSignal']], params: [['k#Value', '1']] },
+    HydraulicVolume: { kind: 'C', ports: [['P1', 'power', 'NodeHydraulic'], ['P2', 'power', 'NodeHydraulic']], params: [['V', '0.001']] },
+    MechanicTranslationalMass: { kind: 'Q', ports: [['P1', 'power', 'NodeMechanic'], ['P2', 'power', 'NodeMechanic']], params: [['m', '1']] },
+};
+
+export function emptyModel(name = 'Test'): Model {
+    return {
+        name,
+        system: {
+            name, type: 'Subsystem', timestep: 0.001, inherit_timestep: false,
+            simulation: { start: 0, step: 0.001, stop: 1, log_samples: 100 },
+            parameters: [], ports: [], components: [], connections: [],
+        },
+    };
+}
+
+export class FakeServer {
+    model: Model;
+    readonly log: EditRequest[] = [];
+
+    constructor(model: Model = emptyModel()) {
+        this.model = structuredClone(model);
+    }
+
+    private system(request: EditRequest): System {
+        const s = systemAt(this.model, request.system ?? []);
+        if (!s) throw new ApiError('not_found', 'no such system');
+        return s;
+    }
+
+    private component(system: System, name: string): Component {
+        const c = system.components.find((x) => x.name === name);
+        if (!c) throw new ApiError('not_found', `no component ${name}`);
+        return c;
+    }
+
+    /** Handles one request; the transport of an EditorStore in tests. */
+    handle = async (request: EditRequest): Promise<Record<string, unknown>> => {
+        this.log.push(structuredClone(request));
+        const system = this.system(request);
+        switch (request.type) {
+        case 'component.add': {
+            const type = request.component_type as string;
+            const info = fakeCatalogue[type];
+            if (!info) throw new ApiError('unknown_component_type', `unknown component type ${type}`);
+            let name = (request.name as string | undefined) ?? type;
+            for (let i = 1; system.components.some((c) => c.name === name); ++i) name = `${request.name ?? type}_${i}`;
+            const component: Component = {
+                name, type, kind: info.kind,
+                pose: (request.pose as Component['pose']) ?? { x: 0, y: 0, angle: 0, flipped: false },
+                ports: info.ports.map(([n, kind, node]) => ({ name: n, kind, node_type: node, multiport: false, connected: false })),
+                parameters: info.params.map(([n, v]) => ({ name: n, value: v, unit: '', description: '', type: 'double' })),
+            };
+            system.components.push(component);
+            return { component: structuredClone(component) };
+        }
+        case 'component.remove': {
+            const name = request.name as string;
+            this.component(system, name);
+            system.components = system.components.filter((c) => c.name !== name);
+            system.connections = system.connections.filter((c) => c.from.component !== name && c.to.component !== name);
+            this.refresh(system);
+            return {};
+        }
+        case 'component.rename': {
+            const c = this.component(system, request.name as string);
+            let wanted = request.new_name as string;
+            for (let i = 1; system.components.some((x) => x.name === wanted && x !== c); ++i) wanted = `${request.new_name}_${i}`;
+            for (const conn of system.connections) {
+                if (conn.from.component === c.name) conn.from.component = wanted;
+                if (conn.to.component === c.name) conn.to.component = wanted;
+            }
+            c.name = wanted;
+            return { name: wanted };
+        }
+        case 'component.move':
+            this.component(system, request.name as string).pose = structuredClone(request.pose as Component['pose']);
+            return {};
+        case 'connect': {
+            const from = request.from as PortRef;
+            const to = request.to as PortRef;
+            const a = this.component(system, from.component).ports.find((p) => p.name === from.port);
+            const b = this.component(system, to.component).ports.find((p) => p.name === to.port);
+            if (!a || !b) throw new ApiError('not_found', 'no such port');
+            if (a.node_type !== b.node_type) {
+                throw new ApiError('illegal_connection', `${from.component}.${from.port} (${a.node_type}) and ${to.component}.${to.port} (${b.node_type}) have different node types`);
+            }
+            if (a.kind === 'write' && b.kind === 'write') {
+                throw new ApiError('illegal_connection', `${from.component}.${from.port} and ${to.component}.${to.port} are both write ports`);
+            }
+            const connection = { from: { ...from }, to: { ...to }, points: [] };
+            system.connections.push(connection);
+            this.refresh(system);
+            return { connection: structuredClone(connection) };
+        }
+        case 'disconnect': {
+            const from = request.from as PortRef;
+            const to = request.to as PortRef;
+            const before = system.connections.length;
+            system.connections = system.connections.filter((c) => !(c.from.component === from.component && c.from.port === from.port && c.to.component === to.component && c.to.port === to.port));
+            if (system.connections.length === before) throw new ApiError('not_found', 'no such connection');
+            this.refresh(system);
+            return {};
+        }
+        case 'parameter.set': {
+            const c = this.component(system, request.component as string);
+            const p = c.parameters.find((x) => x.name === request.parameter);
+            if (!p) throw new ApiError('invalid_parameter', `no parameter ${request.parameter}`);
+            const value = String(request.value);
+            const known = new Set(system.parameters.map((x) => x.name));
+            if (!/^-?[0-9.e+-]+$/.test(value) && !known.has(value)) {
+                throw new ApiError('invalid_parameter', `${c.name}.${p.name}: unknown name '${value}'`);
+            }
+            p.value = value;
+            return { parameter: structuredClone(p) };
+        }
+        case 'sysparam.set': {
+            const existing = system.parameters.find((x) => x.name === request.name);
+            const param = existing ?? { name: request.name as string, value: '', type: 'double', unit: '', description: '' };
+            param.value = String(request.value);
+            if (request.unit !== undefined) param.unit = request.unit as string;
+            if (!existing) system.parameters.push(param as System['parameters'][number]);
+            return { parameter: structuredClone(param) };
+        }
+        default:
+            throw new ApiError('unknown_message_type', `unknown message type ${request.type}`);
+        }
+    };
+
+    private refresh(system: System): void {
+        for (const c of system.components) {
+            for (const p of c.ports) {
+                p.connected = system.connections.some((k) => (k.from.component === c.name && k.from.port === p.name) || (k.to.component === c.name && k.to.port === p.name));
+            }
+        }
+    }
+}
+
+export function param(component: Component, name: string): Param | undefined {
+    return component.parameters.find((p) => p.name === name);
+}

@@ -1,0 +1,267 @@
+// The model editor page: palette, canvas, parameter panel, run controls and plots, wired to
+// one WebSocket on which the model is open.
+import { WsClient, socketUrl } from '../api/WsClient';
+import { ApiError } from '../api/ApiError';
+import { EditorStore } from '../editor/EditorStore';
+import { CanvasView } from '../editor/CanvasView';
+import { ParameterPanel } from '../editor/ParameterPanel';
+import { createPalette } from '../editor/Palette';
+import { copySelection, Disconnect, MoveComponents, Paste, RemoveComponents, type Clipboard } from '../editor/commands';
+import { groupIntoSubsystem } from '../editor/grouping';
+import { RunController } from '../run/RunController';
+import { PlotArea } from '../run/PlotArea';
+import { RunPanel } from '../run/RunPanel';
+import { portVariables, sinkVariables } from '../model/variables';
+import { primaryVariables } from '../model/nodeTypes';
+import { downloadText, errorText, h, toast } from '../ui/dom';
+import type { Session } from '../app/Session';
+import type { CatalogueEntry, Model, ModelSummary, PortRef } from '../protocol/types';
+
+let clipboard: Clipboard | null = null;
+
+export interface EditorPage { dispose(): void; dirty(): boolean }
+
+export async function renderEditor(root: HTMLElement, session: Session, modelId: number,
+    navigate: (hash: string, replace?: boolean) => void): Promise<EditorPage> {
+    root.replaceChildren(h('main', { class: 'loading' }, h('p', { class: 'muted' }, 'Opening model…')));
+    const rest = session.rest;
+    let summary: ModelSummary;
+    try {
+        summary = await rest.getModel(modelId);
+    } catch (e) {
+        const message = e instanceof ApiError && e.code === 'not_found' ? 'Model not found (it does not exist or is not yours).' : errorText(e);
+        root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
+            h('p', { class: 'form-error', role: 'alert', 'data-testid': 'open-error' }, message), h('a', { href: '#/models' }, 'Back to the models')));
+        return { dispose: () => undefined, dirty: () => false };
+    }
+    const ws = new WsClient(() => new WebSocket(socketUrl(session.token!, location)) as unknown as import('../api/WsClient').SocketLike);
+    let catalogue: CatalogueEntry[];
+    let opened: { model_id: number; model: Model };
+    try {
+        [catalogue, opened] = await Promise.all([
+            rest.components(),
+            ws.connect().then(() => ws.request<{ model_id: number; model: Model }>('model.open', { model_id: modelId })),
+        ]);
+    } catch (e) {
+        ws.close();
+        root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
+            h('p', { class: 'form-error', role: 'alert', 'data-testid': 'open-error' }, errorText(e)), h('a', { href: '#/models' }, 'Back to the models')));
+        return { dispose: () => undefined, dirty: () => false };
+    }
+
+    const store = new EditorStore(opened.model, (request) => ws.request(request.type, stripType(request)));
+    const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
+    const plots = new PlotArea(runs);
+    const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model));
+
+    const reportError = (e: unknown) => toast(errorText(e), 'error');
+    const picker = h('div', { class: 'variable-picker', hidden: true, role: 'menu' });
+    const showVariables = (ref: PortRef, at: { x: number; y: number }) => {
+        const vars = portVariables(store.model, store.path, ref);
+        if (!vars.ok) {
+            toast(vars.reason);
+            return;
+        }
+        const ordered = [...vars.variables].sort((a, b) => Number(primaryVariables.has(b.name)) - Number(primaryVariables.has(a.name)));
+        picker.replaceChildren(h('div', { class: 'picker-title' }, `Plot ${ref.component}.${ref.port}`),
+            ...ordered.map((v) => h('button', {
+                role: 'menuitem', 'data-variable': `${vars.base}#${v.name}`,
+                onclick: () => { plots.addVariable(`${vars.base}#${v.name}`); picker.hidden = true; },
+            }, `${v.name}${v.unit ? ` [${v.unit}]` : ''}`)));
+        picker.style.left = `${Math.min(at.x + 8, innerWidth - 220)}px`;
+        picker.style.top = `${Math.min(at.y + 8, innerHeight - 240)}px`;
+        picker.hidden = false;
+    };
+    document.addEventListener('pointerdown', (e) => { if (!picker.contains(e.target as Node)) picker.hidden = true; }, true);
+
+    const canvas = new CanvasView(store, {
+        onPortClick: showVariables,
+        onComponentDoubleClick: () => panel.focusName(),
+    });
+
+    // ---- actions shared by buttons and keys ----
+    const selectedComponents = () => store.system.components.filter((c) => store.selection.has(c.name));
+    const transformSelection = (label: string, change: (p: { x: number; y: number; angle: number; flipped: boolean }) => typeof p) => {
+        const moves = selectedComponents().map((c) => ({ name: c.name, from: c.pose, to: change({ ...c.pose }) }));
+        if (moves.length) store.execute(new MoveComponents(store.path, moves, label)).catch(reportError);
+    };
+    const actions = {
+        rotate: () => transformSelection('Rotate', (p) => ({ ...p, angle: (p.angle + 90) % 360 })),
+        flip: () => transformSelection('Flip', (p) => ({ ...p, flipped: !p.flipped })),
+        remove: () => {
+            if (canvas.selectedConnection) {
+                const c = canvas.selectedConnection;
+                canvas.selectedConnection = null;
+                store.execute(new Disconnect(store.path, c.from, c.to)).catch(reportError);
+                return;
+            }
+            const names = [...store.selection];
+            if (names.length === 0) return;
+            const command = new RemoveComponents(store.path, names);
+            const hasSub = selectedComponents().some((c) => c.system);
+            if (hasSub && !confirm('Deleting a subsystem cannot be undone. Delete?')) return;
+            store.execute(command).catch(reportError);
+        },
+        group: () => void group(),
+        plotPort: (ref: PortRef, anchor: HTMLElement) => {
+            const r = anchor.getBoundingClientRect();
+            showVariables(ref, { x: r.left - 200, y: r.top });
+        },
+    };
+    const panel = new ParameterPanel(store, actions);
+
+    const copy = () => { clipboard = copySelection(store.model, store.path, store.selection); };
+    const paste = async () => {
+        if (!clipboard) return;
+        const command = new Paste(store.path, clipboard);
+        try {
+            await store.execute(command);
+            store.select(command.addedNames);
+        } catch (e) {
+            reportError(e);
+        }
+    };
+
+    // ---- saving ----
+    // the server says whether the user may change the model (examples: admin only)
+    let writable = (summary as { writable?: boolean }).writable
+        ?? (session.user?.role === 'admin' || (summary.owner.id === session.user?.id && !summary.is_example));
+    const isOwner = () => writable;
+    const save = async (): Promise<boolean> => {
+        try {
+            await store.idle();
+            const asCopy = !isOwner();
+            const reply = await ws.request<{ model_id: number; name: string; updated_at: number }>('model.save', asCopy ? { as_copy: true, name: summary.name } : {});
+            store.markSaved();
+            if (reply.model_id !== summary.id) {
+                writable = true;
+                summary = { ...summary, id: reply.model_id, name: reply.name, is_example: false, owner: { id: session.user!.id, username: session.user!.username } };
+                navigate(`#/model/${reply.model_id}`, true);
+                toast(`Saved as your own copy "${reply.name}"`);
+            } else {
+                toast('Saved');
+            }
+            renderHeader();
+            return true;
+        } catch (e) {
+            reportError(e);
+            return false;
+        }
+    };
+
+    // Grouping rewrites the saved .hmf (the protocol cannot move components into a subsystem).
+    const group = async () => {
+        const names = [...store.selection];
+        if (names.length < 1) return;
+        if (!confirm('Grouping saves the model, moves the selection into a new subsystem and reopens it. Continue?')) return;
+        if (!(await save())) return;
+        try {
+            const hmf = await rest.downloadHmf(summary.id);
+            const grouped = groupIntoSubsystem(hmf, store.path, names);
+            await rest.replaceHmf(summary.id, grouped.hmf);
+            const reopened = await ws.request<{ model_id: number; model: Model }>('model.open', { model_id: summary.id });
+            store.replaceModel(reopened.model);
+            toast(`Grouped ${names.length} components into ${grouped.subsystemName}`);
+        } catch (e) {
+            reportError(e);
+        }
+    };
+
+    // ---- header, breadcrumb ----
+    const header = h('header', { class: 'editor-header' });
+    const breadcrumb = h('nav', { class: 'breadcrumb', 'aria-label': 'Subsystem path' });
+    const undoButton = h('button', { onclick: () => store.undo().catch(reportError), 'data-testid': 'undo', title: 'Undo (Ctrl+Z)' }, '↶ Undo');
+    const redoButton = h('button', { onclick: () => store.redo().catch(reportError), 'data-testid': 'redo', title: 'Redo (Ctrl+Y)' }, '↷ Redo');
+    const saveButton = h('button', { class: 'primary', onclick: () => void save(), 'data-testid': 'save', title: 'Save (Ctrl+S)' }, 'Save');
+    const dirtyMark = h('span', { class: 'dirty-mark', 'data-testid': 'dirty', title: 'Unsaved changes' });
+    const renderHeader = () => {
+        const dirty = store.dirty;
+        dirtyMark.textContent = dirty ? '● unsaved' : '';
+        dirtyMark.dataset.dirty = String(dirty);
+        saveButton.textContent = isOwner() ? 'Save' : 'Save as my copy';
+        undoButton.disabled = !store.history.canUndo;
+        redoButton.disabled = !store.history.canRedo;
+        undoButton.title = store.history.undoLabel ? `Undo ${store.history.undoLabel} (Ctrl+Z)` : 'Undo (Ctrl+Z)';
+        redoButton.title = store.history.redoLabel ? `Redo ${store.history.redoLabel} (Ctrl+Y)` : 'Redo (Ctrl+Y)';
+        header.replaceChildren(
+            h('a', { href: '#/models', class: 'back' }, '← Models'),
+            h('h1', { class: 'model-name', 'data-testid': 'model-name' }, summary.name),
+            summary.is_example ? h('span', { class: 'badge' }, 'example') : '',
+            dirtyMark, saveButton, undoButton, redoButton,
+            h('button', { onclick: () => canvas.zoomBy(1.25), title: 'Zoom in' }, '+'),
+            h('button', { onclick: () => canvas.zoomBy(0.8), title: 'Zoom out' }, '−'),
+            h('button', { onclick: () => canvas.fit(), title: 'Show all' }, 'Fit'),
+            h('button', {
+                onclick: async () => {
+                    try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
+                },
+                title: 'Download the saved model as .hmf',
+            }, 'Download .hmf'));
+        const path = store.path;
+        breadcrumb.replaceChildren(
+            h('button', { class: 'crumb', onclick: () => store.enterSystem([]) }, store.model.system.name),
+            ...path.flatMap((name, i) => [h('span', { class: 'sep' }, '›'),
+                h('button', { class: 'crumb', onclick: () => store.enterSystem(path.slice(0, i + 1)) }, name)]));
+    };
+    store.subscribe(renderHeader);
+    renderHeader();
+
+    const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: pan · Shift+drag: select · Wheel: zoom · Drag port to port: connect · Click port: plot · Double-click subsystem: enter');
+    const layout = h('main', { class: 'editor' },
+        header,
+        h('div', { class: 'editor-body' },
+            createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())),
+            h('section', { class: 'canvas-column' }, breadcrumb, canvas.element, canvasHint),
+            panel.element),
+        h('section', { class: 'run-area' }, runPanel.element, plots.element),
+        picker);
+    root.replaceChildren(layout);
+    canvas.render();
+    canvas.fit();
+    plots.addWindow();
+    layout.addEventListener('editor-error', (e) => toast((e as CustomEvent<string>).detail, 'error'));
+
+    // ---- keys ----
+    const onKey = (e: KeyboardEvent) => {
+        const typing = (e.target as HTMLElement).closest('input, textarea, select');
+        const mod = e.ctrlKey || e.metaKey;
+        if (mod && e.key.toLowerCase() === 's') { e.preventDefault(); void save(); return; }
+        if (typing) return;
+        if (mod && e.key.toLowerCase() === 'z' && !e.shiftKey) { e.preventDefault(); store.undo().catch(reportError); }
+        else if (mod && (e.key.toLowerCase() === 'y' || (e.key.toLowerCase() === 'z' && e.shiftKey))) { e.preventDefault(); store.redo().catch(reportError); }
+        else if (mod && e.key.toLowerCase() === 'c') copy();
+        else if (mod && e.key.toLowerCase() === 'v') void paste();
+        else if (mod && e.key.toLowerCase() === 'a') { e.preventDefault(); store.select(store.system.components.map((c) => c.name)); }
+        else if (e.key === 'Delete' || e.key === 'Backspace') actions.remove();
+        else if (e.key === 'r' || e.key === 'R') actions.rotate();
+        else if (e.key === 'f' || e.key === 'F') actions.flip();
+        else if (e.key === 'Escape') store.select([]);
+    };
+    document.addEventListener('keydown', onKey);
+    const onBeforeUnload = (e: BeforeUnloadEvent) => {
+        if (!store.dirty) return;
+        e.preventDefault();
+        e.returnValue = '';
+    };
+    window.addEventListener('beforeunload', onBeforeUnload);
+    ws.onClose(() => toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error'));
+
+    // test and debugging handle
+    (window as unknown as { __tlmhub: unknown }).__tlmhub = { store, canvas, runs, plots, ws };
+
+    return {
+        dirty: () => store.dirty,
+        dispose: () => {
+            document.removeEventListener('keydown', onKey);
+            window.removeEventListener('beforeunload', onBeforeUnload);
+            runs.dispose();
+            ws.close();
+        },
+    };
+}
+
+// The socket client adds the message type itself.
+function stripType(request: { type: string }): object {
+    const { type: _type, ...fields } = request;
+    return fields;
+}

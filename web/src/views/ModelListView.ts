@@ -1,0 +1,104 @@
+// The model list: the user's own models and the examples; create, rename, duplicate, delete,
+// upload a .hmf and download as .hmf.
+import { downloadText, errorText, h, toast } from '../ui/dom';
+import type { Session } from '../app/Session';
+import type { ModelSummary } from '../protocol/types';
+
+export async function renderModelList(root: HTMLElement, session: Session, open: (id: number) => void): Promise<void> {
+    const rest = session.rest;
+    const list = h('div', { class: 'model-tables' }, h('p', { class: 'muted' }, 'Loading…'));
+    const refresh = async () => {
+        try {
+            const models = await rest.listModels();
+            list.replaceChildren(...tables(models));
+        } catch (e) {
+            list.replaceChildren(h('p', { class: 'form-error' }, errorText(e)));
+        }
+    };
+    const act = async (work: () => Promise<unknown>, done?: string) => {
+        try {
+            await work();
+            if (done) toast(done);
+            await refresh();
+        } catch (e) {
+            toast(errorText(e), 'error');
+        }
+    };
+    const mine = (m: ModelSummary) => session.user?.role === 'admin' || m.owner.id === session.user?.id;
+
+    const row = (m: ModelSummary) => h('tr', { dataset: { modelId: String(m.id) } },
+        h('td', {}, h('a', { href: `#/model/${m.id}`, class: 'model-link' }, m.name)),
+        h('td', {}, m.owner.username),
+        h('td', {}, new Date(m.updated_at * 1000).toLocaleString()),
+        h('td', { class: 'actions' },
+            h('button', { onclick: () => open(m.id) }, 'Open'),
+            mine(m) && (!m.is_example || session.user?.role === 'admin') ? h('button', {
+                onclick: () => {
+                    const name = prompt('New name', m.name);
+                    if (name && name !== m.name) void act(() => rest.renameModel(m.id, name), 'Renamed');
+                },
+            }, 'Rename') : null,
+            h('button', {
+                onclick: () => {
+                    const name = prompt('Name of the copy', `${m.name} copy`);
+                    if (name) void act(() => rest.duplicateModel(m.id, name), 'Duplicated');
+                },
+            }, 'Duplicate'),
+            h('button', {
+                onclick: () => void act(async () => downloadText(`${m.name}.hmf`, await rest.downloadHmf(m.id), 'application/xml')),
+            }, 'Download .hmf'),
+            mine(m) && (!m.is_example || session.user?.role === 'admin') ? h('button', {
+                class: 'danger',
+                onclick: () => {
+                    if (confirm(`Delete model "${m.name}"?`)) void act(() => rest.deleteModel(m.id), 'Deleted');
+                },
+            }, 'Delete') : null));
+
+    const table = (title: string, models: ModelSummary[], testId: string) => h('section', { class: 'model-section', dataset: { testid: testId } },
+        h('h2', {}, title),
+        models.length === 0 ? h('p', { class: 'muted' }, 'None yet.') : h('table', { class: 'model-table' },
+            h('thead', {}, h('tr', {}, h('th', {}, 'Name'), h('th', {}, 'Owner'), h('th', {}, 'Changed'), h('th', {}, ''))),
+            h('tbody', {}, ...models.map(row))));
+
+    const tables = (models: ModelSummary[]) => {
+        const byName = (a: ModelSummary, b: ModelSummary) => a.name.localeCompare(b.name);
+        const own = models.filter((m) => !m.is_example && m.owner.id === session.user?.id).sort(byName);
+        const others = models.filter((m) => !m.is_example && m.owner.id !== session.user?.id).sort(byName);
+        const examples = models.filter((m) => m.is_example).sort(byName);
+        return [
+            table('My models', own, 'own-models'),
+            others.length > 0 ? table('Models of others', others, 'other-models') : null,
+            table('Examples', examples, 'example-models'),
+        ].filter((x): x is HTMLElement => x !== null);
+    };
+
+    const newName = h('input', { name: 'new-model-name', placeholder: 'New model name' });
+    const upload = h('input', {
+        type: 'file', accept: '.hmf,.xml', name: 'upload-hmf',
+        onchange: async () => {
+            const file = upload.files?.[0];
+            if (!file) return;
+            const name = file.name.replace(/\.(hmf|xml)$/i, '');
+            await act(async () => rest.uploadHmf(await file.text(), name), `Uploaded ${file.name}`);
+            upload.value = '';
+        },
+    });
+    const toolbar = h('form', {
+        class: 'toolbar',
+        onsubmit: async (e: Event) => {
+            e.preventDefault();
+            const name = newName.value.trim();
+            if (!name) return;
+            try {
+                const created = await rest.createModel(name);
+                open(created.id);
+            } catch (err) {
+                toast(errorText(err), 'error');
+            }
+        },
+    }, newName, h('button', { type: 'submit', class: 'primary' }, 'Create'),
+    h('label', { class: 'upload' }, 'Upload .hmf ', upload));
+
+    root.replaceChildren(h('main', { class: 'model-list-page' }, toolbar, list));
+    await refresh();
+}
