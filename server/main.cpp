@@ -3,6 +3,7 @@
 #include "server/app/ServerOptions.h"
 #include "server/app/TlmhubApp.h"
 #include "server/http/Listener.h"
+#include "server/protocol/SchemaValidator.h"
 
 #include "core/ComponentLibrary.h"
 #include "core/FileAccess.h"
@@ -41,6 +42,8 @@ int main(int argc, char** argv)
         std::cout << "loaded " << added.size() << " component types from " << lib << "\n";
     }
     try {
+        // A broken embedded schema shows now, not on the first request.
+        SchemaValidator::protocol();
         TlmhubApp app(options);
         std::string seedLog;
         if (const auto generated = app.bootstrap(seedLog))

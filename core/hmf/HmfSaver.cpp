@@ -117,13 +117,20 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
         };
         if (!visible(pa) || !visible(pb)) return;
         written.insert({a, b});
+        // GUI extras (the line's points) were stored in the direction the file listed the
+        // connection; write it in that direction so the points still run start to end.
+        auto it = s.preservedConnectionXml.find(
+            preserved::connectionKey(nameOf(pa), pa->name(), nameOf(pb), pb->name()));
+        if (it == s.preservedConnectionXml.end()) {
+            it = s.preservedConnectionXml.find(
+                preserved::connectionKey(nameOf(pb), pb->name(), nameOf(pa), pa->name()));
+            if (it != s.preservedConnectionXml.end()) std::swap(pa, pb);
+        }
         pugi::xml_node c = conns.append_child("connect");
         c.append_attribute("startcomponent") = nameOf(pa).c_str();
         c.append_attribute("startport") = pa->name().c_str();
         c.append_attribute("endcomponent") = nameOf(pb).c_str();
         c.append_attribute("endport") = pb->name().c_str();
-        auto key = preserved::connectionKey(nameOf(pa), pa->name(), nameOf(pb), pb->name());
-        auto it = s.preservedConnectionXml.find(key);
         if (it != s.preservedConnectionXml.end()) preserved::appendFragment(c, it->second);
     };
     // Connections in a stable order: by connection order of the ports.

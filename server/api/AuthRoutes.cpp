@@ -50,10 +50,9 @@ Response changePassword(Services& s, Call& call)
     std::string why;
     if (!s.users.changePassword(call.who().id, body["old_password"], body["new_password"], why))
         return apiError(http::status::bad_request, "bad_request", why);
-    // Sessions opened with the old password end; the caller gets a fresh token.
+    // Every session opened with the old password ends, this one too: log in again.
     s.tokens.revokeAllFor(call.who().id);
-    const auto issued = s.tokens.issue(call.who());
-    return jsonResponse(http::status::ok, {{"token", issued.token}, {"expires_at", issued.expiresAt}});
+    return noContent();
 }
 
 } // namespace

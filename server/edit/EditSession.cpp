@@ -86,30 +86,6 @@ void eraseConnectionExtras(System& system, const ConnectionEnds& e)
         preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
 }
 
-// The saver writes each connection from the end it meets first and looks up its GUI extras
-// by that direction only; a file listing the connection the other way round would lose its
-// line on save. Store such extras under the saver's direction, with the points reversed to
-// match, in this system and every subsystem.
-void alignConnectionExtras(System& system)
-{
-    for (const ConnectionEnds& e : connectionsOf(system)) {
-        bool reversed = false;
-        const std::string* xml = preservedConnectionXml(system, e, reversed);
-        if (!xml || !reversed) continue;
-        std::string moved = *xml;
-        std::vector<LinePoint> points = readLinePoints(moved);
-        if (!points.empty()) {
-            std::reverse(points.begin(), points.end());
-            writeLinePoints(moved, points);
-        }
-        eraseConnectionExtras(system, e);
-        system.preservedConnectionXml[preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort)] =
-            std::move(moved);
-    }
-    for (Component* c : system.componentsInOrder())
-        if (c->isSystem()) alignConnectionExtras(static_cast<System&>(*c));
-}
-
 } // namespace
 
 // ---------------------------------------------------------------- open / save
@@ -123,7 +99,6 @@ bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::
             return false;
         }
         mRoot = std::move(loaded.root);
-        alignConnectionExtras(*mRoot);
         mLoadMessages = std::move(loaded.messages);
         mName = name;
         return true;

@@ -376,3 +376,21 @@ TEST_F(ServerApi, ASlowClientDoesNotHoldUpTheJobOrOthers)
     }
     EXPECT_EQ(finalState, "done");
 }
+
+TEST_F(ServerApi, ChangingThePasswordEndsSessions)
+{
+    HttpClient admin = as("admin");
+    ASSERT_EQ(admin.post("/api/v1/users", {{"username", "carol"}, {"password", "carol-password"}, {"role", "user"}}).status, 201);
+    HttpClient carol(server->port());
+    carol.login("carol", "carol-password");
+    HttpClient other(server->port());
+    other.login("carol", "carol-password");
+    auto r = carol.post("/api/v1/auth/password", {{"old_password", "wrong-one!"}, {"new_password", "carol-new-password"}});
+    EXPECT_EQ(r.status, 400);
+    r = carol.post("/api/v1/auth/password", {{"old_password", "carol-password"}, {"new_password", "carol-new-password"}});
+    EXPECT_EQ(r.status, 204) << r.body;
+    EXPECT_EQ(other.get("/api/v1/auth/me").status, 401);
+    EXPECT_ANY_THROW(carol.login("carol", "carol-password"));
+    carol.login("carol", "carol-new-password");
+    EXPECT_EQ(carol.get("/api/v1/auth/me").json()["username"], "carol");
+}

@@ -7,6 +7,7 @@
 #include "core/hmf/HmfSaver.h"
 
 #include <filesystem>
+#include <fstream>
 
 using namespace tlmhub;
 using namespace tlmhub::test;
@@ -26,6 +27,13 @@ std::vector<std::vector<double>> simulateAll(System& root)
     return out;
 }
 
+std::size_t countOf(const std::string& text, const std::string& what)
+{
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
 void roundTrip(const std::string& relPath)
 {
     const std::string path = sharedDir() + "/hopsan-models/" + relPath;
@@ -37,8 +45,13 @@ void roundTrip(const std::string& relPath)
     ASSERT_FALSE(second.hasErrors()) << second.firstError();
     // Saving the reloaded model gives the same text (a fixed point).
     EXPECT_EQ(saveHmfString(*second.root), saved);
-    // GUI data survives.
+    // GUI data survives, including every connection's line, whichever way round the file
+    // listed the connection.
     EXPECT_NE(saved.find("<hopsangui>"), std::string::npos);
+    std::ifstream original(path);
+    const std::string text((std::istreambuf_iterator<char>(original)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(countOf(saved, "<coordinates>"), countOf(text, "<coordinates>"));
+    EXPECT_GT(countOf(saved, "<coordinates>"), 0u);
     const auto a = simulateAll(*first.root);
     const auto b = simulateAll(*second.root);
     ASSERT_EQ(a.size(), b.size());
