@@ -9,6 +9,7 @@
 #include "server/edit/ModelJson.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -148,6 +149,8 @@ Result EditSession::handle(const json& request)
         {"parameter.get", &EditSession::parameterGet},
         {"parameter.set", &EditSession::parameterSet},
         {"sysparam.set", &EditSession::sysparamSet},
+        {"sysparam.remove", &EditSession::sysparamRemove},
+        {"model.settings", &EditSession::modelSettings},
     };
     try {
         if (!request.is_object()) return fail("bad_request", "a request must be a JSON object");
@@ -379,6 +382,31 @@ Result EditSession::sysparamSet(System& system, const json& request)
         return fail("invalid_parameter", name + ": " + error);
     }
     return success({{"parameter", systemParameterToJson(*p)}});
+}
+
+Result EditSession::sysparamRemove(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    if (!system.removeSystemParameter(name))
+        return fail("not_found", "no system parameter '" + name + "' in system '" + system.name() + "'");
+    return success();
+}
+
+// The root's own simulation settings (a subsystem path, if given, is ignored: subsystems
+// share the root's times).
+Result EditSession::modelSettings(System&, const json& request)
+{
+    System& root = *mRoot;
+    const double start = request.value("start", root.startTime);
+    const double step = request.value("step", root.desiredTimestep);
+    const double stop = request.value("stop", root.stopTime);
+    if (!(std::isfinite(start) && std::isfinite(stop) && std::isfinite(step)) || step <= 0 || stop < start)
+        return fail("bad_request", "simulation settings need finite times, step > 0 and stop >= start");
+    root.startTime = start;
+    root.desiredTimestep = step;
+    root.stopTime = stop;
+    if (request.contains("log_samples")) root.requestedLogSamples = request.at("log_samples").get<std::size_t>();
+    return success({{"simulation", modelJson()["system"]["simulation"]}});
 }
 
 } // namespace tlmhub::server

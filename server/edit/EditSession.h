@@ -51,6 +51,8 @@ private:
     Result parameterGet(System& system, const nlohmann::json& request);
     Result parameterSet(System& system, const nlohmann::json& request);
     Result sysparamSet(System& system, const nlohmann::json& request);
+    Result sysparamRemove(System& system, const nlohmann::json& request);
+    Result modelSettings(System& system, const nlohmann::json& request);
 
     // The subsystem named by request["system"] (absent or [] = root), or null with `failure`.
     System* targetSystem(const nlohmann::json& request, Result& failure);

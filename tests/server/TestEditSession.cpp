@@ -329,6 +329,34 @@ TEST(EditSession, SystemParametersCanBeSetAndUsed)
     EXPECT_EQ(findByName(rootSystem(session).at("parameters"), "fresh"), nullptr);
 }
 
+TEST(EditSession, SystemParametersCanBeRemoved)
+{
+    EditSession session = openServo();
+    ASSERT_TRUE(session.handle({{"id", 1}, {"type", "sysparam.set"}, {"name", "gone"}, {"value", 3}}).ok);
+    const auto r = session.handle({{"id", 2}, {"type", "sysparam.remove"}, {"name", "gone"}});
+    expectReplyShape("sysparam.remove", r);
+    EXPECT_EQ(findByName(rootSystem(session).at("parameters"), "gone"), nullptr);
+    EXPECT_EQ(session.handle({{"id", 3}, {"type", "sysparam.remove"}, {"name", "gone"}}).code, "not_found");
+}
+
+TEST(EditSession, ModelSettingsAreSavedWithTheModel)
+{
+    EditSession session = openServo();
+    const auto r = session.handle({{"id", 1}, {"type", "model.settings"}, {"stop", 5}, {"log_samples", 1000}});
+    expectReplyShape("model.settings", r);
+    EXPECT_EQ(r.data["simulation"]["stop"], 5.0);
+    EXPECT_EQ(r.data["simulation"]["log_samples"], 1000);
+    EXPECT_EQ(r.data["simulation"]["step"], 1e-4);   // kept from the file
+    EXPECT_EQ(session.handle({{"id", 2}, {"type", "model.settings"}, {"step", 0.1}, {"start", 9}, {"stop", 1}}).code,
+              "bad_request");
+    EditSession reloaded;
+    std::string error;
+    ASSERT_TRUE(reloaded.openHmf(session.saveHmf(), "again", error)) << error;
+    const json simulation = rootSystem(reloaded).at("simulation");
+    EXPECT_EQ(simulation["stop"], 5.0);
+    EXPECT_EQ(simulation["log_samples"], 1000);
+}
+
 TEST(EditSession, MoveChangesOnlyThePose)
 {
     EditSession session = openServo();

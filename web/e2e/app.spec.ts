@@ -177,6 +177,9 @@ test('save keeps the change after a reload, and another user cannot open the mod
     await page.locator('.palette-item[data-type="SignalGain"]').dblclick();
     await expect(page.locator('.canvas .component[data-name="Gain"]')).toBeVisible();
     await expect(page.getByTestId('dirty')).toHaveAttribute('data-dirty', 'true');
+    // a run setting becomes the model's own and is saved with it
+    await setRunField(page, 'Stop time', '4.5');
+    await page.getByLabel('Stop time', { exact: true }).press('Tab');
     await page.getByTestId('save').click();
     await expect(page.getByTestId('dirty')).toHaveAttribute('data-dirty', 'false');
     await expect.poll(() => page.url()).not.toContain(`#/model/${exampleId}`);
@@ -186,6 +189,8 @@ test('save keeps the change after a reload, and another user cannot open the mod
     await expect(page.locator('.canvas .component[data-name="Gain"]')).toBeVisible();
     const { model } = await api<{ model: Model }>(request, page, `/models/${ownId}`);
     expect(model.system.components.some((c) => c.name === 'Gain' && c.type === 'SignalGain')).toBe(true);
+    expect(model.system.simulation?.stop).toBe(4.5);
+    await expect(page.getByLabel('Stop time', { exact: true })).toHaveValue('4.5');
     // the example itself is unchanged
     const example = await api<{ model: Model }>(request, page, `/models/${exampleId}`);
     expect(example.model.system.components.some((c) => c.name === 'Gain')).toBe(false);

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { EditorStore } from './EditorStore';
 import {
     AddComponent, Connect, copySelection, Disconnect, MoveComponents, Paste, RemoveComponents,
-    RenameComponent, SetParameter, SetSystemParameter,
+    RenameComponent, SetParameter, SetSimulationSettings, SetSystemParameter,
 } from './commands';
 import { FakeServer } from '../testing/FakeServer';
 import { ApiError } from '../api/ApiError';
@@ -131,13 +131,29 @@ describe('EditorStore with commands', () => {
         expect(store.history.canRedo).toBe(false);
     });
 
-    it('creating a system parameter cannot be undone and clears the history', async () => {
-        const { store } = await setup();
+    it('system parameters: a change undoes to the old value, a creation undoes to nothing', async () => {
+        const { server, store } = await setup();
         await store.execute(new SetSystemParameter([], { name: 'p', value: '1', type: 'double', unit: '', description: '' }));
-        expect(store.history.canUndo).toBe(false);
         await store.execute(new SetSystemParameter([], { name: 'p', value: '2', type: 'double', unit: '', description: '' }));
         await store.undo();
         expect(store.system.parameters[0].value).toBe('1');
+        await store.undo();
+        expect(store.system.parameters).toHaveLength(0);
+        expect(server.log.at(-1)?.type).toBe('sysparam.remove');
+        await store.redo();
+        expect(store.system.parameters.map((p) => p.value)).toEqual(['1']);
+    });
+
+    it('simulation settings change the model and undo to the previous ones', async () => {
+        const { server, store } = await setup();
+        await store.execute(new SetSimulationSettings({ stop: 3 }));
+        await store.execute(new SetSimulationSettings({ stop: 7, log_samples: 500 }));
+        expect(store.model.system.simulation).toMatchObject({ stop: 7, log_samples: 500 });
+        expect(server.model.system.simulation).toMatchObject({ stop: 7, log_samples: 500 });
+        expect(store.dirty).toBe(true);
+        await store.undo();
+        expect(store.model.system.simulation).toMatchObject({ stop: 3 });
+        expect(server.model.system.simulation).toEqual(store.model.system.simulation);
     });
 
     it('commands run one after another even when started together', async () => {

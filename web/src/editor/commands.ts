@@ -4,7 +4,7 @@ import {
     connectionsOf, findComponent, sameRef, systemAt, uniqueName,
     type EditRequest, type SystemPath,
 } from '../model/modelState';
-import type { Component, Connection, Model, Param, PortRef, Pose, SysParam } from '../protocol/types';
+import type { Component, Connection, Model, Param, PortRef, Pose, SimulationSettings, SysParam } from '../protocol/types';
 
 export interface EditContext {
     /** Sends one edit request; the reply is applied to the local model before this resolves. */
@@ -201,8 +201,7 @@ export class SetSystemParameter implements Command {
         this.label = `Set system parameter ${parameter.name}`;
     }
 
-    // The protocol has no way to delete a system parameter, so creating one is final.
-    get undoable(): boolean { return this.previous !== undefined; }
+    readonly undoable = true;
 
     async do(ctx: EditContext): Promise<void> {
         const system = systemAt(ctx.model(), this.path);
@@ -213,6 +212,7 @@ export class SetSystemParameter implements Command {
 
     async undo(ctx: EditContext): Promise<void> {
         if (this.previous) await ctx.send(sysParamRequest(this.path, this.previous));
+        else await ctx.send({ type: 'sysparam.remove', system: this.path, name: this.parameter.name });
     }
 }
 
@@ -260,5 +260,24 @@ export class Paste implements Command {
 
     async undo(ctx: EditContext): Promise<void> {
         for (const name of [...this.added].reverse()) await ctx.send({ type: 'component.remove', system: this.path, name });
+    }
+}
+
+/** The model's own simulation settings (saved with it); undo restores the previous ones. */
+export class SetSimulationSettings implements Command {
+    readonly label = 'Change simulation settings';
+    readonly undoable = true;
+    private previous: SimulationSettings | undefined;
+
+    constructor(private readonly settings: Partial<SimulationSettings>) {}
+
+    async do(ctx: EditContext): Promise<void> {
+        const current = ctx.model().system.simulation;
+        this.previous = current ? { ...current } : undefined;
+        await ctx.send({ type: 'model.settings', ...this.settings });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        if (this.previous) await ctx.send({ type: 'model.settings', ...this.previous });
     }
 }

@@ -156,6 +156,13 @@ export function applyEdit(model: Model, request: EditRequest, reply: Record<stri
             };
         });
     }
+    case 'model.settings':
+        return { ...model, system: { ...model.system, simulation: reply.simulation as Model['system']['simulation'] } };
+    case 'sysparam.remove':
+        return updateSystem(model, path, (s) => ({
+            ...s,
+            parameters: s.parameters.filter((p) => p.name !== request.name),
+        }));
     default:
         return model;
     }

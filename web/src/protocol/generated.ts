@@ -68,6 +68,7 @@ export type ClientMessage =
     | ModelCreateRequest
     | ModelSaveRequest
     | ModelGetRequest
+    | ModelSettingsRequest
     | ComponentAddRequest
     | ComponentRemoveRequest
     | ComponentRenameRequest
@@ -77,6 +78,7 @@ export type ClientMessage =
     | ParameterGetRequest
     | ParameterSetRequest
     | SysParamSetRequest
+    | SysParamRemoveRequest
     | SimulateStartRequest
     | SimulateStopRequest
     | LogSubscribeRequest
@@ -169,6 +171,9 @@ export interface ProtocolDefinitions {
     FrameEvent?: FrameEvent;
     DoneEvent?: DoneEvent;
     ServerMessage?: ServerMessage;
+    SysParamRemoveRequest?: SysParamRemoveRequest;
+    ModelSettingsRequest?: ModelSettingsRequest;
+    ModelSettingsData?: ModelSettingsData;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -628,6 +633,26 @@ export interface PingRequest {
     id: RequestId;
     type: 'ping';
 }
+/**
+ * Change the open model's own simulation settings (saved with the model); omitted fields keep their values.
+ */
+export interface ModelSettingsRequest {
+    id: RequestId;
+    type: 'model.settings';
+    start?: number;
+    step?: number;
+    stop?: number;
+    log_samples?: number;
+}
+/**
+ * Remove a system parameter (components that use it then fail to evaluate until it is set again).
+ */
+export interface SysParamRemoveRequest {
+    id: RequestId;
+    type: 'sysparam.remove';
+    name: string;
+    system?: SystemPath;
+}
 export interface EmptyData {}
 export interface ModelOpenedData {
     model_id: number;
@@ -721,4 +746,7 @@ export interface DoneEvent {
     job_id: number;
     state: JobState;
     error?: string;
+}
+export interface ModelSettingsData {
+    simulation: SimulationSettings;
 }

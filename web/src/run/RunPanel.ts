@@ -12,8 +12,13 @@ export class RunPanel {
     private readonly bar: HTMLProgressElement;
     private readonly status: HTMLElement;
 
+    /**
+     * `onSettingsChange` receives a field the user changed, to make it the model's own
+     * setting (saved with the model).
+     */
     constructor(private readonly runs: RunController, private readonly plots: PlotArea,
-        private readonly model: SimulationSettings | undefined, private readonly defaultVariables: () => string[]) {
+        private model: SimulationSettings | undefined, private readonly defaultVariables: () => string[],
+        private readonly onSettingsChange: (changed: Partial<RunSettings>) => void = () => undefined) {
         const settings = model;
         const field = (name: keyof RunSettings, label: string, value: number | undefined) =>
             h('input', { name: `run-${name}`, type: 'text', inputmode: 'decimal', value: value ?? '', 'aria-label': label, size: 8 });
@@ -33,7 +38,23 @@ export class RunPanel {
             h('label', {}, 'Stop ', this.inputs.stop, ' s'),
             h('label', {}, 'Samples ', this.inputs.log_samples),
             this.runButton, this.cancelButton, this.bar, this.status);
+        for (const [key, input] of Object.entries(this.inputs) as [keyof RunSettings, HTMLInputElement][]) {
+            input.addEventListener('change', () => {
+                const value = Number(input.value.trim());
+                if (input.value.trim() === '' || !Number.isFinite(value)) return;
+                this.onSettingsChange({ [key]: key === 'log_samples' ? Math.round(value) : value });
+            });
+        }
         runs.subscribe(() => this.refresh());
+    }
+
+    /** Shows the model's settings (after an undo, say), unless a field is being edited. */
+    showModelSettings(settings: SimulationSettings | undefined): void {
+        this.model = settings;
+        if (!settings) return;
+        for (const [key, input] of Object.entries(this.inputs) as [keyof RunSettings, HTMLInputElement][]) {
+            if (document.activeElement !== input) input.value = String(settings[key]);
+        }
     }
 
     /** The settings typed in; empty fields use the model's own. */

@@ -132,6 +132,21 @@ export class FakeServer {
             if (!existing) system.parameters.push(param as System['parameters'][number]);
             return { parameter: structuredClone(param) };
         }
+        case 'model.settings': {
+            const current = this.model.system.simulation ?? { start: 0, step: 0.001, stop: 10, log_samples: 2048 };
+            const next = { ...current };
+            for (const key of ['start', 'step', 'stop', 'log_samples'] as const) {
+                if (typeof request[key] === 'number') next[key] = request[key] as number;
+            }
+            this.model.system.simulation = next;
+            return { simulation: structuredClone(next) };
+        }
+        case 'sysparam.remove': {
+            const index = system.parameters.findIndex((x) => x.name === request.name);
+            if (index < 0) throw new ApiError('not_found', `no system parameter '${request.name}'`);
+            system.parameters.splice(index, 1);
+            return {};
+        }
         default:
             throw new ApiError('unknown_message_type', `unknown message type ${request.type}`);
         }

@@ -6,7 +6,7 @@ import { EditorStore } from '../editor/EditorStore';
 import { CanvasView } from '../editor/CanvasView';
 import { ParameterPanel } from '../editor/ParameterPanel';
 import { createPalette } from '../editor/Palette';
-import { copySelection, Disconnect, MoveComponents, Paste, RemoveComponents, type Clipboard } from '../editor/commands';
+import { copySelection, Disconnect, MoveComponents, Paste, RemoveComponents, SetSimulationSettings, type Clipboard } from '../editor/commands';
 import { groupIntoSubsystem } from '../editor/grouping';
 import { RunController } from '../run/RunController';
 import { PlotArea } from '../run/PlotArea';
@@ -52,7 +52,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const store = new EditorStore(opened.model, (request) => ws.request(request.type, stripType(request)));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
     const plots = new PlotArea(runs);
-    const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model));
+    const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
+        (changed) => void store.execute(new SetSimulationSettings(changed)).catch((e) => toast(errorText(e), 'error')));
+    store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
 
     const reportError = (e: unknown) => toast(errorText(e), 'error');
     const picker = h('div', { class: 'variable-picker', hidden: true, role: 'menu' });
