@@ -23,12 +23,9 @@ std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::strin
     if (!id) return std::nullopt;
     auto job = s.queue.store().info(*id);
     if (!job) return std::nullopt;
-    if (job->ownerId == who.id || who.role == "admin") return job;
-    if (who.role == "teacher") {
-        const auto owner = s.users.find(job->ownerId);
-        if (owner && owner->role == "user") return job;
-    }
-    return std::nullopt;
+    const auto owner = s.users.find(job->ownerId);
+    if (!canRead(who, job->ownerId, owner ? owner->role : std::string(), false)) return std::nullopt;
+    return job;
 }
 
 Response submitJob(Services& s, Call& call)

@@ -164,11 +164,16 @@ WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)
     return success({{"job_id", jobId}});
 }
 
+bool WsApi::ownsJob(std::int64_t jobId) const
+{
+    const auto job = mServices.queue.store().info(jobId);
+    return job && (job->ownerId == mUser.id || mUser.role == "admin");
+}
+
 WsApi::Reply WsApi::stopSimulation(const nlohmann::json& msg)
 {
     const std::int64_t jobId = msg["job_id"];
-    const auto job = mServices.queue.store().info(jobId);
-    if (!job || (job->ownerId != mUser.id && mUser.role != "admin")) return failure("not_found", "no such job");
+    if (!ownsJob(jobId)) return failure("not_found", "no such job");
     mServices.queue.cancel(jobId);
     return success({{"state", jobStateName(mServices.queue.store().info(jobId)->state)}});
 }
@@ -176,8 +181,7 @@ WsApi::Reply WsApi::stopSimulation(const nlohmann::json& msg)
 WsApi::Reply WsApi::subscribe(const nlohmann::json& msg)
 {
     const std::int64_t jobId = msg["job_id"];
-    const auto job = mServices.queue.store().info(jobId);
-    if (!job || (job->ownerId != mUser.id && mUser.role != "admin")) return failure("not_found", "no such job");
+    if (!ownsJob(jobId)) return failure("not_found", "no such job");
     mAfterReply = [this, jobId, msg] { subscribeToJob(jobId, msg); };
     return success();
 }

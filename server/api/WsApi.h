@@ -29,6 +29,7 @@ private:
     Reply stopSimulation(const nlohmann::json& msg);
     Reply subscribe(const nlohmann::json& msg);
     void subscribeToJob(std::int64_t jobId, const nlohmann::json& msg);
+    bool ownsJob(std::int64_t jobId) const;
     void sendError(const nlohmann::json& id, const std::string& code, const std::string& message);
 
     Services& mServices;

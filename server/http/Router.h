@@ -17,12 +17,17 @@ struct RouteParams {
     std::string pathOnly;                       // target without the query
 };
 
+// '+' means a space only in query strings.
+std::string percentDecode(const std::string& text, bool plusIsSpace);
+RouteParams parseRequestTarget(const std::string& target);
+std::vector<std::string> splitPath(const std::string& path);
+
 template <typename Handler>
 class Router {
 public:
     void add(http::verb method, const std::string& pattern, Handler handler)
     {
-        mRoutes.push_back({method, split(pattern), std::move(handler)});
+        mRoutes.push_back({method, splitPath(pattern), std::move(handler)});
     }
 
     enum class Match { Found, WrongMethod, None };
@@ -31,8 +36,8 @@ public:
     Match find(http::verb method, const std::string& target, const Handler*& handler,
                RouteParams& params) const
     {
-        params = parseTarget(target);
-        const std::vector<std::string> segments = split(params.pathOnly);
+        params = parseRequestTarget(target);
+        const std::vector<std::string> segments = splitPath(params.pathOnly);
         bool pathMatched = false;
         for (const Route& r : mRoutes) {
             std::map<std::string, std::string> captured;
@@ -45,9 +50,6 @@ public:
         }
         return pathMatched ? Match::WrongMethod : Match::None;
     }
-
-    static RouteParams parseTarget(const std::string& target);
-    static std::vector<std::string> split(const std::string& path);
 
 private:
     struct Route {
@@ -74,21 +76,5 @@ private:
     std::vector<Route> mRoutes;
 };
 
-// '+' means a space only in query strings.
-std::string percentDecode(const std::string& text, bool plusIsSpace);
-RouteParams parseRequestTarget(const std::string& target);
-std::vector<std::string> splitPath(const std::string& path);
-
-template <typename Handler>
-RouteParams Router<Handler>::parseTarget(const std::string& target)
-{
-    return parseRequestTarget(target);
-}
-
-template <typename Handler>
-std::vector<std::string> Router<Handler>::split(const std::string& path)
-{
-    return splitPath(path);
-}
 
 } // namespace tlmhub::server
