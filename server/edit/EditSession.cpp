@@ -406,7 +406,7 @@ Result EditSession::modelSettings(System&, const json& request)
     root.desiredTimestep = step;
     root.stopTime = stop;
     if (request.contains("log_samples")) root.requestedLogSamples = request.at("log_samples").get<std::size_t>();
-    return success({{"simulation", modelJson()["system"]["simulation"]}});
+    return success({{"simulation", simulationSettingsToJson(root)}});
 }
 
 } // namespace tlmhub::server

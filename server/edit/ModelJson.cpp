@@ -164,12 +164,16 @@ json systemToJson(const System& s)
                 {"ports", ports},
                 {"components", components},
                 {"connections", connections}};
-    if (s.isRoot())
-        out["simulation"] = {{"start", s.startTime},
-                             {"step", s.desiredTimestep},
-                             {"stop", s.stopTime},
-                             {"log_samples", s.requestedLogSamples}};
+    if (s.isRoot()) out["simulation"] = simulationSettingsToJson(s);
     return out;
+}
+
+json simulationSettingsToJson(const System& root)
+{
+    return {{"start", root.startTime},
+            {"step", root.desiredTimestep},
+            {"stop", root.stopTime},
+            {"log_samples", root.requestedLogSamples}};
 }
 
 json modelToJson(const System& root, const std::string& modelName)

@@ -14,6 +14,8 @@ namespace tlmhub::server {
 nlohmann::json modelToJson(const System& root, const std::string& modelName);
 nlohmann::json componentToJson(const Component& component);
 nlohmann::json systemToJson(const System& system);
+// The root's own times and log samples (SimulationSettings).
+nlohmann::json simulationSettingsToJson(const System& root);
 nlohmann::json parameterToJson(const Parameter& parameter);      // Param
 nlohmann::json systemParameterToJson(const Parameter& parameter); // SysParam
 
