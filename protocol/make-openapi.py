@@ -145,7 +145,8 @@ paths = {
                    body=json_body("JobRequest"), tag="jobs")},
     "/jobs/{id}": {
         "get": op("A job", {**ok("The job", "JobInfo"), **errors("401", "404")}, params=[ID], tag="jobs"),
-        "delete": op("Cancel a queued or running job", {**ok("The job", "JobInfo"), **errors("401", "404")},
+        "delete": op("Cancel a queued or running job (200 with the job); delete a finished one with its results (204)",
+                     {**ok("The job", "JobInfo"), "204": {"description": "Deleted"}, **errors("401", "403", "404")},
                      params=[ID], tag="jobs")},
     "/jobs/{id}/rerun": {"post": op("A new job with the same input", {**ok("Queued", "JobCreated", "201"),
                                                                       **errors("401", "404", "429")},

@@ -72,14 +72,20 @@ Response getJob(Services& s, Call& call)
     return jsonResponse(http::status::ok, job->toJson());
 }
 
-Response cancelJob(Services& s, Call& call)
+Response cancelOrDeleteJob(Services& s, Call& call)
 {
     const auto job = visibleJob(s, call.who(), call.params.path["id"]);
     if (!job) return apiError(http::status::not_found, "not_found", "no such job");
     if (job->ownerId != call.who().id && call.who().role != "admin")
-        return apiError(http::status::forbidden, "forbidden", "only the owner cancels a job");
-    s.queue.cancel(job->id);
-    return jsonResponse(http::status::ok, s.queue.store().info(job->id)->toJson());
+        return apiError(http::status::forbidden, "forbidden", "only the owner cancels or deletes a job");
+    // A waiting or running job is cancelled (and kept); a finished one is deleted with its
+    // results, which frees the owner's storage quota.
+    if (job->state == JobState::Queued || job->state == JobState::Running) {
+        s.queue.cancel(job->id);
+        return jsonResponse(http::status::ok, s.queue.store().info(job->id)->toJson());
+    }
+    s.queue.store().remove(job->id);
+    return noContent();
 }
 
 Response rerunJob(Services& s, Call& call)
@@ -135,7 +141,7 @@ void addJobRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/jobs", true, submitJob});
     routes.push_back({http::verb::get, "/jobs", true, listJobs});
     routes.push_back({http::verb::get, "/jobs/{id}", true, getJob});
-    routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelJob});
+    routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelOrDeleteJob});
     routes.push_back({http::verb::post, "/jobs/{id}/rerun", true, rerunJob});
     routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults});
 }

@@ -22,6 +22,7 @@ const char* kHelp =
     "  --max-wall-seconds S     wall time per job (default 300)\n"
     "  --max-running-per-user N jobs running at once per user (default 2)\n"
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
+    "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
     "  --max-body-bytes N       request body limit (default 8388608)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
@@ -81,6 +82,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.maxRunningPerUser);
         } else if (flag == "--max-queued-per-user") {
             ok = parseNumber(value, o.limits.maxQueuedPerUser);
+        } else if (flag == "--max-stored-bytes-per-user") {
+            ok = parseNumber(value, o.limits.maxStoredBytesPerUser);
         } else if (flag == "--max-body-bytes") {
             ok = parseNumber(value, o.maxBodyBytes);
         } else {

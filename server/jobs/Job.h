@@ -64,6 +64,8 @@ struct JobLimits {
     std::size_t maxResultBytes = 64u << 20;   // ResultTable::byteSize()
     int maxQueuedPerUser = 20;
     int maxRunningPerUser = 2;
+    // Results kept per user (all their finished jobs); new jobs wait for old ones to be deleted.
+    std::size_t maxStoredBytesPerUser = std::size_t(1) << 30;
 };
 
 } // namespace tlmhub::server

@@ -54,6 +54,14 @@ JobQueue::Submitted JobQueue::submit(const JobRequest& request)
     resolved.logSamples = prepared.logSamples;
     resolved.steps = prepared.steps;
 
+    const std::size_t stored = mStore.storedBytes(request.ownerId);
+    if (stored >= mLimits.maxStoredBytesPerUser) {
+        return {std::nullopt, "limit_exceeded",
+                "your stored results use " + std::to_string(stored >> 20) + " MiB of " +
+                    std::to_string(mLimits.maxStoredBytesPerUser >> 20) +
+                    " MiB; delete old jobs (DELETE /api/v1/jobs/{id}) first"};
+    }
+
     std::unique_lock lock(mMutex);
     const auto queued = mQueued.find(request.ownerId);
     const std::size_t alreadyQueued = queued == mQueued.end() ? 0 : queued->second.size();

@@ -234,4 +234,14 @@ bool JobStore::remove(std::int64_t id)
     return removed;
 }
 
+std::size_t JobStore::storedBytes(std::int64_t ownerId)
+{
+    std::lock_guard lock(mDb.mutex());
+    SQLite::Statement q(mDb.sql(),
+                        "SELECT COALESCE(SUM(length(r.data)), 0) FROM job_results r"
+                        " JOIN jobs j ON j.id = r.job_id WHERE j.owner_id = ?");
+    q.bind(1, ownerId);
+    return q.executeStep() ? static_cast<std::size_t>(q.getColumn(0).getInt64()) : 0;
+}
+
 } // namespace tlmhub::server

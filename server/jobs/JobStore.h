@@ -39,6 +39,8 @@ public:
     std::optional<ResultTable> result(std::int64_t id);
     bool hasResult(std::int64_t id);
     bool remove(std::int64_t id);
+    // Bytes of stored results of all of an owner's jobs (the storage quota).
+    std::size_t storedBytes(std::int64_t ownerId);
 
 private:
     std::vector<JobInfo> list(const std::string& where, std::int64_t value, const char* order);

@@ -394,3 +394,27 @@ TEST_F(ServerApi, ChangingThePasswordEndsSessions)
     carol.login("carol", "carol-new-password");
     EXPECT_EQ(carol.get("/api/v1/auth/me").json()["username"], "carol");
 }
+
+TEST(ServerQuota, StoredResultsAreLimitedPerUserAndDeletingJobsFreesThem)
+{
+    const fs::path dir = freshTempDir("quota");
+    // A Position Servo result is about 2 MB: one fits, a second does not.
+    ServerProcess server(dir, {"--max-stored-bytes-per-user", "1500000"});
+    HttpClient admin(server.port());
+    admin.login("admin", kAdminPassword);
+    const std::string hmf = readFile(kPositionServo);
+    auto r = admin.post("/api/v1/jobs", {{"hmf", hmf}});
+    ASSERT_EQ(r.status, 201) << r.body;
+    const std::int64_t first = r.json()["id"];
+    for (int i = 0; i < 600 && admin.get("/api/v1/jobs/" + std::to_string(first)).json()["state"] != "done"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    r = admin.post("/api/v1/jobs", {{"hmf", hmf}});
+    EXPECT_EQ(r.status, 429);
+    EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded");
+    EXPECT_NE(r.json()["error"]["message"].get<std::string>().find("MiB"), std::string::npos) << r.body;
+    // Deleting the finished job (and its results) makes room again.
+    EXPECT_EQ(admin.request(http::verb::delete_, "/api/v1/jobs/" + std::to_string(first)).status, 204);
+    EXPECT_EQ(admin.get("/api/v1/jobs/" + std::to_string(first)).status, 404);
+    EXPECT_EQ(admin.post("/api/v1/jobs", {{"hmf", hmf}}).status, 201);
+    fs::remove_all(dir);
+}
