@@ -2,8 +2,6 @@
 
 #include <boost/asio/post.hpp>
 
-#include <algorithm>
-
 namespace tlmhub::server {
 
 namespace beast = boost::beast;
@@ -38,7 +36,7 @@ private:
 } // namespace
 
 WebSocketSession::WebSocketSession(net::ip::tcp::socket&& socket, TransportLimits limits)
-    : mWs(std::move(socket)), mLimits(limits) {}
+    : mWs(std::move(socket)), mLimits(limits), mQueue(limits.wsQueueLimit) {}
 
 WebSocketSession::~WebSocketSession() = default;
 
@@ -87,18 +85,8 @@ void WebSocketSession::read()
 
 void WebSocketSession::enqueue(std::string text, bool droppable)
 {
-    if (mQueue.size() >= mLimits.wsQueueLimit) {
-        auto oldest = std::find_if(mQueue.begin() + (mWriting ? 1 : 0), mQueue.end(),
-                                   [](const Outgoing& o) { return o.droppable; });
-        if (oldest != mQueue.end()) {
-            mQueue.erase(oldest);
-            ++mDropped;
-        } else if (droppable) {
-            ++mDropped;   // only replies queued: drop the new frame instead
-            return;
-        }
-    }
-    mQueue.push_back({std::move(text), droppable});
+    mQueue.push(std::move(text), droppable, mWriting);
+    mDropped.store(mQueue.dropped());
     writeNext();
 }
 
@@ -107,11 +95,11 @@ void WebSocketSession::writeNext()
     if (mWriting || !mOpen || mQueue.empty()) return;
     mWriting = true;
     mWs.text(true);
-    mWs.async_write(net::buffer(mQueue.front().text),
+    mWs.async_write(net::buffer(mQueue.front()),
                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
                         self->mWriting = false;
                         if (ec) return self->closed();
-                        self->mQueue.pop_front();
+                        self->mQueue.pop();
                         self->writeNext();
                     });
 }

@@ -4,12 +4,12 @@
 // droppable message (a stream frame) is thrown away and counted, so a slow reader never
 // holds up a simulation or other clients, and replies are never lost.
 #include "server/http/Listener.h"
+#include "server/http/OutgoingQueue.h"
 
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 
 #include <atomic>
-#include <deque>
 
 namespace tlmhub::server {
 
@@ -24,13 +24,9 @@ public:
 
     // Called on the strand through the sender.
     void enqueue(std::string text, bool droppable);
-    std::uint64_t droppedCount() const { return mDropped.load(); }
+    std::uint64_t droppedCount() const { return mDropped.load(); }   // any thread
 
 private:
-    struct Outgoing {
-        std::string text;
-        bool droppable;
-    };
     void read();
     void writeNext();
     void closed();
@@ -39,7 +35,7 @@ private:
     boost::beast::flat_buffer mBuffer;
     TransportLimits mLimits;
     std::shared_ptr<WebSocketHandler> mHandler;
-    std::deque<Outgoing> mQueue;
+    OutgoingQueue mQueue;
     bool mWriting = false;
     bool mOpen = false;
     std::atomic<std::uint64_t> mDropped{0};
