@@ -297,6 +297,13 @@ double* Component::getSafeNodeDataPtr(Port* port, int id)
     return n->data() + id;
 }
 
+double* Component::getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id, double initialValue)
+{
+    double* data = getSafeMultiPortNodeDataPtr(port, subIndex, id);
+    *data = initialValue;
+    return data;
+}
+
 double* Component::getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id)
 {
     if (!port || id < 0) return &mDummy[0];

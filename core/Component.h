@@ -150,6 +150,9 @@ protected:
     // zero dummy when it has none).
     double* getSafeNodeDataPtr(Port* port, int id);
     double* getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id);
+    // The same, and writes `initialValue` into that slot first (Hopsan's four-argument
+    // form; e.g. a cylinder block zeroes its piston nodes, overriding their start values).
+    double* getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id, double initialValue);
     // Number of sub-ports of a multiport (connections), 1 for other ports.
     std::size_t getNumPorts(const Port* port) const;
     double readNodeSafe(Port* port, int id) { return *getSafeNodeDataPtr(port, id); }

@@ -35,15 +35,17 @@ void MechanicCylinderBlockWithSwashPlate::initialize()
     mvpP1_me.assign(mN, nullptr);
     mC1.assign(mN, 0.0);
     mZc1.assign(mN, 0.0);
+    // Every piston node is zeroed here, overriding the pistons' start values (so the
+    // stroke centre startX below is 0 whatever P3#Position the pistons were given).
     for (std::size_t i = 0; i < mN; ++i) {
-        mvpP1_f[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Force);
-        mvpP1_x[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Position);
-        mvpP1_v[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Velocity);
-        mvpP1_c[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::WaveVariable);
-        mvpP1_Zc[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::CharImpedance);
-        mvpP1_me[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::EquivalentMass);
-        *mvpP1_me[i] = 0.02;
+        mvpP1_f[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Force, 0.0);
+        mvpP1_x[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Position, 0.0);
+        mvpP1_v[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::Velocity, 0.0);
+        mvpP1_c[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::WaveVariable, 0.0);
+        mvpP1_Zc[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::CharImpedance, 0.0);
+        mvpP1_me[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeMechanic::EquivalentMass, 0.0);
     }
+    for (std::size_t i = 0; i < mN; ++i) *mvpP1_me[i] = 0.02;
     mpP2_t = getSafeNodeDataPtr(mpP2, NodeMechanicRotational::Torque);
     mpP2_a = getSafeNodeDataPtr(mpP2, NodeMechanicRotational::Angle);
     mpP2_w = getSafeNodeDataPtr(mpP2, NodeMechanicRotational::AngularVelocity);

@@ -21,9 +21,10 @@ void ActivityDiagramJoinN::initialize()
     const std::size_t n = getNumPorts(mpPpn1);
     mpS.assign(n, nullptr);
     mpQ.assign(n, nullptr);
+    // Hopsan zeroes the incoming sub-port nodes here (their start values do not survive).
     for (std::size_t i = 0; i < n; ++i) {
-        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState);
-        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow);
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState, 0.0);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow, 0.0);
     }
     mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
     mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
