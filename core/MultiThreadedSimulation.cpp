@@ -1,7 +1,7 @@
 // Multi-core simulation of one model (core.md §10): the root's C and Q lists are split over
 // threads, with a full barrier between the S, C and Q phases of every step, so results are
-// identical to the single-threaded loop. S components (whose order matters) and logging run
-// on the calling thread.
+// identical to the single-threaded loop. Signal clusters go whole to one thread (their
+// order matters); on log steps every thread copies its own share of the logged nodes.
 #include "core/System.h"
 
 #include <algorithm>
@@ -135,6 +135,24 @@ Partition partitionByRegion(const std::vector<Component*>& order, const std::vec
     return p;
 }
 
+// Contiguous shares of the logged nodes with about equal numbers of values, one per thread.
+// Nodes are in model order, so a share mostly holds nodes its thread just computed.
+std::vector<std::pair<std::size_t, std::size_t>> logShares(const std::vector<Node*>& nodes, unsigned threads)
+{
+    std::size_t total = 0;
+    for (const Node* n : nodes) total += n->size();
+    std::vector<std::pair<std::size_t, std::size_t>> shares(threads, {nodes.size(), nodes.size()});
+    std::size_t begin = 0, done = 0;
+    for (unsigned t = 0; t < threads; ++t) {
+        const std::size_t target = total * (t + 1) / threads;
+        std::size_t end = begin;
+        while (end < nodes.size() && (t + 1 == threads || done < target)) done += nodes[end++]->size();
+        shares[t] = {begin, end};
+        begin = end;
+    }
+    return shares;
+}
+
 template <typename Clock>
 void timedRun(const std::vector<Component*>& list, std::vector<double>& cost, double t)
 {
@@ -172,19 +190,23 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     const auto& partQ = part.q;
 
     // Per step: S | C | Q phases with a barrier after each. Every thread advances its own
-    // copy of the time by the same additions, so all see the same value. After the Q
-    // barrier the master logs; on steps that store a sample the others wait for it at one
-    // more barrier, so the next step's S phase never overwrites what is being logged.
+    // copy of the time by the same additions, so all see the same value. On steps that
+    // store a log sample every thread then copies its share of the logged nodes into the
+    // slot, and one more barrier keeps the next step's S phase from overwriting a node
+    // another thread is still copying. Only the master touches the time and counters.
     std::vector<char> logsAfter(n - probeSteps, 0);
     for (std::size_t k = mLogCounter; k < mLogSteps.size(); ++k) {
         const std::size_t taken = mLogSteps[k];
         if (taken > mTakenSteps && taken - mTakenSteps - 1 < logsAfter.size()) logsAfter[taken - mTakenSteps - 1] = 1;
     }
+    const auto shares = logShares(mLoggedNodes, threads);
     SpinBarrier barrier(threads);
     bool stopSnapshot = false;   // written only by the last thread at the Q barrier
     const double startTime = mTime;
+    const std::size_t firstSlot = mLogCounter;
     auto run = [&](unsigned id) {
         double t = startTime;
+        std::size_t slot = firstSlot;
         for (std::size_t step = 0; step < logsAfter.size(); ++step) {
             t += mTimestep;
             for (Component* c : partS[id]) runComponent(c, t);
@@ -193,14 +215,27 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
             barrier.arriveAndWait();
             for (Component* c : partQ[id]) runComponent(c, t);
             barrier.arriveAndWait([&] { stopSnapshot = stopRequested(); });
+            if (logsAfter[step]) {
+                for (std::size_t k = shares[id].first; k < shares[id].second; ++k) {
+                    Node* node = mLoggedNodes[k];
+                    const std::size_t sz = node->size();
+                    std::copy(node->data(), node->data() + sz, node->logData.data() + slot * sz);
+                }
+            }
             if (id == 0) {
                 mTime = t;
                 ++mTakenSteps;
-                logSample();
+                if (logsAfter[step]) {
+                    mLogTime[slot] = t;
+                    ++mLogCounter;
+                }
                 if (mProgress && mProgressInterval && (mTakenSteps % mProgressInterval) == 0)
                     mProgress(mProgressUser, probeSteps + step + 1, n);
             }
-            if (logsAfter[step]) barrier.arriveAndWait();
+            if (logsAfter[step]) {
+                ++slot;
+                barrier.arriveAndWait();
+            }
             if (stopSnapshot) return;
         }
     };

@@ -50,4 +50,5 @@ INSTANTIATE_TEST_SUITE_P(ValidationModels, MultiThreading,
                                            "Example Models/Sub System Example.hmf",
                                            "Example Models/Dynamic Pressure Feedback.hmf",
                                            "Example Models/Pressure Relief Valve Characteristics.hmf",
+                                           "Example Models/In-Line Axial Piston Machine.hmf",
                                            "Component Test/HydraulicComponent Test/HydraulicLineTest.hmf"));
