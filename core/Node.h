@@ -11,27 +11,23 @@ namespace tlmhub {
 class Port;
 class System;
 
-// Storage for logged samples. Not zero-filled: every slot is written before it is read
-// (readers stop at the number of samples logged), and skipping the fill keeps the start
-// of a run with large logs fast. Kept between runs of the same size.
+// One node's logged samples: a view into its system's LogArena ([sample][variable]).
 class LogBuffer {
 public:
-    void allocate(std::size_t n)
+    void assign(double* data, std::size_t n)
     {
-        if (n != mSize) {
-            mData = n ? std::make_unique_for_overwrite<double[]>(n) : nullptr;
-            mSize = n;
-        }
+        mData = n ? data : nullptr;
+        mSize = n;
     }
-    void clear() { mData.reset(); mSize = 0; }
+    void clear() { assign(nullptr, 0); }
     bool empty() const { return mSize == 0; }
     std::size_t size() const { return mSize; }
-    double* data() { return mData.get(); }
-    const double* data() const { return mData.get(); }
+    double* data() { return mData; }
+    const double* data() const { return mData; }
     double operator[](std::size_t i) const { return mData[i]; }
 
 private:
-    std::unique_ptr<double[]> mData;
+    double* mData = nullptr;
     std::size_t mSize = 0;
 };
 

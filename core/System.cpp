@@ -898,7 +898,6 @@ void System::allocateLogStorage()
             n->logData.clear();
             return;
         }
-        n->logData.allocate(mLogSteps.size() * n->size());
         mLoggedNodes.push_back(n);
     };
     for (Component* c : mOrder) {
@@ -911,6 +910,16 @@ void System::allocateLogStorage()
     }
     for (Port* p : ports())
         if (!p->isMultiport()) consider(p);
+
+    std::size_t total = 0;
+    for (const Node* n : mLoggedNodes) total += mLogSteps.size() * n->size();
+    mLogArena.reserve(total);
+    double* next = mLogArena.data();
+    for (Node* n : mLoggedNodes) {
+        const std::size_t values = mLogSteps.size() * n->size();
+        n->logData.assign(next, values);
+        next += values;
+    }
 }
 
 void System::logSample()

@@ -2,6 +2,7 @@
 // A system: components, their connections, system parameters and system ports, and the
 // simulation loop (core.md §2.5-§4). Systems nest: a subsystem is a component of its parent.
 #include "core/Component.h"
+#include "core/LogArena.h"
 
 #include <atomic>
 #include <map>
@@ -162,6 +163,7 @@ private:
     std::vector<double> mLogTime;
     std::size_t mLogCounter = 0;
     std::vector<Node*> mLoggedNodes;
+    LogArena mLogArena;   // the logged samples of mLoggedNodes, one block
 
     // Root: every node's data in one contiguous block (filled at initialize).
     std::vector<double> mNodeArena;
