@@ -6,21 +6,29 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <map>
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <set>
 #include <thread>
 
 namespace tlmhub {
 
 namespace {
 
-// Sense-reversing barrier: spins, then yields (threads may outnumber cores). The last
+// Sense-reversing barrier. With no more threads than cores it only spins: a phase lasts
+// microseconds, and a sched_yield per wait cost about 6 % of a 2-thread x200 run. With
+// more threads than cores it yields after a short spin so the others can run. The last
 // thread to arrive runs `onComplete` before anyone is released.
 class SpinBarrier {
 public:
-    explicit SpinBarrier(unsigned count) : mCount(count), mWaiting(0), mGeneration(0) {}
+    explicit SpinBarrier(unsigned count)
+        : mCount(count), mWaiting(0), mGeneration(0),
+          mSpinsBeforeYield(count <= std::thread::hardware_concurrency() ? 1u << 24 : 2000u)
+    {
+    }
 
     template <typename OnComplete>
     void arriveAndWait(OnComplete onComplete)
@@ -33,7 +41,7 @@ public:
             return;
         }
         for (unsigned spins = 0; mGeneration.load(std::memory_order_acquire) == generation; ++spins)
-            if (spins > 20000) std::this_thread::yield();
+            if (spins > mSpinsBeforeYield) std::this_thread::yield();
     }
     void arriveAndWait() { arriveAndWait([] {}); }
 
@@ -41,6 +49,7 @@ private:
     const unsigned mCount;
     std::atomic<unsigned> mWaiting;
     std::atomic<unsigned> mGeneration;
+    const unsigned mSpinsBeforeYield;
 };
 
 std::size_t roundSteps(double x)
@@ -153,13 +162,69 @@ std::vector<std::pair<std::size_t, std::size_t>> logShares(const std::vector<Nod
     return shares;
 }
 
+// Nodes attached to a port (one per sub-port of a multiport).
+std::vector<Node*> portNodes(Port* port)
+{
+    std::vector<Node*> nodes;
+    if (port->isMultiport())
+        for (auto& sub : port->subPorts) nodes.push_back(sub->node());
+    else if (port->node())
+        nodes.push_back(port->node());
+    return nodes;
+}
+
+// The S phase needs no barrier of its own when no node is shared between an S component
+// and a C component of another thread. Without that barrier a thread may start its C
+// phase while another is still in its S phase of the same step (Q phases cannot overlap
+// an S phase: the C barrier stands between them), so that sharing is the only way the two
+// could see each other's values. Region cuts usually split one signal cluster from some
+// of its C components; those C components are moved to the cluster's thread first.
+// Returns whether the S barrier can go.
+bool keepSignalPhaseThreadLocal(Partition& p)
+{
+    std::map<const Component*, unsigned> sThread, cThread;
+    for (unsigned t = 0; t < p.s.size(); ++t)
+        for (const Component* c : p.s[t]) sThread[c] = t;
+    for (unsigned t = 0; t < p.c.size(); ++t)
+        for (const Component* c : p.c[t]) cThread[c] = t;
+    auto topLevel = [&](const Component* c) {
+        while (c && !cThread.count(c) && !sThread.count(c)) c = c->parentSystem();
+        return c;
+    };
+    // C components shared with S components of other threads: the thread(s) they should be on.
+    std::map<const Component*, std::set<unsigned>> wanted;
+    for (const auto& [comp, thread] : sThread)
+        for (Port* port : comp->ports())
+            for (Node* n : portNodes(port))
+                for (Port* other : n->ports()) {
+                    const Component* owner = topLevel(other->component());
+                    auto it = cThread.find(owner);
+                    if (it != cThread.end() && it->second != thread) wanted[owner].insert(thread);
+                }
+    bool local = true;
+    for (const auto& [comp, threads] : wanted) {
+        if (threads.size() > 1) {
+            local = false;   // shared with clusters on two threads: keep the barrier
+            continue;
+        }
+        auto& from = p.c[cThread[comp]];
+        from.erase(std::find(from.begin(), from.end(), comp));
+        p.c[*threads.begin()].push_back(const_cast<Component*>(comp));
+    }
+    // (Order within a C list does not matter: C components never share a node.)
+    return local;
+}
+
+// Each component's cost is the fastest of its probe steps: an interrupt or page fault
+// inside one timed call would otherwise make that component look hundreds of times
+// dearer and shift the whole partition.
 template <typename Clock>
 void timedRun(const std::vector<Component*>& list, std::vector<double>& cost, double t)
 {
     for (std::size_t i = 0; i < list.size(); ++i) {
         const auto a = Clock::now();
         System::runComponent(list[i], t);
-        cost[i] += std::chrono::duration<double>(Clock::now() - a).count();
+        cost[i] = std::min(cost[i], std::chrono::duration<double>(Clock::now() - a).count());
     }
 }
 
@@ -174,7 +239,8 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     // Measure each component's cost over the first steps (real steps of the run).
     using Clock = std::chrono::steady_clock;
     const std::size_t probeSteps = std::min<std::size_t>(100, n);
-    std::vector<double> costS(mS.size(), 0.0), costC(mC.size(), 0.0), costQ(mQ.size(), 0.0);
+    const double unmeasured = std::numeric_limits<double>::infinity();
+    std::vector<double> costS(mS.size(), unmeasured), costC(mC.size(), unmeasured), costQ(mQ.size(), unmeasured);
     for (std::size_t step = 0; step < probeSteps; ++step) {
         if (stopRequested()) return false;
         mTime += mTimestep;
@@ -184,12 +250,14 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
         ++mTakenSteps;
         logSample();
     }
-    const Partition part = partitionByRegion(mOrder, mS, costS, mC, costC, mQ, costQ, threads);
+    Partition part = partitionByRegion(mOrder, mS, costS, mC, costC, mQ, costQ, threads);
+    const bool barrierAfterS = !keepSignalPhaseThreadLocal(part);
     const auto& partS = part.s;
     const auto& partC = part.c;
     const auto& partQ = part.q;
 
-    // Per step: S | C | Q phases with a barrier after each. Every thread advances its own
+    // Per step: S | C | Q phases with a barrier after each (after S only when some node is
+    // shared across threads between S and C components). Every thread advances its own
     // copy of the time by the same additions, so all see the same value. On steps that
     // store a log sample every thread then copies its share of the logged nodes into the
     // slot, and one more barrier keeps the next step's S phase from overwriting a node
@@ -210,7 +278,7 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
         for (std::size_t step = 0; step < logsAfter.size(); ++step) {
             t += mTimestep;
             for (Component* c : partS[id]) runComponent(c, t);
-            barrier.arriveAndWait();
+            if (barrierAfterS) barrier.arriveAndWait();
             for (Component* c : partC[id]) runComponent(c, t);
             barrier.arriveAndWait();
             for (Component* c : partQ[id]) runComponent(c, t);
