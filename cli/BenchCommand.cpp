@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <thread>
 
 namespace tlmhub::cli {
 
@@ -23,8 +25,35 @@ long peakRssKiB()
     return -1;
 }
 
+// "--threads 1,2" -> {1, 2}; 0 means one per core.
+bool parseThreadList(const std::string& text, std::vector<unsigned>& out, std::string& error)
+{
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        char* end = nullptr;
+        const long v = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != '\0' || v < 0 || v > 256) {
+            error = "--threads needs counts such as 2 or 1,2; got '" + text + "'";
+            return false;
+        }
+        out.push_back(v == 0 ? std::max(1u, std::thread::hardware_concurrency()) : static_cast<unsigned>(v));
+    }
+    if (out.empty()) out.push_back(1);
+    return true;
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
 } // namespace
 
+// Loads once, then simulates `repeat` rounds. With several thread counts each round runs
+// every count back to back, so a speed-up is a ratio of runs made under the same machine
+// conditions (shared VMs drift by tens of percent within minutes).
 int benchCommand(const std::vector<std::string>& args)
 {
     Options opt(args);
@@ -32,12 +61,15 @@ int benchCommand(const std::vector<std::string>& args)
         std::cerr << "tlmhub-cli bench: expected one model file\n";
         return 2;
     }
-    double repeat = 5, threads = 1;
+    double repeat = 5;
+    std::vector<unsigned> threadCounts;
     std::string err;
-    if (!opt.number("repeat", repeat, err) || !opt.number("threads", threads, err)) {
+    if (!opt.number("repeat", repeat, err) || !parseThreadList(opt.has("threads") ? opt.value("threads") : "1",
+                                                                 threadCounts, err)) {
         std::cerr << "error: " << err << "\n";
         return 2;
     }
+    if (repeat < 1) repeat = 1;
     const auto l0 = std::chrono::steady_clock::now();
     LoadedModel model = loadHmfFile(opt.positional[0]);
     if (model.hasErrors()) {
@@ -46,33 +78,45 @@ int benchCommand(const std::vector<std::string>& args)
     }
     const auto l1 = std::chrono::steady_clock::now();
     System& root = *model.root;
-    std::vector<double> times;
+    std::vector<std::vector<double>> times(threadCounts.size());
     std::size_t steps = 0;
     for (int k = 0; k < static_cast<int>(repeat); ++k) {
-        if (!root.checkModel(err) || !root.initialize(root.startTime, root.stopTime)) {
-            std::cerr << "error: initialisation failed: " << err << "\n";
-            return 1;
+        for (std::size_t c = 0; c < threadCounts.size(); ++c) {
+            if (!root.checkModel(err) || !root.initialize(root.startTime, root.stopTime)) {
+                std::cerr << "error: initialisation failed: " << err << "\n";
+                return 1;
+            }
+            const auto s0 = std::chrono::steady_clock::now();
+            const bool ok = root.simulateMultiThreaded(root.stopTime, threadCounts[c]);
+            const auto s1 = std::chrono::steady_clock::now();
+            root.finalize();
+            if (!ok) {
+                std::cerr << "error: simulation failed\n";
+                return 1;
+            }
+            steps = root.takenSteps();
+            times[c].push_back(std::chrono::duration<double>(s1 - s0).count());
         }
-        const auto s0 = std::chrono::steady_clock::now();
-        const bool ok = root.simulateMultiThreaded(root.stopTime, static_cast<unsigned>(threads));
-        const auto s1 = std::chrono::steady_clock::now();
-        root.finalize();
-        if (!ok) {
-            std::cerr << "error: simulation failed\n";
-            return 1;
-        }
-        steps = root.takenSteps();
-        times.push_back(std::chrono::duration<double>(s1 - s0).count());
     }
-    std::sort(times.begin(), times.end());
-    const double median = times[times.size() / 2];
     const std::size_t comps = root.countComponents();
     std::printf("model %s: %zu components, %zu steps, load %.3f s\n", opt.positional[0].c_str(), comps,
                 steps, std::chrono::duration<double>(l1 - l0).count());
-    std::printf("simulation min %.4f s, median %.4f s, max %.4f s (%zu runs, %g thread(s))\n",
-                times.front(), median, times.back(), times.size(), threads);
-    std::printf("%.0f steps/s, %.2f ns per component-step, peak RSS %ld KiB\n", steps / median,
-                median * 1e9 / (static_cast<double>(steps) * static_cast<double>(comps)), peakRssKiB());
+    for (std::size_t c = 0; c < threadCounts.size(); ++c) {
+        const auto [lo, hi] = std::minmax_element(times[c].begin(), times[c].end());
+        const double med = median(times[c]);
+        std::printf("simulation min %.4f s, median %.4f s, max %.4f s (%zu runs, %u thread(s))\n", *lo, med, *hi,
+                    times[c].size(), threadCounts[c]);
+        std::printf("%.0f steps/s, %.2f ns per component-step\n", steps / med,
+                    med * 1e9 / (static_cast<double>(steps) * static_cast<double>(comps)));
+    }
+    for (std::size_t c = 1; c < threadCounts.size(); ++c) {
+        std::vector<double> ratios;
+        for (std::size_t k = 0; k < times[c].size(); ++k) ratios.push_back(times[0][k] / times[c][k]);
+        const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+        std::printf("speed-up %u vs %u thread(s): median %.2fx (per round %.2fx to %.2fx)\n", threadCounts[c],
+                    threadCounts[0], median(ratios), *lo, *hi);
+    }
+    std::printf("peak RSS %ld KiB\n", peakRssKiB());
     return 0;
 }
 
