@@ -103,7 +103,11 @@ std::vector<std::size_t> signalClusters(const std::vector<Component*>& list)
 // of the node data) with about equal measured cost. A C component and the Q component it
 // talks to are usually neighbours, so they share a thread and their node stays in that
 // core's cache; interleaving would bounce every node between cores twice per step.
-// Signal clusters go whole to the thread of their first member.
+// Clusters (components of one list linked through a node, core.md §10) go whole to the
+// thread of their first member: in the S list their order matters, and in the C and Q
+// lists a component may read a signal another one of the same phase writes (a valve's
+// spool position feeding a Q component, say), which must happen in list order on one
+// thread.
 struct Partition {
     std::vector<std::vector<Component*>> s, c, q;
 };
@@ -133,14 +137,17 @@ Partition partitionByRegion(const std::vector<Component*>& order, const std::vec
     p.s.resize(threads);
     p.c.resize(threads);
     p.q.resize(threads);
-    const std::vector<std::size_t> cluster = signalClusters(listS);
-    std::map<std::size_t, unsigned> clusterThread;
-    for (std::size_t i = 0; i < listS.size(); ++i) {
-        auto [it, inserted] = clusterThread.emplace(cluster[i], threadOf[listS[i]]);
-        p.s[it->second].push_back(listS[i]);
-    }
-    for (const Component* comp : listC) p.c[threadOf[comp]].push_back(const_cast<Component*>(comp));
-    for (const Component* comp : listQ) p.q[threadOf[comp]].push_back(const_cast<Component*>(comp));
+    auto assignClusters = [&](const std::vector<Component*>& list, std::vector<std::vector<Component*>>& out) {
+        const std::vector<std::size_t> cluster = signalClusters(list);
+        std::map<std::size_t, unsigned> clusterThread;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            auto [it, inserted] = clusterThread.emplace(cluster[i], threadOf[list[i]]);
+            out[it->second].push_back(list[i]);
+        }
+    };
+    assignClusters(listS, p.s);
+    assignClusters(listC, p.c);
+    assignClusters(listQ, p.q);
     return p;
 }
 
@@ -178,40 +185,45 @@ std::vector<Node*> portNodes(Port* port)
 // phase while another is still in its S phase of the same step (Q phases cannot overlap
 // an S phase: the C barrier stands between them), so that sharing is the only way the two
 // could see each other's values. Region cuts usually split one signal cluster from some
-// of its C components; those C components are moved to the cluster's thread first.
+// of its C components; those C clusters are moved whole to the S cluster's thread first.
 // Returns whether the S barrier can go.
-bool keepSignalPhaseThreadLocal(Partition& p)
+bool keepSignalPhaseThreadLocal(Partition& p, const std::vector<Component*>& listC)
 {
     std::map<const Component*, unsigned> sThread, cThread;
     for (unsigned t = 0; t < p.s.size(); ++t)
         for (const Component* c : p.s[t]) sThread[c] = t;
     for (unsigned t = 0; t < p.c.size(); ++t)
         for (const Component* c : p.c[t]) cThread[c] = t;
+    std::map<const Component*, std::size_t> cCluster;
+    const std::vector<std::size_t> clusterOfIndex = signalClusters(listC);
+    for (std::size_t i = 0; i < listC.size(); ++i) cCluster[listC[i]] = clusterOfIndex[i];
     auto topLevel = [&](const Component* c) {
         while (c && !cThread.count(c) && !sThread.count(c)) c = c->parentSystem();
         return c;
     };
-    // C components shared with S components of other threads: the thread(s) they should be on.
-    std::map<const Component*, std::set<unsigned>> wanted;
+    // C clusters sharing a node with S components of other threads: the threads wanted.
+    std::map<std::size_t, std::set<unsigned>> wanted;
     for (const auto& [comp, thread] : sThread)
         for (Port* port : comp->ports())
             for (Node* n : portNodes(port))
                 for (Port* other : n->ports()) {
                     const Component* owner = topLevel(other->component());
                     auto it = cThread.find(owner);
-                    if (it != cThread.end() && it->second != thread) wanted[owner].insert(thread);
+                    if (it != cThread.end() && it->second != thread) wanted[cCluster[owner]].insert(thread);
                 }
     bool local = true;
-    for (const auto& [comp, threads] : wanted) {
+    for (const auto& [cluster, threads] : wanted) {
         if (threads.size() > 1) {
-            local = false;   // shared with clusters on two threads: keep the barrier
+            local = false;   // shared with S clusters on two threads: keep the barrier
             continue;
         }
-        auto& from = p.c[cThread[comp]];
-        from.erase(std::find(from.begin(), from.end(), comp));
-        p.c[*threads.begin()].push_back(const_cast<Component*>(comp));
+        const unsigned to = *threads.begin();
+        for (auto& list : p.c) std::erase_if(list, [&](Component* c) { return cCluster[c] == cluster; });
+        // Appended in list order: the cluster keeps its own order and depends on nothing
+        // else in that thread's list.
+        for (Component* c : listC)
+            if (cCluster[c] == cluster) p.c[to].push_back(c);
     }
-    // (Order within a C list does not matter: C components never share a node.)
     return local;
 }
 
@@ -251,7 +263,7 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
         logSample();
     }
     Partition part = partitionByRegion(mOrder, mS, costS, mC, costC, mQ, costQ, threads);
-    const bool barrierAfterS = !keepSignalPhaseThreadLocal(part);
+    const bool barrierAfterS = !keepSignalPhaseThreadLocal(part, mC);
     const auto& partS = part.s;
     const auto& partC = part.c;
     const auto& partQ = part.q;
