@@ -1,7 +1,8 @@
-// Multi-core simulation of one model (core.md §10): the root's C and Q lists are split over
-// threads, with a full barrier between the S, C and Q phases of every step, so results are
-// identical to the single-threaded loop. Signal clusters go whole to one thread (their
-// order matters); on log steps every thread copies its own share of the logged nodes.
+// Multi-core simulation of one model (core.md §10): the root's S, C and Q lists are split
+// over threads by region, with barriers between the phases of every step, so results are
+// identical to the single-threaded loop. Clusters of components linked by a node go whole
+// to one thread (their order matters); on log steps every thread copies its own share of
+// the logged nodes.
 #include "core/System.h"
 
 #include <algorithm>
@@ -62,6 +63,17 @@ std::size_t roundSteps(double x)
 
 namespace {
 
+// Nodes attached to a port (one per sub-port of a multiport).
+std::vector<Node*> portNodes(Port* port)
+{
+    std::vector<Node*> nodes;
+    if (port->isMultiport())
+        for (auto& sub : port->subPorts) nodes.push_back(sub->node());
+    else if (port->node())
+        nodes.push_back(port->node());
+    return nodes;
+}
+
 // Signal clusters (core.md §10): S components linked by signal connections, directly or
 // through other S components, form one cluster; clusters share no signal node, so whole
 // clusters can run on different threads. Returns a cluster id per entry of `list`.
@@ -77,12 +89,7 @@ std::vector<std::size_t> signalClusters(const std::vector<Component*>& list)
     for (std::size_t i = 0; i < list.size(); ++i) index[list[i]] = i;
     for (std::size_t i = 0; i < list.size(); ++i) {
         for (Port* p : list[i]->ports()) {
-            std::vector<Node*> nodes;
-            if (p->isMultiport())
-                for (auto& sub : p->subPorts) nodes.push_back(sub->node());
-            else if (p->node())
-                nodes.push_back(p->node());
-            for (Node* n : nodes) {
+            for (Node* n : portNodes(p)) {
                 for (Port* q : n->ports()) {
                     // Owners inside subsystems count as the subsystem in this list.
                     const Component* owner = q->component();
@@ -169,17 +176,6 @@ std::vector<std::pair<std::size_t, std::size_t>> logShares(const std::vector<Nod
     return shares;
 }
 
-// Nodes attached to a port (one per sub-port of a multiport).
-std::vector<Node*> portNodes(Port* port)
-{
-    std::vector<Node*> nodes;
-    if (port->isMultiport())
-        for (auto& sub : port->subPorts) nodes.push_back(sub->node());
-    else if (port->node())
-        nodes.push_back(port->node());
-    return nodes;
-}
-
 // The S phase needs no barrier of its own when no node is shared between an S component
 // and a C component of another thread. Without that barrier a thread may start its C
 // phase while another is still in its S phase of the same step (Q phases cannot overlap
@@ -201,23 +197,25 @@ bool keepSignalPhaseThreadLocal(Partition& p, const std::vector<Component*>& lis
         while (c && !cThread.count(c) && !sThread.count(c)) c = c->parentSystem();
         return c;
     };
-    // C clusters sharing a node with S components of other threads: the threads wanted.
-    std::map<std::size_t, std::set<unsigned>> wanted;
+    // For each C cluster, the threads of the S components it shares a node with.
+    std::map<std::size_t, std::set<unsigned>> sThreadsOf;
+    std::map<std::size_t, unsigned> clusterThread;
+    for (const auto& [comp, thread] : cThread) clusterThread[cCluster[comp]] = thread;
     for (const auto& [comp, thread] : sThread)
         for (Port* port : comp->ports())
             for (Node* n : portNodes(port))
                 for (Port* other : n->ports()) {
                     const Component* owner = topLevel(other->component());
-                    auto it = cThread.find(owner);
-                    if (it != cThread.end() && it->second != thread) wanted[cCluster[owner]].insert(thread);
+                    if (cThread.count(owner)) sThreadsOf[cCluster[owner]].insert(thread);
                 }
     bool local = true;
-    for (const auto& [cluster, threads] : wanted) {
+    for (const auto& [cluster, threads] : sThreadsOf) {
         if (threads.size() > 1) {
             local = false;   // shared with S clusters on two threads: keep the barrier
             continue;
         }
         const unsigned to = *threads.begin();
+        if (clusterThread[cluster] == to) continue;
         for (auto& list : p.c) std::erase_if(list, [&](Component* c) { return cCluster[c] == cluster; });
         // Appended in list order: the cluster keeps its own order and depends on nothing
         // else in that thread's list.
