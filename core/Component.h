@@ -45,7 +45,8 @@ public:
     virtual void initialize() {}
     virtual void simulateOneTimestep() {}
     virtual void finalize() {}
-    virtual bool isSystem() const { return false; }
+    // Not virtual: the step loop asks this of every component every step.
+    bool isSystem() const { return mIsSystem; }
 
     // --- identity ---
     const std::string& name() const { return mName; }
@@ -108,6 +109,8 @@ public:
     std::string preservedXml;
 
 protected:
+    bool mIsSystem = false;   // set by System's constructor
+
     // --- port registration ---
     Port* addPowerPort(const std::string& name, NodeType type, bool required = true);
     Port* addReadPort(const std::string& name, NodeType type, bool required = true);

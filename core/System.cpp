@@ -80,6 +80,7 @@ std::string sanitizeName(const std::string& name)
 
 System::System() : Component(CqsKind::Undefined)
 {
+    mIsSystem = true;
     setTypeName("Subsystem");
 }
 

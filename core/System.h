@@ -18,7 +18,6 @@ public:
     System();
     ~System() override;
 
-    bool isSystem() const override { return true; }
     CqsKind kind() const override { return mSystemKind; }
     System* rootSystem();
     const System* rootSystem() const;
