@@ -24,6 +24,8 @@ const char* kHelp =
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
     "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
     "  --max-body-bytes N       request body limit (default 8388608)\n"
+    "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
+    "                           finish (default 0: keep them until their owner deletes them)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -84,6 +86,10 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.maxQueuedPerUser);
         } else if (flag == "--max-stored-bytes-per-user") {
             ok = parseNumber(value, o.limits.maxStoredBytesPerUser);
+        } else if (flag == "--result-ttl") {
+            long long s = 0;
+            ok = parseNumber(value, s) && s >= 0;
+            o.resultTtl = std::chrono::seconds(s);
         } else if (flag == "--max-body-bytes") {
             ok = parseNumber(value, o.maxBodyBytes);
         } else {

@@ -18,6 +18,7 @@ struct ServerOptions {
     unsigned workers = 0;                       // simulation threads; 0 = one per core
     unsigned ioThreads = 4;                     // HTTP/WebSocket threads
     std::chrono::seconds tokenTtl{12 * 3600};
+    std::chrono::seconds resultTtl{0};          // finished jobs kept this long; 0 = for ever
     std::size_t maxBodyBytes = 8u << 20;
     std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before drop-oldest
     int loginMaxFailures = 5;

@@ -31,6 +31,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mStreams = std::make_unique<StreamHub>();
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
     mQueue = std::make_unique<JobQueue>(*mJobStore, *mStreams, mOptions.limits, workers);
+    if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(*mJobStore, mOptions.resultTtl);
     mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter, *mQueue, *mStreams});
 
     std::vector<RouteSpec> routes;

@@ -6,6 +6,7 @@
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
 #include "server/jobs/JobStore.h"
+#include "server/jobs/ResultExpiry.h"
 #include "server/store/Database.h"
 
 #include <memory>
@@ -44,6 +45,7 @@ private:
     std::unique_ptr<JobStore> mJobStore;
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
+    std::unique_ptr<ResultExpiry> mExpiry;   // only with --result-ttl
     std::unique_ptr<Services> mServices;
     Router<RouteHandler> mRouter;
     StaticFiles mStaticFiles;

@@ -234,6 +234,22 @@ bool JobStore::remove(std::int64_t id)
     return removed;
 }
 
+int JobStore::removeFinishedBefore(std::int64_t unixSeconds)
+{
+    const char* finished = "state IN ('done', 'failed', 'cancelled', 'interrupted') AND finished_at < ?";
+    std::lock_guard lock(mDb.mutex());
+    SQLite::Transaction transaction(mDb.sql());
+    SQLite::Statement results(mDb.sql(), std::string("DELETE FROM job_results WHERE job_id IN"
+                                                     " (SELECT id FROM jobs WHERE ") + finished + ")");
+    results.bind(1, unixSeconds);
+    results.exec();
+    SQLite::Statement jobs(mDb.sql(), std::string("DELETE FROM jobs WHERE ") + finished);
+    jobs.bind(1, unixSeconds);
+    const int removed = jobs.exec();
+    transaction.commit();
+    return removed;
+}
+
 std::size_t JobStore::storedBytes(std::int64_t ownerId)
 {
     std::lock_guard lock(mDb.mutex());

@@ -39,6 +39,9 @@ public:
     std::optional<ResultTable> result(std::int64_t id);
     bool hasResult(std::int64_t id);
     bool remove(std::int64_t id);
+    // Deletes finished jobs (and their results) that finished before `unixSeconds`;
+    // returns how many.
+    int removeFinishedBefore(std::int64_t unixSeconds);
     // Bytes of stored results of all of an owner's jobs (the storage quota).
     std::size_t storedBytes(std::int64_t ownerId);
 

@@ -418,3 +418,30 @@ TEST(ServerQuota, StoredResultsAreLimitedPerUserAndDeletingJobsFreesThem)
     EXPECT_EQ(admin.post("/api/v1/jobs", {{"hmf", hmf}}).status, 201);
     fs::remove_all(dir);
 }
+
+TEST(ServerResultExpiry, FinishedJobsAreDeletedAfterTheResultLifetime)
+{
+    const fs::path dir = freshTempDir("expiry");
+    ServerProcess server(dir, {"--result-ttl", "2"});
+    HttpClient admin(server.port());
+    admin.login("admin", kAdminPassword);
+    auto r = admin.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}});
+    ASSERT_EQ(r.status, 201) << r.body;
+    const std::string path = "/api/v1/jobs/" + std::to_string(r.json()["id"].get<std::int64_t>());
+    for (int i = 0; i < 600 && admin.get(path).json()["state"] != "done"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const auto finished = std::chrono::steady_clock::now();
+    ASSERT_EQ(admin.get(path).json()["state"], "done");
+    EXPECT_EQ(admin.get(path + "/results?format=csv").status, 200);   // kept at first
+
+    // Finished-at has whole-second resolution and sweeps run every second: gone within 2-4 s.
+    int status = 200;
+    while (status == 200 && std::chrono::steady_clock::now() - finished < std::chrono::seconds(10)) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        status = admin.get(path).status;
+    }
+    EXPECT_EQ(status, 404);
+    EXPECT_GE(std::chrono::steady_clock::now() - finished, std::chrono::seconds(1));
+    EXPECT_EQ(admin.get(path + "/results?format=csv").status, 404);
+    fs::remove_all(dir);
+}
