@@ -154,7 +154,7 @@ TEST_F(ServerApi, BadRequestsGetClearErrors)
     EXPECT_EQ(r.json()["error"]["code"], "invalid_model");
     r = alice.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 1e9}, {"step", 1e-6}});
     EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded") << r.body;
-    r = alice.request(http::verb::post, "/api/v1/models", std::string(9u << 20, 'x'), "application/xml");
+    r = alice.request(http::verb::post, "/api/v1/models", std::string(25u << 20, 'x'), "application/xml");
     EXPECT_EQ(r.status, 413);
     EXPECT_EQ(alice.get("/api/v1/nothing-here").status, 404);
 }
