@@ -14,6 +14,11 @@ export class PlotWindow {
     readonly variables: string[] = [];
     compare = false;
     private readonly body: HTMLElement;
+    /** Where the plot is drawn; its size comes from the window alone (the plot is absolutely placed inside). */
+    private readonly canvasBox: HTMLElement;
+    /** The legend lives outside the measured box, so its wrapping cannot feed back into the plot size. */
+    private readonly legendBox: HTMLElement;
+    private readonly resizeObserver: ResizeObserver;
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
     private plot: uPlot | null = null;
@@ -23,7 +28,9 @@ export class PlotWindow {
     private span: [number, number] | null = null;
 
     constructor(readonly id: number, private readonly actions: { close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void }) {
-        this.body = h('div', { class: 'plot-body' }, h('p', { class: 'muted plot-empty' }, 'Click a port to plot its variables here.'));
+        this.canvasBox = h('div', { class: 'plot-canvas' });
+        this.legendBox = h('div', { class: 'plot-legend' });
+        this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
         this.chips = h('div', { class: 'plot-chips' });
         this.compareBox = h('input', {
             type: 'checkbox', name: 'compare',
@@ -37,7 +44,12 @@ export class PlotWindow {
                 h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                 h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
             this.body);
-        new ResizeObserver(() => this.resize()).observe(this.body);
+        this.resizeObserver = new ResizeObserver(() => this.resize());
+        this.resizeObserver.observe(this.canvasBox);
+    }
+
+    private emptyNote(text: string): HTMLElement {
+        return h('p', { class: 'muted plot-empty' }, text);
     }
 
     setActive(active: boolean): void { this.element.classList.toggle('active', active); }
@@ -81,7 +93,7 @@ export class PlotWindow {
             this.plot = null;
             this.seriesKey = '';
             this.element.dataset.points = '0';
-            this.body.replaceChildren(h('p', { class: 'muted plot-empty' }, this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
+            this.body.replaceChildren(this.emptyNote(this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
             return;
         }
         const data = alignSeries(plotted.map((p) => p.source));
@@ -90,8 +102,10 @@ export class PlotWindow {
         if (!this.plot || key !== this.seriesKey) {
             this.plot?.destroy();
             this.seriesKey = key;
-            this.body.replaceChildren();
-            this.plot = new uPlot(this.options(plotted), data as uPlot.AlignedData, this.body);
+            this.canvasBox.replaceChildren();
+            this.legendBox.replaceChildren();
+            this.body.replaceChildren(this.canvasBox, this.legendBox);
+            this.plot = new uPlot(this.options(plotted), data as uPlot.AlignedData, this.canvasBox);
         } else {
             this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
         }
@@ -110,11 +124,10 @@ export class PlotWindow {
 
     private options(plotted: Plotted[]): uPlot.Options {
         return {
-            width: Math.max(200, this.body.clientWidth),
-            height: Math.max(160, this.body.clientHeight - 40),
+            ...this.plotSize(),
             scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
             cursor: { drag: { x: true, y: false } },
-            legend: { live: true },
+            legend: { live: true, mount: (_u, el) => this.legendBox.append(el) },
             axes: [{ label: 'time [s]', size: 36 }, { size: 60 }],
             series: [
                 { label: 'time [s]' },
@@ -123,9 +136,14 @@ export class PlotWindow {
         };
     }
 
+    private plotSize(): { width: number; height: number } {
+        return { width: Math.max(100, this.canvasBox.clientWidth), height: Math.max(80, this.canvasBox.clientHeight) };
+    }
+
     private resize(): void {
         if (!this.plot) return;
-        this.plot.setSize({ width: Math.max(200, this.body.clientWidth), height: Math.max(160, this.body.clientHeight - 40) });
+        const size = this.plotSize();
+        if (size.width !== this.plot.width || size.height !== this.plot.height) this.plot.setSize(size);
     }
 
     /** Values of a variable of the current run as plotted (tests read the last one). */
@@ -162,6 +180,7 @@ export class PlotWindow {
     }
 
     destroy(): void {
+        this.resizeObserver.disconnect();
         this.plot?.destroy();
         this.element.remove();
     }
