@@ -23,10 +23,15 @@ std::unique_ptr<System> checkedModel(const std::string& hmf, Response& error)
     return std::move(loaded.root);
 }
 
+// A new model gets Hopsan's defaults for a new model, so that its first run works as is.
 std::string emptyModelHmf(const std::string& name)
 {
     System root;
     root.setNameRaw(sanitizeName(name));
+    root.startTime = 0.0;
+    root.stopTime = 10.0;
+    root.desiredTimestep = 1e-3;
+    root.requestedLogSamples = 2048;
     return saveHmfString(root);
 }
 

@@ -53,7 +53,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
     const plots = new PlotArea(runs);
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
-        (changed) => void store.execute(new SetSimulationSettings(changed)).catch((e) => toast(errorText(e), 'error')));
+        (changed) => store.execute(new SetSimulationSettings(changed)));
     store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
 
     const reportError = (e: unknown) => toast(errorText(e), 'error');
