@@ -1,5 +1,7 @@
 // Bode diagram of an output against an input from logged signals: the ratio of their
-// transforms, at the frequencies where the input carries energy.
+// transforms, at the frequencies where the input carries energy. Both signals are differenced
+// first: the ratio is unchanged (d/dt on both sides), but a step input becomes an impulse,
+// whose spectrum covers every frequency instead of leaking from the window's edges.
 import { samplesIn, transform, type Samples, type WindowName } from './fft';
 
 export interface Bode { frequency: number[]; gainDb: number[]; phaseDeg: number[] }
@@ -12,8 +14,8 @@ export function bode(input: Samples, output: Samples, window: WindowName, from?:
     const a = samplesIn(input, from, to);
     const b = samplesIn(output, from, to);
     if (a.values.length !== b.values.length) throw new Error('input and output need the same samples');
-    const x = transform(a.time, a.values, window);
-    const y = transform(b.time, b.values, window);
+    const x = transform(a.time.slice(1), differences(a.values), window);
+    const y = transform(b.time.slice(1), differences(b.values), window);
     const magnitude = x.frequency.map((_, k) => Math.hypot(x.re[k], x.im[k]));
     const largest = Math.max(...magnitude.slice(1));
     const out: Bode = { frequency: [], gainDb: [], phaseDeg: [] };
@@ -34,4 +36,8 @@ export function bode(input: Samples, output: Samples, window: WindowName, from?:
         out.phaseDeg.push(phase);
     }
     return out;
+}
+
+function differences(values: number[]): number[] {
+    return values.slice(1).map((v, i) => v - values[i]);
 }

@@ -1,11 +1,13 @@
 // The plot windows under the editor. Clicked variables go to the active window.
 import { PlotWindow } from './PlotWindow';
+import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import type { RunController } from './RunController';
 import { h, toast, errorText } from '../ui/dom';
 
 export class PlotArea {
     readonly element: HTMLElement;
     readonly windows: PlotWindow[] = [];
+    readonly analyses: AnalysisWindow[] = [];
     private active: PlotWindow | null = null;
     private nextId = 1;
     private readonly list: HTMLElement;
@@ -33,10 +35,23 @@ export class PlotArea {
             close: (x) => this.close(x),
             activate: (x) => this.activate(x),
             changed: (x) => this.refresh(x),
+            analyse: (x, kind) => this.openAnalysis(kind, x.variables),
         });
         this.windows.push(w);
         this.list.append(w.element);
         this.activate(w);
+        return w;
+    }
+
+    /** A spectrum or Bode window of variables of a plot window (the first one or two chosen). */
+    openAnalysis(kind: AnalysisKind, variables: string[]): AnalysisWindow {
+        const w = new AnalysisWindow(this.nextId++, kind, variables, (x) => {
+            this.analyses.splice(this.analyses.indexOf(x), 1);
+            x.destroy();
+        });
+        this.analyses.push(w);
+        this.list.append(w.element);
+        w.update(this.runs.current);
         return w;
     }
 
@@ -79,6 +94,7 @@ export class PlotArea {
         requestAnimationFrame(() => {
             this.scheduled = false;
             for (const w of this.windows) w.update(this.runs.current, this.runs.previous);
+            for (const a of this.analyses) a.update(this.runs.current);
         });
     }
 }

@@ -3,7 +3,9 @@
 import uPlot from 'uplot';
 import { alignSeries, toCsv, type RunData, type SeriesSource } from './RunData';
 import { variableLabel } from '../model/variables';
-import { downloadBlob, downloadText, h } from '../ui/dom';
+import { downloadText, h } from '../ui/dom';
+import { PlotSurface } from './PlotSurface';
+import type { AnalysisKind } from './AnalysisWindow';
 
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
 
@@ -14,22 +16,19 @@ export class PlotWindow {
     readonly variables: string[] = [];
     compare = false;
     private readonly body: HTMLElement;
-    /** Where the plot is drawn; its size comes from the window alone (the plot is absolutely placed inside). */
-    private readonly canvasBox: HTMLElement;
-    /** The legend lives outside the measured box, so its wrapping cannot feed back into the plot size. */
-    private readonly legendBox: HTMLElement;
-    private readonly resizeObserver: ResizeObserver;
+    private readonly surface = new PlotSurface();
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
-    private plot: uPlot | null = null;
+    private get plot(): uPlot | null { return this.surface.plot; }
     private seriesKey = '';
     private plotted: Plotted[] = [];
     /** x range to show while a run is filling the plot. */
     private span: [number, number] | null = null;
 
-    constructor(readonly id: number, private readonly actions: { close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void }) {
-        this.canvasBox = h('div', { class: 'plot-canvas' });
-        this.legendBox = h('div', { class: 'plot-legend' });
+    constructor(readonly id: number, private readonly actions: {
+        close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
+        analyse(w: PlotWindow, kind: AnalysisKind): void;
+    }) {
         this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
         this.chips = h('div', { class: 'plot-chips' });
         this.compareBox = h('input', {
@@ -40,12 +39,12 @@ export class PlotWindow {
             h('header', { class: 'plot-header' },
                 h('strong', {}, `Plot ${id}`), this.chips,
                 h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
                 h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
                 h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                 h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
             this.body);
-        this.resizeObserver = new ResizeObserver(() => this.resize());
-        this.resizeObserver.observe(this.canvasBox);
     }
 
     private emptyNote(text: string): HTMLElement {
@@ -89,8 +88,7 @@ export class PlotWindow {
         this.element.dataset.job = current ? String(current.jobId) : '';
         this.element.dataset.state = current?.state ?? '';
         if (plotted.length === 0) {
-            this.plot?.destroy();
-            this.plot = null;
+            this.surface.clear();
             this.seriesKey = '';
             this.element.dataset.points = '0';
             this.body.replaceChildren(this.emptyNote(this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
@@ -100,12 +98,9 @@ export class PlotWindow {
         this.element.dataset.points = String(data[0].length);
         const key = plotted.map((p) => p.label).join('|');
         if (!this.plot || key !== this.seriesKey) {
-            this.plot?.destroy();
             this.seriesKey = key;
-            this.canvasBox.replaceChildren();
-            this.legendBox.replaceChildren();
-            this.body.replaceChildren(this.canvasBox, this.legendBox);
-            this.plot = new uPlot(this.options(plotted), data as uPlot.AlignedData, this.canvasBox);
+            if (this.surface.element.parentNode !== this.body) this.body.replaceChildren(this.surface.element);
+            this.surface.draw(this.options(plotted), data as uPlot.AlignedData);
         } else {
             this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
         }
@@ -122,28 +117,17 @@ export class PlotWindow {
         return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
     }
 
-    private options(plotted: Plotted[]): uPlot.Options {
+    private options(plotted: Plotted[]): Omit<uPlot.Options, 'width' | 'height'> {
         return {
-            ...this.plotSize(),
             scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
             cursor: { drag: { x: true, y: false } },
-            legend: { live: true, mount: (_u, el) => this.legendBox.append(el) },
+            legend: { live: true },
             axes: [{ label: 'time [s]', size: 36 }, { size: 60 }],
             series: [
                 { label: 'time [s]' },
                 ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true })),
             ],
         };
-    }
-
-    private plotSize(): { width: number; height: number } {
-        return { width: Math.max(100, this.canvasBox.clientWidth), height: Math.max(80, this.canvasBox.clientHeight) };
-    }
-
-    private resize(): void {
-        if (!this.plot) return;
-        const size = this.plotSize();
-        if (size.width !== this.plot.width || size.height !== this.plot.height) this.plot.setSize(size);
     }
 
     /** Values of a variable of the current run as plotted (tests read the last one). */
@@ -159,29 +143,11 @@ export class PlotWindow {
     }
 
     private exportPng(): void {
-        const u = this.plot;
-        if (!u) return;
-        const source = u.ctx.canvas;
-        const dpr = devicePixelRatio || 1;
-        const legend = 22 * dpr * this.plotted.length;
-        const out = document.createElement('canvas');
-        out.width = source.width;
-        out.height = source.height + legend + 10 * dpr;
-        const ctx = out.getContext('2d')!;
-        ctx.fillStyle = '#fff';
-        ctx.fillRect(0, 0, out.width, out.height);
-        ctx.drawImage(source, 0, 0);
-        ctx.font = `${12 * dpr}px sans-serif`;
-        this.plotted.forEach((p, i) => {
-            ctx.fillStyle = p.colour;
-            ctx.fillText(`${p.previous ? '- - ' : '—— '}${p.label}`, 10 * dpr, source.height + (18 + i * 22) * dpr);
-        });
-        out.toBlob((blob) => { if (blob) downloadBlob(`plot-${this.id}.png`, blob); });
+        this.surface.exportPng(`plot-${this.id}.png`, this.plotted.map((p) => ({ label: p.label, colour: p.colour, dashed: p.previous })));
     }
 
     destroy(): void {
-        this.resizeObserver.disconnect();
-        this.plot?.destroy();
+        this.surface.destroy();
         this.element.remove();
     }
 }
