@@ -5,7 +5,6 @@ import type { RunData } from './RunData';
 import { PlotSurface } from './PlotSurface';
 import { amplitudeSpectrum, peakFrequency, WINDOWS, type WindowName } from '../analysis/fft';
 import { bode } from '../analysis/bode';
-import { variableLabel } from '../model/variables';
 import { toCsv } from './RunData';
 import { downloadText, errorText, h } from '../ui/dom';
 
@@ -27,9 +26,10 @@ export class AnalysisWindow {
     private computedFor = '';
     private result: Result | null = null;
 
-    constructor(readonly id: number, readonly kind: AnalysisKind, variables: string[], private readonly onClose: (w: AnalysisWindow) => void) {
+    constructor(readonly id: number, readonly kind: AnalysisKind, variables: string[], private readonly labelOf: (name: string) => string,
+        private readonly onClose: (w: AnalysisWindow) => void) {
         const choice = (name: string, label: string, selected: string | undefined) => h('select', { name, 'aria-label': label, onchange: () => this.recompute() },
-            ...variables.map((v) => h('option', { value: v, selected: v === selected }, variableLabel(v))));
+            ...variables.map((v) => h('option', { value: v, selected: v === selected }, this.labelOf(v))));
         this.inputSelect = choice('input', kind === 'fft' ? 'Variable' : 'Input', variables[0]);
         this.outputSelect = choice('output', 'Output', variables[1] ?? variables[0]);
         this.windowSelect = h('select', { name: 'window', 'aria-label': 'Window', onchange: () => this.recompute() },
@@ -74,14 +74,14 @@ export class AnalysisWindow {
             const to = this.range(this.toInput);
             const column = (name: string) => {
                 const data = run.columns.get(name);
-                if (!data) throw new Error(`${variableLabel(name)} is not in this run`);
+                if (!data) throw new Error(`${this.labelOf(name)} is not in this run`);
                 return { time: run.time, values: data };
             };
             if (this.kind === 'fft') {
                 const s = amplitudeSpectrum(column(this.inputSelect.value), window, from, to);
                 const peak = peakFrequency(s);
                 this.element.dataset.peakHz = String(peak);
-                this.show({ x: s.frequency, series: [{ label: `|${variableLabel(this.inputSelect.value)}|`, data: s.amplitude, colour: '#1f6fd1', scale: 'y' }] },
+                this.show({ x: s.frequency, series: [{ label: `|${this.labelOf(this.inputSelect.value)}|`, data: s.amplitude, colour: '#1f6fd1', scale: 'y' }] },
                     `peak at ${peak.toPrecision(4)} Hz`);
             } else {
                 const b = bode(column(this.inputSelect.value), column(this.outputSelect.value), window, from, to);

@@ -35,7 +35,7 @@ export class PlotArea {
             close: (x) => this.close(x),
             activate: (x) => this.activate(x),
             changed: (x) => this.refresh(x),
-            analyse: (x, kind) => this.openAnalysis(kind, x.variables),
+            analyse: (x, kind) => this.openAnalysis(kind, x.variables, (v) => x.labelOf(v)),
         });
         this.windows.push(w);
         this.list.append(w.element);
@@ -44,8 +44,8 @@ export class PlotArea {
     }
 
     /** A spectrum or Bode window of variables of a plot window (the first one or two chosen). */
-    openAnalysis(kind: AnalysisKind, variables: string[]): AnalysisWindow {
-        const w = new AnalysisWindow(this.nextId++, kind, variables, (x) => {
+    openAnalysis(kind: AnalysisKind, variables: string[], labelOf: (name: string) => string): AnalysisWindow {
+        const w = new AnalysisWindow(this.nextId++, kind, variables, labelOf, (x) => {
             this.analyses.splice(this.analyses.indexOf(x), 1);
             x.destroy();
         });
@@ -69,9 +69,9 @@ export class PlotArea {
     }
 
     /** Adds a variable to the active plot window (a new one if there is none). */
-    addVariable(name: string): void {
+    addVariable(name: string, label?: string): void {
         const w = this.active ?? this.addWindow();
-        w.add(name);
+        w.add(name, label);
         this.refresh(w);
     }
 

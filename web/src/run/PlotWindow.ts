@@ -14,6 +14,8 @@ interface Plotted { name: string; label: string; source: SeriesSource; previous:
 export class PlotWindow {
     readonly element: HTMLElement;
     readonly variables: string[] = [];
+    /** What the user clicked to get each variable, to name its curve. */
+    private readonly labels = new Map<string, string>();
     compare = false;
     private readonly body: HTMLElement;
     private readonly surface = new PlotSurface();
@@ -53,23 +55,27 @@ export class PlotWindow {
 
     setActive(active: boolean): void { this.element.classList.toggle('active', active); }
 
-    add(name: string): void {
+    add(name: string, label?: string): void {
         if (this.variables.includes(name)) return;
         this.variables.push(name);
+        if (label) this.labels.set(name, label);
         this.drawChips();
     }
 
     remove(name: string): void {
         const i = this.variables.indexOf(name);
         if (i >= 0) this.variables.splice(i, 1);
+        this.labels.delete(name);
         this.drawChips();
         this.actions.changed(this);
     }
 
     private drawChips(): void {
         this.chips.replaceChildren(...this.variables.map((v) => h('span', { class: 'chip', 'data-variable': v },
-            variableLabel(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
+            this.labelOf(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
     }
+
+    labelOf(name: string): string { return this.labels.get(name) ?? variableLabel(name); }
 
     /** Redraws with the runs' current data. */
     update(current: RunData | null, previous: RunData | null): void {
@@ -77,10 +83,10 @@ export class PlotWindow {
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
             const col = current?.columns.get(name);
-            if (current && col) plotted.push({ name, label: variableLabel(name), source: { time: current.time, data: col }, previous: false, colour });
+            if (current && col) plotted.push({ name, label: this.labelOf(name), source: { time: current.time, data: col }, previous: false, colour });
             const old = previous?.columns.get(name);
             if (this.compare && previous && old) {
-                plotted.push({ name, label: `${variableLabel(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour });
+                plotted.push({ name, label: `${this.labelOf(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour });
             }
         });
         this.plotted = plotted;
