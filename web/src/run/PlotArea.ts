@@ -1,5 +1,6 @@
 // The plot windows under the editor. Clicked variables go to the active window.
 import { PlotWindow } from './PlotWindow';
+import { unitOfVariable } from './units';
 import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import type { RunController } from './RunController';
 import { h, toast, errorText } from '../ui/dom';
@@ -68,10 +69,10 @@ export class PlotArea {
         if (this.active) this.activate(this.active);
     }
 
-    /** Adds a variable to the active plot window (a new one if there is none). */
-    addVariable(name: string, label?: string): void {
-        const w = this.active ?? this.addWindow();
-        w.add(name, label);
+    /** Adds a variable to the active plot window (a new one if there is none, or if it has three units already). */
+    addVariable(name: string, label?: string, unit = unitOfVariable(name)): void {
+        const w = this.active && this.active.hasRoomFor(unit) ? this.active : this.addWindow();
+        w.add(name, label, unit);
         this.refresh(w);
     }
 

@@ -6,16 +6,23 @@ import { variableLabel } from '../model/variables';
 import { downloadText, h } from '../ui/dom';
 import { PlotSurface } from './PlotSurface';
 import type { AnalysisKind } from './AnalysisWindow';
+import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
 
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
 
-interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string }
+interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string }
+
+/** One y axis: the series of one unit, with the SI prefix its values need. */
+interface Axis { unit: string; scale: string; prefixed: Prefixed }
+
+const largestAbs = (values: number[]) => values.reduce((m, v) => (Number.isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0);
 
 export class PlotWindow {
     readonly element: HTMLElement;
     readonly variables: string[] = [];
     /** What the user clicked to get each variable, to name its curve. */
     private readonly labels = new Map<string, string>();
+    private readonly units = new Map<string, string>();
     compare = false;
     private readonly body: HTMLElement;
     private readonly surface = new PlotSurface();
@@ -55,10 +62,11 @@ export class PlotWindow {
 
     setActive(active: boolean): void { this.element.classList.toggle('active', active); }
 
-    add(name: string, label?: string): void {
+    add(name: string, label?: string, unit?: string): void {
         if (this.variables.includes(name)) return;
         this.variables.push(name);
         if (label) this.labels.set(name, label);
+        this.units.set(name, unit ?? unitOfVariable(name));
         this.drawChips();
     }
 
@@ -77,16 +85,24 @@ export class PlotWindow {
 
     labelOf(name: string): string { return this.labels.get(name) ?? variableLabel(name); }
 
+    unitOf(name: string): string { return this.units.get(name) ?? unitOfVariable(name); }
+
+    /** Whether a variable of this unit fits: one y axis per unit, at most three. */
+    hasRoomFor(unit: string): boolean {
+        const units = axisUnits(this.variables.map((v) => this.unitOf(v)));
+        return units.includes(unit) || units.length < MAX_AXES;
+    }
+
     /** Redraws with the runs' current data. */
     update(current: RunData | null, previous: RunData | null): void {
         const plotted: Plotted[] = [];
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
             const col = current?.columns.get(name);
-            if (current && col) plotted.push({ name, label: this.labelOf(name), source: { time: current.time, data: col }, previous: false, colour });
+            if (current && col) plotted.push({ name, label: this.labelOf(name), source: { time: current.time, data: col }, previous: false, colour, unit: this.unitOf(name) });
             const old = previous?.columns.get(name);
             if (this.compare && previous && old) {
-                plotted.push({ name, label: `${this.labelOf(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour });
+                plotted.push({ name, label: `${this.labelOf(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour, unit: this.unitOf(name) });
             }
         });
         this.plotted = plotted;
@@ -102,11 +118,14 @@ export class PlotWindow {
         }
         const data = alignSeries(plotted.map((p) => p.source));
         this.element.dataset.points = String(data[0].length);
-        const key = plotted.map((p) => p.label).join('|');
+        const axes = this.axes(plotted);
+        // a new prefix (the values grew from kPa to MPa) needs new axes
+        this.element.dataset.axes = axes.map((a) => a.prefixed.unit).join(',');
+        const key = [...plotted.map((p) => p.label), ...axes.map((a) => a.prefixed.unit)].join('|');
         if (!this.plot || key !== this.seriesKey) {
             this.seriesKey = key;
             if (this.surface.element.parentNode !== this.body) this.body.replaceChildren(this.surface.element);
-            this.surface.draw(this.options(plotted), data as uPlot.AlignedData);
+            this.surface.draw(this.options(plotted, axes), data as uPlot.AlignedData);
         } else {
             this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
         }
@@ -123,15 +142,27 @@ export class PlotWindow {
         return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
     }
 
-    private options(plotted: Plotted[]): Omit<uPlot.Options, 'width' | 'height'> {
+    private axes(plotted: Plotted[]): Axis[] {
+        return axisUnits(plotted.map((p) => p.unit)).map((unit, i) => ({
+            unit, scale: `y${i}`,
+            prefixed: siPrefix(Math.max(...plotted.filter((p) => p.unit === unit).map((p) => largestAbs(p.source.data))), unit),
+        }));
+    }
+
+    private options(plotted: Plotted[], axes: Axis[]): Omit<uPlot.Options, 'width' | 'height'> {
         return {
             scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
-            cursor: { drag: { x: true, y: false } },
+            // the cursor moves in every plot window at once (same time axis)
+            cursor: { drag: { x: true, y: false }, sync: { key: 'run-time' } },
             legend: { live: true },
-            axes: [{ label: 'time [s]', size: 36 }, { size: 60 }],
+            axes: [{ label: 'time [s]', size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
+                scale: a.scale, label: a.prefixed.unit ? `[${a.prefixed.unit}]` : undefined, size: 64,
+                side: i === 1 ? 1 : 3, grid: { show: i === 0 },
+                values: (_u, splits) => splits.map((v) => formatTick(v / a.prefixed.factor)),
+            }))],
             series: [
                 { label: 'time [s]' },
-                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true })),
+                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true, scale: axes.find((a) => a.unit === p.unit)?.scale })),
             ],
         };
     }
@@ -156,4 +187,8 @@ export class PlotWindow {
         this.surface.destroy();
         this.element.remove();
     }
+}
+
+function formatTick(v: number): string {
+    return Math.abs(v) < 1e-12 ? '0' : String(Number(v.toPrecision(4)));
 }

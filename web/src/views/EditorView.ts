@@ -68,7 +68,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         picker.replaceChildren(h('div', { class: 'picker-title' }, `Plot ${ref.component}.${ref.port}`),
             ...ordered.map((v) => h('button', {
                 role: 'menuitem', 'data-variable': `${vars.base}#${v.name}`,
-                onclick: () => { plots.addVariable(`${vars.base}#${v.name}`, `${vars.label} ${v.name}`); picker.hidden = true; },
+                onclick: () => { plots.addVariable(`${vars.base}#${v.name}`, `${vars.label} ${v.name}`, v.unit); picker.hidden = true; },
             }, `${v.name}${v.unit ? ` [${v.unit}]` : ''}`)));
         picker.style.left = `${Math.min(at.x + 8, innerWidth - 220)}px`;
         picker.style.top = `${Math.min(at.y + 8, innerHeight - 240)}px`;
