@@ -21,7 +21,7 @@ test('the palette shows library folders with icons; "scope" finds the scope', as
     await page.getByLabel('Search components').fill('scope');
     const found = palette.locator('.palette-item');
     await expect(found.filter({ hasText: 'Scope' }).first()).toHaveAttribute('data-type', 'SignalSink');
-    const scopes = page.locator('.canvas .component[data-name^="Scope"]');
+    const scopes = page.locator('.canvas .component:not(.system-port)');
     const before = await scopes.count();
     await found.filter({ hasText: 'Scope' }).first().dblclick();
     await expect(scopes).toHaveCount(before + 1);
