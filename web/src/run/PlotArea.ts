@@ -31,6 +31,12 @@ export class PlotArea {
         });
     }
 
+    /** Closes every window (the editor was left): their resize observers stop. */
+    dispose(): void {
+        for (const w of [...this.windows]) this.close(w);
+        for (const a of this.analyses.splice(0)) a.destroy();
+    }
+
     addWindow(): PlotWindow {
         const w = new PlotWindow(this.nextId++, {
             close: (x) => this.close(x),

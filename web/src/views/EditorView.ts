@@ -74,7 +74,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         picker.style.top = `${Math.min(at.y + 8, innerHeight - 240)}px`;
         picker.hidden = false;
     };
-    document.addEventListener('pointerdown', (e) => { if (!picker.contains(e.target as Node)) picker.hidden = true; }, true);
+    const closePicker = (e: PointerEvent) => { if (!picker.contains(e.target as Node)) picker.hidden = true; };
+    document.addEventListener('pointerdown', closePicker, true);
 
     const canvas = new CanvasView(store, {
         onPortClick: showVariables,
@@ -248,14 +249,19 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     window.addEventListener('beforeunload', onBeforeUnload);
     ws.onClose(() => toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error'));
 
-    // test and debugging handle
-    (window as unknown as { __tlmhub: unknown }).__tlmhub = { store, canvas, runs, plots, ws };
+    // the browser tests' handle, only in their build (vite build --mode e2e)
+    const testHandle = window as unknown as { __tlmhub?: unknown };
+    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws };
 
     return {
         dirty: () => store.dirty,
         dispose: () => {
             document.removeEventListener('keydown', onKey);
+            document.removeEventListener('pointerdown', closePicker, true);
             window.removeEventListener('beforeunload', onBeforeUnload);
+            delete testHandle.__tlmhub;
+            canvas.dispose();
+            plots.dispose();
             runs.dispose();
             ws.close();
         },
