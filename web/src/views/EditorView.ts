@@ -247,7 +247,12 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         e.returnValue = '';
     };
     window.addEventListener('beforeunload', onBeforeUnload);
-    ws.onClose(() => toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error'));
+    ws.onClose(() => {
+        toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error');
+        // the server closes the sockets of a session it ended: then /auth/me answers 401 and the
+        // session goes back to the login page
+        void session.rest.me().catch(() => undefined);
+    });
 
     // the browser tests' handle, only in their build (vite build --mode e2e)
     const testHandle = window as unknown as { __tlmhub?: unknown };
