@@ -8,7 +8,7 @@ const screenshots = fileURLToPath(new URL('./screenshots/', import.meta.url));
 const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));
 
 test('the FFT window of a 7.3 Hz sine source peaks at 7.3 Hz', async ({ page }) => {
-    await login(page, 'alice');
+    await login(page, 'bob');
     await page.locator('input[name="new-model-name"]').fill('Sine spectrum');
     await page.getByRole('button', { name: 'Create' }).click();
     await expect(page.getByTestId('model-name')).toHaveText('Sine spectrum');
