@@ -33,6 +33,7 @@ test('a new model runs with the defaults; a wrong field is explained next to it'
     await expect(page.getByTestId('run-status')).toHaveAttribute('data-job', job!);
     await expect(page.locator('.run-panel .field-error:not([hidden])')).toHaveCount(1);
     await expect(page.locator('#toasts .toast')).toHaveCount(0);
+    await page.locator('.run-panel').screenshot({ path: 'e2e/screenshots/run-field-error.png' });
     await expect(page.locator('body')).not.toContainText('message.log_samples');
 
     await setRunField(page, 'Log samples', '500');
