@@ -59,3 +59,22 @@ test('the Bode window shows gain and phase of the servo position against its ste
     await bode.screenshot({ path: `${screenshots}bode.png` });
     copyFileSync(`${screenshots}bode.png`, `${docsScreenshots}bode-plot.png`);
 });
+
+test('the XY window plots the cylinder pressure over the mass position, point for point', async ({ page }) => {
+    await login(page, 'alice');
+    await openExample(page, 'Position Servo');
+    const position = await plotVariable(page, 'Mass', 'P2', 'Position');
+    await plotVariable(page, 'Cylinder_C', 'P1', 'Pressure');
+    await runAndWait(page);
+    const points = Number(await page.locator('.plot-window').first().getAttribute('data-points'));
+    await page.locator('.plot-window').first().getByRole('button', { name: 'XY' }).click();
+    const xy = page.locator('.analysis-window[data-analysis="xy"]');
+    await expect(xy.getByLabel('X variable')).toHaveValue(position);
+    await expect(xy.locator('canvas').first()).toBeVisible();
+    await expect(xy).toHaveAttribute('data-points', String(points));
+    // a time range takes only its samples
+    await xy.getByLabel('From time').fill('1.5');
+    await xy.getByLabel('From time').press('Enter');
+    await expect.poll(async () => Number(await xy.getAttribute('data-points'))).toBeLessThan(points);
+    await xy.screenshot({ path: `${screenshots}xy.png` });
+});

@@ -2,13 +2,14 @@
 import { PlotWindow } from './PlotWindow';
 import { unitOfVariable } from './units';
 import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
+import { XyWindow } from './XyWindow';
 import type { RunController } from './RunController';
 import { h, toast, errorText } from '../ui/dom';
 
 export class PlotArea {
     readonly element: HTMLElement;
     readonly windows: PlotWindow[] = [];
-    readonly analyses: AnalysisWindow[] = [];
+    readonly analyses: (AnalysisWindow | XyWindow)[] = [];
     private active: PlotWindow | null = null;
     private nextId = 1;
     private readonly list: HTMLElement;
@@ -42,7 +43,7 @@ export class PlotArea {
             close: (x) => this.close(x),
             activate: (x) => this.activate(x),
             changed: (x) => this.refresh(x),
-            analyse: (x, kind) => this.openAnalysis(kind, x.variables, (v) => x.labelOf(v)),
+            analyse: (x, kind) => (kind === 'xy' ? this.openXy(x.variables, (v) => x.labelOf(v)) : this.openAnalysis(kind, x.variables, (v) => x.labelOf(v))),
         });
         this.windows.push(w);
         this.list.append(w.element);
@@ -53,6 +54,18 @@ export class PlotArea {
     /** A spectrum or Bode window of variables of a plot window (the first one or two chosen). */
     openAnalysis(kind: AnalysisKind, variables: string[], labelOf: (name: string) => string): AnalysisWindow {
         const w = new AnalysisWindow(this.nextId++, kind, variables, labelOf, (x) => {
+            this.analyses.splice(this.analyses.indexOf(x), 1);
+            x.destroy();
+        });
+        this.analyses.push(w);
+        this.list.append(w.element);
+        w.update(this.runs.current);
+        return w;
+    }
+
+    /** An XY plot of two variables of a plot window. */
+    openXy(variables: string[], labelOf: (name: string) => string): XyWindow {
+        const w = new XyWindow(this.nextId++, variables, labelOf, (x) => {
             this.analyses.splice(this.analyses.indexOf(x), 1);
             x.destroy();
         });

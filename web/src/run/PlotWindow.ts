@@ -36,7 +36,7 @@ export class PlotWindow {
 
     constructor(readonly id: number, private readonly actions: {
         close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
-        analyse(w: PlotWindow, kind: AnalysisKind): void;
+        analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void;
     }) {
         this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
         this.chips = h('div', { class: 'plot-chips' });
@@ -50,6 +50,7 @@ export class PlotWindow {
                 h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
                 h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
                 h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
                 h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
                 h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                 h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
