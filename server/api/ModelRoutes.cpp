@@ -41,10 +41,15 @@ bool acceptableName(const std::string& name, Response& error)
     return false;
 }
 
+// A new model gets Hopsan's defaults for a new model, so that its first run works as is.
 std::string emptyModelHmf(const std::string& name)
 {
     System root;
     root.setNameRaw(sanitizeName(name));
+    root.startTime = 0.0;
+    root.stopTime = 10.0;
+    root.desiredTimestep = 1e-3;
+    root.requestedLogSamples = 2048;
     return saveHmfString(root);
 }
 
