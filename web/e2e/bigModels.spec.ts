@@ -88,6 +88,11 @@ test('F16systemManeuver: open, enter its subsystem, the aircraft block close up'
         clip: { x, y, width: Math.min(canvas.x + canvas.width, box.x + box.width + pad) - x, height: Math.min(canvas.y + canvas.height, box.y + box.height + pad) - y },
     });
 
+    // back out to the whole model (the same wheel steps reversed), where the subsystem is in view
+    for (let i = 0; i < 4; i++) {
+        await page.mouse.wheel(0, 240);
+        await page.waitForTimeout(100);
+    }
     const t0 = Date.now();
     await page.locator('.canvas .component[data-name="Subsystem"] .icon-frame').dblclick();
     await expect(page.locator('.breadcrumb')).toContainText('Subsystem');

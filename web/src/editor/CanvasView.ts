@@ -4,9 +4,11 @@ import { EditorStore } from './EditorStore';
 import { AddComponent, Connect, MoveComponents, type Move } from './commands';
 import { componentIcon } from './icons';
 import {
-    anchorsFromSystem, connectionPath, isInputVariablePort, layoutComponent, objectCentre, orientedPoints, toScene,
+    anchorsFromSystem, connectionPath, isInputVariablePort, layoutComponent, objectCentre, orientedPoints, poseTransform, toScene,
     type Anchors, type ComponentLayout, type Point,
 } from '../model/geometry';
+import { appearanceLayout } from '../model/appearanceLayout';
+import { labelPlacement } from './labelPlacement';
 import { nodeColour } from '../model/nodeTypes';
 import { sameRef, uniqueName } from '../model/modelState';
 import { abbreviation } from './icons';
@@ -119,7 +121,7 @@ export class CanvasView {
             const l = this.layouts.get(c.name);
             const ext = l ? Math.max(l.halfWidth, l.halfHeight) : 30;
             xs.push(c.pose.x - ext, c.pose.x + ext);
-            ys.push(c.pose.y - ext, c.pose.y + ext + 16);
+            ys.push(c.pose.y - ext - 16, c.pose.y + ext);
         }
         for (const p of system.ports) { xs.push(p.pose.x - 20, p.pose.x + 20); ys.push(p.pose.y - 20, p.pose.y + 20); }
         if (xs.length === 0) {
@@ -179,7 +181,9 @@ export class CanvasView {
         }
         const system = this.store.system;
         const anchors = this.anchorsFor(system);
-        this.layouts = new Map(system.components.map((c) => [c.name, layoutComponent(c, anchors.get(c.name))]));
+        // Hopsan's own icon size and port positions where known; our rules for subsystems and the rest
+        this.layouts = new Map(system.components.map((c) => [c.name,
+            appearanceLayout(c, anchors.get(c.name)) ?? layoutComponent(c, anchors.get(c.name))]));
         if (this.fittedPath !== this.pathKey) this.fit();
 
         const connections = s('g', { class: 'connections' });
@@ -285,14 +289,11 @@ export class CanvasView {
         const layout = this.layouts.get(comp.name)!;
         const pose = this.poseOf(comp);
         const selected = this.store.selection.has(comp.name);
-        const transform = `translate(${pose.x},${pose.y}) rotate(${pose.angle})${pose.flipped ? ' scale(-1,1)' : ''}`;
-        const body = s('g', { class: 'component-body', transform },
+        const body = s('g', { class: 'component-body', transform: poseTransform(pose) },
             componentIcon(comp.type, layout.halfWidth, layout.halfHeight),
             ...comp.ports.map((p) => this.drawPort(comp, p, layout.ports.get(p.name) ?? { x: 0, y: 0 })));
-        // the label stays upright below the rotated box
-        const quarter = Math.round(pose.angle / 90) % 2 !== 0;
-        const below = (quarter ? layout.halfWidth : layout.halfHeight) + 11;
-        const label = s('text', { class: 'component-label', x: pose.x, y: pose.y + below, 'text-anchor': 'middle' }, comp.name);
+        const at = labelPlacement(pose, layout);
+        const label = s('text', { class: 'component-label', x: at.x, y: at.y, 'text-anchor': 'middle' }, comp.name);
         return s('g', {
             class: `component${selected ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`,
             'data-name': comp.name, 'data-type': comp.type,

@@ -44,13 +44,16 @@ function zigzag(x0: number, x1: number, amp: number, n = 6): [number, number][] 
     return pts;
 }
 
+const OPEN_FAMILIES = /Cylinder/;
+
 // Glyphs by family, each scaled to the box (r = the smaller half side).
-function glyph(type: string, w: number, h: number): SVGElement[] {
+function glyph(type: string, w: number, h: number, fill: string): SVGElement[] {
     const r = Math.min(w, h) * 0.7;
     const t = type;
     if (/Tank/.test(t)) return [line([[-r, -r * 0.6], [-r, r * 0.6], [r, r * 0.6], [r, -r * 0.6]]), line([[-r * 0.8, 0], [r * 0.8, 0]])];
     if (/Cylinder/.test(t)) {
-        return [s('rect', { ...stroke, x: -w * 0.8, y: -h * 0.5, width: w * 1.2, height: h }),
+        // only the barrel is solid: in Hopsan's layout the load sits on the rod, inside the box
+        return [s('rect', { ...stroke, class: 'icon-solid', fill, x: -w * 0.8, y: -h * 0.5, width: w * 1.2, height: h }),
             line([[-w * 0.1, -h * 0.5], [-w * 0.1, h * 0.5]]), line([[-w * 0.1, 0], [w * 0.9, 0]])];
     }
     if (/Pump|Motor/.test(t)) {
@@ -106,11 +109,14 @@ function glyph(type: string, w: number, h: number): SVGElement[] {
 export function componentIcon(type: string, halfWidth: number, halfHeight: number): SVGGElement {
     const domain = domainOf(type);
     const isSub = domain === 'Subsystem';
-    return s('g', { class: `icon icon-${domain.toLowerCase()}` },
+    const fill = domainColours[domain] ?? '#fff';
+    // open symbols leave their box see-through (still clickable) so neighbours placed inside it show
+    const open = OPEN_FAMILIES.test(type);
+    return s('g', { class: `icon icon-${domain.toLowerCase()}${open ? ' icon-open' : ''}` },
         s('rect', {
-            class: 'icon-frame', x: -halfWidth, y: -halfHeight, width: 2 * halfWidth, height: 2 * halfHeight,
-            rx: isSub ? 6 : 3, fill: domainColours[domain] ?? '#fff',
+            class: open ? 'icon-frame' : 'icon-frame icon-solid', x: -halfWidth, y: -halfHeight, width: 2 * halfWidth, height: 2 * halfHeight,
+            rx: isSub ? 6 : 3, fill: open ? 'transparent' : fill,
         }),
         isSub ? s('rect', { class: 'icon-inner', x: -halfWidth + 4, y: -halfHeight + 4, width: 2 * halfWidth - 8, height: 2 * halfHeight - 8, rx: 4, fill: 'none' }) : null,
-        ...(isSub ? [text('SUB', Math.min(halfWidth, halfHeight) * 0.5)] : glyph(type, halfWidth, halfHeight)));
+        ...(isSub ? [text('SUB', Math.min(halfWidth, halfHeight) * 0.5)] : glyph(type, halfWidth, halfHeight, fill)));
 }

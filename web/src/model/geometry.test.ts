@@ -73,4 +73,11 @@ describe('port layout', () => {
         const elbow = connectionPath(conn.points, { x: 0, y: 0 }, { x: 100, y: 50 }, false);
         expect(elbow).toEqual([{ x: 0, y: 0 }, { x: 50, y: 0 }, { x: 50, y: 50 }, { x: 100, y: 50 }]);
     });
+
+    it('rejoins a saved line whose end lies off the port with a corner, keeping its segments square', () => {
+        // saved end (130,100) -> (200,100) is horizontal; the port is really at (130,90)
+        const path = connectionPath([[130, 100], [200, 100], [200, 70], [300, 70]], { x: 130, y: 90 }, { x: 300, y: 70 }, true);
+        expect(path).toEqual([{ x: 130, y: 90 }, { x: 130, y: 100 }, { x: 200, y: 100 }, { x: 200, y: 70 }, { x: 300, y: 70 }]);
+        for (let i = 1; i < path.length; i++) expect(path[i].x === path[i - 1].x || path[i].y === path[i - 1].y).toBe(true);
+    });
 });

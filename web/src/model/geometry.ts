@@ -1,26 +1,29 @@
 // Poses and port placement. A pose is Hopsan's: centre x,y, angle in degrees (clockwise on
-// screen, y down) and a horizontal flip applied before the rotation.
+// screen, y down), then a left-right mirror about the centre applied after the rotation.
 import type { Component, Connection, Pose, System } from '../protocol/types';
 
 export interface Point { x: number; y: number }
 
 export function toScene(pose: Pose, local: Point): Point {
-    const lx = pose.flipped ? -local.x : local.x;
     const a = (pose.angle * Math.PI) / 180;
     const c = Math.cos(a);
     const s = Math.sin(a);
-    return { x: pose.x + lx * c - local.y * s, y: pose.y + lx * s + local.y * c };
+    const rx = local.x * c - local.y * s;
+    return { x: pose.x + (pose.flipped ? -rx : rx), y: pose.y + local.x * s + local.y * c };
 }
 
 export function toLocal(pose: Pose, scene: Point): Point {
-    const dx = scene.x - pose.x;
+    const dx = pose.flipped ? pose.x - scene.x : scene.x - pose.x;
     const dy = scene.y - pose.y;
     const a = (pose.angle * Math.PI) / 180;
     const c = Math.cos(a);
     const s = Math.sin(a);
-    const lx = dx * c + dy * s;
-    const ly = -dx * s + dy * c;
-    return { x: pose.flipped ? -lx : lx, y: ly };
+    return { x: dx * c + dy * s, y: -dx * s + dy * c };
+}
+
+/** The SVG transform drawing a component's own frame at its pose (the same map as toScene). */
+export function poseTransform(pose: Pose): string {
+    return `translate(${pose.x},${pose.y})${pose.flipped ? ' scale(-1,1)' : ''} rotate(${pose.angle})`;
 }
 
 export interface ComponentLayout {
@@ -125,11 +128,28 @@ export function layoutComponent(component: Component, known: Map<string, Point> 
     return { halfWidth, halfHeight, ports };
 }
 
-/** The line of a connection (points oriented from -> to): the author's points while both ends stay put, else an elbow. */
+/**
+ * From a port to the first inner point of a saved line whose end lay elsewhere (stale geometry):
+ * a corner keeps the saved segment's direction, as Hopsan re-routes such lines on load.
+ */
+function rejoin(port: Point, savedEnd: Point, next: Point): Point[] {
+    if (Math.hypot(port.x - savedEnd.x, port.y - savedEnd.y) <= 0.5) return [port];
+    if (Math.abs(port.x - next.x) < 0.5 || Math.abs(port.y - next.y) < 0.5) return [port];
+    const horizontal = Math.abs(savedEnd.y - next.y) < Math.abs(savedEnd.x - next.x);
+    return [port, horizontal ? { x: port.x, y: next.y } : { x: next.x, y: port.y }];
+}
+
+/**
+ * The line of a connection (points oriented from -> to): the author's points while both ends
+ * stay put, rejoined to the ports; else an elbow.
+ */
 export function connectionPath(points: [number, number][], from: Point, to: Point, keepInner: boolean): Point[] {
     if (keepInner && points.length > 2) {
-        const inner = points.slice(1, -1).map(([x, y]) => ({ x, y }));
-        return [from, ...inner, to];
+        const pts = points.map(([x, y]) => ({ x, y }));
+        const inner = pts.slice(1, -1);
+        const head = rejoin(from, pts[0], inner[0]);
+        const tail = rejoin(to, pts[pts.length - 1], inner[inner.length - 1]).reverse();
+        return [...head, ...inner, ...tail];
     }
     if (Math.abs(from.x - to.x) < 1 || Math.abs(from.y - to.y) < 1) return [from, to];
     const midX = (from.x + to.x) / 2;

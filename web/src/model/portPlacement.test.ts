@@ -75,7 +75,7 @@ describe('port placement from appearance.json and the .hmf pose', () => {
         // tolerance 1 px; the line ends at subsystems and system ports are not from appearance.json
         expect(out.ends).toBeGreaterThan(900);
         console.log(`placed ${out.ends} line ends (worst ${out.worst.toFixed(3)} px), ${out.skipped} at subsystems or system ports`);
-    });
+    }, 60_000);
 
     it('the F16 models have stale geometry: some saved line ends are far from the ports', () => {
         const f = facts();
@@ -83,5 +83,5 @@ describe('port placement from appearance.json and the .hmf pose', () => {
         const doc = new DOMParser().parseFromString(readFileSync(`${examples}F16systemManeuver.hmf`, 'utf8'), 'application/xml');
         residuals(doc.querySelector('hopsanmodelfile > system')!, f, out, 'F16systemManeuver');
         expect(out.worst).toBeGreaterThan(10);
-    });
+    }, 60_000);
 });
