@@ -1,6 +1,7 @@
 // Component icons of our own: a frame coloured by domain with a small glyph per family,
 // drawn in the component's frame (centre 0,0; box ±w,±h).
 import { s } from '../ui/dom';
+import { valveGlyph } from './valveGlyphs';
 
 export const domainColours: Record<string, string> = {
     Hydraulic: '#e3eefc',
@@ -59,14 +60,8 @@ function glyph(type: string, w: number, h: number, fill: string): SVGElement[] {
     if (/Pump|Motor/.test(t)) {
         return [s('circle', { ...stroke, r }), s('polygon', { fill: 'currentColor', points: `0,${-r} ${-r * 0.35},${-r * 0.45} ${r * 0.35},${-r * 0.45}` })];
     }
-    if (/Valve/.test(t)) {
-        const n = /43|4_3|Valve43/.test(t) ? 3 : 2;
-        const cw = (2 * w * 0.9) / n;
-        const boxes: SVGElement[] = [];
-        for (let i = 0; i < n; ++i) boxes.push(s('rect', { ...stroke, x: -w * 0.9 + i * cw, y: -h * 0.45, width: cw, height: h * 0.9 }));
-        boxes.push(line([[-w * 0.9 + cw * 0.2, h * 0.3], [-w * 0.9 + cw * 0.8, -h * 0.3]]));
-        return boxes;
-    }
+    const valve = valveGlyph(t, w, h);
+    if (valve) return valve;
     if (/Orifice|Restrict|Throttle/.test(t)) {
         return [s('path', { ...stroke, d: `M${-r},${-r * 0.5} Q0,${-r * 0.05} ${r},${-r * 0.5} M${-r},${r * 0.5} Q0,${r * 0.05} ${r},${r * 0.5}` })];
     }
