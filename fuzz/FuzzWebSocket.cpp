@@ -22,6 +22,7 @@ public:
         if (!frame.is_object() || !frame.contains("type")) fuzz::fail("server sent a frame that is not a message: " + text);
     }
     std::uint64_t droppedCount() const override { return 0; }
+    void close(std::string) override {}
 };
 
 } // namespace
