@@ -52,7 +52,7 @@ for t in "${targets[@]}"; do
   mapfile -t seeds < <(seeds_for "$t")
   echo "== $t: fuzzing ${seconds}s"
   status=0
-  "$bin" -seed=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+  "$bin" -seed=1 -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1 \
          -artifact_prefix="${TMPDIR:-/tmp}/fuzz-$t-" "${flags[@]}" "${extra[@]}" "$work" "${seeds[@]}" || status=$?
   [ -n "$corpus" ] || rm -rf "$work"
   [ $status -eq 0 ] || { echo "fuzz.sh: $t failed (input saved as ${TMPDIR:-/tmp}/fuzz-$t-*)" >&2; exit $status; }
