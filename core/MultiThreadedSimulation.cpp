@@ -216,7 +216,9 @@ bool keepSignalPhaseThreadLocal(Partition& p, const std::vector<Component*>& lis
         }
         const unsigned to = *threads.begin();
         if (clusterThread[cluster] == to) continue;
-        for (auto& list : p.c) std::erase_if(list, [&](Component* c) { return cCluster[c] == cluster; });
+        // A named copy: clang 14 cannot capture a structured binding in a lambda.
+        const auto moved = cluster;
+        for (auto& list : p.c) std::erase_if(list, [&](Component* c) { return cCluster[c] == moved; });
         // Appended in list order: the cluster keeps its own order and depends on nothing
         // else in that thread's list.
         for (Component* c : listC)

@@ -6,10 +6,12 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <deque>
+#include <vector>
 
 namespace tlmhub::ParameterEvaluator {
 
@@ -83,8 +85,12 @@ double* variableFactory(const mu::char_type*, void* user)
     return &pool->back();
 }
 
+// `chain`: the parameters whose values are being evaluated, outermost first. A reference to
+// one of them is a loop and fails at once; only the depth limit stopped loops before, after
+// 250 levels per branch (a self.k in k's own expression cost seconds).
 bool evaluateExpressionDepth(Component& owner, const std::string& expression, double& result,
-                             std::string& error, const Parameter* self, int depth)
+                             std::string& error, const Parameter* self, int depth,
+                             std::vector<const Parameter*>& chain)
 {
     if (depth > kMaxDepth) {
         error = "parameter references nest too deeply (a reference loop?)";
@@ -117,9 +123,16 @@ bool evaluateExpressionDepth(Component& owner, const std::string& expression, do
             }
             double v = 0.0;
             if (ref->type == ParameterType::Double) {
-                if (!parseWholeDouble(ref->value, v) &&
-                    !evaluateExpressionDepth(*where, ref->value, v, error, ref, depth + 1))
-                    return false;
+                if (!parseWholeDouble(ref->value, v)) {
+                    if (std::find(chain.begin(), chain.end(), ref) != chain.end()) {
+                        error = "'" + name + "' refers to itself (a reference loop)";
+                        return false;
+                    }
+                    chain.push_back(ref);
+                    const bool ok = evaluateExpressionDepth(*where, ref->value, v, error, ref, depth + 1, chain);
+                    chain.pop_back();
+                    if (!ok) return false;
+                }
             } else if (ref->type == ParameterType::Integer || ref->type == ParameterType::Conditional) {
                 int iv = 0;
                 if (!parseWholeInt(ref->value, iv)) {
@@ -167,7 +180,8 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
     case ParameterType::Double: {
         double d = 0.0;
         if (!parseWholeDouble(v, d)) {
-            if (!evaluateExpressionDepth(owner, v, d, error, &param, depth + 1)) return false;
+            std::vector<const Parameter*> chain{&param};
+            if (!evaluateExpressionDepth(owner, v, d, error, &param, depth + 1, chain)) return false;
             // Hopsan formats the result with 17 significant digits and parses it back.
             char buf[64];
             std::snprintf(buf, sizeof buf, "%.17g", d);
@@ -250,7 +264,8 @@ bool evaluateExpression(Component& owner, const std::string& expression, double&
                         std::string& error)
 {
     if (parseWholeDouble(expression, result)) return true;
-    return evaluateExpressionDepth(owner, expression, result, error, nullptr, 0);
+    std::vector<const Parameter*> chain;
+    return evaluateExpressionDepth(owner, expression, result, error, nullptr, 0, chain);
 }
 
 } // namespace tlmhub::ParameterEvaluator

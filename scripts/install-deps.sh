@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
 # Install the Debian 12 packages tlmhub builds against (skips what is already there).
-# `--with-browser` adds Chromium, which the browser tests drive.
+# `--with-browser` adds Chromium, which the browser tests drive; `--with-clang` adds clang 14
+# with libFuzzer and the sanitizer runtimes (the sanitizer and fuzz builds of scripts/test.sh).
 set -euo pipefail
 packages=(build-essential cmake pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
           libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
           libsqlitecpp-dev libsodium-dev)
 # The web app needs Node.js and npm; a machine that already has them (any install) keeps them.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
-[ "${1:-}" = "--with-browser" ] && packages+=(chromium)
+for flag in "$@"; do
+  case $flag in
+    --with-browser) packages+=(chromium) ;;
+    --with-clang) packages+=(clang-14 libfuzzer-14-dev libclang-rt-14-dev) ;;
+    *) echo "install-deps.sh: unknown flag $flag" >&2; exit 1 ;;
+  esac
+done
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,9 +1,41 @@
 #!/usr/bin/env bash
 # Install dependencies, build, and run the whole test suite: unit tests, server tests on a
 # real server process, validation against Hopsan's reference results in ../shared, and the
-# web app's unit and browser tests (Debian's Chromium).
+# web app's unit and browser tests (Debian's Chromium). Then the same tests (except web,
+# models and validation) and the fuzz targets under ASan+UBSan, and the multi-threaded
+# simulation and job-queue tests under TSan. Each stage prints its wall time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh --with-browser
-scripts/build.sh
-cd build && ctest --output-on-failure -j"$(nproc)"
+jobs=$(nproc)
+
+stage() {
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "stage $name: $((SECONDS - start)) s"
+}
+
+# Sanitizer builds: clang 14, -O1 with debug info, no benchmarks, no web app.
+sanitizer_config() {
+  local dir=$1
+  shift
+  cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DTLMHUB_BUILD_BENCHMARKS=OFF "$@" >/dev/null
+}
+asan_build() {
+  # One build for tests and fuzz targets: everything has coverage instrumentation.
+  sanitizer_config build-asan -DTLMHUB_SANITIZE=address,undefined -DTLMHUB_FUZZ=ON
+  cmake --build build-asan -j"$jobs"
+}
+tsan_build() {
+  sanitizer_config build-tsan -DTLMHUB_SANITIZE=thread
+  cmake --build build-tsan -j"$jobs" --target tlmhub-tests tlmhub-server-tests
+}
+
+stage install scripts/install-deps.sh --with-browser --with-clang
+stage build scripts/build.sh
+stage test ctest --test-dir build --output-on-failure -j"$jobs"
+stage asan-build asan_build
+stage asan-test ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(web|models|validation)$'
+stage tsan-build tsan_build
+stage tsan-test ctest --test-dir build-tsan --output-on-failure -j"$jobs" -R 'MultiThreading|^Jobs\.'

@@ -179,7 +179,8 @@ bool CsvDataReader::copyEveryNthFromColumnRange(std::size_t c, std::size_t start
 {
     out.clear();
     if (step == 0) { return false; }
-    if (start + n > mRows.size() || n == 0) { return n == 0 && start <= mRows.size(); }
+    // Written so that start + n cannot wrap around.
+    if (start > mRows.size() || n > mRows.size() - start || n == 0) { return n == 0 && start <= mRows.size(); }
     // Like the reference, the column is checked against the first requested row.
     if (c >= mRows[start].size()) { return false; }
     out.reserve(n / step + 1);

@@ -59,33 +59,43 @@ bool PloDataReader::read(std::istream& in)
         mError = "Number of data rows or columns is less than one";
         return false;
     }
-    mNumCols = static_cast<std::size_t>(nc);
-    mNumRows = static_cast<std::size_t>(nr);
+    std::size_t cols = static_cast<std::size_t>(nc);
+    const std::size_t rows = static_cast<std::size_t>(nr);
 
     // The header does not count a leading time/frequency column.
-    for (std::size_t i = 0; i < mNumCols; ++i) {
+    for (std::size_t i = 0; i < cols; ++i) {
         if (!(in >> tok)) {
             mError = "Unexpected end of file in column names";
             return false;
         }
-        if (i == 0 && (tok == "'Time'," || tok == "'Frequency',")) { ++mNumCols; }
+        if (i == 0 && (tok == "'Time'," || tok == "'Frequency',")) { ++cols; }
         removeAll(tok, "',");
         removeAll(tok, "'");
         mNames.push_back(tok);
     }
-    for (std::size_t i = 0; i < mNumCols; ++i) { // plot scales / quantities, unused
+    for (std::size_t i = 0; i < cols; ++i) { // plot scales / quantities, unused
         if (!(in >> tok)) {
             mError = "Unexpected end of file in plot scales";
             return false;
         }
     }
-    mData.resize(mNumCols * mNumRows);
-    for (double& v : mData) {
-        if (!(in >> v)) {
-            mError = "Could not read all data values";
-            return false;
-        }
+    std::size_t values = 0;
+    if (__builtin_mul_overflow(cols, rows, &values)) {
+        mError = "Number of data rows or columns is too large";
+        return false;
     }
+    // The counts come from the file: values are appended as they are read, so memory
+    // follows the file's size, not its header's claim.
+    double v = 0;
+    while (mData.size() < values && in >> v) { mData.push_back(v); }
+    if (mData.size() < values) {
+        mData.clear();
+        mError = "Could not read all data values";
+        return false;
+    }
+    // Set only now, so a file that fails leaves an empty reader behind.
+    mNumCols = cols;
+    mNumRows = rows;
     // The two trailing tokens carry nothing we use.
     return true;
 }

@@ -1,6 +1,7 @@
 #include "server/api/ApiSupport.h"
 
 #include "server/auth/AccessPolicy.h"
+#include "server/http/JsonText.h"
 #include "server/protocol/SchemaValidator.h"
 #include "server/protocol/UntrustedJson.h"
 
@@ -12,7 +13,7 @@ Response jsonResponse(http::status status, const nlohmann::json& body)
 {
     Response res{status, 11};
     res.set(http::field::content_type, "application/json");
-    res.body() = body.dump();
+    res.body() = toJsonText(body);
     return res;
 }
 

@@ -1,6 +1,7 @@
 #include "server/api/WsApi.h"
 
 #include "server/auth/AccessPolicy.h"
+#include "server/http/JsonText.h"
 #include "server/protocol/SchemaValidator.h"
 #include "server/protocol/UntrustedJson.h"
 #include "server/store/ModelName.h"
@@ -44,7 +45,7 @@ WsApi::WsApi(Services& services, User user, const std::string& token, std::share
     : mServices(services), mUser(std::move(user)), mSender(std::move(sender)),
       mLiveSession(services.liveSessions.add(token, mUser.id, mSender))
 {
-    mSender->send(nlohmann::json{{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}.dump(),
+    mSender->send(toJsonText({{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}),
                   false);
 }
 
@@ -59,7 +60,7 @@ void WsApi::onClose()
 
 void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
 {
-    mSender->send(nlohmann::json{{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}.dump(),
+    mSender->send(toJsonText({{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}),
                   false);
 }
 
@@ -81,7 +82,7 @@ void WsApi::onMessage(const std::string& text)
         mAfterReply = nullptr;
         return sendError(id, reply.code, reply.message);
     }
-    mSender->send(nlohmann::json{{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}.dump(), false);
+    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}), false);
     // Stream events start after the reply, so a client always knows the job id first.
     if (mAfterReply) std::exchange(mAfterReply, nullptr)();
 }
@@ -162,7 +163,7 @@ void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
         if (!sender) return;
         const bool isFrame = event.value("type", "") == "event.frame";
         if (isFrame) event["dropped"] = sender->droppedCount();
-        sender->send(event.dump(), isFrame);
+        sender->send(toJsonText(event), isFrame);
     }));
 }
 

@@ -1,6 +1,7 @@
 #include "server/http/HttpSession.h"
 
 #include "server/http/HeaderValues.h"
+#include "server/http/JsonText.h"
 #include "server/http/WebSocketSession.h"
 
 #include <boost/asio/dispatch.hpp>
@@ -24,7 +25,7 @@ Response errorResponse(http::status status, const std::string& code, const std::
     Response res{status, version};
     res.set(http::field::content_type, "application/json");
     res.keep_alive(keepAlive);
-    res.body() = nlohmann::json{{"error", {{"code", code}, {"message", message}}}}.dump();
+    res.body() = toJsonText({{"error", {{"code", code}, {"message", message}}}});
     res.prepare_payload();
     return res;
 }

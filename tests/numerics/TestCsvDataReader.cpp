@@ -173,3 +173,15 @@ TEST(CsvDataReader, ReadsFromFile)
     std::remove(path.c_str());
     EXPECT_FALSE(r.openFile(path + ".missing"));
 }
+
+TEST(CsvDataReader, RangeWhoseEndOverflowsIsRefused)
+{
+    CsvDataReader r;
+    r.openText("1,2\n3,4\n5,6\n");
+    ASSERT_TRUE(r.indexFile());
+    std::vector<double> out;
+    // start + n wraps around to 0 in size_t: it must not pass the bounds check.
+    EXPECT_FALSE(r.copyRangeFromColumn(0, 1, SIZE_MAX, out));
+    EXPECT_TRUE(out.empty());
+    EXPECT_FALSE(r.copyEveryNthFromColumnRange(1, 2, SIZE_MAX - 1, 2, out));
+}

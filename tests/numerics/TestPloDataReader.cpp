@@ -47,3 +47,21 @@ TEST(PloDataReader, RejectsBadHeaders)
     ASSERT_TRUE(r.copyColumn("b", v));
     EXPECT_EQ(v, std::vector<double>{8.0});
 }
+
+// Found by fuzz/FuzzPloReader: the header's counts sized the data before any value was read.
+TEST(PloDataReader, HeaderClaimingHugeCountsIsAnErrorNotAnAllocation)
+{
+    PloDataReader r;
+    EXPECT_FALSE(r.readText("'VERSION' 1\nt\n2 1000000000000\n'a' 'b'\ns s\n1 2\n"));
+    EXPECT_EQ(r.getErrorString(), "Could not read all data values");
+}
+
+TEST(PloDataReader, CountsWhoseProductOverflowsAreRefused)
+{
+    // 4 * 2^62 is 0 in 64 bits: the reader must not accept zero values for 2^62 rows.
+    PloDataReader r;
+    EXPECT_FALSE(r.readText("'VERSION' 1\nt\n4 4611686018427387904\n'a' 'b' 'c' 'd'\ns s s s\n"));
+    EXPECT_EQ(r.getNumDataRows(), 0u);
+    std::vector<double> v;
+    EXPECT_FALSE(r.copyColumn(0, v));
+}

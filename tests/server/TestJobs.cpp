@@ -122,7 +122,7 @@ protected:
     }
     void SetUp() override
     {
-        if (!std::filesystem::exists(kServo)) GTEST_SKIP() << "shared models not present";
+        ASSERT_TRUE(std::filesystem::exists(kServo)) << "shared model missing: " << kServo;
     }
 };
 

@@ -37,7 +37,7 @@ std::size_t countOf(const std::string& text, const std::string& what)
 void roundTrip(const std::string& relPath)
 {
     const std::string path = sharedDir() + "/hopsan-models/" + relPath;
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared models not present: " << path;
+    ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
     LoadedModel first = loadHmfFile(path);
     ASSERT_FALSE(first.hasErrors()) << first.firstError();
     const std::string saved = saveHmfString(*first.root);

@@ -100,3 +100,18 @@ TEST(Parameters, ExpressionValueReachesTheSimulation)
     ASSERT_TRUE(run(root, 0, 0.01, 0.001, 11));
     EXPECT_DOUBLE_EQ(root.component("G")->port("out")->node()->value(0), 10.0);
 }
+
+// Found by fuzz/FuzzParameterExpression: loops were stopped only by the depth limit, 250
+// levels down every branch, so three parameters referring to each other took 2^250 steps.
+TEST(Parameters, LoopOverThreeParametersFailsAtOnce)
+{
+    System root;
+    std::string err;
+    ASSERT_TRUE(root.setSystemParameter("a", "b+c", "double", "", "", false, err));
+    ASSERT_TRUE(root.setSystemParameter("b", "a+c", "double", "", "", false, err));
+    ASSERT_TRUE(root.setSystemParameter("c", "a+b", "double", "", "", false, err));
+    add(root, "SignalGain", "G");
+    double v = 0;
+    EXPECT_FALSE(ParameterEvaluator::evaluateExpression(*root.component("G"), "a", v, err));
+    EXPECT_NE(err.find("reference loop"), std::string::npos) << err;
+}

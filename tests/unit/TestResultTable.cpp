@@ -122,7 +122,7 @@ TEST(ResultTable, CsvIsByteIdenticalToThePrintfFormat)
 TEST(ResultTable, CsvOfModelWithSubsystemsIsByteIdentical)
 {
     const std::string path = sharedDir() + "/hopsan-models/Example Models/Sub System Example.hmf";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared models not present";
+    ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
     auto root = runModel(path);
     ASSERT_TRUE(root);
     const ResultTable t = ResultTable::fromSystem(*root);

@@ -1,0 +1,66 @@
+#include "fuzz/FuzzServer.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+namespace tlmhub::fuzz {
+
+namespace fs = std::filesystem;
+
+TempDir::TempDir()
+{
+    std::string pattern = (fs::temp_directory_path() / "tlmhub-fuzz-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) fail("cannot create a temporary directory");
+    mPath = pattern;
+}
+
+TempDir::~TempDir()
+{
+    std::error_code ec;
+    fs::remove_all(mPath, ec);
+}
+
+void fail(const std::string& what)
+{
+    std::cerr << "fuzz check failed: " << what << std::endl;
+    std::abort();
+}
+
+FuzzServer& FuzzServer::instance()
+{
+    static FuzzServer server;
+    return server;
+}
+
+FuzzServer::FuzzServer()
+{
+    server::ServerOptions options;
+    options.dataDir = (mDir.path() / "data").string();
+    options.webRoot = (mDir.path() / "web").string();   // empty: no web app served
+    options.exampleDirs = {TLMHUB_SHARED_DIR "/hopsan-models/Example Models"};
+    if (!fs::is_directory(options.exampleDirs[0])) fail("no example models at " + options.exampleDirs[0]);
+    options.workers = 1;
+    mApp = std::make_unique<server::TlmhubApp>(options);
+    // The admin gets a generated password nobody knows, so no input can log in as it or
+    // change its password; the fuzzer's tokens come from mTokens.
+    unsetenv("TLMHUB_ADMIN_PASSWORD");
+    std::string log;
+    if (!mApp->bootstrap(log)) fail("bootstrap did not create the admin");
+
+    mDatabase = std::make_unique<server::Database>((fs::path(options.dataDir) / "tlmhub.sqlite").string());
+    mUsers = std::make_unique<server::UserStore>(*mDatabase);
+    mTokens = std::make_unique<server::TokenService>(*mDatabase, options.tokenTtl, *mUsers);
+    const auto admin = mUsers->findByName("admin");
+    if (!admin) fail("no admin user after bootstrap");
+    mAdmin = *admin;
+    mToken = mTokens->issue(mAdmin).token;
+}
+
+const std::string& FuzzServer::token()
+{
+    if (!mTokens->validate(mToken)) mToken = mTokens->issue(mAdmin).token;
+    return mToken;
+}
+
+} // namespace tlmhub::fuzz
