@@ -8,6 +8,7 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -33,8 +34,10 @@ namespace {
 
 class Loader {
 public:
-    Loader(std::string sourceName, std::string directory, std::vector<Message>& messages)
-        : mSource(std::move(sourceName)), mDirectory(std::move(directory)), mMessages(messages)
+    Loader(std::string sourceName, std::string directory, const LoadLimits& limits,
+           std::vector<Message>& messages)
+        : mSource(std::move(sourceName)), mDirectory(std::move(directory)), mLimits(limits),
+          mMessages(messages)
     {}
 
     std::unique_ptr<System> loadDocument(const pugi::xml_document& doc)
@@ -121,8 +124,20 @@ private:
         p->value = value;
     }
 
+    // Counts one more component or subsystem; false (with the error) past the limit.
+    bool admitComponent()
+    {
+        ++mComponentCount;
+        if (mLimits.maxComponents == 0 || mComponentCount <= mLimits.maxComponents) return true;
+        error("the model has more than " + std::to_string(mLimits.maxComponents) +
+              " components and subsystems, the limit here");
+        mFailed = true;
+        return false;
+    }
+
     void loadComponent(System& sys, pugi::xml_node node)
     {
+        if (!admitComponent()) return;
         const std::string originalType = node.attribute("typename").as_string();
         const std::string type = legacy::currentTypeName(originalType);
         std::unique_ptr<Component> comp = ComponentFactory::instance().create(type);
@@ -160,8 +175,16 @@ private:
         }
     }
 
-    void loadSubsystem(System& parent, pugi::xml_node node)
+    void loadSubsystem(System& parent, pugi::xml_node node, std::size_t depth)
     {
+        if (!admitComponent()) return;
+        if (depth > mLimits.maxSubsystemDepth) {
+            error("subsystem '" + std::string(node.attribute("name").as_string()) + "' is nested " +
+                  std::to_string(depth) + " levels deep; the limit is " +
+                  std::to_string(mLimits.maxSubsystemDepth));
+            mFailed = true;
+            return;
+        }
         std::unique_ptr<System> sub;
         const std::string external = node.attribute("external_path").as_string();
         if (!external.empty()) {
@@ -173,7 +196,11 @@ private:
                 return;
             }
             fs::path p = fs::path(mDirectory) / external;
-            LoadedModel loaded = loadHmfFile(p.string());
+            // The file's own subsystems count from this depth (a file that includes itself
+            // ends at the limit instead of recursing for ever).
+            LoadLimits nested = mLimits;
+            nested.maxSubsystemDepth = mLimits.maxSubsystemDepth - depth;
+            LoadedModel loaded = loadHmfFile(p.string(), nested);
             for (auto& m : loaded.messages) mMessages.push_back(m);
             if (!loaded.root) {
                 error("external subsystem '" + std::string(node.attribute("name").as_string()) +
@@ -197,10 +224,10 @@ private:
         const std::string desired = raw->name();
         const std::string actual = parent.addComponent(std::move(sub));
         if (actual != desired) mRenames[&parent][desired] = actual;
-        loadSystem(*raw, node, false);
+        loadSystem(*raw, node, false, depth);
     }
 
-    void loadSystem(System& sys, pugi::xml_node node, bool isRoot)
+    void loadSystem(System& sys, pugi::xml_node node, bool isRoot, std::size_t depth = 0)
     {
         if (isRoot) sys.setNameRaw(sanitizeName(node.attribute("name").as_string()));
         sys.setSubTypeName(node.attribute("subtypename").as_string());
@@ -220,7 +247,8 @@ private:
                             "' has type '" + t + "'; the rest of system '" + sys.name() + "' is not loaded");
                     return;
                 }
-                loadSubsystem(sys, child);
+                loadSubsystem(sys, child, depth + 1);
+                if (mFailed) return;
             } else if (tag == "systemport") {
                 Port* p = sys.addSystemPort(sanitizeName(child.attribute("name").as_string()));
                 preserved::storeSystemPortExtras(sys, p->name(), child);
@@ -265,7 +293,9 @@ private:
 
     std::string mSource;
     std::string mDirectory;
+    LoadLimits mLimits;
     std::vector<Message>& mMessages;
+    std::size_t mComponentCount = 0;
     legacy::CoreVersion mVersion;
     std::map<System*, std::map<std::string, std::string>> mRenames;
 
@@ -273,10 +303,27 @@ public:
     bool mFailed = false;
 };
 
+// Deepest element nesting, found without recursion (pugixml's traversal keeps its own stack).
+std::size_t xmlDepth(const pugi::xml_document& doc, std::size_t stopAbove)
+{
+    struct DepthWalker : pugi::xml_tree_walker {
+        std::size_t deepest = 0;
+        std::size_t stopAbove = 0;
+        bool for_each(pugi::xml_node&) override
+        {
+            deepest = std::max(deepest, static_cast<std::size_t>(depth()) + 1);
+            return deepest <= stopAbove;
+        }
+    } walker;
+    walker.stopAbove = stopAbove;
+    const_cast<pugi::xml_document&>(doc).traverse(walker);
+    return walker.deepest;
+}
+
 } // namespace
 
 LoadedModel loadHmfString(const std::string& xml, const std::string& modelDirectory,
-                          const std::string& sourceName)
+                          const std::string& sourceName, const LoadLimits& limits)
 {
     LoadedModel result;
     pugi::xml_document doc;
@@ -287,13 +334,20 @@ LoadedModel loadHmfString(const std::string& xml, const std::string& modelDirect
         result.messages.push_back({MessageType::Error, os.str(), {}});
         return result;
     }
-    Loader loader(sourceName, modelDirectory, result.messages);
+    if (xmlDepth(doc, kMaxXmlDepth) > kMaxXmlDepth) {
+        result.messages.push_back({MessageType::Error,
+                                   sourceName + ": XML elements are nested more than " +
+                                       std::to_string(kMaxXmlDepth) + " levels deep",
+                                   {}});
+        return result;
+    }
+    Loader loader(sourceName, modelDirectory, limits, result.messages);
     result.root = loader.loadDocument(doc);
     if (loader.mFailed) result.root.reset();
     return result;
 }
 
-LoadedModel loadHmfFile(const std::string& path)
+LoadedModel loadHmfFile(const std::string& path, const LoadLimits& limits)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -306,7 +360,7 @@ LoadedModel loadHmfFile(const std::string& path)
     namespace fs = std::filesystem;
     std::string dir = fs::path(path).parent_path().string();
     if (dir.empty()) dir = ".";
-    return loadHmfString(ss.str(), dir, path);
+    return loadHmfString(ss.str(), dir, path, limits);
 }
 
 } // namespace tlmhub

@@ -15,11 +15,21 @@ struct LoadedModel {
     std::string firstError() const;
 };
 
+// Bounds on what one model file may contain. Loading walks subsystems recursively, so the
+// nesting depth is always bounded; a server tightens both limits for untrusted uploads.
+struct LoadLimits {
+    std::size_t maxSubsystemDepth = 64;   // subsystems inside subsystems, the root is level 0
+    std::size_t maxComponents = 0;        // components and subsystems in all; 0: no limit
+};
+// Elements nested deeper than this are refused before anything is built (no model needs
+// more than a few dozen levels; every walk over the tree then stays shallow).
+inline constexpr std::size_t kMaxXmlDepth = 512;
+
 // Load a model from a file. Never throws; a broken file gives root == nullptr and an error
 // message naming the file, the element and the reason.
-LoadedModel loadHmfFile(const std::string& path);
+LoadedModel loadHmfFile(const std::string& path, const LoadLimits& limits = {});
 // Load from XML text; `modelDirectory` resolves relative paths (external subsystems, data).
 LoadedModel loadHmfString(const std::string& xml, const std::string& modelDirectory,
-                          const std::string& sourceName = "<string>");
+                          const std::string& sourceName = "<string>", const LoadLimits& limits = {});
 
 } // namespace tlmhub
