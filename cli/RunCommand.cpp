@@ -3,28 +3,39 @@
 
 #include "core/ResultTable.h"
 #include "core/Results.h"
+#include "core/Sha256.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <chrono>
 #include <cstdio>
+#include <string_view>
 #include <iostream>
 
 namespace tlmhub::cli {
 
 namespace {
 
-bool writeCsv(const System& root, const std::string& path, std::string& error)
+bool writeCsv(const ResultTable& table, const std::string& path, std::string& error)
 {
     std::FILE* f = std::fopen(path.c_str(), "w");
     if (!f) {
         error = "cannot write '" + path + "'";
         return false;
     }
-    const std::string csv = ResultTable::fromSystem(root).toCsv();
-    bool ok = std::fwrite(csv.data(), 1, csv.size(), f) == csv.size();
+    bool ok = true;
+    table.writeCsv([&](std::string_view piece) {
+        ok = ok && std::fwrite(piece.data(), 1, piece.size(), f) == piece.size();
+    });
     ok = std::fclose(f) == 0 && ok;
     if (!ok) error = "error writing '" + path + "'";
     return ok;
+}
+
+std::string csvSha256(const ResultTable& table)
+{
+    Sha256 hash;
+    table.writeCsv([&](std::string_view piece) { hash.update(piece); });
+    return hash.hexDigest();
 }
 
 } // namespace
@@ -57,7 +68,8 @@ int runCommand(const std::vector<std::string>& args)
     }
     root.requestedLogSamples = static_cast<std::size_t>(samples);
     const std::string csv = opt.value("csv");
-    if (!csv.empty() && root.requestedLogSamples == 0) root.requestedLogSamples = 1024;
+    const bool wantsHash = opt.has("sha256");
+    if ((!csv.empty() || wantsHash) && root.requestedLogSamples == 0) root.requestedLogSamples = 1024;
     if (!(stop >= start) || !(root.desiredTimestep > 0.0)) {
         std::cerr << "error: need stop >= start and a positive time step\n";
         return 2;
@@ -91,15 +103,20 @@ int runCommand(const std::vector<std::string>& args)
         std::cerr << "error: " << path << ": non-finite value: " << where << "\n";
         return 1;
     }
-    if (!csv.empty() && !writeCsv(root, csv, err)) {
-        std::cerr << "error: " << err << "\n";
-        return 1;
+    std::string hashNote;
+    if (!csv.empty() || wantsHash) {
+        const ResultTable table = ResultTable::fromSystem(root);
+        if (!csv.empty() && !writeCsv(table, csv, err)) {
+            std::cerr << "error: " << err << "\n";
+            return 1;
+        }
+        if (wantsHash) hashNote = ", csv sha256 " + csvSha256(table);
     }
     const double init = std::chrono::duration<double>(t1 - t0).count();
     const double sim = std::chrono::duration<double>(t2 - t1).count();
-    std::printf("ok: %s: %zu steps, t=[%g, %g], init %.3f s, simulation %.3f s%s%s\n", path.c_str(),
+    std::printf("ok: %s: %zu steps, t=[%g, %g], init %.3f s, simulation %.3f s%s%s%s\n", path.c_str(),
                 root.takenSteps(), start, stop, init, sim, csv.empty() ? "" : ", csv ",
-                csv.c_str());
+                csv.c_str(), hashNote.c_str());
     return 0;
 }
 

@@ -11,7 +11,7 @@ void usage(std::ostream& os)
 {
     os << "usage:\n"
           "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--threads N]\n"
-          "                 [--csv OUT.csv] [--check-finite]\n"
+          "                 [--csv OUT.csv] [--sha256] [--check-finite]\n"
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"

@@ -140,23 +140,36 @@ ResultTable ResultTable::fromSystem(const System& root)
 
 std::string ResultTable::toCsv(const std::vector<std::string>& variables) const
 {
-    const std::vector<const ResultColumn*> cols = select(*this, variables);
-    std::string out = "time";
-    for (const ResultColumn* c : cols) {
-        out += ',';
-        out += c->name;
-    }
-    out += '\n';
-    out.reserve(out.size() + time.size() * (cols.size() + 1) * 24);
-    for (std::size_t r = 0; r < time.size(); ++r) {
-        appendNumber(out, time[r]);
-        for (const ResultColumn* c : cols) {
-            out += ',';
-            if (r < c->data.size()) appendNumber(out, c->data[r]);
-        }
-        out += '\n';
-    }
+    std::string out;
+    writeCsv([&out](std::string_view piece) { out += piece; }, variables);
     return out;
+}
+
+void ResultTable::writeCsv(const std::function<void(std::string_view)>& sink,
+                           const std::vector<std::string>& variables) const
+{
+    constexpr std::size_t kPieceBytes = 64 * 1024;
+    const std::vector<const ResultColumn*> cols = select(*this, variables);
+    std::string piece = "time";
+    for (const ResultColumn* c : cols) {
+        piece += ',';
+        piece += c->name;
+    }
+    piece += '\n';
+    piece.reserve(kPieceBytes + 64);
+    for (std::size_t r = 0; r < time.size(); ++r) {
+        appendNumber(piece, time[r]);
+        for (const ResultColumn* c : cols) {
+            piece += ',';
+            if (r < c->data.size()) appendNumber(piece, c->data[r]);
+            if (piece.size() >= kPieceBytes) {
+                sink(piece);
+                piece.clear();
+            }
+        }
+        piece += '\n';
+    }
+    if (!piece.empty()) sink(piece);
 }
 
 nlohmann::json ResultTable::toJson(const std::vector<std::string>& variables) const

@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tlmhub {
@@ -30,6 +32,10 @@ struct ResultTable {
     // a column has fewer samples. `variables` picks and orders columns (unknown names are
     // skipped); empty means all.
     std::string toCsv(const std::vector<std::string>& variables = {}) const;
+    // The same text handed to `sink` in pieces of about 64 KiB, so a large table can be
+    // written or hashed without holding its whole CSV in memory.
+    void writeCsv(const std::function<void(std::string_view)>& sink,
+                  const std::vector<std::string>& variables = {}) const;
     // {"time":[...],"variables":[{"name","unit","data":[...]}]}; same selection rule.
     nlohmann::json toJson(const std::vector<std::string>& variables = {}) const;
 
