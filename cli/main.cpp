@@ -15,7 +15,7 @@ void usage(std::ostream& os)
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"
-          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N[,N...]]\n"
+          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N[,N...]] [--vary Comp.param=a:b:n]\n"
           "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n";
 }
 

@@ -1,6 +1,6 @@
 #include "core/ResultTable.h"
 
-#include "core/Results.h"
+#include "core/ResultView.h"
 #include "core/System.h"
 
 #include <bit>
@@ -122,21 +122,18 @@ std::vector<const ResultColumn*> select(const ResultTable& table,
 
 } // namespace
 
-ResultTable ResultTable::fromSystem(const System& root)
+ResultTable ResultTable::fromView(const ResultView& view)
 {
     ResultTable table;
-    const std::size_t rows = root.numLoggedSamples();
-    const auto& time = root.logTime();
-    table.time.assign(time.begin(), time.begin() + static_cast<std::ptrdiff_t>(std::min(rows, time.size())));
-    for (const LoggedVariable& v : listLoggedVariables(root)) {
-        ResultColumn col;
-        col.name = v.fullName;
-        col.unit = v.unit;
-        appendLoggedData(*v.port, v.slot, 0, std::min(v.count, table.time.size()), col.data);
-        table.columns.push_back(std::move(col));
-    }
+    const auto time = view.time();
+    table.time.assign(time.begin(), time.end());
+    table.columns.reserve(view.numVariables());
+    for (std::size_t i = 0; i < view.numVariables(); ++i)
+        table.columns.push_back({view.variable(i).fullName, view.variable(i).unit, view.data(i)});
     return table;
 }
+
+ResultTable ResultTable::fromSystem(const System& root) { return fromView(ResultView(root)); }
 
 std::string ResultTable::toCsv(const std::vector<std::string>& variables) const
 {

@@ -13,6 +13,7 @@
 
 namespace tlmhub {
 
+class ResultView;
 class System;
 
 struct ResultColumn {
@@ -25,7 +26,8 @@ struct ResultTable {
     std::vector<double> time;   // s
     std::vector<ResultColumn> columns;
 
-    // Copies the logged samples of a run (after simulate) in listLoggedVariables order.
+    // Copies the logged samples of a run in the view's (HopsanCLI's) order.
+    static ResultTable fromView(const ResultView& view);
     static ResultTable fromSystem(const System& root);
 
     // Header "time,<names>", one row per time sample, numbers as "%.17g", an empty cell where
