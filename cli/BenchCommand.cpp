@@ -92,32 +92,34 @@ int benchVary(const std::string& modelPath, const std::string& vary)
         std::cerr << "error: " << s.codeName() << ": " << s.message() << "\n";
         return 1;
     };
-    const auto v0 = Clock::now();
+    // The three ways alternate run by run, so machine drift hits them alike.
+    double varied = 0, same = 0, reloaded = 0;
+    auto seconds = [](Clock::time_point from) {
+        return std::chrono::duration<double>(Clock::now() - from).count();
+    };
     for (double v : values) {
+        auto t = Clock::now();
         Status s = sim->setParameter(path, formatNumber(v));
         if (s) s = sim->reset();
         if (s) s = sim->run();
         if (!s) return fail(s);
-    }
-    const auto v1 = Clock::now();
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        Status s = sim->reset();
+        varied += seconds(t);
+
+        t = Clock::now();
+        s = sim->reset();
         if (s) s = sim->run();
         if (!s) return fail(s);
-    }
-    const auto v2 = Clock::now();
-    for (double v : values) {
+        same += seconds(t);
+
+        t = Clock::now();
         LoadedModel fresh = loadHmfFile(modelPath);
         Result<Simulation> again = compile(*fresh.root);
         if (!again) return fail(again.status());
-        Status s = again->setParameter(path, formatNumber(v));
+        s = again->setParameter(path, formatNumber(v));
         if (s) s = again->run();
         if (!s) return fail(s);
+        reloaded += seconds(t);
     }
-    const auto v3 = Clock::now();
-    const double varied = std::chrono::duration<double>(v1 - v0).count();
-    const double same = std::chrono::duration<double>(v2 - v1).count();
-    const double reloaded = std::chrono::duration<double>(v3 - v2).count();
     const double n = static_cast<double>(values.size());
     std::printf("%zu runs of %s varying %s\n", values.size(), modelPath.c_str(), path.c_str());
     std::printf("setParameter + reset + run: %.4f s (%.5f s per run)\n", varied, varied / n);
