@@ -70,9 +70,10 @@ def ok(description, name=None, status="200"):
 def errors(*statuses):
     texts = {"400": "bad_request, bad_json, schema_violation, invalid_model, invalid_parameter, ...",
              "401": "unauthorized (missing, unknown or expired token)",
-             "403": "forbidden (role may not do this)",
+             "403": "forbidden (role may not do this) or account_disabled (login of a disabled account)",
              "404": "not_found (also for objects of others the caller may not read)",
-             "409": "conflict", "413": "payload_too_large", "429": "rate_limited or limit_exceeded"}
+             "409": "conflict", "413": "payload_too_large", "429": "rate_limited or limit_exceeded",
+             "507": "storage_full (the server's disk is full: deleting still works)"}
     return {s: {"description": texts[s], "content": {"application/json": {"schema": ref("ErrorBody")}}}
             for s in statuses}
 
@@ -109,8 +110,21 @@ paths = {
     "/users": {
         "get": op("List users (admin)", {**ok("Users", {"type": "array", "items": ref("User")}),
                                          **errors("401", "403")}, tag="users"),
-        "post": op("Create a user (admin)", {**ok("Created", "User", "201"), **errors("400", "401", "403", "409")},
+        "post": op("Create a user (admin); names are unique regardless of case",
+                   {**ok("Created", "User", "201"), **errors("400", "401", "403", "409")},
                    body=json_body("UserCreate"), tag="users")},
+    "/users/{id}": {
+        "patch": op("Change a user's role and/or disable or re-enable the account (admin); the last "
+                    "enabled administrator cannot be disabled or demoted (409)",
+                    {**ok("Updated", "User"), **errors("400", "401", "403", "404", "409")},
+                    body=json_body("UserUpdate"), params=[ID], tag="users")},
+    "/auth/download-link": {"post": op(
+        "A short-lived signed link for one GET target of the caller's (e.g. results as CSV), for "
+        "downloads a browser starts itself; the only REST use of the query string for authentication",
+        {**ok("The link", "DownloadLink"), **errors("400", "401")}, body=json_body("DownloadLinkRequest"),
+        tag="auth")},
+    "/stats": {"get": op("Transport gauges (admin)", {**ok("Gauges", "ServerStats"), **errors("401", "403")},
+                         tag="meta")},
     "/models": {
         "get": op("Models visible to the caller (own and examples; admin all; teacher also students')",
                   {**ok("Model summaries", {"type": "array", "items": ref("ModelSummary")}), **errors("401")},

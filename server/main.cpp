@@ -56,7 +56,7 @@ int main(int argc, char** argv)
         net::io_context ioc;
         const auto address = net::ip::make_address(options.host);
         auto listener = std::make_shared<Listener>(ioc, net::ip::tcp::endpoint(address, options.port), app,
-                                                   TransportLimits{options.maxBodyBytes, options.wsQueueLimit});
+                                                   TransportLimits{options.maxBodyBytes, options.wsQueueLimit, options.wsQueueBytes});
         listener->run();
         app.startJobs();
 

@@ -2,6 +2,7 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/protocol/SchemaValidator.h"
+#include "server/protocol/UntrustedJson.h"
 
 #include <charconv>
 
@@ -36,11 +37,12 @@ Response apiError(http::status status, const std::string& code, const std::strin
 bool readJsonBody(const Call& call, const std::string& definition, nlohmann::json& body,
                   Response& error)
 {
-    body = nlohmann::json::parse(call.request.body(), nullptr, false);
-    if (body.is_discarded()) {
-        error = apiError(http::status::bad_request, "bad_json", "request body is not valid JSON");
+    UntrustedJson parsed = parseUntrustedJson(call.request.body());
+    if (!parsed.ok()) {
+        error = apiError(http::status::bad_request, "bad_json", "request body: " + parsed.error);
         return false;
     }
+    body = std::move(parsed.value);
     std::string why;
     if (!definition.empty() && !SchemaValidator::protocol().validate(definition, body, why)) {
         error = apiError(http::status::bad_request, "schema_violation", why);
@@ -73,7 +75,7 @@ bool wantsXml(const Call& call)
 
 nlohmann::json userJson(const User& user)
 {
-    return {{"id", user.id}, {"username", user.username}, {"role", user.role}};
+    return {{"id", user.id}, {"username", user.username}, {"role", user.role}, {"disabled", user.disabled}};
 }
 
 nlohmann::json modelSummaryJson(const ModelSummary& m)

@@ -1,6 +1,8 @@
 #pragma once
 // What every REST route handler works with: the services, the authenticated call, and
 // helpers for JSON bodies and the protocol's error shape.
+#include "server/auth/DownloadLinks.h"
+#include "server/auth/LiveSessions.h"
 #include "server/auth/LoginRateLimiter.h"
 #include "server/auth/TokenService.h"
 #include "server/http/HttpTypes.h"
@@ -30,6 +32,8 @@ struct Services {
     LoginRateLimiter& addressLimiter;   // failures per client address (looser: a lab shares one)
     JobQueue& queue;
     StreamHub& streams;
+    LiveSessions& liveSessions;         // open WebSockets, ended with their login
+    const DownloadLinks& downloadLinks;
 };
 
 struct Call {

@@ -25,6 +25,9 @@ Response login(Services& s, Call& call)
         return apiError(http::status::unauthorized, "unauthorized", "wrong user name or password");
     }
     s.loginLimiter.recordSuccess(userKey);
+    if (user->disabled)
+        return apiError(http::status::forbidden, "account_disabled",
+                        "this account is disabled; ask an administrator");
     const auto issued = s.tokens.issue(*user);
     return jsonResponse(http::status::ok, {{"token", issued.token},
                                            {"expires_at", issued.expiresAt},
@@ -34,6 +37,7 @@ Response login(Services& s, Call& call)
 Response logout(Services& s, Call& call)
 {
     s.tokens.revoke(call.token);
+    s.liveSessions.sweep();   // WebSockets opened with this login end now
     return noContent();
 }
 
@@ -52,7 +56,20 @@ Response changePassword(Services& s, Call& call)
         return apiError(http::status::bad_request, "bad_request", why);
     // Every session opened with the old password ends, this one too: log in again.
     s.tokens.revokeAllFor(call.who().id);
+    s.liveSessions.sweep();
     return noContent();
+}
+
+Response downloadLink(Services& s, Call& call)
+{
+    nlohmann::json body;
+    Response error;
+    if (!readJsonBody(call, "DownloadLinkRequest", body, error)) return error;
+    const std::string target = body["target"];
+    if (target.find(std::string(DownloadLinks::kParameter) + "=") != std::string::npos)
+        return apiError(http::status::bad_request, "bad_request", "the target already holds a download link");
+    const auto link = s.downloadLinks.sign(target, call.who().id);
+    return jsonResponse(http::status::ok, {{"url", link.url}, {"expires_at", link.expiresAt}});
 }
 
 } // namespace
@@ -63,6 +80,7 @@ void addAuthRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/auth/logout", true, logout});
     routes.push_back({http::verb::get, "/auth/me", true, me});
     routes.push_back({http::verb::post, "/auth/password", true, changePassword});
+    routes.push_back({http::verb::post, "/auth/download-link", true, downloadLink});
 }
 
 } // namespace tlmhub::server

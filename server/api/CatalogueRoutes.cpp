@@ -1,6 +1,8 @@
-// GET /health, GET /openapi.json (no login needed), GET /components (the core's catalogue).
+// GET /health, GET /openapi.json (no login needed), GET /components (the core's catalogue),
+// GET /stats (administrators: transport gauges).
 #include "server/api/ApiSupport.h"
 
+#include "server/http/TransportStats.h"
 #include "server/protocol/EmbeddedProtocol.h"
 
 #include "core/Catalogue.h"
@@ -29,6 +31,16 @@ Response components(Services&, Call&)
     return textResponse(http::status::ok, catalogue, "application/json");
 }
 
+Response stats(Services&, Call& call)
+{
+    if (call.who().role != kRoleAdmin)
+        return apiError(http::status::forbidden, "forbidden", "only administrators read the server's stats");
+    const TransportStats& t = TransportStats::instance();
+    return jsonResponse(http::status::ok, {{"websockets", t.webSockets.load()},
+                                           {"websocket_queued_bytes", t.webSocketQueuedBytes.load()},
+                                           {"websockets_closed_for_backlog", t.webSocketsClosedForBacklog.load()}});
+}
+
 } // namespace
 
 void addCatalogueRoutes(std::vector<RouteSpec>& routes)
@@ -36,6 +48,7 @@ void addCatalogueRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::get, "/health", false, health});
     routes.push_back({http::verb::get, "/openapi.json", false, openapi});
     routes.push_back({http::verb::get, "/components", true, components});
+    routes.push_back({http::verb::get, "/stats", true, stats});
 }
 
 } // namespace tlmhub::server

@@ -2,6 +2,7 @@
 #include "server/api/ApiSupport.h"
 
 #include "server/auth/AccessPolicy.h"
+#include "server/http/HeaderValues.h"
 
 #include <sstream>
 
@@ -126,8 +127,7 @@ Response jobResults(Services& s, Call& call)
     const std::string format = q.count("format") ? q.at("format") : "json";
     if (format == "csv") {
         Response res = textResponse(http::status::ok, table->toCsv(variables), "text/csv");
-        res.set(http::field::content_disposition,
-                "attachment; filename=\"job-" + std::to_string(job->id) + ".csv\"");
+        res.set(http::field::content_disposition, attachmentDisposition("job-" + std::to_string(job->id) + ".csv"));
         return res;
     }
     if (format != "json") return apiError(http::status::bad_request, "bad_request", "format must be csv or json");

@@ -3,6 +3,10 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/edit/ModelJson.h"
+#include "server/http/HeaderValues.h"
+#include "server/app/ServerOptions.h"
+#include "server/jobs/ModelLimits.h"
+#include "server/store/ModelName.h"
 
 #include "core/hmf/HmfLoader.h"
 #include "core/hmf/HmfSaver.h"
@@ -11,22 +15,41 @@ namespace tlmhub::server {
 
 namespace {
 
-// Loads `hmf` to check it; on failure `error` holds the 400 response naming the problem.
-std::unique_ptr<System> checkedModel(const std::string& hmf, Response& error)
+// Loads `hmf` within the server's model limits and evaluates its parameters; on failure
+// `error` holds the 400 response naming the problem.
+std::unique_ptr<System> checkedModel(Services& s, const std::string& hmf, Response& error)
 {
-    LoadedModel loaded = loadHmfString(hmf, "", "uploaded model");
+    LoadedModel loaded = loadUntrustedModel(hmf, s.options.limits.model, "", "uploaded model");
     if (loaded.hasErrors() || !loaded.root) {
         error = apiError(http::status::bad_request, "invalid_model",
                          loaded.firstError().empty() ? "the model does not load" : loaded.firstError());
         return nullptr;
     }
+    if (const std::string problem = firstParameterProblem(*loaded.root); !problem.empty()) {
+        error = apiError(http::status::bad_request, "invalid_parameter", "uploaded model: " + problem);
+        return nullptr;
+    }
     return std::move(loaded.root);
 }
 
+// On a refused name `error` holds the 400 response saying why.
+bool acceptableName(const std::string& name, Response& error)
+{
+    const std::string problem = modelNameProblem(name);
+    if (problem.empty()) return true;
+    error = apiError(http::status::bad_request, "bad_request", "model name: " + problem);
+    return false;
+}
+
+// A new model gets Hopsan's defaults for a new model, so that its first run works as is.
 std::string emptyModelHmf(const std::string& name)
 {
     System root;
     root.setNameRaw(sanitizeName(name));
+    root.startTime = 0.0;
+    root.stopTime = 10.0;
+    root.desiredTimestep = 1e-3;
+    root.requestedLogSamples = 2048;
     return saveHmfString(root);
 }
 
@@ -47,16 +70,18 @@ Response createModel(Services& s, Call& call)
     Response error;
     if (isXmlRequest(call.request)) {
         const std::string& hmf = call.request.body();
-        auto root = checkedModel(hmf, error);
+        auto root = checkedModel(s, hmf, error);
         if (!root) return error;
         const auto nameParam = call.params.query.find("name");
         const std::string name = nameParam != call.params.query.end() && !nameParam->second.empty()
                                      ? nameParam->second : root->name();
+        if (!acceptableName(name, error)) return error;
         return created(s, s.models.create(call.who().id, name, hmf, false));
     }
     nlohmann::json body;
     if (!readJsonBody(call, "ModelCreate", body, error)) return error;
     const std::string name = body["name"];
+    if (!acceptableName(name, error)) return error;
     if (body.contains("copy_of")) {
         const auto source = readableModel(s, call.who(), body["copy_of"].get<std::int64_t>());
         if (!source) return apiError(http::status::not_found, "not_found", "no such model to copy");
@@ -64,7 +89,7 @@ Response createModel(Services& s, Call& call)
     }
     if (body.contains("hmf")) {
         const std::string hmf = body["hmf"];
-        if (!checkedModel(hmf, error)) return error;
+        if (!checkedModel(s, hmf, error)) return error;
         return created(s, s.models.create(call.who().id, name, hmf, false));
     }
     return created(s, s.models.create(call.who().id, name, emptyModelHmf(name), false));
@@ -78,7 +103,7 @@ Response getModel(Services& s, Call& call)
     const std::string hmf = s.models.hmf(summary->id).value_or("");
     if (wantsXml(call)) {
         Response res = textResponse(http::status::ok, hmf, "application/xml");
-        res.set(http::field::content_disposition, "attachment; filename=\"" + summary->name + ".hmf\"");
+        res.set(http::field::content_disposition, attachmentDisposition(summary->name + ".hmf"));
         return res;
     }
     nlohmann::json out = modelSummaryJson(*summary);
@@ -107,7 +132,8 @@ Response updateModel(Services& s, Call& call)
         if (body.contains("name")) name = body["name"].get<std::string>();
         if (body.contains("hmf")) hmf = body["hmf"].get<std::string>();
     }
-    if (hmf && !checkedModel(*hmf, error)) return error;
+    if (name && !acceptableName(*name, error)) return error;
+    if (hmf && !checkedModel(s, *hmf, error)) return error;
     s.models.update(summary->id, name, hmf);
     return jsonResponse(http::status::ok, modelSummaryJson(*s.models.summary(summary->id)));
 }

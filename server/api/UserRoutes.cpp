@@ -1,4 +1,4 @@
-// GET /users, POST /users: accounts, administrators only.
+// GET /users, POST /users, PATCH /users/{id}: accounts, administrators only.
 #include "server/api/ApiSupport.h"
 
 namespace tlmhub::server {
@@ -29,12 +29,44 @@ Response createUser(Services& s, Call& call)
     return jsonResponse(http::status::created, userJson(*user));
 }
 
+// Role and enabled state. A disabled account's logins end at once (tokens revoked, open
+// WebSockets closed); a changed role applies to REST calls at once and WebSockets reconnect.
+Response updateUser(Services& s, Call& call)
+{
+    if (call.who().role != "admin")
+        return apiError(http::status::forbidden, "forbidden", "only administrators change users");
+    const auto id = parseId(call.params.path["id"]);
+    if (!id) return apiError(http::status::not_found, "not_found", "no such user");
+    nlohmann::json body;
+    Response error;
+    if (!readJsonBody(call, "UserUpdate", body, error)) return error;
+    const auto before = s.users.find(*id);
+    if (!before) return apiError(http::status::not_found, "not_found", "no such user");
+    std::optional<std::string> role;
+    std::optional<bool> disabled;
+    if (body.contains("role")) role = body["role"].get<std::string>();
+    if (body.contains("disabled")) disabled = body["disabled"].get<bool>();
+    std::string why;
+    const auto user = s.users.update(*id, role, disabled, why);
+    if (!user)
+        return why == kLastAdmin ? apiError(http::status::conflict, "conflict", why)
+                                 : apiError(http::status::bad_request, "bad_request", why);
+    if (user->disabled && !before->disabled) {
+        s.tokens.revokeAllFor(user->id);
+        s.liveSessions.sweep();
+    } else if (user->role != before->role) {
+        s.liveSessions.closeAllOf(user->id, "your role changed: reconnect");
+    }
+    return jsonResponse(http::status::ok, userJson(*user));
+}
+
 } // namespace
 
 void addUserRoutes(std::vector<RouteSpec>& routes)
 {
     routes.push_back({http::verb::get, "/users", true, listUsers});
     routes.push_back({http::verb::post, "/users", true, createUser});
+    routes.push_back({http::verb::patch, "/users/{id}", true, updateUser});
 }
 
 } // namespace tlmhub::server

@@ -2,6 +2,8 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/protocol/SchemaValidator.h"
+#include "server/protocol/UntrustedJson.h"
+#include "server/store/ModelName.h"
 
 namespace tlmhub::server {
 
@@ -25,10 +27,22 @@ WsApi::Reply success(nlohmann::json data = nlohmann::json::object())
 
 constexpr std::size_t kMaxStreamedVariables = 16;
 
+// The message's id when it is one the protocol allows, else null: an error about a bad
+// message must not echo an arbitrarily large or deep value back.
+nlohmann::json echoableId(const nlohmann::json& msg)
+{
+    if (!msg.is_object()) return nullptr;
+    const auto id = msg.find("id");
+    std::string why;
+    if (id == msg.end() || !SchemaValidator::protocol().validate("RequestId", *id, why)) return nullptr;
+    return *id;
+}
+
 } // namespace
 
-WsApi::WsApi(Services& services, User user, std::shared_ptr<WebSocketSender> sender)
-    : mServices(services), mUser(std::move(user)), mSender(std::move(sender))
+WsApi::WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender)
+    : mServices(services), mUser(std::move(user)), mSender(std::move(sender)),
+      mLiveSession(services.liveSessions.add(token, mUser.id, mSender))
 {
     mSender->send(nlohmann::json{{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}.dump(),
                   false);
@@ -38,6 +52,7 @@ WsApi::~WsApi() = default;
 
 void WsApi::onClose()
 {
+    mServices.liveSessions.remove(mLiveSession);
     for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
     mSubscriptions.clear();
 }
@@ -50,9 +65,10 @@ void WsApi::sendError(const nlohmann::json& id, const std::string& code, const s
 
 void WsApi::onMessage(const std::string& text)
 {
-    const nlohmann::json msg = nlohmann::json::parse(text, nullptr, false);
-    if (msg.is_discarded()) return sendError(nullptr, "bad_json", "message is not valid JSON");
-    const nlohmann::json id = msg.is_object() && msg.contains("id") ? msg["id"] : nlohmann::json();
+    UntrustedJson parsed = parseUntrustedJson(text);
+    if (!parsed.ok()) return sendError(nullptr, "bad_json", "message: " + parsed.error);
+    const nlohmann::json& msg = parsed.value;
+    const nlohmann::json id = echoableId(msg);
     std::string code, why;
     if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
     Reply reply;
@@ -101,6 +117,8 @@ WsApi::Reply WsApi::openModel(const nlohmann::json& msg)
 WsApi::Reply WsApi::createModel(const nlohmann::json& msg)
 {
     const std::string name = msg["name"];
+    if (const std::string problem = modelNameProblem(name); !problem.empty())
+        return failure("bad_request", "model name: " + problem);
     mSession.createEmpty(name);
     mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
     mModelName = name;
@@ -117,6 +135,8 @@ WsApi::Reply WsApi::saveModel(const nlohmann::json& msg)
     const bool asCopy = msg.value("as_copy", false) || !model ||
                         !canWrite(mUser, model->ownerId, model->isExample);
     const std::string name = msg.value("name", mModelName);
+    if (const std::string problem = modelNameProblem(name); !problem.empty())
+        return failure("bad_request", "model name: " + problem);
     if (asCopy) {
         mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
     } else {

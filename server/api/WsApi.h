@@ -12,7 +12,8 @@ namespace tlmhub::server {
 
 class WsApi : public WebSocketHandler {
 public:
-    WsApi(Services& services, User user, std::shared_ptr<WebSocketSender> sender);
+    // `token`: the login the connection was opened with; the connection ends with it.
+    WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender);
     ~WsApi() override;
 
     void onMessage(const std::string& text) override;
@@ -35,6 +36,7 @@ private:
     Services& mServices;
     User mUser;
     std::shared_ptr<WebSocketSender> mSender;
+    std::uint64_t mLiveSession;
     EditSession mSession;
     std::optional<std::int64_t> mModelId;
     std::string mModelName;

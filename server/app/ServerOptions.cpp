@@ -23,7 +23,14 @@ const char* kHelp =
     "  --max-running-per-user N jobs running at once per user (default 2)\n"
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
     "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
-    "  --max-body-bytes N       request body limit (default 8388608)\n"
+    "  --max-body-bytes N       request body limit (default 25165824)\n"
+    "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
+    "  --max-model-components N components and subsystems in a model (default 20000)\n"
+    "  --max-model-depth N      subsystems nested in subsystems (default 16)\n"
+    "  --max-ws-queue-bytes N   replies waiting for a WebSocket client that does not read;\n"
+    "                           past it the connection is closed (default 16777216)\n"
+    "  --disk-reserve-bytes N   space kept beside the database and given back when the disk\n"
+    "                           is full, so logging in and deleting still work (default 8388608)\n"
     "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
     "                           finish (default 0: keep them until their owner deletes them)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
@@ -92,6 +99,16 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             o.resultTtl = std::chrono::seconds(s);
         } else if (flag == "--max-body-bytes") {
             ok = parseNumber(value, o.maxBodyBytes);
+        } else if (flag == "--disk-reserve-bytes") {
+            ok = parseNumber(value, o.diskReserveBytes);
+        } else if (flag == "--max-model-bytes") {
+            ok = parseNumber(value, o.limits.model.maxBytes);
+        } else if (flag == "--max-model-components") {
+            ok = parseNumber(value, o.limits.model.maxComponents);
+        } else if (flag == "--max-model-depth") {
+            ok = parseNumber(value, o.limits.model.maxDepth);
+        } else if (flag == "--max-ws-queue-bytes") {
+            ok = parseNumber(value, o.wsQueueBytes);
         } else {
             error = "unknown option " + flag + " (see --help)";
             return false;

@@ -11,6 +11,9 @@ namespace tlmhub::server {
 
 namespace {
 const std::string kApiPrefix = "/api/v1";
+// An open WebSocket whose login ended (expiry included) closes within this period.
+constexpr auto kLoginCheckPeriod = std::chrono::milliseconds(250);
+constexpr auto kDownloadLinkTtl = std::chrono::seconds(60);
 } // namespace
 
 TlmhubApp::TlmhubApp(const ServerOptions& options)
@@ -19,7 +22,8 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     std::error_code ec;
     std::filesystem::create_directories(mOptions.dataDir, ec);
     if (ec) throw std::runtime_error("cannot create data directory '" + mOptions.dataDir + "': " + ec.message());
-    mDatabase = std::make_unique<Database>((std::filesystem::path(mOptions.dataDir) / "tlmhub.sqlite").string());
+    mDatabase = std::make_unique<Database>((std::filesystem::path(mOptions.dataDir) / "tlmhub.sqlite").string(),
+                                           mOptions.diskReserveBytes);
     mUsers = std::make_unique<UserStore>(*mDatabase);
     mModels = std::make_unique<ModelStore>(*mDatabase);
     mTokens = std::make_unique<TokenService>(*mDatabase, mOptions.tokenTtl, *mUsers);
@@ -32,7 +36,10 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
     mQueue = std::make_unique<JobQueue>(*mJobStore, *mStreams, mOptions.limits, workers);
     if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(*mJobStore, mOptions.resultTtl);
-    mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter, *mQueue, *mStreams});
+    mLiveSessions = std::make_unique<LiveSessions>(*mTokens, kLoginCheckPeriod);
+    mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
+    mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter,
+                                 *mQueue, *mStreams, *mLiveSessions, *mDownloadLinks});
 
     std::vector<RouteSpec> routes;
     addCatalogueRoutes(routes);
@@ -46,7 +53,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
         mRouter.add(r.method, kApiPrefix + r.pattern,
                     [this, needsAuth, handler](Services& s, Call& call) -> Response {
                         if (needsAuth) {
-                            call.user = authenticate(call.request, call.params, call.token);
+                            call.user = authenticate(call.request, call.params, call.token, false);
                             if (!call.user)
                                 return apiError(http::status::unauthorized, "unauthorized",
                                                 "log in first: send 'Authorization: Bearer <token>'");
@@ -65,6 +72,9 @@ std::optional<std::string> TlmhubApp::bootstrap(std::string& log)
 {
     const auto generated = ensureAdmin(*mUsers, std::getenv("TLMHUB_ADMIN_PASSWORD"));
     seedExamples(*mModels, *mUsers, mOptions.exampleDirs, log);
+    for (const std::string& group : mUsers->namesDifferingOnlyInCase())
+        log += "warning: user names differ only in case: " + group +
+               " (they keep working; new names are unique regardless of case)\n";
     return generated;
 }
 
@@ -79,14 +89,26 @@ void TlmhubApp::shutdown()
 }
 
 std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteParams& params,
-                                            std::string& token)
+                                            std::string& token, bool queryToken)
 {
     const std::string header(request[http::field::authorization]);
     const std::string bearer = "Bearer ";
-    if (header.rfind(bearer, 0) == 0) token = header.substr(bearer.size());
-    else if (auto q = params.query.find("token"); q != params.query.end()) token = q->second;
-    else return std::nullopt;
-    return mTokens->validate(token);
+    if (header.rfind(bearer, 0) == 0) {
+        token = header.substr(bearer.size());
+        return mTokens->validate(token);
+    }
+    if (queryToken) {
+        const auto q = params.query.find("token");
+        if (q == params.query.end()) return std::nullopt;
+        token = q->second;
+        return mTokens->validate(token);
+    }
+    if (request.method() == http::verb::get && params.query.count(DownloadLinks::kParameter)) {
+        const auto userId = mDownloadLinks->verify(std::string(request.target()));
+        auto user = userId ? mUsers->find(*userId) : std::nullopt;
+        if (user && !user->disabled) return user;
+    }
+    return std::nullopt;
 }
 
 Response TlmhubApp::handle(const Incoming& in)
@@ -106,7 +128,13 @@ Response TlmhubApp::handle(const Incoming& in)
         break;
     }
     Call call{in.request, in.clientAddress, std::move(params), std::nullopt, {}};
-    return (*handler)(*mServices, call);
+    try {
+        return (*handler)(*mServices, call);
+    } catch (const SQLite::Exception& e) {
+        if (!Database::isDiskFull(e)) throw;
+        return apiError(http::status::insufficient_storage, "storage_full",
+                        "the server's disk is full: delete jobs or models to free space");
+    }
 }
 
 std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,
@@ -119,13 +147,13 @@ std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,
         return nullptr;
     }
     std::string token;
-    const auto user = authenticate(in.request, params, token);
+    const auto user = authenticate(in.request, params, token, true);
     if (!user) {
         refusal = errorResponse(http::status::unauthorized, "unauthorized",
                                 "log in first: connect with ?token=<token> or 'Authorization: Bearer'");
         return nullptr;
     }
-    return std::make_shared<WsApi>(*mServices, *user, std::move(sender));
+    return std::make_shared<WsApi>(*mServices, *user, token, std::move(sender));
 }
 
 } // namespace tlmhub::server

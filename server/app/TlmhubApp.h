@@ -32,8 +32,10 @@ public:
     int interruptedAtStart() const { return mInterruptedAtStart; }
 
 private:
+    // Bearer header; or, where `queryToken` allows (the WebSocket upgrade), ?token=; or, on
+    // GET, a signed download link.
     std::optional<User> authenticate(const Request& request, const RouteParams& params,
-                                     std::string& token);
+                                     std::string& token, bool queryToken);
 
     ServerOptions mOptions;
     std::unique_ptr<Database> mDatabase;
@@ -46,6 +48,8 @@ private:
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
     std::unique_ptr<ResultExpiry> mExpiry;   // only with --result-ttl
+    std::unique_ptr<LiveSessions> mLiveSessions;
+    std::unique_ptr<DownloadLinks> mDownloadLinks;
     std::unique_ptr<Services> mServices;
     Router<RouteHandler> mRouter;
     StaticFiles mStaticFiles;

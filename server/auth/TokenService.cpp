@@ -38,18 +38,22 @@ TokenService::TokenService(Database& db, std::chrono::seconds ttl, UserStore& us
 TokenService::Issued TokenService::issue(const User& user)
 {
     Issued issued{randomHex(kTokenBytes), static_cast<std::int64_t>(unixNow()) + mTtl.count()};
+    const std::string hash = tokenHash(issued.token);
     std::lock_guard lock(mDb.mutex());
-    // Expired sessions of nobody in particular are cleared here so the table stays small
-    // even when clients never log out.
-    SQLite::Statement purge(mDb.sql(), "DELETE FROM sessions WHERE expires_at <= ?");
-    purge.bind(1, static_cast<std::int64_t>(unixNow()));
-    purge.exec();
-    SQLite::Statement insert(mDb.sql(),
-                             "INSERT INTO sessions(token_hash, user_id, expires_at) VALUES(?, ?, ?)");
-    insert.bind(1, tokenHash(issued.token));
-    insert.bind(2, user.id);
-    insert.bind(3, issued.expiresAt);
-    insert.exec();
+    // On a full disk too: logging in is how an owner gets to delete what fills it.
+    mDb.freeingSpace([&] {
+        // Expired sessions of nobody in particular are cleared here so the table stays small
+        // even when clients never log out.
+        SQLite::Statement purge(mDb.sql(), "DELETE FROM sessions WHERE expires_at <= ?");
+        purge.bind(1, static_cast<std::int64_t>(unixNow()));
+        purge.exec();
+        SQLite::Statement insert(mDb.sql(),
+                                 "INSERT INTO sessions(token_hash, user_id, expires_at) VALUES(?, ?, ?)");
+        insert.bind(1, hash);
+        insert.bind(2, user.id);
+        insert.bind(3, issued.expiresAt);
+        insert.exec();
+    });
     return issued;
 }
 
@@ -74,7 +78,9 @@ std::optional<User> TokenService::validate(const std::string& token)
         }
     }
     // Outside the lock: UserStore takes the same mutex.
-    return mUsers.find(userId);
+    auto user = mUsers.find(userId);
+    if (user && user->disabled) return std::nullopt;
+    return user;
 }
 
 void TokenService::revoke(const std::string& token)

@@ -25,7 +25,7 @@ public:
 
     Issued issue(const User& user);
     // The token's user, read fresh (a changed role applies at once); nullopt when unknown,
-    // revoked or expired (an expired row is deleted on the way).
+    // revoked or expired (an expired row is deleted on the way), or the account is disabled.
     std::optional<User> validate(const std::string& token);
     void revoke(const std::string& token);
     // Ends every session of one user, e.g. after a password change.

@@ -9,6 +9,7 @@ struct User {
     std::int64_t id = 0;
     std::string username;
     std::string role;   // "admin" | "teacher" | "user"
+    bool disabled = false;   // by an administrator: cannot log in, sessions end
 };
 
 inline constexpr const char* kRoleAdmin = "admin";

@@ -17,6 +17,8 @@ public:
     // oldest first, when the connection's queue is full; replies are never dropped.
     virtual void send(std::string text, bool droppable) = 0;
     virtual std::uint64_t droppedCount() const = 0;
+    // Ends the connection with a close frame giving `reason`; nothing queued is sent after.
+    virtual void close(std::string reason) = 0;
 };
 
 // Receiving side: one per connection, called on the connection's strand (one at a time).

@@ -1,5 +1,6 @@
 #include "server/http/HttpSession.h"
 
+#include "server/http/HeaderValues.h"
 #include "server/http/WebSocketSession.h"
 
 #include <boost/asio/dispatch.hpp>
@@ -86,13 +87,25 @@ void HttpSession::onRead(beast::error_code ec)
     }
     response.version(request.version());
     response.keep_alive(request.keep_alive());
-    write(std::move(response));
+    write(std::move(response), request.method() == http::verb::head);
 }
 
-void HttpSession::write(Response response)
+void HttpSession::write(Response response, bool headOnly)
 {
+    // A header value with a line break would let its author add headers or a whole response.
+    if (!hasSafeHeaders(response))
+        response = errorResponse(http::status::internal_server_error, "internal",
+                                 "refused to send a response header with a control character",
+                                 response.version(), response.keep_alive());
     auto shared = std::make_shared<Response>(std::move(response));
     shared->prepare_payload();
+    if (headOnly) {
+        // The length of the body a GET would get, but no body: the next response on a
+        // kept-alive connection must start right after the header.
+        const auto length = shared->body().size();
+        shared->body().clear();
+        shared->content_length(length);
+    }
     http::async_write(mStream, *shared, [self = shared_from_this(), shared](beast::error_code ec, std::size_t) {
         if (ec || !shared->keep_alive()) return self->close();
         self->read();

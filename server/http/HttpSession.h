@@ -18,7 +18,8 @@ public:
 private:
     void read();
     void onRead(boost::beast::error_code ec);
-    void write(Response response);
+    // `headOnly`: the answer to a HEAD request (headers of the GET response, no body).
+    void write(Response response, bool headOnly = false);
     void close();
 
     boost::beast::tcp_stream mStream;

@@ -1,5 +1,7 @@
 #include "server/http/WebSocketSession.h"
 
+#include "server/http/TransportStats.h"
+
 #include <boost/asio/post.hpp>
 
 namespace tlmhub::server {
@@ -10,7 +12,7 @@ namespace websocket = beast::websocket;
 
 namespace {
 
-// Posts each message onto the session's strand; outlives the session harmlessly.
+// Posts each call onto the session's strand; outlives the session harmlessly.
 class SessionSender : public WebSocketSender {
 public:
     explicit SessionSender(std::weak_ptr<WebSocketSession> session, net::any_io_executor executor)
@@ -27,18 +29,32 @@ public:
         auto session = mSession.lock();
         return session ? session->droppedCount() : 0;
     }
+    void close(std::string reason) override
+    {
+        net::post(mExecutor, [weak = mSession, reason = std::move(reason)] {
+            if (auto session = weak.lock()) session->closeWithReason(reason);
+        });
+    }
 
 private:
     std::weak_ptr<WebSocketSession> mSession;
     net::any_io_executor mExecutor;
 };
 
+// A close handshake with a client that does not answer ends after this long.
+constexpr auto kCloseTimeout = std::chrono::seconds(5);
+
 } // namespace
 
 WebSocketSession::WebSocketSession(net::ip::tcp::socket&& socket, TransportLimits limits)
-    : mWs(std::move(socket)), mLimits(limits), mQueue(limits.wsQueueLimit) {}
+    : mWs(std::move(socket)), mLimits(limits), mQueue(limits.wsQueueLimit, limits.wsQueueBytes) {}
 
-WebSocketSession::~WebSocketSession() = default;
+WebSocketSession::~WebSocketSession()
+{
+    mQueue.clear();
+    trackQueuedBytes();
+    if (mCounted) --TransportStats::instance().webSockets;
+}
 
 std::shared_ptr<WebSocketSender> WebSocketSession::sender()
 {
@@ -60,12 +76,17 @@ void WebSocketSession::refuse(Response refusal)
 void WebSocketSession::start(Request upgradeRequest, std::shared_ptr<WebSocketHandler> handler)
 {
     mHandler = std::move(handler);
+    mCounted = true;
+    ++TransportStats::instance().webSockets;
     mWs.next_layer().expires_never();
-    mWs.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    auto timeouts = websocket::stream_base::timeout::suggested(beast::role_type::server);
+    timeouts.handshake_timeout = kCloseTimeout;
+    mWs.set_option(timeouts);
     mWs.read_message_max(mLimits.maxBodyBytes);
     auto request = std::make_shared<Request>(std::move(upgradeRequest));
     mWs.async_accept(*request, [self = shared_from_this(), request](beast::error_code ec) {
         if (ec) return self->closed();
+        if (self->mClosing) return;
         self->mOpen = true;
         self->writeNext();   // messages queued by the handler before the handshake finished
         self->read();
@@ -76,42 +97,92 @@ void WebSocketSession::read()
 {
     mWs.async_read(mBuffer, [self = shared_from_this()](beast::error_code ec, std::size_t) {
         if (ec) return self->closed();
+        if (!self->mHandler) return;   // ended while this message arrived
         std::string text = beast::buffers_to_string(self->mBuffer.data());
         self->mBuffer.consume(self->mBuffer.size());
         self->mHandler->onMessage(text);
-        self->read();
+        if (self->mHandler) self->read();
     });
 }
 
 void WebSocketSession::enqueue(std::string text, bool droppable)
 {
+    if (mClosing) return;
     mQueue.push(std::move(text), droppable, mWriting);
     mDropped.store(mQueue.dropped());
+    trackQueuedBytes();
+    if (mQueue.overflowing()) {
+        // Replies alone fill the limit: the client is not reading. Free the memory now; a
+        // close handshake could not get through a full socket anyway.
+        ++TransportStats::instance().webSocketsClosedForBacklog;
+        return closed();
+    }
     writeNext();
 }
 
 void WebSocketSession::writeNext()
 {
-    if (mWriting || !mOpen || mQueue.empty()) return;
+    if (mWriting || !mOpen || mClosing || mQueue.empty()) return;
     mWriting = true;
     mWs.text(true);
     mWs.async_write(net::buffer(mQueue.front()),
                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
                         self->mWriting = false;
                         if (ec) return self->closed();
+                        if (self->mClosing) return self->sendClose();
                         self->mQueue.pop();
+                        self->trackQueuedBytes();
                         self->writeNext();
                     });
 }
 
+void WebSocketSession::closeWithReason(const std::string& reason)
+{
+    if (mClosing) return;
+    mCloseReason = reason;
+    detach();
+    if (!mOpen) return closed();
+    if (!mWriting) sendClose();   // else once the frame being written is out
+}
+
+void WebSocketSession::sendClose()
+{
+    mQueue.clear();
+    trackQueuedBytes();
+    mWs.async_close(websocket::close_reason(websocket::close_code::policy_error, mCloseReason),
+                    [self = shared_from_this()](beast::error_code) { self->closed(); });
+}
+
+void WebSocketSession::detach()
+{
+    mClosing = true;
+    if (!mWriting) {
+        mQueue.clear();
+        trackQueuedBytes();
+    }
+    if (mHandler) {
+        std::shared_ptr<WebSocketHandler> handler = std::move(mHandler);   // no call after this
+        handler->onClose();   // breaks the handler -> sender -> session cycle when it goes
+    }
+}
+
 void WebSocketSession::closed()
 {
+    detach();
     mOpen = false;
-    mQueue.clear();
-    if (mHandler) {
-        mHandler->onClose();
-        mHandler.reset();   // breaks the handler -> sender -> session cycle
+    beast::get_lowest_layer(mWs).close();
+    if (!mWriting) {
+        mQueue.clear();
+        trackQueuedBytes();
     }
+}
+
+void WebSocketSession::trackQueuedBytes()
+{
+    const auto now = mQueue.bytes();
+    TransportStats::instance().webSocketQueuedBytes += static_cast<std::int64_t>(now) -
+                                                       static_cast<std::int64_t>(mCountedBytes);
+    mCountedBytes = now;
 }
 
 } // namespace tlmhub::server

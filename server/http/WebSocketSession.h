@@ -1,8 +1,10 @@
 #pragma once
 // One WebSocket connection. Incoming text messages go to the handler one at a time; outgoing
-// messages wait in a bounded queue. When a slow client lets the queue fill up, the oldest
-// droppable message (a stream frame) is thrown away and counted, so a slow reader never
-// holds up a simulation or other clients, and replies are never lost.
+// messages wait in a queue bounded in count and bytes (OutgoingQueue): a slow reader loses
+// the oldest stream frames, and one that lets replies pile up past the byte limit is
+// disconnected and its buffers freed, so it never holds up a simulation, other clients or
+// the server's memory. Once the connection ends (either side, or a failed write) the handler
+// is told once and never called again.
 #include "server/http/Listener.h"
 #include "server/http/OutgoingQueue.h"
 
@@ -24,20 +26,30 @@ public:
 
     // Called on the strand through the sender.
     void enqueue(std::string text, bool droppable);
+    void closeWithReason(const std::string& reason);
     std::uint64_t droppedCount() const { return mDropped.load(); }   // any thread
 
 private:
     void read();
     void writeNext();
+    // Tells the handler (once) and frees the queue; the socket stays for a close handshake.
+    void detach();
+    // The connection is over: detach and close the socket, cancelling what is pending.
     void closed();
+    void sendClose();   // the close handshake, with mCloseReason
+    void trackQueuedBytes();
 
     boost::beast::websocket::stream<boost::beast::tcp_stream> mWs;
     boost::beast::flat_buffer mBuffer;
     TransportLimits mLimits;
     std::shared_ptr<WebSocketHandler> mHandler;
     OutgoingQueue mQueue;
+    std::string mCloseReason;
+    std::size_t mCountedBytes = 0;   // this queue's share of TransportStats' gauge
     bool mWriting = false;
     bool mOpen = false;
+    bool mClosing = false;
+    bool mCounted = false;
     std::atomic<std::uint64_t> mDropped{0};
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 // A simulation job: what was asked (JobRequest), what the server knows about it (JobInfo) and
 // the limits every job is held to (JobLimits).
+#include "server/jobs/ModelLimits.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -66,6 +68,7 @@ struct JobLimits {
     int maxRunningPerUser = 2;
     // Results kept per user (all their finished jobs); new jobs wait for old ones to be deleted.
     std::size_t maxStoredBytesPerUser = std::size_t(1) << 30;
+    ModelLimits model;   // also for models stored through the API
 };
 
 } // namespace tlmhub::server

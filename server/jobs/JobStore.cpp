@@ -223,14 +223,18 @@ bool JobStore::hasResult(std::int64_t id)
 bool JobStore::remove(std::int64_t id)
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Transaction transaction(mDb.sql());
-    SQLite::Statement results(mDb.sql(), "DELETE FROM job_results WHERE job_id = ?");
-    results.bind(1, id);
-    results.exec();
-    SQLite::Statement q(mDb.sql(), "DELETE FROM jobs WHERE id = ?");
-    q.bind(1, id);
-    const bool removed = q.exec() == 1;
-    transaction.commit();
+    const bool removed = mDb.freeingSpace([&] {
+        SQLite::Transaction transaction(mDb.sql());
+        SQLite::Statement results(mDb.sql(), "DELETE FROM job_results WHERE job_id = ?");
+        results.bind(1, id);
+        results.exec();
+        SQLite::Statement q(mDb.sql(), "DELETE FROM jobs WHERE id = ?");
+        q.bind(1, id);
+        const bool done = q.exec() == 1;
+        transaction.commit();
+        return done;
+    });
+    mDb.restoreReserve();
     return removed;
 }
 

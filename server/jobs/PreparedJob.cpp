@@ -82,7 +82,7 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
         return false;
     }
     const std::string source = request.modelId ? "model " + std::to_string(*request.modelId) : "model";
-    LoadedModel loaded = loadHmfString(request.hmf, request.modelDirectory, source);
+    LoadedModel loaded = loadUntrustedModel(request.hmf, limits.model, request.modelDirectory, source);
     if (!loaded.root || loaded.hasErrors()) {
         error = {"invalid_model", loaded.firstError().empty() ? "the model does not load" : loaded.firstError()};
         return false;

@@ -98,9 +98,13 @@ bool ModelStore::update(std::int64_t id, const std::optional<std::string>& name,
 bool ModelStore::remove(std::int64_t id)
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Statement remove(mDb.sql(), "DELETE FROM models WHERE id = ?");
-    remove.bind(1, id);
-    return remove.exec() > 0;
+    const bool removed = mDb.freeingSpace([&] {
+        SQLite::Statement remove(mDb.sql(), "DELETE FROM models WHERE id = ?");
+        remove.bind(1, id);
+        return remove.exec() > 0;
+    });
+    mDb.restoreReserve();
+    return removed;
 }
 
 std::vector<ModelSummary> ModelStore::listVisibleTo(const User& who)

@@ -3,6 +3,7 @@
 #include "server/auth/PasswordHasher.h"
 
 #include <SQLiteCpp/Statement.h>
+#include <SQLiteCpp/Transaction.h>
 
 namespace tlmhub::server {
 
@@ -14,6 +15,7 @@ User readUser(SQLite::Statement& q)
     u.id = q.getColumn(0).getInt64();
     u.username = q.getColumn(1).getString();
     u.role = q.getColumn(2).getString();
+    u.disabled = q.getColumn(3).getInt() != 0;
     return u;
 }
 
@@ -50,6 +52,11 @@ UserStore::UserStore(Database& db) : mDb(db)
         " password_hash TEXT,"
         " role TEXT CHECK(role IN ('admin','teacher','user')),"
         " created_at INTEGER)");
+    // Added after the first release: older databases get the column on first start.
+    bool hasDisabled = false;
+    SQLite::Statement columns(mDb.sql(), "PRAGMA table_info(users)");
+    while (columns.executeStep()) hasDisabled = hasDisabled || columns.getColumn(1).getString() == "disabled";
+    if (!hasDisabled) mDb.sql().exec("ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0");
 }
 
 std::optional<User> UserStore::create(const std::string& username, const std::string& password,
@@ -58,7 +65,12 @@ std::optional<User> UserStore::create(const std::string& username, const std::st
     if (!isValidUsername(username)) { error = kBadUsername; return std::nullopt; }
     if (!isValidRole(role)) { error = kBadRole; return std::nullopt; }
     if (password.size() < kMinPasswordLength) { error = kShortPassword; return std::nullopt; }
-    if (findByName(username)) { error = kUsernameTaken; return std::nullopt; }
+    {
+        std::lock_guard lock(mDb.mutex());
+        SQLite::Statement taken(mDb.sql(), "SELECT 1 FROM users WHERE username = ? COLLATE NOCASE");
+        taken.bind(1, username);
+        if (taken.executeStep()) { error = kUsernameTaken; return std::nullopt; }
+    }
 
     const std::string hash = hashPassword(password);
     std::lock_guard lock(mDb.mutex());
@@ -71,17 +83,27 @@ std::optional<User> UserStore::create(const std::string& username, const std::st
     insert.bind(3, role);
     insert.bind(4, static_cast<std::int64_t>(unixNow()));
     if (insert.exec() == 0) { error = kUsernameTaken; return std::nullopt; }
-    return User{mDb.sql().getLastInsertRowid(), username, role};
+    return User{mDb.sql().getLastInsertRowid(), username, role, false};
 }
 
 std::optional<std::string> UserStore::passwordHash(const std::string& username, std::int64_t& id)
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Statement q(mDb.sql(), "SELECT id, password_hash FROM users WHERE username = ?");
-    q.bind(1, username);
-    if (!q.executeStep() || q.getColumn(1).isNull()) return std::nullopt;
-    id = q.getColumn(0).getInt64();
-    return q.getColumn(1).getString();
+    SQLite::Statement exact(mDb.sql(), "SELECT id, password_hash FROM users WHERE username = ?");
+    exact.bind(1, username);
+    if (exact.executeStep()) {
+        if (exact.getColumn(1).isNull()) return std::nullopt;
+        id = exact.getColumn(0).getInt64();
+        return exact.getColumn(1).getString();
+    }
+    SQLite::Statement anyCase(mDb.sql(),
+                              "SELECT id, password_hash FROM users WHERE username = ? COLLATE NOCASE LIMIT 2");
+    anyCase.bind(1, username);
+    if (!anyCase.executeStep() || anyCase.getColumn(1).isNull()) return std::nullopt;
+    id = anyCase.getColumn(0).getInt64();
+    std::string hash = anyCase.getColumn(1).getString();
+    if (anyCase.executeStep()) return std::nullopt;   // two old accounts differ only in case
+    return hash;
 }
 
 std::optional<User> UserStore::authenticate(const std::string& username,
@@ -100,7 +122,7 @@ std::optional<User> UserStore::authenticate(const std::string& username,
 std::optional<User> UserStore::find(std::int64_t id)
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Statement q(mDb.sql(), "SELECT id, username, role FROM users WHERE id = ?");
+    SQLite::Statement q(mDb.sql(), "SELECT id, username, role, disabled FROM users WHERE id = ?");
     q.bind(1, id);
     if (!q.executeStep()) return std::nullopt;
     return readUser(q);
@@ -109,7 +131,7 @@ std::optional<User> UserStore::find(std::int64_t id)
 std::optional<User> UserStore::findByName(const std::string& username)
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Statement q(mDb.sql(), "SELECT id, username, role FROM users WHERE username = ?");
+    SQLite::Statement q(mDb.sql(), "SELECT id, username, role, disabled FROM users WHERE username = ?");
     q.bind(1, username);
     if (!q.executeStep()) return std::nullopt;
     return readUser(q);
@@ -118,7 +140,7 @@ std::optional<User> UserStore::findByName(const std::string& username)
 std::vector<User> UserStore::list()
 {
     std::lock_guard lock(mDb.mutex());
-    SQLite::Statement q(mDb.sql(), "SELECT id, username, role FROM users ORDER BY id");
+    SQLite::Statement q(mDb.sql(), "SELECT id, username, role, disabled FROM users ORDER BY id");
     std::vector<User> users;
     while (q.executeStep()) users.push_back(readUser(q));
     return users;
@@ -153,6 +175,54 @@ bool UserStore::changePassword(std::int64_t id, const std::string& oldPw,
     update.bind(2, id);
     if (update.exec() == 0) { error = kNoSuchUser; return false; }
     return true;
+}
+
+std::size_t UserStore::enabledAdminsOtherThan(std::int64_t id)
+{
+    SQLite::Statement q(mDb.sql(),
+                        "SELECT COUNT(*) FROM users WHERE role = 'admin' AND disabled = 0 AND id != ?");
+    q.bind(1, id);
+    q.executeStep();
+    return static_cast<std::size_t>(q.getColumn(0).getInt64());
+}
+
+std::optional<User> UserStore::update(std::int64_t id, const std::optional<std::string>& role,
+                                      std::optional<bool> disabled, std::string& error)
+{
+    if (role && !isValidRole(*role)) { error = kBadRole; return std::nullopt; }
+    std::lock_guard lock(mDb.mutex());
+    SQLite::Transaction transaction(mDb.sql());
+    SQLite::Statement q(mDb.sql(), "SELECT id, username, role, disabled FROM users WHERE id = ?");
+    q.bind(1, id);
+    if (!q.executeStep()) { error = kNoSuchUser; return std::nullopt; }
+    User user = readUser(q);
+    q.reset();
+    if (role) user.role = *role;
+    if (disabled) user.disabled = *disabled;
+    // Someone must be left who can administer the server.
+    if ((user.role != kRoleAdmin || user.disabled) && enabledAdminsOtherThan(id) == 0) {
+        SQLite::Statement wasAdmin(mDb.sql(), "SELECT 1 FROM users WHERE id = ? AND role = 'admin' AND disabled = 0");
+        wasAdmin.bind(1, id);
+        if (wasAdmin.executeStep()) { error = kLastAdmin; return std::nullopt; }
+    }
+    SQLite::Statement write(mDb.sql(), "UPDATE users SET role = ?, disabled = ? WHERE id = ?");
+    write.bind(1, user.role);
+    write.bind(2, user.disabled ? 1 : 0);
+    write.bind(3, id);
+    write.exec();
+    transaction.commit();
+    return user;
+}
+
+std::vector<std::string> UserStore::namesDifferingOnlyInCase()
+{
+    std::lock_guard lock(mDb.mutex());
+    SQLite::Statement q(mDb.sql(),
+                        "SELECT group_concat(username, ', ') FROM (SELECT username FROM users ORDER BY id)"
+                        " GROUP BY lower(username) HAVING COUNT(*) > 1");
+    std::vector<std::string> groups;
+    while (q.executeStep()) groups.push_back(q.getColumn(0).getString());
+    return groups;
 }
 
 } // namespace tlmhub::server

@@ -21,6 +21,7 @@ inline constexpr const char* kBadRole = "role must be admin, teacher or user";
 inline constexpr const char* kShortPassword = "password must be at least 8 characters";
 inline constexpr const char* kWrongPassword = "old password is wrong";
 inline constexpr const char* kNoSuchUser = "no such user";
+inline constexpr const char* kLastAdmin = "the last enabled administrator cannot be disabled or lose the role";
 
 inline constexpr std::size_t kMinPasswordLength = 8;
 
@@ -30,10 +31,13 @@ class UserStore {
 public:
     explicit UserStore(Database& db);
 
+    // Names are unique regardless of case ("ALICE" is taken when "alice" exists).
     std::optional<User> create(const std::string& username, const std::string& password,
                                const std::string& role, std::string& error);
-    // The user when the password matches; nullopt for unknown user or wrong password (both
-    // take the time of one hash, so timing does not reveal which names exist).
+    // The user when the password matches (also a disabled one: the caller refuses it, after
+    // the password proved who asks); nullopt for unknown user or wrong password (both take
+    // the time of one hash, so timing does not reveal which names exist). The name matches
+    // exactly, or else regardless of case when that finds one account.
     std::optional<User> authenticate(const std::string& username, const std::string& password);
     std::optional<User> find(std::int64_t id);
     std::optional<User> findByName(const std::string& username);
@@ -41,11 +45,19 @@ public:
     std::size_t count();
     bool changePassword(std::int64_t id, const std::string& oldPw, const std::string& newPw,
                         std::string& error);
+    // An administrator's change of role and/or enabled state; the updated user, or nullopt
+    // with `error` (kNoSuchUser, kBadRole, kLastAdmin).
+    std::optional<User> update(std::int64_t id, const std::optional<std::string>& role,
+                               std::optional<bool> disabled, std::string& error);
+    // Existing names that differ only in case (made before names were compared that way),
+    // one "alice, ALICE" line per group; they keep working, the server reports them at start.
+    std::vector<std::string> namesDifferingOnlyInCase();
 
     Database& database() { return mDb; }
 
 private:
     std::optional<std::string> passwordHash(const std::string& username, std::int64_t& id);
+    std::size_t enabledAdminsOtherThan(std::int64_t id);
 
     Database& mDb;
 };

@@ -8,6 +8,7 @@
 #include <poll.h>
 #include <sstream>
 #include <stdexcept>
+#include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <thread>
@@ -37,7 +38,8 @@ std::filesystem::path freshTempDir(const std::string& name)
     return dir;
 }
 
-ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs)
+ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs,
+                             std::vector<std::string> launcher)
 {
     std::filesystem::create_directories(dataDir);
     int fds[2];
@@ -47,6 +49,7 @@ ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<s
                                      std::string(TLMHUB_SOURCE_DIR) + "/examples", "--web-root",
                                      (dataDir / "no-web").string()};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    args.insert(args.begin(), launcher.begin(), launcher.end());
     mPid = ::fork();
     if (mPid == 0) {
         ::dup2(fds[1], STDOUT_FILENO);
@@ -56,7 +59,7 @@ ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<s
         std::vector<char*> argv;
         for (auto& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
-        ::execv(argv[0], argv.data());
+        ::execvp(argv[0], argv.data());
         ::_exit(127);
     }
     ::close(fds[1]);
@@ -160,13 +163,60 @@ void WsClient::sendText(const std::string& text)
 
 nlohmann::json WsClient::receive(int timeoutMs)
 {
-    timeval tv{timeoutMs / 1000, (timeoutMs % 1000) * 1000};
-    ::setsockopt(mWs.next_layer().native_handle(), SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    // Asynchronous with a deadline: a blocking read would wait for ever on a server that
+    // neither answers nor closes (a receive timeout on the socket does not stop Asio).
     beast::flat_buffer buffer;
-    beast::error_code ec;
-    mWs.read(buffer, ec);
-    if (ec) return nlohmann::json();
+    bool done = false;
+    mWs.async_read(buffer, [&](beast::error_code ec, std::size_t) {
+        mLastError = ec;
+        done = true;
+    });
+    mIoc.restart();
+    mIoc.run_for(std::chrono::milliseconds(timeoutMs));
+    if (!done) {
+        beast::error_code ignored;
+        mWs.next_layer().cancel(ignored);
+        mIoc.restart();
+        mIoc.run();
+        mLastError = net::error::timed_out;
+    }
+    if (mLastError) return nlohmann::json();
     return nlohmann::json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
+}
+
+bool WsClient::closedByServer() const
+{
+    return mLastError == beast::websocket::error::closed || mLastError == net::error::eof ||
+           mLastError == net::error::connection_reset;
+}
+
+std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs)
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(port);
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        ::close(fd);
+        throw std::runtime_error("cannot connect to the server");
+    }
+    for (std::size_t sent = 0; sent < bytes.size();) {
+        const ssize_t n = ::send(fd, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+        if (n <= 0) break;
+        sent += static_cast<std::size_t>(n);
+    }
+    std::string received;
+    char buf[65536];
+    for (;;) {
+        pollfd p{fd, POLLIN, 0};
+        if (::poll(&p, 1, timeoutMs) <= 0) break;
+        const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+        if (n <= 0) break;
+        received.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    return received;
 }
 
 nlohmann::json WsClient::call(const std::string& type, nlohmann::json fields)

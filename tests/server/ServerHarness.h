@@ -18,7 +18,10 @@ namespace tlmhub::test {
 class ServerProcess {
 public:
     // `dataDir` is created if missing and kept (so a test can restart on the same data).
-    ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs = {});
+    // `launcher`: a command the server runs under (looked up on PATH), e.g. one that mounts a
+    // small file system over the data directory first.
+    ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs = {},
+                  std::vector<std::string> launcher = {});
     ~ServerProcess();
     ServerProcess(const ServerProcess&) = delete;
     ServerProcess& operator=(const ServerProcess&) = delete;
@@ -65,8 +68,11 @@ class WsClient {
 public:
     WsClient(unsigned short port, const std::string& token);
     void sendText(const std::string& text);
-    // Next message, or a null json after `timeoutMs`.
+    // Next message, or a null json after `timeoutMs` (the connection is of no further use
+    // after a timeout) or when the connection ended.
     nlohmann::json receive(int timeoutMs = 10000);
+    // After receive() returned null: whether the server closed the connection (not a timeout).
+    bool closedByServer() const;
     // Sends {"id", "type", ...fields} and returns the reply or error with that id; events
     // that arrive in between are kept in `events`.
     nlohmann::json call(const std::string& type, nlohmann::json fields = nlohmann::json::object());
@@ -77,7 +83,12 @@ private:
     boost::asio::io_context mIoc;
     boost::beast::websocket::stream<boost::asio::ip::tcp::socket> mWs;
     int mNextId = 1;
+    boost::beast::error_code mLastError;
 };
+
+// Sends `bytes` as they are on a new connection and returns everything read until the server
+// closes or `timeoutMs` passes without data (for requests a client library would refuse).
+std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs = 3000);
 
 std::string readFile(const std::filesystem::path& path);
 std::filesystem::path freshTempDir(const std::string& name);

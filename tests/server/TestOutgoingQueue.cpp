@@ -58,3 +58,33 @@ TEST(OutgoingQueue, OnlyRepliesWaitingMeansTheNewFrameIsDroppedButRepliesStillQu
     EXPECT_EQ(q.dropped(), 1u);
     EXPECT_EQ(drain(q), (std::vector<std::string>{"reply1", "reply2", "reply3"}));
 }
+
+TEST(OutgoingQueue, PastTheByteLimitFramesGoFirstThenTheQueueOverflows)
+{
+    OutgoingQueue q(100, 10);
+    q.push("0123", false, false);
+    q.push("frame", true, false);
+    EXPECT_EQ(q.bytes(), 9u);
+    EXPECT_TRUE(q.push("ab", false, false));   // 11 bytes: the frame goes, 6 remain
+    EXPECT_EQ(q.dropped(), 1u);
+    EXPECT_EQ(q.bytes(), 6u);
+    EXPECT_FALSE(q.overflowing());
+    EXPECT_FALSE(q.push("big-frame", true, false));   // nothing older to drop: it goes itself
+    EXPECT_EQ(q.bytes(), 6u);
+    EXPECT_TRUE(q.push("reply-5", false, false));     // replies alone pass the limit
+    EXPECT_TRUE(q.overflowing());
+    q.clear();
+    EXPECT_EQ(q.bytes(), 0u);
+    EXPECT_FALSE(q.overflowing());
+}
+
+TEST(OutgoingQueue, BytesFollowPops)
+{
+    OutgoingQueue q(10, 1000);
+    q.push("abc", false, false);
+    q.push("de", true, false);
+    q.pop();
+    EXPECT_EQ(q.bytes(), 2u);
+    q.pop();
+    EXPECT_EQ(q.bytes(), 0u);
+}

@@ -116,6 +116,20 @@ TEST_F(ServerApi, OnlyAdministratorsCreateUsers)
     EXPECT_EQ(r.status, 403);
 }
 
+TEST_F(ServerApi, NewModelHasHopsansDefaultSettings)
+{
+    HttpClient alice = as("alice");
+    const auto created = alice.post("/api/v1/models", {{"name", "blank"}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const auto id = created.json()["id"].get<std::int64_t>();
+    const auto model = alice.get("/api/v1/models/" + std::to_string(id)).json();
+    const auto& simulation = model["model"]["system"]["simulation"];
+    EXPECT_EQ(simulation["start"], 0.0);
+    EXPECT_EQ(simulation["stop"], 10.0);
+    EXPECT_EQ(simulation["step"], 1e-3);
+    EXPECT_EQ(simulation["log_samples"], 2048);
+}
+
 TEST_F(ServerApi, UploadDownloadAndOwnership)
 {
     HttpClient alice = as("alice");
@@ -154,7 +168,7 @@ TEST_F(ServerApi, BadRequestsGetClearErrors)
     EXPECT_EQ(r.json()["error"]["code"], "invalid_model");
     r = alice.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 1e9}, {"step", 1e-6}});
     EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded") << r.body;
-    r = alice.request(http::verb::post, "/api/v1/models", std::string(9u << 20, 'x'), "application/xml");
+    r = alice.request(http::verb::post, "/api/v1/models", std::string(25u << 20, 'x'), "application/xml");
     EXPECT_EQ(r.status, 413);
     EXPECT_EQ(alice.get("/api/v1/nothing-here").status, 404);
 }

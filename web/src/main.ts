@@ -5,6 +5,7 @@ import { Session } from './app/Session';
 import { renderLogin } from './views/LoginView';
 import { renderModelList } from './views/ModelListView';
 import { renderEditor, type EditorPage } from './views/EditorView';
+import { renderAccounts } from './views/AccountsView';
 import { h } from './ui/dom';
 
 const session = new Session();
@@ -32,7 +33,7 @@ function renderTopbar(): void {
     topbar.replaceChildren(
         h('a', { href: '#/models', class: 'brand' }, 'tlmhub'),
         h('span', { class: 'spacer' }),
-        user ? h('span', { class: 'user', 'data-testid': 'user' }, `${user.username} (${user.role})`) : '',
+        user ? h('a', { href: '#/account', class: 'user', 'data-testid': 'user', title: 'Your account' }, `${user.username} (${user.role})`) : '',
         user ? h('button', {
             onclick: async () => {
                 if (editor?.dirty() && !confirm('Discard unsaved changes?')) return;
@@ -66,6 +67,8 @@ async function route(): Promise<void> {
     const model = /^#\/model\/(\d+)$/.exec(hash);
     if (hash === '#/login') {
         renderLogin(page, session, () => { location.hash = '#/models'; });
+    } else if (hash === '#/account') {
+        renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
     } else if (model) {
         editor = await renderEditor(page, session, Number(model[1]), navigate);
     } else {

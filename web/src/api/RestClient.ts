@@ -6,12 +6,18 @@ import type {
 
 export interface LoginResult { token: string; expires_at: number; user: User }
 
+/** An account as the administrator sees it. */
+export interface Account extends User { disabled: boolean }
+
 export class RestClient {
     constructor(
         private token: string | null = null,
         private readonly base = '/api/v1',
         private readonly fetchFn: typeof fetch = (...args) => fetch(...args),
     ) {}
+
+    /** Called when the server no longer accepts the token (expired, password changed, account disabled). */
+    onUnauthorized: () => void = () => undefined;
 
     setToken(token: string | null): void { this.token = token; }
     getToken(): string | null { return this.token; }
@@ -27,6 +33,7 @@ export class RestClient {
         }
         const response = await this.fetchFn(this.base + path, { method, headers, body: payload });
         const text = await response.text();
+        if (response.status === 401 && this.token && path !== '/auth/login') this.onUnauthorized();
         if (!response.ok) throw errorFromResponse(response.status, text);
         if (response.status === 204 || text === '') return undefined as T;
         if (accept === 'application/json') return JSON.parse(text) as T;
@@ -38,6 +45,17 @@ export class RestClient {
     }
     logout(): Promise<void> { return this.call('POST', '/auth/logout'); }
     me(): Promise<User> { return this.call('GET', '/auth/me'); }
+    changePassword(oldPassword: string, newPassword: string): Promise<void> {
+        return this.call('POST', '/auth/password', { old_password: oldPassword, new_password: newPassword });
+    }
+
+    listUsers(): Promise<Account[]> { return this.call('GET', '/users'); }
+    createUser(username: string, password: string, role: User['role']): Promise<Account> {
+        return this.call('POST', '/users', { username, password, role });
+    }
+    updateUser(id: number, change: { role?: User['role']; disabled?: boolean }): Promise<Account> {
+        return this.call('PATCH', `/users/${id}`, change);
+    }
 
     listModels(): Promise<ModelSummary[]> { return this.call('GET', '/models'); }
     getModel(id: number): Promise<ModelSummary & { model: Model; writable?: boolean }> { return this.call('GET', `/models/${id}`); }

@@ -8,6 +8,14 @@ export class Session {
     readonly rest = new RestClient(sessionStorage.getItem(TOKEN_KEY));
     user: User | null = null;
 
+    constructor() {
+        // a session the server ended leads back to the login page
+        this.rest.onUnauthorized = () => {
+            this.forget();
+            location.hash = '#/login';
+        };
+    }
+
     get token(): string | null { return this.rest.getToken(); }
 
     async login(username: string, password: string): Promise<User> {

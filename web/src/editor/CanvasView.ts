@@ -11,7 +11,7 @@ import { nodeColour } from '../model/nodeTypes';
 import { sameRef, uniqueName } from '../model/modelState';
 import { abbreviation } from './icons';
 import { s, h, errorText } from '../ui/dom';
-import type { Component, Port, PortRef, Pose, System } from '../protocol/types';
+import type { Component, Connection, Port, PortRef, Pose, System } from '../protocol/types';
 
 export interface CanvasCallbacks {
     /** A port was clicked (not dragged): offer its variables for plotting. */
@@ -64,7 +64,19 @@ export class CanvasView {
             void this.addComponent(type, this.sceneFromClient(e.clientX, e.clientY));
         });
         store.subscribe(() => this.render());
-        new ResizeObserver(() => { if (this.fittedPath === null) this.render(); }).observe(this.element);
+        this.resizeObserver.observe(this.element);
+    }
+
+    /** What the last full render drew, for the partial redraws while dragging. */
+    private readonly componentEls = new Map<string, SVGGElement>();
+    private connectionEls: { conn: Connection; el: SVGPolylineElement }[] = [];
+    private overlay: SVGGElement = s('g', { class: 'overlay' });
+
+    private readonly resizeObserver = new ResizeObserver(() => { if (this.fittedPath === null) this.render(); });
+
+    /** Stops watching the page (the editor was left). */
+    dispose(): void {
+        this.resizeObserver.disconnect();
     }
 
     private get pathKey(): string { return this.store.path.join('$'); }
@@ -171,33 +183,83 @@ export class CanvasView {
         if (this.fittedPath !== this.pathKey) this.fit();
 
         const connections = s('g', { class: 'connections' });
+        this.connectionEls = [];
         for (const conn of system.connections) {
-            const a = this.portPoint(system, conn.from);
-            const b = this.portPoint(system, conn.to);
-            if (!a || !b) continue;
-            const unmoved = [conn.from.component, conn.to.component].every((name) => {
-                const comp = system.components.find((c) => c.name === name);
-                const loaded = this.loadedPoses.get(this.key(name));
-                if (!comp) return true;   // system port
-                const pose = this.poseOf(comp);
-                return loaded !== undefined && loaded.x === pose.x && loaded.y === pose.y && loaded.angle === pose.angle && loaded.flipped === pose.flipped;
-            });
-            const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
-            const nodeType = this.portOf(system, conn.from)?.node_type ?? this.portOf(system, conn.to)?.node_type;
-            const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
-            connections.append(s('polyline', {
-                class: `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`,
-                points: pts.map((p) => `${p.x},${p.y}`).join(' '),
-                stroke: nodeColour(nodeType),
-                'data-from': `${conn.from.component}.${conn.from.port}`,
-                'data-to': `${conn.to.component}.${conn.to.port}`,
-            }));
+            const el = this.drawConnection(system, conn);
+            if (!el) continue;
+            connections.append(el);
+            this.connectionEls.push({ conn, el });
         }
 
         const components = s('g', { class: 'components' });
-        for (const comp of system.components) components.append(this.drawComponent(comp));
+        this.componentEls.clear();
+        for (const comp of system.components) {
+            const el = this.drawComponent(comp);
+            this.componentEls.set(comp.name, el);
+            components.append(el);
+        }
         for (const sp of system.ports) components.append(this.drawSystemPort(sp.name, sp.node_type, sp.pose));
 
+        this.overlay = this.drawOverlay(system);
+        this.world.replaceChildren(connections, components, this.overlay);
+        this.applyView();
+    }
+
+    /** Redraws only the overlay (drag line, marquee, error bubble). */
+    private renderOverlay(): void {
+        const fresh = this.drawOverlay(this.store.system);
+        this.overlay.replaceWith(fresh);
+        this.overlay = fresh;
+    }
+
+    private drawConnection(system: System, conn: Connection): SVGPolylineElement | null {
+        const a = this.portPoint(system, conn.from);
+        const b = this.portPoint(system, conn.to);
+        if (!a || !b) return null;
+        const unmoved = [conn.from.component, conn.to.component].every((name) => {
+            const comp = system.components.find((c) => c.name === name);
+            const loaded = this.loadedPoses.get(this.key(name));
+            if (!comp) return true;   // system port
+            const pose = this.poseOf(comp);
+            return loaded !== undefined && loaded.x === pose.x && loaded.y === pose.y && loaded.angle === pose.angle && loaded.flipped === pose.flipped;
+        });
+        const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
+        const nodeType = this.portOf(system, conn.from)?.node_type ?? this.portOf(system, conn.to)?.node_type;
+        const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
+        return s('polyline', {
+            class: `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`,
+            points: pts.map((p) => `${p.x},${p.y}`).join(' '),
+            stroke: nodeColour(nodeType),
+            'data-from': `${conn.from.component}.${conn.from.port}`,
+            'data-to': `${conn.to.component}.${conn.to.port}`,
+        });
+    }
+
+    /**
+     * While components are dragged: redraw only them and their connections (a full redraw of a
+     * big model per pointer move is too slow).
+     */
+    private renderMoved(names: string[]): void {
+        const system = this.store.system;
+        const moved = new Set(names);
+        for (const comp of system.components) {
+            if (!moved.has(comp.name)) continue;
+            const old = this.componentEls.get(comp.name);
+            if (!old) return this.render();
+            const fresh = this.drawComponent(comp);
+            old.replaceWith(fresh);
+            this.componentEls.set(comp.name, fresh);
+        }
+        for (const entry of this.connectionEls) {
+            if (!moved.has(entry.conn.from.component) && !moved.has(entry.conn.to.component)) continue;
+            const fresh = this.drawConnection(system, entry.conn);
+            if (!fresh) continue;
+            entry.el.replaceWith(fresh);
+            entry.el = fresh;
+        }
+    }
+
+    private drawOverlay(system: System): SVGGElement {
         const overlay = s('g', { class: 'overlay' });
         const drag = this.drag;
         if (drag?.kind === 'connect' && drag.moved) {
@@ -212,8 +274,7 @@ export class CanvasView {
             const at = this.portPoint(system, this.portError.ref);
             if (at) overlay.append(this.drawBubble(at, this.portError.message));
         }
-        this.world.replaceChildren(connections, components, overlay);
-        this.applyView();
+        return overlay;
     }
 
     private portOf(system: System, ref: PortRef): Port | undefined {
@@ -367,17 +428,17 @@ export class CanvasView {
         } else if (drag.kind === 'connect') {
             drag.current = scene;
             if (Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD) drag.moved = true;
-            this.render();
+            this.renderOverlay();
         } else if (drag.kind === 'move') {
             const dx = scene.x - drag.start.x;
             const dy = scene.y - drag.start.y;
             if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD) drag.moved = true;
             if (!drag.moved) return;
             for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + dx), y: Math.round(pose.y + dy) });
-            this.render();
+            this.renderMoved([...drag.origin.keys()]);
         } else {
             drag.current = scene;
-            this.render();
+            this.renderOverlay();
         }
     }
 

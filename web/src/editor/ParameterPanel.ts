@@ -4,6 +4,8 @@
 import { EditorStore } from './EditorStore';
 import { RenameComponent, SetParameter, SetSystemParameter } from './commands';
 import { errorText, h } from '../ui/dom';
+import { displayNameOf } from '../model/appearance';
+import { parameterLabel, shortName, splitParameters } from './parameterLabels';
 import type { Component, PortRef, System } from '../protocol/types';
 
 export interface PanelActions {
@@ -68,7 +70,7 @@ export class ParameterPanel {
         name.addEventListener('keydown', (e) => { if (e.key === 'Enter') commitName(); if (e.key === 'Escape') name.value = comp.name; });
         name.addEventListener('change', commitName);
 
-        const rows = comp.parameters.map((p) => {
+        const row = (p: Component['parameters'][number]) => {
             const key = `${comp.name}.${p.name}`;
             const refused = this.refused.get(key);
             const input = h('input', {
@@ -86,11 +88,15 @@ export class ParameterPanel {
             };
             input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
             input.addEventListener('change', commit);
-            return h('tr', { 'data-param': p.name, title: p.description },
-                h('th', {}, p.name),
+            const label = parameterLabel(p);
+            return h('tr', { 'data-param': p.name, title: `${shortName(p)}${p.description ? `: ${p.description}` : ''}` },
+                h('th', {}, h('span', { class: 'param-label' }, label),
+                    label !== shortName(p) ? h('span', { class: 'param-name' }, shortName(p)) : null),
                 h('td', {}, input, refused ? h('div', { class: 'field-error', role: 'alert' }, refused.message) : null),
                 h('td', { class: 'unit' }, p.unit));
-        });
+        };
+        const { parameters, startValues } = splitParameters(comp.parameters);
+        const table = (list: typeof parameters) => h('table', { class: 'param-table' }, h('tbody', {}, ...list.map(row)));
 
         const ports = comp.ports.map((p) => {
             const button: HTMLButtonElement = h('button', {
@@ -104,14 +110,15 @@ export class ParameterPanel {
             h('h2', {}, 'Component'),
             h('label', { class: 'stacked' }, 'Name', name),
             this.nameError ? h('div', { class: 'field-error', role: 'alert' }, this.nameError) : h('span'),
-            h('p', { class: 'muted' }, `${comp.type} · ${comp.kind === 'system' ? 'subsystem' : `${comp.kind}-type`}`),
+            h('p', { class: 'muted' }, `${displayNameOf(comp.type)} · ${comp.type} · ${comp.kind === 'system' ? 'subsystem' : `${comp.kind}-type`}`),
             h('div', { class: 'button-row' },
                 h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)' }, 'Rotate'),
                 h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)' }, 'Flip'),
                 comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
                 h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)' }, 'Delete')),
             h('h3', {}, 'Parameters'),
-            rows.length ? h('table', { class: 'param-table' }, h('tbody', {}, ...rows)) : h('p', { class: 'muted' }, 'No parameters.'),
+            parameters.length ? table(parameters) : h('p', { class: 'muted' }, 'No parameters.'),
+            ...(startValues.length ? [h('h3', {}, 'Start values'), h('div', { class: 'start-values', 'data-testid': 'start-values' }, table(startValues))] : []),
             h('h3', {}, 'Ports'),
             h('ul', { class: 'port-list' }, ...ports),
         ];

@@ -40,6 +40,8 @@ describe('portVariables', () => {
     it('a multiport shows the port at the other end of its connection', () => {
         const v = portVariables(model(), [], { component: 'Volume', port: 'P1' });
         expect(v.ok && v.base).toBe('Valve#PP');
+        // but the curve is named after the port that was clicked
+        expect(v.ok && v.label).toBe('Volume.P1');
     });
 
     it('an unconnected input is not logged', () => {

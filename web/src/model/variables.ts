@@ -6,7 +6,8 @@ import type { Model, PortRef, System } from '../protocol/types';
 import { systemAt } from './modelState';
 
 export type PortVariables =
-    | { ok: true; base: string; nodeType: string; variables: NodeVariable[] }
+    /** `base` names the logged data; `label` the port that was asked about (the data may be logged under the port at the other end). */
+    | { ok: true; base: string; label: string; nodeType: string; variables: NodeVariable[] }
     | { ok: false; reason: string };
 
 function prefixOf(path: SystemPath): string {
@@ -22,7 +23,8 @@ export function portVariables(model: Model, path: SystemPath, ref: PortRef): Por
     if (systemPort) {
         if (path.length === 0) return { ok: false, reason: 'ports of the root system are not logged' };
         const outer = path.slice(0, -1);
-        return portVariables(model, outer, { component: path[path.length - 1], port: ref.port });
+        const logged = portVariables(model, outer, { component: path[path.length - 1], port: ref.port });
+        return logged.ok ? { ...logged, label: portLabel(path, ref) } : logged;
     }
     const component = system.components.find((c) => c.name === ref.component);
     const port = component?.ports.find((p) => p.name === ref.port);
@@ -31,13 +33,18 @@ export function portVariables(model: Model, path: SystemPath, ref: PortRef): Por
     if (port.multiport) {
         const other = otherEnd(system, ref);
         if (!other) return { ok: false, reason: `${ref.component}.${ref.port} is an unconnected multiport` };
-        return portVariables(model, path, other);
+        const logged = portVariables(model, path, other);
+        return logged.ok ? { ...logged, label: portLabel(path, ref) } : logged;
     }
     if (port.kind === 'read' && !port.connected) {
         return { ok: false, reason: `${ref.component}.${ref.port} is an unconnected input (not logged)` };
     }
     if (variables.length === 0) return { ok: false, reason: `no variables for ${port.node_type}` };
-    return { ok: true, base: `${prefixOf(path)}${component.name}#${port.name}`, nodeType: port.node_type, variables };
+    return { ok: true, base: `${prefixOf(path)}${component.name}#${port.name}`, label: portLabel(path, ref), nodeType: port.node_type, variables };
+}
+
+function portLabel(path: SystemPath, ref: PortRef): string {
+    return `${prefixOf(path)}${ref.component}.${ref.port}`;
 }
 
 // The first non-multiport port connected to `ref`.

@@ -21,6 +21,7 @@ export type ErrorCode =
     | 'schema_violation'
     | 'unauthorized'
     | 'forbidden'
+    | 'account_disabled'
     | 'not_found'
     | 'conflict'
     | 'payload_too_large'
@@ -33,6 +34,7 @@ export type ErrorCode =
     | 'limit_exceeded'
     | 'not_open'
     | 'simulation_failed'
+    | 'storage_full'
     | 'internal';
 export type Role = 'admin' | 'teacher' | 'user';
 /**
@@ -121,6 +123,10 @@ export interface ProtocolDefinitions {
     LoginResponse?: LoginResponse;
     PasswordChange?: PasswordChange;
     UserCreate?: UserCreate;
+    UserUpdate?: UserUpdate;
+    DownloadLinkRequest?: DownloadLinkRequest;
+    DownloadLink?: DownloadLink;
+    ServerStats?: ServerStats;
     ModelName?: ModelName;
     ModelCreate?: ModelCreate;
     ModelUpdate?: ModelUpdate;
@@ -189,6 +195,10 @@ export interface User {
     id: number;
     username: string;
     role: Role;
+    /**
+     * Set by an administrator: the account cannot log in and its sessions have ended.
+     */
+    disabled?: boolean;
 }
 export interface UserRef {
     id: number;
@@ -352,6 +362,34 @@ export interface UserCreate {
     username: string;
     password: string;
     role: Role;
+}
+/**
+ * JSON body of PATCH /users/{id} (administrators): a new role and/or disable or re-enable the account. Disabling ends the account's sessions and WebSockets; a role change closes its WebSockets (they reconnect with the new role).
+ */
+export interface UserUpdate {
+    role?: Role;
+    disabled?: boolean;
+}
+/**
+ * JSON body of POST /auth/download-link: the API GET target a browser should download without an Authorization header.
+ */
+export interface DownloadLinkRequest {
+    target: string;
+}
+/**
+ * A signed link for one GET target and the caller, valid until expires_at (unix seconds, about a minute).
+ */
+export interface DownloadLink {
+    url: string;
+    expires_at: number;
+}
+/**
+ * GET /stats (administrators): transport gauges.
+ */
+export interface ServerStats {
+    websockets: number;
+    websocket_queued_bytes: number;
+    websockets_closed_for_backlog: number;
 }
 export interface ModelCreateFromHmf {
     name: ModelName;

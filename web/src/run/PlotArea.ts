@@ -1,11 +1,15 @@
 // The plot windows under the editor. Clicked variables go to the active window.
 import { PlotWindow } from './PlotWindow';
+import { unitOfVariable } from './units';
+import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
+import { XyWindow } from './XyWindow';
 import type { RunController } from './RunController';
 import { h, toast, errorText } from '../ui/dom';
 
 export class PlotArea {
     readonly element: HTMLElement;
     readonly windows: PlotWindow[] = [];
+    readonly analyses: (AnalysisWindow | XyWindow)[] = [];
     private active: PlotWindow | null = null;
     private nextId = 1;
     private readonly list: HTMLElement;
@@ -28,15 +32,46 @@ export class PlotArea {
         });
     }
 
+    /** Closes every window (the editor was left): their resize observers stop. */
+    dispose(): void {
+        for (const w of [...this.windows]) this.close(w);
+        for (const a of this.analyses.splice(0)) a.destroy();
+    }
+
     addWindow(): PlotWindow {
         const w = new PlotWindow(this.nextId++, {
             close: (x) => this.close(x),
             activate: (x) => this.activate(x),
             changed: (x) => this.refresh(x),
+            analyse: (x, kind) => (kind === 'xy' ? this.openXy(x.variables, (v) => x.labelOf(v)) : this.openAnalysis(kind, x.variables, (v) => x.labelOf(v))),
         });
         this.windows.push(w);
         this.list.append(w.element);
         this.activate(w);
+        return w;
+    }
+
+    /** A spectrum or Bode window of variables of a plot window (the first one or two chosen). */
+    openAnalysis(kind: AnalysisKind, variables: string[], labelOf: (name: string) => string): AnalysisWindow {
+        const w = new AnalysisWindow(this.nextId++, kind, variables, labelOf, (x) => {
+            this.analyses.splice(this.analyses.indexOf(x), 1);
+            x.destroy();
+        });
+        this.analyses.push(w);
+        this.list.append(w.element);
+        w.update(this.runs.current);
+        return w;
+    }
+
+    /** An XY plot of two variables of a plot window. */
+    openXy(variables: string[], labelOf: (name: string) => string): XyWindow {
+        const w = new XyWindow(this.nextId++, variables, labelOf, (x) => {
+            this.analyses.splice(this.analyses.indexOf(x), 1);
+            x.destroy();
+        });
+        this.analyses.push(w);
+        this.list.append(w.element);
+        w.update(this.runs.current);
         return w;
     }
 
@@ -53,10 +88,10 @@ export class PlotArea {
         if (this.active) this.activate(this.active);
     }
 
-    /** Adds a variable to the active plot window (a new one if there is none). */
-    addVariable(name: string): void {
-        const w = this.active ?? this.addWindow();
-        w.add(name);
+    /** Adds a variable to the active plot window (a new one if there is none, or if it has three units already). */
+    addVariable(name: string, label?: string, unit = unitOfVariable(name)): void {
+        const w = this.active && this.active.hasRoomFor(unit) ? this.active : this.addWindow();
+        w.add(name, label, unit);
         this.refresh(w);
     }
 
@@ -79,6 +114,7 @@ export class PlotArea {
         requestAnimationFrame(() => {
             this.scheduled = false;
             for (const w of this.windows) w.update(this.runs.current, this.runs.previous);
+            for (const a of this.analyses) a.update(this.runs.current);
         });
     }
 }

@@ -3,27 +3,42 @@
 import uPlot from 'uplot';
 import { alignSeries, toCsv, type RunData, type SeriesSource } from './RunData';
 import { variableLabel } from '../model/variables';
-import { downloadBlob, downloadText, h } from '../ui/dom';
+import { downloadText, h } from '../ui/dom';
+import { PlotSurface } from './PlotSurface';
+import type { AnalysisKind } from './AnalysisWindow';
+import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
 
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
 
-interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string }
+interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string }
+
+/** One y axis: the series of one unit, with the SI prefix its values need. */
+interface Axis { unit: string; scale: string; prefixed: Prefixed }
+
+const largestAbs = (values: number[]) => values.reduce((m, v) => (Number.isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0);
 
 export class PlotWindow {
     readonly element: HTMLElement;
     readonly variables: string[] = [];
+    /** What the user clicked to get each variable, to name its curve. */
+    private readonly labels = new Map<string, string>();
+    private readonly units = new Map<string, string>();
     compare = false;
     private readonly body: HTMLElement;
+    private readonly surface = new PlotSurface();
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
-    private plot: uPlot | null = null;
+    private get plot(): uPlot | null { return this.surface.plot; }
     private seriesKey = '';
     private plotted: Plotted[] = [];
     /** x range to show while a run is filling the plot. */
     private span: [number, number] | null = null;
 
-    constructor(readonly id: number, private readonly actions: { close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void }) {
-        this.body = h('div', { class: 'plot-body' }, h('p', { class: 'muted plot-empty' }, 'Click a port to plot its variables here.'));
+    constructor(readonly id: number, private readonly actions: {
+        close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
+        analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void;
+    }) {
+        this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
         this.chips = h('div', { class: 'plot-chips' });
         this.compareBox = h('input', {
             type: 'checkbox', name: 'compare',
@@ -33,31 +48,50 @@ export class PlotWindow {
             h('header', { class: 'plot-header' },
                 h('strong', {}, `Plot ${id}`), this.chips,
                 h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
+                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
                 h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
                 h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                 h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
             this.body);
-        new ResizeObserver(() => this.resize()).observe(this.body);
+    }
+
+    private emptyNote(text: string): HTMLElement {
+        return h('p', { class: 'muted plot-empty' }, text);
     }
 
     setActive(active: boolean): void { this.element.classList.toggle('active', active); }
 
-    add(name: string): void {
+    add(name: string, label?: string, unit?: string): void {
         if (this.variables.includes(name)) return;
         this.variables.push(name);
+        if (label) this.labels.set(name, label);
+        this.units.set(name, unit ?? unitOfVariable(name));
         this.drawChips();
     }
 
     remove(name: string): void {
         const i = this.variables.indexOf(name);
         if (i >= 0) this.variables.splice(i, 1);
+        this.labels.delete(name);
         this.drawChips();
         this.actions.changed(this);
     }
 
     private drawChips(): void {
         this.chips.replaceChildren(...this.variables.map((v) => h('span', { class: 'chip', 'data-variable': v },
-            variableLabel(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
+            this.labelOf(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
+    }
+
+    labelOf(name: string): string { return this.labels.get(name) ?? variableLabel(name); }
+
+    unitOf(name: string): string { return this.units.get(name) ?? unitOfVariable(name); }
+
+    /** Whether a variable of this unit fits: one y axis per unit, at most three. */
+    hasRoomFor(unit: string): boolean {
+        const units = axisUnits(this.variables.map((v) => this.unitOf(v)));
+        return units.includes(unit) || units.length < MAX_AXES;
     }
 
     /** Redraws with the runs' current data. */
@@ -66,10 +100,10 @@ export class PlotWindow {
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
             const col = current?.columns.get(name);
-            if (current && col) plotted.push({ name, label: variableLabel(name), source: { time: current.time, data: col }, previous: false, colour });
+            if (current && col) plotted.push({ name, label: this.labelOf(name), source: { time: current.time, data: col }, previous: false, colour, unit: this.unitOf(name) });
             const old = previous?.columns.get(name);
             if (this.compare && previous && old) {
-                plotted.push({ name, label: `${variableLabel(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour });
+                plotted.push({ name, label: `${this.labelOf(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour, unit: this.unitOf(name) });
             }
         });
         this.plotted = plotted;
@@ -77,21 +111,22 @@ export class PlotWindow {
         this.element.dataset.job = current ? String(current.jobId) : '';
         this.element.dataset.state = current?.state ?? '';
         if (plotted.length === 0) {
-            this.plot?.destroy();
-            this.plot = null;
+            this.surface.clear();
             this.seriesKey = '';
             this.element.dataset.points = '0';
-            this.body.replaceChildren(h('p', { class: 'muted plot-empty' }, this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
+            this.body.replaceChildren(this.emptyNote(this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
             return;
         }
         const data = alignSeries(plotted.map((p) => p.source));
         this.element.dataset.points = String(data[0].length);
-        const key = plotted.map((p) => p.label).join('|');
+        const axes = this.axes(plotted);
+        // a new prefix (the values grew from kPa to MPa) needs new axes
+        this.element.dataset.axes = axes.map((a) => a.prefixed.unit).join(',');
+        const key = [...plotted.map((p) => p.label), ...axes.map((a) => a.prefixed.unit)].join('|');
         if (!this.plot || key !== this.seriesKey) {
-            this.plot?.destroy();
             this.seriesKey = key;
-            this.body.replaceChildren();
-            this.plot = new uPlot(this.options(plotted), data as uPlot.AlignedData, this.body);
+            if (this.surface.element.parentNode !== this.body) this.body.replaceChildren(this.surface.element);
+            this.surface.draw(this.options(plotted, axes), data as uPlot.AlignedData);
         } else {
             this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
         }
@@ -108,24 +143,29 @@ export class PlotWindow {
         return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
     }
 
-    private options(plotted: Plotted[]): uPlot.Options {
-        return {
-            width: Math.max(200, this.body.clientWidth),
-            height: Math.max(160, this.body.clientHeight - 40),
-            scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
-            cursor: { drag: { x: true, y: false } },
-            legend: { live: true },
-            axes: [{ label: 'time [s]', size: 36 }, { size: 60 }],
-            series: [
-                { label: 'time [s]' },
-                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true })),
-            ],
-        };
+    private axes(plotted: Plotted[]): Axis[] {
+        return axisUnits(plotted.map((p) => p.unit)).map((unit, i) => ({
+            unit, scale: `y${i}`,
+            prefixed: siPrefix(Math.max(...plotted.filter((p) => p.unit === unit).map((p) => largestAbs(p.source.data))), unit),
+        }));
     }
 
-    private resize(): void {
-        if (!this.plot) return;
-        this.plot.setSize({ width: Math.max(200, this.body.clientWidth), height: Math.max(160, this.body.clientHeight - 40) });
+    private options(plotted: Plotted[], axes: Axis[]): Omit<uPlot.Options, 'width' | 'height'> {
+        return {
+            scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
+            // the cursor moves in every plot window at once (same time axis)
+            cursor: { drag: { x: true, y: false }, sync: { key: 'run-time' } },
+            legend: { live: true },
+            axes: [{ label: 'time [s]', size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
+                scale: a.scale, label: a.prefixed.unit ? `[${a.prefixed.unit}]` : undefined, size: 64,
+                side: i === 1 ? 1 : 3, grid: { show: i === 0 },
+                values: (_u, splits) => splits.map((v) => formatTick(v / a.prefixed.factor)),
+            }))],
+            series: [
+                { label: 'time [s]' },
+                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true, scale: axes.find((a) => a.unit === p.unit)?.scale })),
+            ],
+        };
     }
 
     /** Values of a variable of the current run as plotted (tests read the last one). */
@@ -141,28 +181,15 @@ export class PlotWindow {
     }
 
     private exportPng(): void {
-        const u = this.plot;
-        if (!u) return;
-        const source = u.ctx.canvas;
-        const dpr = devicePixelRatio || 1;
-        const legend = 22 * dpr * this.plotted.length;
-        const out = document.createElement('canvas');
-        out.width = source.width;
-        out.height = source.height + legend + 10 * dpr;
-        const ctx = out.getContext('2d')!;
-        ctx.fillStyle = '#fff';
-        ctx.fillRect(0, 0, out.width, out.height);
-        ctx.drawImage(source, 0, 0);
-        ctx.font = `${12 * dpr}px sans-serif`;
-        this.plotted.forEach((p, i) => {
-            ctx.fillStyle = p.colour;
-            ctx.fillText(`${p.previous ? '- - ' : '—— '}${p.label}`, 10 * dpr, source.height + (18 + i * 22) * dpr);
-        });
-        out.toBlob((blob) => { if (blob) downloadBlob(`plot-${this.id}.png`, blob); });
+        this.surface.exportPng(`plot-${this.id}.png`, this.plotted.map((p) => ({ label: p.label, colour: p.colour, dashed: p.previous })));
     }
 
     destroy(): void {
-        this.plot?.destroy();
+        this.surface.destroy();
         this.element.remove();
     }
+}
+
+function formatTick(v: number): string {
+    return Math.abs(v) < 1e-12 ? '0' : String(Number(v.toPrecision(4)));
 }

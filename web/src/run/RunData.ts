@@ -83,9 +83,9 @@ function padTo(data: number[], n: number): (number | null)[] {
 }
 
 /** CSV of aligned series, like the server's: header then "%.17g"-like rows (JS shortest form). */
-export function toCsv(names: string[], aligned: [number[], ...(number | null)[][]]): string {
+export function toCsv(names: string[], aligned: [number[], ...(number | null)[][]], xName = 'time'): string {
     const [xs, ...cols] = aligned;
-    const lines = [['time', ...names].join(',')];
+    const lines = [[xName, ...names].join(',')];
     for (let i = 0; i < xs.length; ++i) {
         lines.push([xs[i], ...cols.map((c) => (c[i] === null || c[i] === undefined ? '' : String(c[i])))].join(','));
     }

@@ -65,6 +65,8 @@ export function toast(message: string, kind: 'info' | 'error' = 'info'): void {
         box = h('div', { id: 'toasts' });
         document.body.append(box);
     }
+    // the same message twice at once says nothing new
+    if ([...box.children].some((c) => c.textContent === message)) return;
     const item = h('div', { class: `toast toast-${kind}`, role: kind === 'error' ? 'alert' : 'status' }, message);
     box.append(item);
     setTimeout(() => item.remove(), kind === 'error' ? 8000 : 4000);

@@ -53,7 +53,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
     const plots = new PlotArea(runs);
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
-        (changed) => void store.execute(new SetSimulationSettings(changed)).catch((e) => toast(errorText(e), 'error')));
+        (changed) => store.execute(new SetSimulationSettings(changed)));
     store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
 
     const reportError = (e: unknown) => toast(errorText(e), 'error');
@@ -68,13 +68,14 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         picker.replaceChildren(h('div', { class: 'picker-title' }, `Plot ${ref.component}.${ref.port}`),
             ...ordered.map((v) => h('button', {
                 role: 'menuitem', 'data-variable': `${vars.base}#${v.name}`,
-                onclick: () => { plots.addVariable(`${vars.base}#${v.name}`); picker.hidden = true; },
+                onclick: () => { plots.addVariable(`${vars.base}#${v.name}`, `${vars.label} ${v.name}`, v.unit); picker.hidden = true; },
             }, `${v.name}${v.unit ? ` [${v.unit}]` : ''}`)));
         picker.style.left = `${Math.min(at.x + 8, innerWidth - 220)}px`;
         picker.style.top = `${Math.min(at.y + 8, innerHeight - 240)}px`;
         picker.hidden = false;
     };
-    document.addEventListener('pointerdown', (e) => { if (!picker.contains(e.target as Node)) picker.hidden = true; }, true);
+    const closePicker = (e: PointerEvent) => { if (!picker.contains(e.target as Node)) picker.hidden = true; };
+    document.addEventListener('pointerdown', closePicker, true);
 
     const canvas = new CanvasView(store, {
         onPortClick: showVariables,
@@ -246,16 +247,26 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         e.returnValue = '';
     };
     window.addEventListener('beforeunload', onBeforeUnload);
-    ws.onClose(() => toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error'));
+    ws.onClose(() => {
+        toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error');
+        // the server closes the sockets of a session it ended: then /auth/me answers 401 and the
+        // session goes back to the login page
+        void session.rest.me().catch(() => undefined);
+    });
 
-    // test and debugging handle
-    (window as unknown as { __tlmhub: unknown }).__tlmhub = { store, canvas, runs, plots, ws };
+    // the browser tests' handle, only in their build (vite build --mode e2e)
+    const testHandle = window as unknown as { __tlmhub?: unknown };
+    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws };
 
     return {
         dirty: () => store.dirty,
         dispose: () => {
             document.removeEventListener('keydown', onKey);
+            document.removeEventListener('pointerdown', closePicker, true);
             window.removeEventListener('beforeunload', onBeforeUnload);
+            delete testHandle.__tlmhub;
+            canvas.dispose();
+            plots.dispose();
             runs.dispose();
             ws.close();
         },

@@ -1,0 +1,61 @@
+#include "server/jobs/ModelLimits.h"
+
+#include "core/ParameterEvaluator.h"
+
+namespace tlmhub::server {
+
+LoadedModel loadUntrustedModel(const std::string& hmf, const ModelLimits& limits,
+                               const std::string& modelDirectory, const std::string& sourceName)
+{
+    if (hmf.size() > limits.maxBytes) {
+        LoadedModel refused;
+        refused.messages.push_back({MessageType::Error,
+                                    sourceName + ": the model is " + std::to_string(hmf.size()) +
+                                        " bytes; the limit here is " + std::to_string(limits.maxBytes) +
+                                        " (--max-model-bytes)",
+                                    {}});
+        return refused;
+    }
+    LoadLimits load;
+    load.maxComponents = limits.maxComponents;
+    load.maxSubsystemDepth = limits.maxDepth;
+    LoadedModel loaded = loadHmfString(hmf, modelDirectory, sourceName, load);
+    // Say which server flag raises the limit the model ran into.
+    for (Message& m : loaded.messages) {
+        if (m.text.find("components and subsystems, the limit here") != std::string::npos)
+            m.text += " (--max-model-components)";
+        else if (m.text.find("levels deep; the limit is") != std::string::npos)
+            m.text += " (--max-model-depth)";
+    }
+    return loaded;
+}
+
+namespace {
+
+std::string problemIn(System& system, const std::string& prefix)
+{
+    std::string why;
+    for (const auto& param : system.parameters().all())
+        if (!ParameterEvaluator::evaluate(system, *param, why))
+            return "system parameter '" + prefix + param->name + "': " + why;
+    for (Component* c : system.componentsInOrder()) {
+        if (c->isSystem()) {
+            const std::string inner = problemIn(*static_cast<System*>(c), prefix + c->name() + "$");
+            if (!inner.empty()) return inner;
+            continue;
+        }
+        for (const auto& param : c->parameters().all())
+            if (!ParameterEvaluator::evaluate(*c, *param, why))
+                return "parameter '" + prefix + c->name() + "." + param->name + "': " + why;
+    }
+    return {};
+}
+
+} // namespace
+
+std::string firstParameterProblem(System& root)
+{
+    return problemIn(root, "");
+}
+
+} // namespace tlmhub::server

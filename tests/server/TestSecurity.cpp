@@ -1,0 +1,635 @@
+// The server probed as an attacker would, on loopback with bounded loops: each test is a
+// hole found by probing (issue 12, D1-D11) or a defence that held and must keep holding.
+#include "ServerHarness.h"
+
+#include <gtest/gtest.h>
+
+#include <SQLiteCpp/Database.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace tlmhub::test;
+namespace http = boost::beast::http;
+namespace fs = std::filesystem;
+namespace net = boost::asio;
+namespace websocket = boost::beast::websocket;
+
+namespace {
+
+const fs::path kShared = fs::path(TLMHUB_SOURCE_DIR) / ".." / "shared";
+const fs::path kPositionServo = kShared / "hopsan-models" / "Example Models" / "Position Servo.hmf";
+constexpr const char* kSentinel = "SENTINEL-7f3a9c-outside-the-web-root";
+
+void writeFile(const fs::path& path, const std::string& text)
+{
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// A root system holding `levels` subsystems, each inside the one before.
+std::string nestedSubsystems(std::size_t levels)
+{
+    std::string open, close;
+    for (std::size_t i = 0; i < levels; ++i) {
+        open += "<system typename=\"Subsystem\" name=\"S" + std::to_string(i) + "\"><objects>";
+        close += "</objects></system>";
+    }
+    return "<hopsanmodelfile><system name=\"root\"><objects>" + open + close +
+           "</objects></system></hopsanmodelfile>";
+}
+
+std::string gains(std::size_t count, const std::string& gainValue = "2")
+{
+    std::string objects;
+    for (std::size_t i = 0; i < count; ++i)
+        objects += "<component typename=\"SignalGain\" name=\"G" + std::to_string(i) +
+                   "\"><parameters><parameter name=\"k#Value\" value=\"" + gainValue +
+                   "\"/></parameters></component>";
+    return "<hopsanmodelfile><system name=\"root\"><objects>" + objects +
+           "</objects></system></hopsanmodelfile>";
+}
+
+HttpReply uploadXml(HttpClient& c, const std::string& hmf, const std::string& name = "m")
+{
+    return c.request(http::verb::post, "/api/v1/models?name=" + name, hmf, "application/xml");
+}
+
+std::int64_t exampleId(HttpClient& c, const std::string& name)
+{
+    for (const auto& m : c.get("/api/v1/models").json())
+        if (m["name"] == name) return m["id"];
+    ADD_FAILURE() << "no example " << name;
+    return 0;
+}
+
+bool healthy(unsigned short port)
+{
+    HttpClient anonymous(port);
+    return anonymous.get("/api/v1/health").status == 200;
+}
+
+// One server for the tests that do not need their own flags: a web root with an app file,
+// a sentinel file beside it (outside the root), users alice and bob.
+class Security : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        dataDir = new fs::path(freshTempDir("security"));
+        fs::create_directories(*dataDir / "web" / "assets");
+        writeFile(*dataDir / "web" / "index.html", "<!doctype html><title>INDEX-PAGE</title>");
+        writeFile(*dataDir / "web" / "assets" / "app.js", "console.log('APP-JS')");
+        writeFile(*dataDir / kSentinelFile, kSentinel);
+        fs::create_symlink(*dataDir / kSentinelFile, *dataDir / "web" / "link.txt");
+        server = new ServerProcess(*dataDir, {"--web-root", (*dataDir / "web").string(),
+                                              "--examples-dir", (kShared / "hopsan-models" / "Example Models").string()});
+        HttpClient admin(server->port());
+        admin.login("admin", kAdminPassword);
+        for (const char* name : {"alice", "bob"})
+            ASSERT_EQ(admin.post("/api/v1/users", {{"username", name}, {"password", std::string(name) + "-password"},
+                                                   {"role", "user"}}).status, 201);
+    }
+    static void TearDownTestSuite()
+    {
+        delete server;
+        fs::remove_all(*dataDir);
+        delete dataDir;
+    }
+    HttpClient as(const std::string& user)
+    {
+        HttpClient c(server->port());
+        c.login(user, user == "admin" ? kAdminPassword : user + "-password");
+        return c;
+    }
+    std::int64_t userId(const std::string& name)
+    {
+        for (const auto& u : as("admin").get("/api/v1/users").json())
+            if (u["username"] == name) return u["id"];
+        return 0;
+    }
+    static constexpr const char* kSentinelFile = "secret.txt";
+    static fs::path* dataDir;
+    static ServerProcess* server;
+};
+fs::path* Security::dataDir = nullptr;
+ServerProcess* Security::server = nullptr;
+
+} // namespace
+
+// D1: a decoded %2f made the joined path absolute; every file on the host was readable.
+TEST_F(Security, StaticFilesNeverLeaveTheWebRoot)
+{
+    const std::vector<std::string> spellings = {
+        "/%2fetc%2fpasswd",
+        "/%2Fetc%2Fpasswd",
+        "/%2fproc%2fself%2fenviron",
+        "/..%2fsecret.txt",
+        "/..%2Fsecret.txt",
+        "/%2e%2e/secret.txt",
+        "/%2e%2e%2fsecret.txt",
+        "/%2E%2E%2Fsecret.txt",
+        "/.%2e/secret.txt",
+        "/%2e./secret.txt",
+        "/../secret.txt",
+        "/assets/../../secret.txt",
+        "/assets/%2e%2e/%2e%2e/secret.txt",
+        "/..%5csecret.txt",
+        "/%5c..%5csecret.txt",
+        "/..\\secret.txt",
+        "/%252e%252e/secret.txt",
+        "/%2e%2e%2f%2e%2e%2f%2e%2e%2f%2e%2e%2fetc%2fpasswd",
+        "/..%2f..%2f..%2f..%2f..%2f..%2fetc%2fpasswd",
+        "/%00/../secret.txt",
+        "/secret.txt%00.html",
+        "/..;/secret.txt",
+        "/%c0%ae%c0%ae/secret.txt",
+        "/..%2ftlmhub.sqlite",
+        "/%2e%2e%2ftlmhub.sqlite",
+        "/link.txt",
+        "/assets/..%2f..%2fsecret.txt",
+        "//..//secret.txt",
+    };
+    ASSERT_GE(spellings.size(), 20u);
+    const std::string passwd = readFile("/etc/passwd").substr(0, 20);
+    for (const std::string& path : spellings) {
+        const std::string raw = rawExchange(server->port(), "GET " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+        EXPECT_NE(raw.rfind("HTTP/1.1 ", 0), std::string::npos) << path << ": no HTTP answer";
+        EXPECT_EQ(raw.find(kSentinel), std::string::npos) << path << " served the file outside the web root";
+        EXPECT_EQ(raw.find("SQLite format"), std::string::npos) << path << " served the database";
+        EXPECT_EQ(raw.find(kAdminPassword), std::string::npos) << path << " served the environment";
+        EXPECT_EQ(raw.find(passwd), std::string::npos) << path << " served /etc/passwd";
+    }
+    // The web root still works: its files, and the app's page for any other path.
+    EXPECT_NE(rawExchange(server->port(), "GET /assets/app.js HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+                  .find("APP-JS"), std::string::npos);
+    EXPECT_NE(rawExchange(server->port(), "GET /models/42 HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+                  .find("INDEX-PAGE"), std::string::npos);
+}
+
+// D2: an id nested 100000 levels deep crashed the server while the error echoed it.
+TEST_F(Security, DeeplyNestedJsonIsRefusedAndIdsAreEchoedOnlyWhenValid)
+{
+    HttpClient alice = as("alice");
+    WsClient ws(server->port(), alice.login("alice", "alice-password"));
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    ws.sendText("{\"id\": " + deep + ", \"type\": \"ping\"}");
+    const auto error = ws.receive();
+    ASSERT_TRUE(error.is_object()) << "no answer: the server closed or crashed";
+    EXPECT_EQ(error["type"], "error");
+    EXPECT_EQ(error["error"]["code"], "bad_json");
+    EXPECT_NE(error["error"]["message"].get<std::string>().find("nested more than 64 levels"), std::string::npos);
+    EXPECT_TRUE(error["id"].is_null());
+    // An id the schema does not allow (a string over 128 characters) is not echoed either.
+    ws.sendText(nlohmann::json{{"id", std::string(1u << 20, 'x')}, {"type", "ping"}}.dump());
+    const auto longId = ws.receive();
+    EXPECT_EQ(longId["type"], "error");
+    EXPECT_TRUE(longId["id"].is_null());
+    EXPECT_LT(longId.dump().size(), 2000u);
+    // A valid id still comes back, and the connection still works.
+    EXPECT_EQ(ws.call("ping")["ok"], true);
+    // REST bodies too.
+    const auto rest = alice.request(http::verb::post, "/api/v1/jobs", "{\"hmf\": " + deep + "}");
+    EXPECT_EQ(rest.status, 400);
+    EXPECT_EQ(rest.json()["error"]["code"], "bad_json");
+    EXPECT_TRUE(healthy(server->port()));
+}
+
+// D3: an .hmf with 10000 nested subsystems crashed the server (unbounded recursion).
+TEST_F(Security, DeeplyNestedModelUploadIsRefused)
+{
+    HttpClient alice = as("alice");
+    const auto deep = uploadXml(alice, nestedSubsystems(10000));
+    EXPECT_EQ(deep.status, 400);
+    EXPECT_EQ(deep.json()["error"]["code"], "invalid_model");
+    EXPECT_NE(deep.body.find("nested"), std::string::npos) << deep.body;
+    const auto seventeen = uploadXml(alice, nestedSubsystems(17));
+    EXPECT_EQ(seventeen.status, 400);
+    EXPECT_NE(seventeen.body.find("the limit is 16 (--max-model-depth)"), std::string::npos) << seventeen.body;
+    EXPECT_EQ(uploadXml(alice, nestedSubsystems(16)).status, 201);
+    // Inline models of jobs go through the same limits.
+    const auto job = alice.post("/api/v1/jobs", {{"hmf", nestedSubsystems(10000)}});
+    EXPECT_EQ(job.status, 400) << job.body;
+    EXPECT_TRUE(healthy(server->port()));
+}
+
+// D4: many unread replies, then a TCP reset: a failed write ended the session and the next
+// buffered message called the handler it had just released.
+TEST_F(Security, ResetAfterManyUnreadRepliesLeavesTheServerRunning)
+{
+    HttpClient alice = as("alice");
+    const std::int64_t servo = exampleId(alice, "Position Servo");
+    for (int round = 0; round < 3; ++round) {
+        net::io_context ioc;
+        websocket::stream<net::ip::tcp::socket> ws(ioc);
+        ws.next_layer().connect({net::ip::make_address("127.0.0.1"), server->port()});
+        ws.handshake("127.0.0.1", "/api/v1/ws?token=" + alice.login("alice", "alice-password"));
+        ws.text(true);
+        ws.write(net::buffer(nlohmann::json{{"id", 1}, {"type", "model.open"}, {"model_id", servo}}.dump()));
+        for (int i = 0; i < 3000; ++i)
+            ws.write(net::buffer(nlohmann::json{{"id", i + 2}, {"type", "model.get"}}.dump()));
+        ws.next_layer().set_option(net::socket_base::linger(true, 0));   // close sends RST
+        ws.next_layer().close();
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_TRUE(healthy(server->port()));
+    WsClient again(server->port(), alice.login("alice", "alice-password"));
+    EXPECT_EQ(again.call("ping")["ok"], true);
+}
+
+// D5: a model name with CR LF added headers to the download's response.
+TEST_F(Security, ModelNamesCannotInjectHeaders)
+{
+    HttpClient alice = as("alice");
+    const std::string hmf = readFile(kPositionServo);
+    const auto evil = alice.post("/api/v1/models", {{"name", "evil\"\r\nSet-Cookie: injected=1"}, {"hmf", hmf}});
+    EXPECT_EQ(evil.status, 400) << "a name with a line break is refused";
+    EXPECT_NE(evil.body.find("control character U+000D"), std::string::npos) << evil.body;
+    // A name with quotes, semicolons and non-ASCII letters is fine and stays one header value.
+    const auto odd = alice.post("/api/v1/models", {{"name", "Str\xc3\xb6m \"x\"; filename=a.exe"}, {"hmf", hmf}});
+    ASSERT_EQ(odd.status, 201) << odd.body;
+    const std::string id = std::to_string(odd.json()["id"].get<std::int64_t>());
+    const std::string raw = rawExchange(server->port(), "GET /api/v1/models/" + id +
+                                                            "?format=hmf HTTP/1.1\r\nHost: x\r\nAuthorization: Bearer " +
+                                                            alice.login("alice", "alice-password") +
+                                                            "\r\nConnection: close\r\n\r\n");
+    const std::string head = raw.substr(0, raw.find("\r\n\r\n"));
+    EXPECT_EQ(head.find("Set-Cookie"), std::string::npos);
+    EXPECT_NE(head.find("Content-Disposition: attachment; filename=\"Str__m _x_; filename=a.exe.hmf\"; "
+                        "filename*=UTF-8''Str%C3%B6m%20%22x%22%3B%20filename%3Da.exe.hmf"),
+              std::string::npos)
+        << head;
+}
+
+// D6: open WebSockets outlived logout, password change, expiry and disabling.
+TEST_F(Security, WebSocketsEndWithTheirLogin)
+{
+    const auto closesWithinASecond = [](WsClient& ws) {
+        const auto start = std::chrono::steady_clock::now();
+        nlohmann::json m;
+        while (!(m = ws.receive(1500)).is_null()) {}
+        const auto waited = std::chrono::steady_clock::now() - start;
+        return ws.closedByServer() && waited < std::chrono::milliseconds(1000);
+    };
+    {   // logout
+        HttpClient bob(server->port());
+        WsClient ws(server->port(), bob.login("bob", "bob-password"));
+        ASSERT_EQ(ws.call("ping")["ok"], true);
+        WsClient other(server->port(), as("bob").login("bob", "bob-password"));   // another login
+        EXPECT_EQ(bob.request(http::verb::post, "/api/v1/auth/logout").status, 204);
+        EXPECT_TRUE(closesWithinASecond(ws)) << "the socket of the logged-out login stays open";
+        EXPECT_EQ(other.call("ping")["ok"], true) << "another login of the same user is not affected";
+    }
+    {   // password change ends every login of the user, sockets included
+        HttpClient admin = as("admin");
+        ASSERT_EQ(admin.post("/api/v1/users", {{"username", "carol"}, {"password", "carol-password"}, {"role", "user"}}).status, 201);
+        HttpClient carol(server->port());
+        WsClient ws(server->port(), carol.login("carol", "carol-password"));
+        ASSERT_EQ(ws.call("ping")["ok"], true);
+        EXPECT_EQ(carol.post("/api/v1/auth/password", {{"old_password", "carol-password"}, {"new_password", "carol-password-2"}}).status, 204);
+        EXPECT_TRUE(closesWithinASecond(ws));
+    }
+    {   // disabling an account: sockets close, tokens stop working, login is refused
+        HttpClient admin = as("admin");
+        ASSERT_EQ(admin.post("/api/v1/users", {{"username", "dave"}, {"password", "dave-password"}, {"role", "user"}}).status, 201);
+        const std::int64_t dave = userId("dave");
+        HttpClient daveClient(server->port());
+        WsClient ws(server->port(), daveClient.login("dave", "dave-password"));
+        ASSERT_EQ(ws.call("ping")["ok"], true);
+        const auto disabled = admin.request(http::verb::patch, "/api/v1/users/" + std::to_string(dave), "{\"disabled\": true}");
+        ASSERT_EQ(disabled.status, 200) << disabled.body;
+        EXPECT_EQ(disabled.json()["disabled"], true);
+        EXPECT_TRUE(closesWithinASecond(ws));
+        EXPECT_EQ(daveClient.get("/api/v1/auth/me").status, 401);
+        const auto login = HttpClient(server->port()).post("/api/v1/auth/login", {{"username", "dave"}, {"password", "dave-password"}});
+        EXPECT_EQ(login.status, 403);
+        EXPECT_EQ(login.json()["error"]["code"], "account_disabled");
+        // A wrong password does not reveal that the account exists and is disabled.
+        const auto wrong = HttpClient(server->port()).post("/api/v1/auth/login", {{"username", "dave"}, {"password", "not-the-password"}});
+        EXPECT_EQ(wrong.status, 401);
+        EXPECT_EQ(admin.request(http::verb::patch, "/api/v1/users/" + std::to_string(dave), "{\"disabled\": false}").status, 200);
+        EXPECT_NO_THROW(HttpClient(server->port()).login("dave", "dave-password"));
+    }
+}
+
+TEST(SecurityTokenExpiry, WebSocketClosesWhenItsTokenExpires)
+{
+    const fs::path dir = freshTempDir("expiry");
+    ServerProcess server(dir, {"--token-ttl", "2"});
+    HttpClient admin(server.port());
+    WsClient ws(server.port(), admin.login("admin", kAdminPassword));
+    ASSERT_EQ(ws.call("ping")["ok"], true);
+    const auto start = std::chrono::steady_clock::now();
+    while (!ws.receive(4000).is_null()) {}
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_TRUE(ws.closedByServer());
+    EXPECT_LT(waited, 3.5) << "token lifetime 2 s, checked every 0.25 s (a whole-second clock adds up to 1 s)";
+    fs::remove_all(dir);
+}
+
+// Administrators manage accounts; nobody else can, and the last administrator stays.
+TEST_F(Security, AdministratorsChangeRolesAndTheLastAdminStays)
+{
+    HttpClient admin = as("admin");
+    const std::string bob = std::to_string(userId("bob"));
+    EXPECT_EQ(as("alice").request(http::verb::patch, "/api/v1/users/" + bob, "{\"role\": \"admin\"}").status, 403);
+    const auto teacher = admin.request(http::verb::patch, "/api/v1/users/" + bob, "{\"role\": \"teacher\"}");
+    ASSERT_EQ(teacher.status, 200) << teacher.body;
+    EXPECT_EQ(teacher.json()["role"], "teacher");
+    EXPECT_EQ(as("bob").get("/api/v1/auth/me").json()["role"], "teacher");
+    EXPECT_EQ(admin.request(http::verb::patch, "/api/v1/users/" + bob, "{\"role\": \"user\"}").status, 200);
+    EXPECT_EQ(admin.request(http::verb::patch, "/api/v1/users/" + bob, "{\"role\": \"root\"}").status, 400);
+    EXPECT_EQ(admin.request(http::verb::patch, "/api/v1/users/99999", "{\"disabled\": true}").status, 404);
+    const std::string self = std::to_string(userId("admin"));
+    const auto last = admin.request(http::verb::patch, "/api/v1/users/" + self, "{\"disabled\": true}");
+    EXPECT_EQ(last.status, 409) << last.body;
+    EXPECT_EQ(admin.get("/api/v1/auth/me").status, 200);
+}
+
+// D7: the send queue was bounded by count only; unread replies of a large model grew the
+// server's memory into gigabytes.
+TEST(SecurityBacklog, AClientThatNeverReadsIsDisconnectedAndItsQueueFreed)
+{
+    const fs::path dir = freshTempDir("backlog");
+    ServerProcess server(dir, {"--max-ws-queue-bytes", "2000000", "--examples-dir",
+                               (kShared / "hopsan-models" / "Example Models").string()});
+    HttpClient admin(server.port());
+    const std::string token = admin.login("admin", kAdminPassword);
+    const std::int64_t servo = exampleId(admin, "Position Servo");
+    net::io_context ioc;
+    websocket::stream<net::ip::tcp::socket> ws(ioc);
+    ws.next_layer().open(net::ip::tcp::v4());
+    ws.next_layer().set_option(net::socket_base::receive_buffer_size(16384));
+    ws.next_layer().connect({net::ip::make_address("127.0.0.1"), server.port()});
+    ws.handshake("127.0.0.1", "/api/v1/ws?token=" + token);
+    ws.text(true);
+    ws.write(net::buffer(nlohmann::json{{"id", 1}, {"type", "model.open"}, {"model_id", servo}}.dump()));
+    boost::beast::error_code ec;
+    for (int i = 0; i < 1000 && !ec; ++i)
+        ws.write(net::buffer(nlohmann::json{{"id", i + 2}, {"type", "model.get"}}.dump()), ec);
+    nlohmann::json stats;
+    for (int i = 0; i < 100; ++i) {
+        stats = admin.get("/api/v1/stats").json();
+        if (stats["websockets_closed_for_backlog"] == 1) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    EXPECT_EQ(stats["websockets_closed_for_backlog"], 1) << stats.dump();
+    EXPECT_EQ(stats["websocket_queued_bytes"], 0) << "the closed socket's queue is freed";
+    EXPECT_EQ(stats["websockets"], 0);
+    EXPECT_TRUE(healthy(server.port()));
+    fs::remove_all(dir);
+}
+
+// D8: no limits on model size at upload (a 100000-component model made GET take 4.4 s and
+// 1.3 GB). The defaults admit the largest benchmark model.
+TEST(SecurityModelLimits, UploadsPastTheLimitsAreRefusedNamingTheFlag)
+{
+    const fs::path dir = freshTempDir("modellimits");
+    {
+        ServerProcess server(dir);
+        HttpClient admin(server.port());
+        admin.login("admin", kAdminPassword);
+        const auto huge = uploadXml(admin, gains(100000));
+        EXPECT_EQ(huge.status, 400);
+        EXPECT_NE(huge.body.find("more than 20000 components and subsystems, the limit here (--max-model-components)"),
+                  std::string::npos) << huge.body.substr(0, 300);
+        const fs::path x200 = kShared / "bench-models" / "position-servo-x200.hmf";
+        ASSERT_TRUE(fs::exists(x200)) << x200;
+        EXPECT_EQ(uploadXml(admin, readFile(x200), "x200").status, 201);
+    }
+    {
+        ServerProcess server(dir, {"--max-model-bytes", "100000", "--max-model-components", "50"});
+        HttpClient admin(server.port());
+        admin.login("admin", kAdminPassword);
+        const auto big = admin.post("/api/v1/models", {{"name", "big"}, {"hmf", readFile(kPositionServo) + std::string(100000, ' ')}});
+        EXPECT_EQ(big.status, 400);
+        EXPECT_NE(big.body.find("the limit here is 100000 (--max-model-bytes)"), std::string::npos) << big.body;
+        EXPECT_EQ(uploadXml(admin, gains(50)).status, 201);
+        EXPECT_EQ(uploadXml(admin, gains(51)).status, 400);
+    }
+    fs::remove_all(dir);
+}
+
+// D9: HEAD sent a body, which a kept-alive connection read as the start of the next answer.
+TEST_F(Security, HeadHasNoBodyOnAKeptAliveConnection)
+{
+    const std::string raw = rawExchange(server->port(),
+                                        "HEAD /assets/app.js HTTP/1.1\r\nHost: x\r\n\r\n"
+                                        "GET /api/v1/health HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+    const auto headEnd = raw.find("\r\n\r\n");
+    ASSERT_NE(headEnd, std::string::npos) << raw;
+    EXPECT_NE(raw.substr(0, headEnd).find("Content-Length: 21"), std::string::npos) << raw.substr(0, headEnd);
+    EXPECT_EQ(raw.compare(headEnd + 4, 15, "HTTP/1.1 200 OK"), 0) << "the next response must follow the header: " << raw;
+    EXPECT_EQ(raw.find("APP-JS"), std::string::npos);
+}
+
+// D10: every REST route accepted ?token=, which puts tokens into logs and history. Downloads
+// a browser starts itself get a short-lived signed link instead.
+TEST_F(Security, TokensOnlyInHeadersAndDownloadsThroughSignedLinks)
+{
+    HttpClient alice = as("alice");
+    const std::string token = alice.login("alice", "alice-password");
+    HttpClient anonymous(server->port());
+    EXPECT_EQ(anonymous.get("/api/v1/models?token=" + token).status, 401);
+    EXPECT_EQ(anonymous.get("/api/v1/auth/me?token=" + token).status, 401);
+    const auto created = alice.post("/api/v1/models", {{"name", "mine"}, {"hmf", readFile(kPositionServo)}});
+    const std::string id = std::to_string(created.json()["id"].get<std::int64_t>());
+    const std::string target = "/api/v1/models/" + id + "?format=hmf";
+    const auto link = alice.post("/api/v1/auth/download-link", {{"target", target}});
+    ASSERT_EQ(link.status, 200) << link.body;
+    const std::string url = link.json()["url"];
+    EXPECT_EQ(url.rfind(target + "&download=", 0), 0u) << url;
+    const auto download = anonymous.get(url);
+    EXPECT_EQ(download.status, 200);
+    EXPECT_EQ(download.body, readFile(kPositionServo));
+    // The link opens that target only, for GET only, and cannot be altered.
+    std::string otherTarget = url;
+    otherTarget.replace(otherTarget.find("format=hmf"), 10, "format=json");
+    EXPECT_EQ(anonymous.get(otherTarget).status, 401);
+    std::string forged = url;
+    forged.back() = forged.back() == '0' ? '1' : '0';
+    EXPECT_EQ(anonymous.get(forged).status, 401);
+    EXPECT_EQ(anonymous.request(http::verb::delete_, url).status, 401);
+    // Signed for alice: bob's link to alice's model finds nothing.
+    const auto bobs = as("bob").post("/api/v1/auth/download-link", {{"target", target}});
+    EXPECT_EQ(anonymous.get(bobs.json()["url"].get<std::string>()).status, 404);
+}
+
+// D11: with the disk full, DELETE failed with 500, so no space could be freed through the API.
+TEST(SecurityFullDisk, DeletingWorksWhenTheDiskIsFull)
+{
+    const fs::path dir = freshTempDir("fulldisk");
+    // The server runs in its own mount namespace with a 24 MiB file system over its data
+    // directory (as root or through a user namespace; no host mount is touched).
+    ServerProcess server(dir, {"--disk-reserve-bytes", "4194304"},
+                         {"unshare", "-rm", "sh", "-c", "mount -t tmpfs -o size=24m tmpfs \"$0\" && exec \"$@\"",
+                          dir.string()});
+    HttpClient admin(server.port());
+    admin.login("admin", kAdminPassword);
+    const std::string filler = "<hopsanmodelfile><system name=\"f\"><objects/><hopsangui><note>" +
+                               std::string(1u << 20, 'A') + "</note></hopsangui></system></hopsanmodelfile>";
+    std::vector<std::int64_t> stored;
+    HttpReply full;
+    for (int i = 0; i < 60; ++i) {
+        full = uploadXml(admin, filler, "filler" + std::to_string(i));
+        if (full.status != 201) break;
+        stored.push_back(full.json()["id"]);
+    }
+    ASSERT_EQ(full.status, 507) << "the disk never filled: " << full.body;
+    EXPECT_EQ(full.json()["error"]["code"], "storage_full");
+    ASSERT_GE(stored.size(), 3u);
+    // Logging in and deleting still work; afterwards there is room again.
+    HttpClient again(server.port());
+    again.login("admin", kAdminPassword);
+    for (int i = 0; i < 3; ++i) {
+        const auto removed = again.request(http::verb::delete_, "/api/v1/models/" + std::to_string(stored[i]));
+        EXPECT_EQ(removed.status, 204) << removed.body;
+    }
+    EXPECT_EQ(uploadXml(again, filler, "after").status, 201);
+    EXPECT_TRUE(healthy(server.port()));
+}
+
+// Low: names, and models that cannot run.
+TEST_F(Security, UserNamesAreUniqueRegardlessOfCase)
+{
+    HttpClient admin = as("admin");
+    const auto upper = admin.post("/api/v1/users", {{"username", "ALICE"}, {"password", "another-password"}, {"role", "user"}});
+    EXPECT_EQ(upper.status, 409) << upper.body;
+    // Logging in with another case finds the one account.
+    EXPECT_NO_THROW(HttpClient(server->port()).login("Alice", "alice-password"));
+}
+
+TEST(SecurityNames, OldNamesDifferingInCaseKeepWorkingAndAreReported)
+{
+    const fs::path dir = freshTempDir("casenames");
+    {
+        ServerProcess server(dir);
+        HttpClient admin(server.port());
+        admin.login("admin", kAdminPassword);
+        ASSERT_EQ(admin.post("/api/v1/users", {{"username", "erin"}, {"password", "erin-password"}, {"role", "user"}}).status, 201);
+        ASSERT_EQ(admin.post("/api/v1/users", {{"username", "frank"}, {"password", "frank-password"}, {"role", "user"}}).status, 201);
+    }
+    {   // As an older server allowed: a second account whose name differs only in case.
+        SQLite::Database db((dir / "tlmhub.sqlite").string(), SQLite::OPEN_READWRITE);
+        db.exec("UPDATE users SET username = 'ERIN' WHERE username = 'frank'");
+    }
+    ServerProcess server(dir);
+    EXPECT_NE(server.output().find("user names differ only in case: erin, ERIN"), std::string::npos) << server.output();
+    EXPECT_NO_THROW(HttpClient(server.port()).login("erin", "erin-password"));
+    EXPECT_NO_THROW(HttpClient(server.port()).login("ERIN", "frank-password"));
+    fs::remove_all(dir);
+}
+
+TEST_F(Security, ModelNamesRefuseControlAndBidirectionalCharacters)
+{
+    HttpClient alice = as("alice");
+    const std::string hmf = readFile(kPositionServo);
+    for (const std::string& name : {std::string("nul\0byte", 8), std::string("rtl\xe2\x80\xaegnp.exe"),
+                                    std::string("bad\xff utf8"), std::string("tab\there")}) {
+        const auto byXml = uploadXml(alice, hmf, [&] {
+            std::string encoded;
+            for (unsigned char c : name) {
+                char hex[4];
+                std::snprintf(hex, sizeof hex, "%%%02X", c);
+                encoded += hex;
+            }
+            return encoded;
+        }());
+        EXPECT_EQ(byXml.status, 400) << byXml.body;
+        EXPECT_NE(byXml.body.find("model name"), std::string::npos) << byXml.body;
+    }
+    WsClient ws(server->port(), alice.login("alice", "alice-password"));
+    const auto bidi = ws.call("model.create", {{"name", "x\xe2\x80\xaey"}});
+    EXPECT_EQ(bidi["type"], "error");
+    EXPECT_NE(bidi["error"]["message"].get<std::string>().find("bidirectional control character U+202E"),
+              std::string::npos) << bidi.dump();
+    EXPECT_EQ(ws.call("model.create", {{"name", "Str\xc3\xb6m"}})["ok"], true);
+}
+
+TEST_F(Security, ModelWhoseParametersCannotBeEvaluatedIsRefusedAtUpload)
+{
+    HttpClient alice = as("alice");
+    const auto bad = uploadXml(alice, gains(3, "no_such_name*2"));
+    EXPECT_EQ(bad.status, 400);
+    EXPECT_EQ(bad.json()["error"]["code"], "invalid_parameter");
+    EXPECT_NE(bad.body.find("parameter 'G0.k#Value'"), std::string::npos) << bad.body;
+    EXPECT_EQ(uploadXml(alice, gains(3, "1.5")).status, 201);
+}
+
+// What held when probed, kept so.
+TEST_F(Security, LoginDoesNotRevealWhichNamesExist)
+{
+    HttpClient anonymous(server->port());
+    const auto unknown = anonymous.post("/api/v1/auth/login", {{"username", "nobody-here"}, {"password", "whatever-pw"}});
+    const auto wrong = anonymous.post("/api/v1/auth/login", {{"username", "bob"}, {"password", "whatever-pw"}});
+    EXPECT_EQ(unknown.status, 401);
+    EXPECT_EQ(unknown.status, wrong.status);
+    EXPECT_EQ(unknown.body, wrong.body);
+}
+
+TEST(SecurityHeld, BodiesOverTheLimitAreRefused)
+{
+    const fs::path dir = freshTempDir("bodylimit");
+    ServerProcess server(dir, {"--max-body-bytes", "10000"});
+    HttpClient admin(server.port());
+    admin.login("admin", kAdminPassword);
+    const auto big = admin.post("/api/v1/models", {{"name", "x"}, {"hmf", std::string(20000, 'a')}});
+    EXPECT_EQ(big.status, 413);
+    EXPECT_EQ(big.json()["error"]["code"], "payload_too_large");
+    EXPECT_TRUE(healthy(server.port()));
+    fs::remove_all(dir);
+}
+
+TEST_F(Security, MalformedHttpGetsABadRequestAndTheServerStays)
+{
+    for (const std::string& junk : {std::string("GARBAGE\r\n\r\n"), std::string("GET / HTTP/9.9\r\n\r\n"),
+                                    std::string("GET / HTTP/1.1\r\nContent-Length: -5\r\n\r\n"),
+                                    std::string("\x16\x03\x01\x02\x00\x01\x00\x01\xfc\x03\x03", 11)}) {
+        const std::string raw = rawExchange(server->port(), junk, 2000);
+        EXPECT_TRUE(raw.empty() || raw.rfind("HTTP/1.1 400", 0) == 0) << raw.substr(0, 80);
+    }
+    EXPECT_TRUE(healthy(server->port()));
+}
+
+TEST_F(Security, SlowHeadersAndManyIdleConnectionsDoNotBlockOthers)
+{
+    std::vector<int> sockets;
+    for (int i = 0; i < 500; ++i) {
+        const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_port = htons(server->port());
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0) << i;
+        // Half of them start a request and never finish its header.
+        if (i % 2 == 0) ASSERT_GT(::send(fd, "GET /api/v1/health HTTP/1.1\r\nHost:", 34, MSG_NOSIGNAL), 0);
+        sockets.push_back(fd);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_TRUE(healthy(server->port()));
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+    for (int fd : sockets) ::close(fd);
+}
+
+TEST_F(Security, XmlEntitiesAreNeitherExpandedNorFetched)
+{
+    HttpClient alice = as("alice");
+    const std::string laughs =
+        "<?xml version=\"1.0\"?><!DOCTYPE lolz [<!ENTITY lol \"lol\">"
+        "<!ENTITY lol2 \"&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;\">"
+        "<!ENTITY lol3 \"&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;\">"
+        "<!ENTITY lol4 \"&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;\">"
+        "<!ENTITY xxe SYSTEM \"file:///etc/passwd\">]>"
+        "<hopsanmodelfile><system name=\"&lol4;&xxe;\"><objects/></system></hopsanmodelfile>";
+    const auto r = uploadXml(alice, laughs, "entities");
+    if (r.status == 201) {
+        const auto model = alice.get("/api/v1/models/" + std::to_string(r.json()["id"].get<std::int64_t>()));
+        EXPECT_EQ(model.body.find("lollollol"), std::string::npos);
+        EXPECT_EQ(model.body.find("root:"), std::string::npos);
+    } else {
+        EXPECT_EQ(r.status, 400) << r.body;
+    }
+    EXPECT_TRUE(healthy(server->port()));
+}

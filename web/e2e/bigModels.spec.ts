@@ -1,0 +1,96 @@
+// Issue 13.9 and 13.10: timings on the big examples (measured and reported, not asserted)
+// and the screenshots of the docs.
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { test, expect, type Page } from '@playwright/test';
+import { login, openExample } from './helpers';
+
+const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));
+const screenshots = fileURLToPath(new URL('./screenshots/', import.meta.url));
+const timings: Record<string, number> = {};
+
+function report(name: string, ms: number): void {
+    timings[name] = Math.round(ms * 10) / 10;
+    test.info().annotations.push({ type: 'timing', description: `${name}: ${timings[name]} ms` });
+    console.log(`timing ${name}: ${timings[name]} ms`);
+    mkdirSync(screenshots, { recursive: true });
+    writeFileSync(`${screenshots}timings.json`, JSON.stringify(timings, null, 2));
+}
+
+async function openTimed(page: Page, name: string): Promise<number> {
+    const row = page.getByTestId('example-models').locator('tr', { has: page.getByRole('link', { name, exact: true }) });
+    const t0 = Date.now();
+    await row.getByRole('button', { name: 'Open' }).click();
+    await expect(page.getByTestId('model-name')).toHaveText(name);
+    await expect(page.locator('.canvas .component').first()).toBeVisible();
+    return Date.now() - t0;
+}
+
+test.beforeAll(() => mkdirSync(docsScreenshots, { recursive: true }));
+
+test('Position Servo and Load Sensing System as drawn; dragging in Load Sensing System', async ({ page }) => {
+    await login(page, 'alice');
+    await openExample(page, 'Position Servo');
+    await page.screenshot({ path: `${docsScreenshots}position-servo.png` });
+
+    await page.getByRole('link', { name: 'Models' }).first().click().catch(() => page.goBack());
+    await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    await openTimed(page, 'Load Sensing System');
+    await page.screenshot({ path: `${docsScreenshots}load-sensing-system.png` });
+
+    // time the page's own work per pointer move of a component drag (no browser round trips)
+    const perMove = await page.evaluate(async () => {
+        const frame = document.querySelector('.canvas .component:not(.system-port) .icon-frame') as SVGElement;
+        const svg = document.querySelector('svg.canvas') as SVGSVGElement;
+        const r = frame.getBoundingClientRect();
+        const at = (dx: number) => ({ clientX: r.x + r.width / 2 + dx, clientY: r.y + r.height / 2, bubbles: true, pointerId: 1, button: 0, buttons: 1, isPrimary: true });
+        frame.dispatchEvent(new PointerEvent('pointerdown', at(0)));
+        const times: number[] = [];
+        for (let i = 1; i <= 60; i++) {
+            const t0 = performance.now();
+            svg.dispatchEvent(new PointerEvent('pointermove', at(i)));
+            // include style and layout of what the move changed
+            void svg.getBoundingClientRect().width;
+            document.body.offsetHeight;
+            times.push(performance.now() - t0);
+        }
+        const shift = frame.isConnected ? 0 : (document.querySelector(`.canvas .component[data-name="${frame.closest('.component')!.getAttribute('data-name')}"] .icon-frame`) as SVGElement).getBoundingClientRect().x - r.x;
+        svg.dispatchEvent(new PointerEvent('pointerup', at(60)));
+        times.sort((a, b) => a - b);
+        return { median: times[30], worst: times[59], shift };
+    });
+    // the drag did move the component along with the pointer
+    expect(perMove.shift).toBeGreaterThan(40);
+    report('Load Sensing System drag, median per move', perMove.median);
+    report('Load Sensing System drag, worst move', perMove.worst);
+});
+
+test('F16systemManeuver: open, enter its subsystem, the aircraft block close up', async ({ page }) => {
+    await login(page, 'alice');
+    report('open F16systemManeuver', await openTimed(page, 'F16systemManeuver'));
+    const aircraft = page.locator('.canvas .component[data-name="AeroAircraft6DOFSS"]');
+    await expect(aircraft).toBeVisible();
+    // zoom in on the aircraft block with the wheel, as a user would
+    const far = (await aircraft.boundingBox())!;
+    await page.mouse.move(far.x + far.width / 2, far.y + far.height / 2);
+    for (let i = 0; i < 4; i++) {
+        await page.mouse.wheel(0, -240);
+        await page.waitForTimeout(100);
+    }
+    const box = (await aircraft.boundingBox())!;
+    // the block with some of its surroundings, inside the canvas
+    const canvas = (await page.getByTestId('canvas').boundingBox())!;
+    const pad = 120;
+    const x = Math.max(canvas.x, box.x - pad);
+    const y = Math.max(canvas.y, box.y - pad);
+    await page.screenshot({
+        path: `${docsScreenshots}f16-aircraft-close-up.png`,
+        clip: { x, y, width: Math.min(canvas.x + canvas.width, box.x + box.width + pad) - x, height: Math.min(canvas.y + canvas.height, box.y + box.height + pad) - y },
+    });
+
+    const t0 = Date.now();
+    await page.locator('.canvas .component[data-name="Subsystem"] .icon-frame').dblclick();
+    await expect(page.locator('.breadcrumb')).toContainText('Subsystem');
+    await expect(page.locator('.canvas .component[data-name="Gearbox_driven_pump_A"]')).toBeVisible();
+    report('enter the F16 subsystem (double-click to drawn)', Date.now() - t0);
+});

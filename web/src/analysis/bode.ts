@@ -1,0 +1,43 @@
+// Bode diagram of an output against an input from logged signals: the ratio of their
+// transforms, at the frequencies where the input carries energy. Both signals are differenced
+// first: the ratio is unchanged (d/dt on both sides), but a step input becomes an impulse,
+// whose spectrum covers every frequency instead of leaking from the window's edges.
+import { samplesIn, transform, type Samples, type WindowName } from './fft';
+
+export interface Bode { frequency: number[]; gainDb: number[]; phaseDeg: number[] }
+
+/**
+ * `threshold` (relative to the input's largest component) drops frequencies the input hardly
+ * excites, where the ratio would be noise.
+ */
+export function bode(input: Samples, output: Samples, window: WindowName, from?: number, to?: number, threshold = 1e-3): Bode {
+    const a = samplesIn(input, from, to);
+    const b = samplesIn(output, from, to);
+    if (a.values.length !== b.values.length) throw new Error('input and output need the same samples');
+    const x = transform(a.time.slice(1), differences(a.values), window);
+    const y = transform(b.time.slice(1), differences(b.values), window);
+    const magnitude = x.frequency.map((_, k) => Math.hypot(x.re[k], x.im[k]));
+    const largest = Math.max(...magnitude.slice(1));
+    const out: Bode = { frequency: [], gainDb: [], phaseDeg: [] };
+    let previous = 0;
+    for (let k = 1; k < x.frequency.length; k++) {
+        if (!(magnitude[k] > threshold * largest)) continue;
+        // H = Y / X
+        const d = x.re[k] * x.re[k] + x.im[k] * x.im[k];
+        const hr = (y.re[k] * x.re[k] + y.im[k] * x.im[k]) / d;
+        const hi = (y.im[k] * x.re[k] - y.re[k] * x.im[k]) / d;
+        let phase = (Math.atan2(hi, hr) * 180) / Math.PI;
+        // unwrap: keep the phase continuous from one frequency to the next
+        while (phase - previous > 180) phase -= 360;
+        while (phase - previous < -180) phase += 360;
+        previous = phase;
+        out.frequency.push(x.frequency[k]);
+        out.gainDb.push(20 * Math.log10(Math.hypot(hr, hi)));
+        out.phaseDeg.push(phase);
+    }
+    return out;
+}
+
+function differences(values: number[]): number[] {
+    return values.slice(1).map((v, i) => v - values[i]);
+}
