@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 #include "cli/Options.h"
 
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <atomic>
@@ -49,15 +50,12 @@ int batchCommand(const std::vector<std::string>& args)
     auto worker = [&]() {
         for (std::size_t i; (i = next.fetch_add(1)) < models.size();) {
             System& root = *models[i];
-            std::string e;
-            bool ok = root.checkModel(e) && root.initialize(root.startTime, root.stopTime) &&
-                      root.simulate(root.stopTime);
-            root.finalize();
-            if (!ok) {
+            Result<Simulation> sim = compile(root);
+            if (!sim || !sim->run()) {
                 ++failed;
                 continue;
             }
-            componentSteps += root.takenSteps() * root.countComponents();
+            componentSteps += sim->takenSteps() * root.countComponents();
         }
     };
     const auto t0 = std::chrono::steady_clock::now();

@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 #include "cli/Options.h"
 
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <algorithm>
@@ -49,6 +50,86 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
+// "Comp.param=a:b:n" -> the path and n values evenly from a to b.
+bool parseVary(const std::string& text, std::string& path, std::vector<double>& values, std::string& error)
+{
+    const std::size_t eq = text.find('=');
+    double a = 0, b = 0;
+    int n = 0;
+    char tail = 0;
+    if (eq == std::string::npos ||
+        std::sscanf(text.c_str() + eq + 1, "%lf:%lf:%d%c", &a, &b, &n, &tail) != 3 || n < 1) {
+        error = "--vary needs Comp.param=a:b:n, got '" + text + "'";
+        return false;
+    }
+    path = text.substr(0, eq);
+    for (int i = 0; i < n; ++i) values.push_back(n == 1 ? a : a + (b - a) * i / (n - 1));
+    return true;
+}
+
+// Runs of one model with one parameter changed between them, three ways: setParameter +
+// reset + run on one Simulation, reset + run without a change, and load + compile + run.
+int benchVary(const std::string& modelPath, const std::string& vary)
+{
+    std::string path, err;
+    std::vector<double> values;
+    if (!parseVary(vary, path, values, err)) {
+        std::cerr << "error: " << err << "\n";
+        return 2;
+    }
+    using Clock = std::chrono::steady_clock;
+    LoadedModel model = loadHmfFile(modelPath);
+    if (model.hasErrors()) {
+        std::cerr << "error: " << model.firstError() << "\n";
+        return 1;
+    }
+    Result<Simulation> sim = compile(*model.root);
+    if (!sim) {
+        std::cerr << "error: " << sim.status().message() << "\n";
+        return 1;
+    }
+    auto fail = [](const Status& s) {
+        std::cerr << "error: " << s.codeName() << ": " << s.message() << "\n";
+        return 1;
+    };
+    // The three ways alternate run by run, so machine drift hits them alike.
+    double varied = 0, same = 0, reloaded = 0;
+    auto seconds = [](Clock::time_point from) {
+        return std::chrono::duration<double>(Clock::now() - from).count();
+    };
+    for (double v : values) {
+        auto t = Clock::now();
+        Status s = sim->setParameter(path, formatNumber(v));
+        if (s) s = sim->reset();
+        if (s) s = sim->run();
+        if (!s) return fail(s);
+        varied += seconds(t);
+
+        t = Clock::now();
+        s = sim->reset();
+        if (s) s = sim->run();
+        if (!s) return fail(s);
+        same += seconds(t);
+
+        t = Clock::now();
+        LoadedModel fresh = loadHmfFile(modelPath);
+        Result<Simulation> again = compile(*fresh.root);
+        if (!again) return fail(again.status());
+        s = again->setParameter(path, formatNumber(v));
+        if (s) s = again->run();
+        if (!s) return fail(s);
+        reloaded += seconds(t);
+    }
+    const double n = static_cast<double>(values.size());
+    std::printf("%zu runs of %s varying %s\n", values.size(), modelPath.c_str(), path.c_str());
+    std::printf("setParameter + reset + run: %.4f s (%.5f s per run)\n", varied, varied / n);
+    std::printf("reset + run:                %.4f s (%.5f s per run), varied/same %.3fx\n", same, same / n,
+                varied / same);
+    std::printf("load + compile + run:       %.4f s (%.5f s per run), reload/varied %.3fx\n", reloaded,
+                reloaded / n, reloaded / varied);
+    return 0;
+}
+
 } // namespace
 
 // Loads once, then simulates `repeat` rounds. With several thread counts each round runs
@@ -70,6 +151,7 @@ int benchCommand(const std::vector<std::string>& args)
         return 2;
     }
     if (repeat < 1) repeat = 1;
+    if (opt.has("vary")) return benchVary(opt.positional[0], opt.value("vary"));
     const auto l0 = std::chrono::steady_clock::now();
     LoadedModel model = loadHmfFile(opt.positional[0]);
     if (model.hasErrors()) {
@@ -78,26 +160,33 @@ int benchCommand(const std::vector<std::string>& args)
     }
     const auto l1 = std::chrono::steady_clock::now();
     System& root = *model.root;
+    Result<Simulation> compiled = compile(root);
+    if (!compiled) {
+        std::cerr << "error: " << compiled.status().message() << "\n";
+        return 1;
+    }
+    Simulation& sim = *compiled;
     std::vector<std::vector<double>> times(threadCounts.size());
-    std::size_t steps = 0;
     for (int k = 0; k < static_cast<int>(repeat); ++k) {
         for (std::size_t c = 0; c < threadCounts.size(); ++c) {
-            if (!root.checkModel(err) || !root.initialize(root.startTime, root.stopTime)) {
-                std::cerr << "error: initialisation failed: " << err << "\n";
+            // Only the steps are timed: reset and initialisation happen before the clock starts.
+            Status status = sim.reset();
+            if (status) status = sim.initialise();
+            if (!status) {
+                std::cerr << "error: initialisation failed: " << status.message() << "\n";
                 return 1;
             }
             const auto s0 = std::chrono::steady_clock::now();
-            const bool ok = root.simulateMultiThreaded(root.stopTime, threadCounts[c]);
+            status = sim.run({.threads = threadCounts[c]});
             const auto s1 = std::chrono::steady_clock::now();
-            root.finalize();
-            if (!ok) {
-                std::cerr << "error: simulation failed\n";
+            if (!status) {
+                std::cerr << "error: simulation failed: " << status.message() << "\n";
                 return 1;
             }
-            steps = root.takenSteps();
             times[c].push_back(std::chrono::duration<double>(s1 - s0).count());
         }
     }
+    const std::size_t steps = sim.totalSteps();
     const std::size_t comps = root.countComponents();
     std::printf("model %s: %zu components, %zu steps, load %.3f s\n", opt.positional[0].c_str(), comps,
                 steps, std::chrono::duration<double>(l1 - l0).count());

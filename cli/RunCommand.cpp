@@ -3,28 +3,40 @@
 
 #include "core/ResultTable.h"
 #include "core/Results.h"
+#include "core/Sha256.h"
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <chrono>
 #include <cstdio>
+#include <string_view>
 #include <iostream>
 
 namespace tlmhub::cli {
 
 namespace {
 
-bool writeCsv(const System& root, const std::string& path, std::string& error)
+bool writeCsv(const ResultTable& table, const std::string& path, std::string& error)
 {
     std::FILE* f = std::fopen(path.c_str(), "w");
     if (!f) {
         error = "cannot write '" + path + "'";
         return false;
     }
-    const std::string csv = ResultTable::fromSystem(root).toCsv();
-    bool ok = std::fwrite(csv.data(), 1, csv.size(), f) == csv.size();
+    bool ok = true;
+    table.writeCsv([&](std::string_view piece) {
+        ok = ok && std::fwrite(piece.data(), 1, piece.size(), f) == piece.size();
+    });
     ok = std::fclose(f) == 0 && ok;
     if (!ok) error = "error writing '" + path + "'";
     return ok;
+}
+
+std::string csvSha256(const ResultTable& table)
+{
+    Sha256 hash;
+    table.writeCsv([&](std::string_view piece) { hash.update(piece); });
+    return hash.hexDigest();
 }
 
 } // namespace
@@ -43,47 +55,51 @@ int runCommand(const std::vector<std::string>& args)
         return 1;
     }
     System& root = *model.root;
-    double start = root.startTime, stop = root.stopTime;
+    double start = root.startTime, stop = root.stopTime, step = root.desiredTimestep;
+    double samples = static_cast<double>(root.requestedLogSamples);
+    double threads = 1;
     std::string err;
     if (!opt.number("start", start, err) || !opt.number("stop", stop, err) ||
-        !opt.number("step", root.desiredTimestep, err)) {
+        !opt.number("step", step, err) || !opt.number("samples", samples, err)) {
         std::cerr << "error: " << err << "\n";
         return 2;
     }
-    double samples = static_cast<double>(root.requestedLogSamples);
-    if (!opt.number("samples", samples, err)) {
-        std::cerr << "error: " << err << "\n";
-        return 2;
-    }
-    root.requestedLogSamples = static_cast<std::size_t>(samples);
-    const std::string csv = opt.value("csv");
-    if (!csv.empty() && root.requestedLogSamples == 0) root.requestedLogSamples = 1024;
-    if (!(stop >= start) || !(root.desiredTimestep > 0.0)) {
-        std::cerr << "error: need stop >= start and a positive time step\n";
-        return 2;
-    }
-
-    const auto t0 = std::chrono::steady_clock::now();
-    if (!root.checkModel(err)) {
-        std::cerr << "error: " << path << ": " << err << "\n";
-        return 1;
-    }
-    bool ok = root.initialize(start, stop);
-    const auto t1 = std::chrono::steady_clock::now();
-    double threads = 1;
     if (!opt.number("threads", threads, err) || threads < 0) {
         std::cerr << "error: --threads needs a count >= 0\n";
         return 2;
     }
-    if (ok) ok = root.simulateMultiThreaded(stop, static_cast<unsigned>(threads));
+    if (!(stop >= start) || !(step > 0.0)) {
+        std::cerr << "error: need stop >= start and a positive time step\n";
+        return 2;
+    }
+    const std::string csv = opt.value("csv");
+    const bool wantsHash = opt.has("sha256");
+    // Continue a run from half time and compare with the whole run (needs --sha256).
+    const bool checkRerun = opt.has("check-rerun");
+    SimulationSettings settings{start, stop, step, static_cast<std::size_t>(samples)};
+    if ((!csv.empty() || wantsHash) && *settings.logSamples == 0) settings.logSamples = 1024;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    Result<Simulation> compiled = compile(root, settings);
+    if (!compiled) {
+        std::cerr << "error: " << path << ": " << compiled.status().message() << "\n";
+        return 1;
+    }
+    Simulation& sim = *compiled;
+    const RunOptions runOptions{.threads = static_cast<unsigned>(threads)};
+    const auto t1 = std::chrono::steady_clock::now();
+    const Status status = sim.run(runOptions);
     const auto t2 = std::chrono::steady_clock::now();
-    root.finalize();
-    for (const auto& m : root.messages())
+    for (const auto& m : sim.messages())
         if (m.type == MessageType::Error || m.type == MessageType::Fatal)
             std::cerr << "error: " << m.text << "\n";
-    if (!ok) {
-        std::fprintf(stderr, "error: %s: simulation stopped at t=%g before the stop time %g\n",
-                     path.c_str(), root.time(), stop);
+    if (!status) {
+        if (status.code() == StatusCode::SimulationStopped)
+            std::fprintf(stderr, "error: %s: simulation stopped at t=%g before the stop time %g\n",
+                         path.c_str(), sim.time(), stop);
+        else
+            std::fprintf(stderr, "error: %s: %s: %s\n", path.c_str(), status.codeName(),
+                         status.message().c_str());
         return 1;
     }
     std::string where;
@@ -91,15 +107,39 @@ int runCommand(const std::vector<std::string>& args)
         std::cerr << "error: " << path << ": non-finite value: " << where << "\n";
         return 1;
     }
-    if (!csv.empty() && !writeCsv(root, csv, err)) {
-        std::cerr << "error: " << err << "\n";
-        return 1;
+    std::string hashNote;
+    if (!csv.empty() || wantsHash) {
+        const ResultTable table = ResultTable::fromView(sim.results());
+        if (!csv.empty() && !writeCsv(table, csv, err)) {
+            std::cerr << "error: " << err << "\n";
+            return 1;
+        }
+        if (wantsHash) {
+            const std::string hash = csvSha256(table);
+            if (checkRerun) {
+                const double half = start + 0.5 * (stop - start);
+                Status again = sim.reset();
+                if (again) again = sim.run(half, runOptions);
+                if (again) again = sim.run(stop, runOptions);
+                const std::string rerunHash =
+                    again ? csvSha256(ResultTable::fromView(sim.results())) : std::string();
+                if (rerunHash != hash) {
+                    std::fprintf(stderr,
+                                 "error: %s: reset and a run continued from t=%g give csv sha256 %s, "
+                                 "one fresh run %s (%s)\n",
+                                 path.c_str(), half, rerunHash.c_str(), hash.c_str(),
+                                 again ? "results differ" : again.message().c_str());
+                    return 1;
+                }
+            }
+            hashNote = ", csv sha256 " + hash;
+        }
     }
     const double init = std::chrono::duration<double>(t1 - t0).count();
-    const double sim = std::chrono::duration<double>(t2 - t1).count();
-    std::printf("ok: %s: %zu steps, t=[%g, %g], init %.3f s, simulation %.3f s%s%s\n", path.c_str(),
-                root.takenSteps(), start, stop, init, sim, csv.empty() ? "" : ", csv ",
-                csv.c_str());
+    const double simTime = std::chrono::duration<double>(t2 - t1).count();
+    std::printf("ok: %s: %zu steps, t=[%g, %g], compile %.3f s, run %.3f s%s%s%s\n", path.c_str(),
+                sim.totalSteps(), start, stop, init, simTime, csv.empty() ? "" : ", csv ",
+                csv.c_str(), hashNote.c_str());
     return 0;
 }
 

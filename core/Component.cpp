@@ -331,7 +331,14 @@ void Component::addMessage(MessageType type, const std::string& text, const std:
     System* root = mParent ? mParent->rootSystem() : nullptr;
     if (!root && isSystem()) root = static_cast<System*>(this)->rootSystem();
     const std::string full = mName.empty() ? text : mName + ": " + text;
-    if (root) root->postMessage({type, full, tag});
+    if (root) root->postMessage({type, full, tag, modelPath()});
+}
+
+std::string Component::modelPath() const
+{
+    if (!mParent) return {};
+    const std::string outer = mParent->modelPath();
+    return outer.empty() ? mName : outer + "$" + mName;
 }
 
 void Component::stopSimulation(const std::string& reason)

@@ -30,6 +30,7 @@ struct Message {
     MessageType type;
     std::string text;
     std::string tag;
+    std::string source = {};   // model path of the component that reported it ("Sub$Comp")
 };
 
 class Component {
@@ -62,6 +63,8 @@ public:
     void setDisabled(bool d) { mDisabled = d; }
     // Depth below the root (root = 0).
     int depth() const;
+    // "Sub$Comp": the names from below the root down to this one (empty for the root).
+    std::string modelPath() const;
 
     // --- ports ---
     Port* port(const std::string& name) const;

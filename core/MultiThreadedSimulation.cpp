@@ -53,16 +53,6 @@ private:
     const unsigned mSpinsBeforeYield;
 };
 
-std::size_t roundSteps(double x)
-{
-    if (!(x > 0.0)) return 0;
-    return static_cast<std::size_t>(x + 0.5);
-}
-
-} // namespace
-
-namespace {
-
 // Nodes attached to a port (one per sub-port of a multiport).
 std::vector<Node*> portNodes(Port* port)
 {
@@ -244,9 +234,13 @@ void timedRun(const std::vector<Component*>& list, std::vector<double>& cost, do
 
 bool System::simulateMultiThreaded(double tStop, unsigned threads)
 {
+    return simulateStepsMultiThreaded(stepsUntil(tStop), threads);
+}
+
+bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
+{
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    const std::size_t n = roundSteps(std::max(tStop - mTime, 0.0) / mTimestep);
-    if (threads == 1 || n == 0) return simulate(tStop);
+    if (threads == 1 || n == 0) return simulateSteps(n);
 
     // Measure each component's cost over the first steps (real steps of the run).
     using Clock = std::chrono::steady_clock;

@@ -1,6 +1,6 @@
 #include "core/ResultTable.h"
 
-#include "core/Results.h"
+#include "core/ResultView.h"
 #include "core/System.h"
 
 #include <bit>
@@ -122,41 +122,51 @@ std::vector<const ResultColumn*> select(const ResultTable& table,
 
 } // namespace
 
-ResultTable ResultTable::fromSystem(const System& root)
+ResultTable ResultTable::fromView(const ResultView& view)
 {
     ResultTable table;
-    const std::size_t rows = root.numLoggedSamples();
-    const auto& time = root.logTime();
-    table.time.assign(time.begin(), time.begin() + static_cast<std::ptrdiff_t>(std::min(rows, time.size())));
-    for (const LoggedVariable& v : listLoggedVariables(root)) {
-        ResultColumn col;
-        col.name = v.fullName;
-        col.unit = v.unit;
-        appendLoggedData(*v.port, v.slot, 0, std::min(v.count, table.time.size()), col.data);
-        table.columns.push_back(std::move(col));
-    }
+    const auto time = view.time();
+    table.time.assign(time.begin(), time.end());
+    table.columns.reserve(view.numVariables());
+    for (std::size_t i = 0; i < view.numVariables(); ++i)
+        table.columns.push_back({view.variable(i).fullName, view.variable(i).unit, view.data(i)});
     return table;
 }
 
+ResultTable ResultTable::fromSystem(const System& root) { return fromView(ResultView(root)); }
+
 std::string ResultTable::toCsv(const std::vector<std::string>& variables) const
 {
-    const std::vector<const ResultColumn*> cols = select(*this, variables);
-    std::string out = "time";
-    for (const ResultColumn* c : cols) {
-        out += ',';
-        out += c->name;
-    }
-    out += '\n';
-    out.reserve(out.size() + time.size() * (cols.size() + 1) * 24);
-    for (std::size_t r = 0; r < time.size(); ++r) {
-        appendNumber(out, time[r]);
-        for (const ResultColumn* c : cols) {
-            out += ',';
-            if (r < c->data.size()) appendNumber(out, c->data[r]);
-        }
-        out += '\n';
-    }
+    std::string out;
+    writeCsv([&out](std::string_view piece) { out += piece; }, variables);
     return out;
+}
+
+void ResultTable::writeCsv(const std::function<void(std::string_view)>& sink,
+                           const std::vector<std::string>& variables) const
+{
+    constexpr std::size_t kPieceBytes = 64 * 1024;
+    const std::vector<const ResultColumn*> cols = select(*this, variables);
+    std::string piece = "time";
+    for (const ResultColumn* c : cols) {
+        piece += ',';
+        piece += c->name;
+    }
+    piece += '\n';
+    piece.reserve(kPieceBytes + 64);
+    for (std::size_t r = 0; r < time.size(); ++r) {
+        appendNumber(piece, time[r]);
+        for (const ResultColumn* c : cols) {
+            piece += ',';
+            if (r < c->data.size()) appendNumber(piece, c->data[r]);
+            if (piece.size() >= kPieceBytes) {
+                sink(piece);
+                piece.clear();
+            }
+        }
+        piece += '\n';
+    }
+    if (!piece.empty()) sink(piece);
 }
 
 nlohmann::json ResultTable::toJson(const std::vector<std::string>& variables) const

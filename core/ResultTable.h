@@ -6,11 +6,14 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tlmhub {
 
+class ResultView;
 class System;
 
 struct ResultColumn {
@@ -23,13 +26,18 @@ struct ResultTable {
     std::vector<double> time;   // s
     std::vector<ResultColumn> columns;
 
-    // Copies the logged samples of a run (after simulate) in listLoggedVariables order.
+    // Copies the logged samples of a run in the view's (HopsanCLI's) order.
+    static ResultTable fromView(const ResultView& view);
     static ResultTable fromSystem(const System& root);
 
     // Header "time,<names>", one row per time sample, numbers as "%.17g", an empty cell where
     // a column has fewer samples. `variables` picks and orders columns (unknown names are
     // skipped); empty means all.
     std::string toCsv(const std::vector<std::string>& variables = {}) const;
+    // The same text handed to `sink` in pieces of about 64 KiB, so a large table can be
+    // written or hashed without holding its whole CSV in memory.
+    void writeCsv(const std::function<void(std::string_view)>& sink,
+                  const std::vector<std::string>& variables = {}) const;
     // {"time":[...],"variables":[{"name","unit","data":[...]}]}; same selection rule.
     nlohmann::json toJson(const std::vector<std::string>& variables = {}) const;
 

@@ -591,63 +591,80 @@ void System::setProgressCallback(ProgressCallback cb, void* user, std::size_t in
 
 bool System::checkModel(std::string& error)
 {
+    const Status status = check();
+    if (!status) error = status.message();
+    return status.isOk();
+}
+
+Status System::check()
+{
     for (Component* c : componentsByName()) {
         if (c->kind() == CqsKind::Undefined) {
-            error = "component '" + c->name() + "' in system '" + name() +
-                    "' has an undefined C/Q/S kind (a subsystem mixing C and Q interface ports?)";
-            return false;
+            return {StatusCode::UndefinedKind,
+                    "component '" + c->name() + "' in system '" + name() +
+                        "' has an undefined C/Q/S kind (a subsystem mixing C and Q interface ports?)",
+                    c->modelPath()};
         }
     }
     for (Port* sp : ports()) {
         if (sp->kind() != PortKind::System) continue;
         if (sp->required && !sp->isConnected()) {
-            error = "system port '" + sp->name() + "' of '" + name() + "' is not connected";
-            return false;
+            return {StatusCode::UnconnectedPort,
+                    "system port '" + sp->name() + "' of '" + name() + "' is not connected",
+                    modelPath()};
         }
     }
     for (Component* c : componentsByName()) {
         if (c->isDisabled()) continue;
         for (const auto& [pname, p] : c->portsByName()) {
             if (p->required && !p->isConnected()) {
-                error = "port '" + c->name() + "." + pname + "' in system '" + name() +
-                        "' is required but not connected";
-                return false;
+                return {StatusCode::UnconnectedPort,
+                        "port '" + c->name() + "." + pname + "' in system '" + name() +
+                            "' is required but not connected",
+                        c->modelPath()};
             }
-            auto checkNode = [&](Port* port) -> bool {
+            auto partnerless = [&](Port* port) -> bool {
                 int nPower = 0;
                 for (Port* q : port->node()->ports())
                     if (q->kind() == PortKind::Power) ++nPower;
-                if (port->isConnected() && nPower == 1 && port->connectedPorts.size() > 0) {
-                    error = "port '" + c->name() + "." + port->name() + "' in system '" + name() +
-                            "' is on a node with a single power port (a power port needs a partner)";
-                    return false;
-                }
-                return true;
+                return port->isConnected() && nPower == 1 && port->connectedPorts.size() > 0;
             };
+            Port* lonely = nullptr;
             if (p->isMultiport()) {
                 for (auto& sub : p->subPorts)
-                    if (!checkNode(sub.get())) return false;
-            } else if (p->node() && !checkNode(p)) {
-                return false;
+                    if (!lonely && partnerless(sub.get())) lonely = sub.get();
+            } else if (p->node() && partnerless(p)) {
+                lonely = p;
+            }
+            if (lonely) {
+                return {StatusCode::IllegalConnection,
+                        "port '" + c->name() + "." + lonely->name() + "' in system '" + name() +
+                            "' is on a node with a single power port (a power port needs a partner)",
+                        c->modelPath()};
             }
         }
         std::string perr;
         for (const auto& param : c->parameters().all()) {
             if (!ParameterEvaluator::evaluate(*c, *param, perr)) {
-                error = "parameter '" + param->name + "' of '" + c->name() + "': " + perr;
-                return false;
+                return {StatusCode::InvalidParameter,
+                        "parameter '" + param->name + "' of '" + c->name() + "': " + perr,
+                        c->modelPath() + "." + param->name};
             }
         }
-        if (c->isSystem() && !static_cast<System*>(c)->checkModel(error)) return false;
+        if (c->isSystem()) {
+            Status sub = static_cast<System*>(c)->check();
+            if (!sub) return sub;
+        }
     }
     std::string perr;
     for (const auto& param : parameters().all()) {
         if (!ParameterEvaluator::evaluate(*this, *param, perr)) {
-            error = "system parameter '" + param->name + "' of '" + name() + "': " + perr;
-            return false;
+            const std::string path = isRoot() ? param->name : modelPath() + "." + param->name;
+            return {StatusCode::InvalidParameter,
+                    "system parameter '" + param->name + "' of '" + name() + "': " + perr, path};
         }
     }
-    return true;
+    return Status::ok();
 }
 
 void System::buildRunLists()
@@ -989,6 +1006,14 @@ void System::packNodeData()
     mNodeArena.swap(arena);
 }
 
+std::vector<Node*> System::allNodes()
+{
+    std::vector<Node*> nodes;
+    std::set<Node*> seen;
+    collectNodes(*this, nodes, seen);
+    return nodes;
+}
+
 bool System::initialize(double t0, double t1)
 {
     mStopRequested.store(false);
@@ -1023,14 +1048,14 @@ bool System::initializeInternal(double t0, double t1)
             if (c->isSystem()) static_cast<System*>(c)->computeSortHintsOfSystemPorts();
     std::string error;
     if (!sortList(mS, true, error)) {
-        root->postMessage({MessageType::Error, error, "AlgebraicLoop"});
+        root->postMessage({MessageType::Error, error, "AlgebraicLoop", modelPath()});
         return false;
     }
     sortList(mC, false, error);
     sortList(mQ, false, error);
     if (isRoot()) {
         if (!evaluateAllParameters(error)) {
-            root->postMessage({MessageType::Error, error, "Parameter"});
+            root->postMessage({MessageType::Error, error, "Parameter", {}});
             return false;
         }
         loadStartValues();
@@ -1093,9 +1118,15 @@ void System::simulateTo(double parentTime)
     }
 }
 
-bool System::simulate(double tStop)
+std::size_t System::stepsUntil(double tStop) const
 {
-    const std::size_t n = roundSteps(std::max(tStop - mTime, 0.0) / mTimestep);
+    return roundSteps(std::max(tStop - mTime, 0.0) / mTimestep);
+}
+
+bool System::simulate(double tStop) { return simulateSteps(stepsUntil(tStop)); }
+
+bool System::simulateSteps(std::size_t n)
+{
     for (std::size_t i = 0; i < n; ++i) {
         if (stopRequested()) return false;
         mTime += mTimestep;

@@ -3,6 +3,7 @@
 // simulation loop (core.md §2.5-§4). Systems nest: a subsystem is a component of its parent.
 #include "core/Component.h"
 #include "core/LogArena.h"
+#include "core/Status.h"
 
 #include <atomic>
 #include <map>
@@ -69,12 +70,20 @@ public:
     void setTimestep(double ts) override;
 
     // ---- running ----
+    // Structure and parameter checks before a run: the first problem found, with its code
+    // and model path. checkModel is the same with the message only.
+    Status check();
     bool checkModel(std::string& error);
     bool initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
     // The same steps with the root's C and Q lists split over `threads` threads (0 = one per
     // core); S components run on the calling thread. Results are identical to simulate().
     bool simulateMultiThreaded(double stopTime, unsigned threads);
+    // Root: the next `steps` steps (runs can be continued step-exactly this way).
+    bool simulateSteps(std::size_t steps);
+    bool simulateStepsMultiThreaded(std::size_t steps, unsigned threads);
+    // Number of root steps from the current time to `stopTime` (Hopsan's rounding).
+    std::size_t stepsUntil(double stopTime) const;
     void finalize();
     // Safe to call from any thread (a server's cancel, a component on a worker thread).
     void requestStop() { mStopRequested.store(true, std::memory_order_relaxed); }
@@ -84,6 +93,9 @@ public:
     void setProgressCallback(ProgressCallback cb, void* user, std::size_t interval);
 
     std::size_t takenSteps() const { return mTakenSteps; }
+
+    // Every node of the root and its subsystems, each once.
+    std::vector<Node*> allNodes();
 
     // ---- results ----
     const std::vector<double>& logTime() const { return mLogTime; }

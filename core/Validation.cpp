@@ -1,6 +1,7 @@
 #include "core/Validation.h"
 
 #include "core/Results.h"
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <pugixml.hpp>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace tlmhub {
@@ -106,18 +108,23 @@ struct Extracted {
     std::vector<double> data;
 };
 
-bool runOnce(System& root, std::string& error)
+// Runs the model from its start to its stop time: compiled on the first call, reset and run
+// again on later ones (the determinism check compares the two).
+bool runOnce(System& root, std::optional<Simulation>& sim, std::string& error)
 {
-    if (!root.checkModel(error)) return false;
-    const bool ok = root.initialize(root.startTime, root.stopTime) && root.simulate(root.stopTime);
-    root.finalize();
-    if (!ok) {
-        error = "simulation failed";
-        for (const auto& m : root.messages())
-            if (m.type == MessageType::Error || m.type == MessageType::Fatal) {
-                error += ": " + m.text;
-                break;
-            }
+    if (!sim) {
+        Result<Simulation> compiled = compile(root);
+        if (!compiled) {
+            error = compiled.status().message();
+            return false;
+        }
+        sim.emplace(std::move(*compiled));
+    } else {
+        sim->reset();
+    }
+    const Status status = sim->run();
+    if (!status) {
+        error = "simulation failed: " + status.message();
         return false;
     }
     return true;
@@ -181,8 +188,9 @@ void validateV2(pugi::xml_node validation, const fs::path& dir, const std::strin
     Table rows;
     if (!readDataFile(dataPath, rows, report.error)) return;
     System& root = *model.root;
+    std::optional<Simulation> sim;
     std::string err;
-    if (!runOnce(root, err)) {
+    if (!runOnce(root, sim, err)) {
         report.error = err;
         return;
     }
@@ -194,7 +202,7 @@ void validateV2(pugi::xml_node validation, const fs::path& dir, const std::strin
         first.emplace_back(name, std::move(e));
     }
     // Determinism: the same loaded model simulated again must give the same results.
-    if (!runOnce(root, err)) {
+    if (!runOnce(root, sim, err)) {
         report.error = "second run: " + err;
         return;
     }
@@ -274,15 +282,16 @@ void validateV1(pugi::xml_node validation, const fs::path& dir, const std::strin
                     return;
                 }
                 System& root = *model.root;
+                std::optional<Simulation> sim;
                 std::string err;
                 Extracted e, again;
                 // Variables of the root system only (no subsystem paths) in hvc 0.1.
-                if (!runOnce(root, err) || !extract(root, check.name, e, err)) {
+                if (!runOnce(root, sim, err) || !extract(root, check.name, e, err)) {
                     check.error = err;
                     report.variables.push_back(check);
                     continue;
                 }
-                if (!runOnce(root, err) || !extract(root, check.name, again, err)) {
+                if (!runOnce(root, sim, err) || !extract(root, check.name, again, err)) {
                     check.error = "second run: " + err;
                     report.variables.push_back(check);
                     continue;

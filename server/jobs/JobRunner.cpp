@@ -1,7 +1,7 @@
 #include "server/jobs/JobRunner.h"
 
 #include "core/ResultTable.h"
-#include "core/System.h"
+#include "core/Simulation.h"
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/PreparedJob.h"
 
@@ -120,14 +120,17 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
             return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
         }
         System& root = *job.root;
+        Result<Simulation> compiled = compile(root, {job.start, job.stop, job.step, job.logSamples});
+        if (!compiled) return finish(jobId, JobState::Failed, compiled.status().message(), 0, nullptr);
+        Simulation& sim = *compiled;
         // Detached before `job` (and the System) is destroyed, also when something throws.
         struct Detach {
             JobControl& control;
             ~Detach() { control.detach(); }
         } detachOnExit{control};
         control.attach(&root);
-        bool ok = root.initialize(job.start, job.stop);
-        // initialize() clears earlier stop requests; one that came before it is seen here.
+        bool ok = sim.initialise().isOk();
+        // Initialising clears earlier stop requests; one that came before it is seen here.
         if (control.stopReason() != JobControl::Stop::None) ok = false;
         RunState state;
         state.runner = this;
@@ -142,19 +145,21 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
         if (ok) {
             LiveFrameSource live(root);
             // Lower bound of the result's size, known before running: fail now, not after.
-            const std::size_t estimate = root.numLogSlots() * (live.names().size() + 1) * sizeof(double);
+            const std::size_t estimate = sim.logSlots() * (live.names().size() + 1) * sizeof(double);
             if (estimate > mLimits.maxResultBytes) {
                 tooLarge = resultTooLargeMessage(estimate, mLimits.maxResultBytes);
                 ok = false;
             } else {
                 state.live = &live;
-                root.setProgressCallback(&JobRunner::onProgress, &state, kProgressInterval);
-                ok = root.simulate(job.stop);
-                root.setProgressCallback(nullptr, nullptr, 0);
+                RunOptions options;
+                options.progressInterval = kProgressInterval;
+                options.progress = [&state](std::size_t taken, std::size_t total) {
+                    onProgress(&state, taken, total);
+                };
+                ok = sim.run(options).isOk();
             }
         }
         control.detach();
-        root.finalize();
 
         const std::uint64_t steps = root.takenSteps();
         JobState finalState = JobState::Done;
@@ -188,7 +193,7 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
         }
         if (!tooLarge.empty()) return finish(jobId, finalState, error, steps, nullptr);
         // Whatever was logged is kept, also for stopped runs, as long as it fits.
-        ResultTable table = ResultTable::fromSystem(root);
+        ResultTable table = ResultTable::fromView(sim.results());
         if (table.byteSize() > mLimits.maxResultBytes) {
             if (finalState == JobState::Done) {
                 finalState = JobState::Failed;

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the unit tests: build systems through the string API.
 #include "core/ComponentFactory.h"
+#include "core/Simulation.h"
 #include "core/System.h"
 
 #include <gtest/gtest.h>
@@ -35,18 +36,16 @@ inline void setParam(System& s, const std::string& comp, const std::string& name
     p->value = value;
 }
 
+// Compiles and runs `s` from t0 to t1; false (and a test failure for a compile error) if it
+// does not get there. The logs stay readable through `s` afterwards.
 inline bool run(System& s, double t0, double t1, double ts, std::size_t samples)
 {
-    s.desiredTimestep = ts;
-    s.requestedLogSamples = samples;
-    std::string err;
-    if (!s.checkModel(err)) {
-        ADD_FAILURE() << err;
+    Result<Simulation> sim = compile(s, {t0, t1, ts, samples});
+    if (!sim) {
+        ADD_FAILURE() << sim.status().message();
         return false;
     }
-    bool ok = s.initialize(t0, t1) && s.simulate(t1);
-    s.finalize();
-    return ok;
+    return sim->run().isOk();
 }
 
 inline std::string sharedDir()

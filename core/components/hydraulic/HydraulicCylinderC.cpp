@@ -43,7 +43,6 @@ void HydraulicCylinderC::initialize()
     mvpP2_q.resize(mNumPorts2);
     mvpP2_c.resize(mNumPorts2);
     mvpP2_Zc.resize(mNumPorts2);
-    mCxLim = 0.0;
 
     const double A1 = *mpA1;
     const double A2 = *mpA2;
@@ -191,8 +190,6 @@ void HydraulicCylinderC::simulateOneTimestep()
     double ZxLim = 0.0;
     if (mUseEndStops) {
         limitStroke(CxLim, ZxLim, x3, v3, me, sl);
-    } else {
-        mCxLim = 0.0;
     }
 
     // A chamber whose pressure was floored last step acts on the piston with
@@ -224,9 +221,9 @@ void HydraulicCylinderC::simulateOneTimestep()
     *mpQLeak = qLeak;
 }
 
-// Stiff, filtered spring force pushing the piston back inside [-s_l, 0].
+// Stiff spring force pushing the piston back inside [-s_l, 0].
 void HydraulicCylinderC::limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me,
-                                     double sl)
+                                     double sl) const
 {
     const double alfa = 0.5;
     double newCxLim = 0.0;
@@ -242,11 +239,10 @@ void HydraulicCylinderC::limitStroke(double& CxLim, double& ZxLim, double x3, do
         newCxLim = FxLim + ZxLim * v3;
     } else {
         ZxLim = 0.0;
-        mCxLim = 0.0;
-        newCxLim = 0.0;
     }
-    mCxLim = alfa * mCxLim + (1.0 - alfa) * newCxLim;
-    CxLim = mCxLim;
+    // Hopsan filters with an uninitialised local that its compiled library treats as 0,
+    // so the "filter" keeps no memory of the previous step (reference: end-stop quirk).
+    CxLim = (1.0 - alfa) * newCxLim;
 }
 
 TLMHUB_REGISTER_COMPONENT(HydraulicCylinderC, "Hydraulic")

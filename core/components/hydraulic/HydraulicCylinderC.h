@@ -22,7 +22,7 @@ protected:
     double* mpA2 = nullptr;
 
 private:
-    void limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me, double sl);
+    void limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me, double sl) const;
 
     static constexpr double mWfak = 0.1;
     static constexpr double mAlpha = 0.1;
@@ -30,9 +30,6 @@ private:
 
     // Internal piston (ci) and leakage (cl) wave variables of both chambers.
     double ci1 = 0.0, cl1 = 0.0, ci2 = 0.0, cl2 = 0.0;
-    // End-stop filter state. Hopsan filters with an uninitialised local here;
-    // a member starting at 0 is the deterministic choice.
-    double mCxLim = 0.0;
 
     Port *mpP1 = nullptr, *mpP2 = nullptr, *mpP3 = nullptr;
     double *mpSl = nullptr, *mpV01 = nullptr, *mpV02 = nullptr, *mpBp = nullptr;

@@ -37,7 +37,6 @@ void HydraulicSpringLoadedPistonC::initialize()
     mvpP2_q.resize(mNumPorts2);
     mvpP2_c.resize(mNumPorts2);
     mvpP2_Zc.resize(mNumPorts2);
-    mCxLim = 0.0;
 
     const double A1 = *mpA1;
     const double A2 = *mpA2;
@@ -176,8 +175,6 @@ void HydraulicSpringLoadedPistonC::simulateOneTimestep()
     double ZxLim = 0.0;
     if (mUseEndStops) {
         limitStroke(CxLim, ZxLim, x3, v3, me, sl);
-    } else {
-        mCxLim = 0.0;
     }
 
     const double c3 = A1 * ci1 - A2 * ci2 + CxLim;
@@ -197,9 +194,9 @@ void HydraulicSpringLoadedPistonC::simulateOneTimestep()
     *mpP3_Zx = Zx3;
 }
 
-// Stiff, filtered spring force pushing the piston back inside [-s_l, 0].
+// Stiff spring force pushing the piston back inside [-s_l, 0].
 void HydraulicSpringLoadedPistonC::limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me,
-                                               double sl)
+                                               double sl) const
 {
     const double alfa = 0.5;
     double newCxLim = 0.0;
@@ -215,11 +212,10 @@ void HydraulicSpringLoadedPistonC::limitStroke(double& CxLim, double& ZxLim, dou
         newCxLim = FxLim + ZxLim * v3;
     } else {
         ZxLim = 0.0;
-        mCxLim = 0.0;
-        newCxLim = 0.0;
     }
-    mCxLim = alfa * mCxLim + (1.0 - alfa) * newCxLim;
-    CxLim = mCxLim;
+    // Hopsan filters with an uninitialised local that its compiled library treats as 0,
+    // so the "filter" keeps no memory of the previous step (reference: end-stop quirk).
+    CxLim = (1.0 - alfa) * newCxLim;
 }
 
 TLMHUB_REGISTER_COMPONENT(HydraulicSpringLoadedPistonC, "Hydraulic")

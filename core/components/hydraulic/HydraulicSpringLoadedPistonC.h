@@ -14,14 +14,12 @@ public:
     void simulateOneTimestep() override;
 
 private:
-    void limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me, double sl);
+    void limitStroke(double& CxLim, double& ZxLim, double x3, double v3, double me, double sl) const;
 
     static constexpr double mWfak = 0.1;
     static constexpr double mAlpha = 0.1;
     bool mUseEndStops = true;
     double ci1 = 0.0, cl1 = 0.0, ci2 = 0.0, cl2 = 0.0;
-    // End-stop filter state (an uninitialised local in Hopsan; 0-initialised member here).
-    double mCxLim = 0.0;
 
     Port *mpP1 = nullptr, *mpP2 = nullptr, *mpP3 = nullptr;
     double *mpA1 = nullptr, *mpA2 = nullptr, *mpSl = nullptr, *mpFs = nullptr;

@@ -1,0 +1,235 @@
+#include "core/Simulation.h"
+
+#include "core/ParameterEvaluator.h"
+
+#include <cmath>
+#include <utility>
+
+namespace tlmhub {
+
+namespace {
+
+// Hopsan's round: truncate(x + 0.5) on a non-negative double (as System's step count).
+std::size_t roundSteps(double x)
+{
+    if (!(x > 0.0)) return 0;
+    return static_cast<std::size_t>(x + 0.5);
+}
+
+// The component a parameter path names: "Sub$Comp" walks subsystems; "" is the root.
+Component* componentAt(System& root, const std::string& path)
+{
+    if (path.empty()) return &root;
+    System* system = &root;
+    std::size_t begin = 0;
+    while (true) {
+        const std::size_t end = path.find('$', begin);
+        const std::string name = path.substr(begin, end == std::string::npos ? end : end - begin);
+        if (end == std::string::npos) return system->component(name);
+        system = system->subsystem(name);
+        if (!system) return nullptr;
+        begin = end + 1;
+    }
+}
+
+struct ProgressRelay {
+    const RunOptions* options;
+    const System* root;
+    std::size_t totalSteps;
+    static void call(void* user, std::size_t, std::size_t)
+    {
+        auto* relay = static_cast<ProgressRelay*>(user);
+        relay->options->progress(relay->root->takenSteps(), relay->totalSteps);
+    }
+};
+
+} // namespace
+
+const char* simulationStateName(SimulationState state)
+{
+    switch (state) {
+    case SimulationState::Compiled: return "compiled";
+    case SimulationState::Initialised: return "initialised";
+    case SimulationState::Running: return "running";
+    case SimulationState::Paused: return "paused";
+    case SimulationState::Finished: return "finished";
+    case SimulationState::Stopped: return "stopped";
+    case SimulationState::Failed: return "failed";
+    }
+    return "unknown";
+}
+
+Result<Simulation> compile(System& root, const SimulationSettings& settings)
+{
+    const double start = settings.startTime.value_or(root.startTime);
+    const double stop = settings.stopTime.value_or(root.stopTime);
+    const double timestep = settings.timestep.value_or(root.desiredTimestep);
+    if (!std::isfinite(start) || !std::isfinite(stop) || !(stop >= start))
+        return Status{StatusCode::InvalidSettings, "need finite times with stop >= start"};
+    if (!std::isfinite(timestep) || !(timestep > 0.0))
+        return Status{StatusCode::InvalidSettings, "need a positive time step"};
+    root.desiredTimestep = timestep;
+    if (settings.logSamples) root.requestedLogSamples = *settings.logSamples;
+    Status checked = root.check();
+    if (!checked) return checked;
+    return Simulation(root, start, stop, timestep);
+}
+
+Simulation::Simulation(System& root, double start, double stop, double timestep)
+    : mRoot(&root), mStartTime(start), mStopTime(stop), mTimestep(timestep),
+      mTotalSteps(roundSteps((stop - start) / timestep)), mNodes(root.allNodes())
+{
+    for (const Node* n : mNodes) mStartValues.insert(mStartValues.end(), n->data(), n->data() + n->size());
+}
+
+Simulation::Simulation(Simulation&& other) noexcept { *this = std::move(other); }
+
+Simulation& Simulation::operator=(Simulation&& other) noexcept
+{
+    if (this == &other) return *this;
+    if (mRoot && (mState == SimulationState::Initialised || mState == SimulationState::Paused))
+        mRoot->finalize();
+    mRoot = std::exchange(other.mRoot, nullptr);
+    mStartTime = other.mStartTime;
+    mStopTime = other.mStopTime;
+    mTimestep = other.mTimestep;
+    mState = other.mState;
+    mTotalSteps = other.mTotalSteps;
+    mNodes = std::move(other.mNodes);
+    mStartValues = std::move(other.mStartValues);
+    return *this;
+}
+
+Simulation::~Simulation()
+{
+    // Components get their finalize() also when a run was left unfinished.
+    if (mRoot && (mState == SimulationState::Initialised || mState == SimulationState::Paused))
+        mRoot->finalize();
+}
+
+double Simulation::time() const { return mState == SimulationState::Compiled ? mStartTime : mRoot->time(); }
+
+std::size_t Simulation::takenSteps() const { return mState == SimulationState::Compiled ? 0 : mRoot->takenSteps(); }
+
+std::size_t Simulation::totalSteps() const { return mTotalSteps; }
+
+std::size_t Simulation::logSlots() const { return mState == SimulationState::Compiled ? 0 : mRoot->numLogSlots(); }
+
+ResultView Simulation::results() const { return ResultView(*mRoot); }
+
+const std::vector<Message>& Simulation::messages() const { return mRoot->messages(); }
+
+void Simulation::requestStop() { mRoot->requestStop(); }
+
+// The first error a component or the engine reported, with its code and model path.
+Status Simulation::failure(StatusCode fallback, const std::string& fallbackMessage) const
+{
+    for (const Message& m : mRoot->messages()) {
+        if (m.type != MessageType::Error && m.type != MessageType::Fatal) continue;
+        StatusCode code = fallback;
+        if (m.tag == "AlgebraicLoop") code = StatusCode::AlgebraicLoop;
+        else if (m.tag == "Parameter") code = StatusCode::InvalidParameter;
+        return {code, m.text, m.source};
+    }
+    return {fallback, fallbackMessage};
+}
+
+void Simulation::finish(SimulationState state)
+{
+    mRoot->finalize();
+    mState = state;
+}
+
+Status Simulation::initialise()
+{
+    if (mState != SimulationState::Compiled)
+        return {StatusCode::InvalidState, std::string("cannot initialise a simulation that is ") +
+                                              simulationStateName(mState) + " (reset it first)"};
+    mRoot->messages().clear();
+    if (!mRoot->initialize(mStartTime, mStopTime)) {
+        finish(SimulationState::Failed);
+        return failure(StatusCode::InitFailed, "initialisation failed");
+    }
+    mState = SimulationState::Initialised;
+    return Status::ok();
+}
+
+Status Simulation::run(double until, const RunOptions& options)
+{
+    switch (mState) {
+    case SimulationState::Compiled: {
+        Status started = initialise();
+        if (!started) return started;
+        break;
+    }
+    case SimulationState::Initialised:
+    case SimulationState::Paused: break;
+    default:
+        return {StatusCode::InvalidState,
+                std::string("cannot run a simulation that is ") + simulationStateName(mState) +
+                    " (reset it first)"};
+    }
+    // Steps are counted from the start, so a run continued in pieces takes exactly the steps
+    // of one whole run.
+    const std::size_t target = std::min(roundSteps((until - mStartTime) / mTimestep), mTotalSteps);
+    const std::size_t steps = target > mRoot->takenSteps() ? target - mRoot->takenSteps() : 0;
+
+    ProgressRelay relay{&options, mRoot, mTotalSteps};
+    if (options.progress && options.progressInterval)
+        mRoot->setProgressCallback(&ProgressRelay::call, &relay, options.progressInterval);
+    std::stop_callback onStop(options.stop, [this] { mRoot->requestStop(); });
+    mState = SimulationState::Running;
+    bool ok = !options.stop.stop_requested();
+    if (ok) ok = mRoot->simulateStepsMultiThreaded(steps, options.threads);
+    mRoot->setProgressCallback(nullptr, nullptr, 0);
+
+    if (!ok) {
+        finish(SimulationState::Stopped);
+        char when[64];
+        std::snprintf(when, sizeof when, "%g", mRoot->time());
+        return failure(StatusCode::SimulationStopped, std::string("simulation stopped at t=") + when);
+    }
+    if (mRoot->takenSteps() >= mTotalSteps) finish(SimulationState::Finished);
+    else mState = SimulationState::Paused;
+    return Status::ok();
+}
+
+Status Simulation::reset()
+{
+    if (mState == SimulationState::Running)
+        return {StatusCode::InvalidState, "cannot reset a running simulation"};
+    if (mState == SimulationState::Initialised || mState == SimulationState::Paused) mRoot->finalize();
+    std::size_t offset = 0;
+    for (Node* n : mNodes) {
+        std::copy(mStartValues.begin() + static_cast<std::ptrdiff_t>(offset),
+                  mStartValues.begin() + static_cast<std::ptrdiff_t>(offset + n->size()), n->data());
+        offset += n->size();
+    }
+    mRoot->messages().clear();
+    mState = SimulationState::Compiled;
+    return Status::ok();
+}
+
+Status Simulation::setParameter(const std::string& path, const std::string& value)
+{
+    if (mState == SimulationState::Running || mState == SimulationState::Initialised ||
+        mState == SimulationState::Paused)
+        return {StatusCode::InvalidState, "parameters change between runs: reset the simulation first", path};
+    const std::size_t dot = path.find('.');
+    const std::string owner = dot == std::string::npos ? std::string() : path.substr(0, dot);
+    const std::string name = dot == std::string::npos ? path : path.substr(dot + 1);
+    Component* component = componentAt(*mRoot, owner);
+    Parameter* parameter = component ? component->parameters().find(name) : nullptr;
+    if (!parameter) return {StatusCode::UnknownParameter, "no parameter '" + path + "'", path};
+    const std::string previous = parameter->value;
+    parameter->value = value;
+    std::string error;
+    if (!ParameterEvaluator::evaluate(*component, *parameter, error)) {
+        parameter->value = previous;
+        ParameterEvaluator::evaluate(*component, *parameter, error);
+        return {StatusCode::InvalidParameter, "parameter '" + path + "': " + error, path};
+    }
+    return Status::ok();
+}
+
+} // namespace tlmhub

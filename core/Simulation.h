@@ -1,0 +1,115 @@
+#pragma once
+// A model compiled for running: the one way the CLI, validation, the server and the tests
+// run a System.
+//
+//   auto sim = compile(root, {.stopTime = 2.0});
+//   if (!sim) report(sim.status());
+//   sim->run(1.0);                   // resumable: run(1.0) then run(2.0) == run(2.0)
+//   sim->run(2.0, {.threads = 2});
+//   ResultView results = sim->results();
+//   sim->setParameter("Mass.m", "20");
+//   sim->reset();                    // back to the start, parameters evaluated again
+//   sim->run();
+//
+// States: compiled -> (first run initialises) initialised -> running -> paused (stopped
+// before the stop time on request of run's `until`) / finished / stopped / failed.
+// reset() returns to compiled from any state but running. Log storage is allocated when a
+// run starts from compiled, not at compile.
+//
+// The System stays the edit graph and holds what the step loop walks (run lists, node block,
+// log schedule and storage); it must outlive the Simulation and not be edited while one
+// exists.
+#include "core/ResultView.h"
+#include "core/Status.h"
+#include "core/System.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+namespace tlmhub {
+
+// Unset fields take the model's own values.
+struct SimulationSettings {
+    std::optional<double> startTime = {};
+    std::optional<double> stopTime = {};
+    std::optional<double> timestep = {};
+    std::optional<std::size_t> logSamples = {};
+};
+
+struct RunOptions {
+    unsigned threads = 1;   // 0 = one per core; results do not depend on it
+    // Called on the running thread every `progressInterval` steps with the steps taken since
+    // the start and the steps of the whole run.
+    std::function<void(std::size_t stepsTaken, std::size_t stepsTotal)> progress = {};
+    std::size_t progressInterval = 0;
+    std::stop_token stop = {};   // a stop request ends the run (state stopped)
+};
+
+enum class SimulationState { Compiled, Initialised, Running, Paused, Finished, Stopped, Failed };
+const char* simulationStateName(SimulationState state);
+
+class Simulation {
+public:
+    Simulation(Simulation&& other) noexcept;
+    Simulation& operator=(Simulation&& other) noexcept;
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+    ~Simulation();
+
+    // Compiled -> initialised: allocates the logs, evaluates the parameters and initialises
+    // the components at the start time. run() does it when needed.
+    Status initialise();
+    // Simulates from the current time up to `until` (at most the stop time).
+    Status run(double until, const RunOptions& options = {});
+    Status run(const RunOptions& options = {}) { return run(mStopTime, options); }
+
+    // Back to the state right after compile (node values as before the first run).
+    Status reset();
+    // "Comp.param", "Sub$Comp.param", or a system parameter "param" / "Sub.param". The value
+    // must evaluate; it takes effect from the next start (after reset(), or at once while the
+    // simulation is still compiled).
+    Status setParameter(const std::string& path, const std::string& value);
+
+    // Thread-safe: ends a run in progress (state stopped).
+    void requestStop();
+
+    SimulationState state() const { return mState; }
+    double startTime() const { return mStartTime; }
+    double stopTime() const { return mStopTime; }
+    double timestep() const { return mTimestep; }
+    double time() const;
+    std::size_t takenSteps() const;
+    std::size_t totalSteps() const;   // steps from the start to the stop time
+    std::size_t logSlots() const;     // samples a full run logs (known once initialised)
+
+    // The samples logged so far.
+    ResultView results() const;
+    // Warnings and errors of the last start and run.
+    const std::vector<Message>& messages() const;
+
+    System& system() { return *mRoot; }
+    const System& system() const { return *mRoot; }
+
+private:
+    friend Result<Simulation> compile(System& root, const SimulationSettings& settings);
+    Simulation(System& root, double start, double stop, double timestep);
+    Status failure(StatusCode fallback, const std::string& fallbackMessage) const;
+    void finish(SimulationState state);
+
+    System* mRoot = nullptr;
+    double mStartTime = 0.0, mStopTime = 0.0, mTimestep = 0.0;
+    SimulationState mState = SimulationState::Compiled;
+    std::size_t mTotalSteps = 0;
+    // Node values from before the first run, for reset().
+    std::vector<Node*> mNodes;
+    std::vector<double> mStartValues;
+};
+
+// Checks the model (structure, connections, every parameter) and applies the settings.
+Result<Simulation> compile(System& root, const SimulationSettings& settings = {});
+
+} // namespace tlmhub

@@ -1,0 +1,24 @@
+#include "core/Status.h"
+
+namespace tlmhub {
+
+const char* statusCodeName(StatusCode code)
+{
+    switch (code) {
+    case StatusCode::Ok: return "ok";
+    case StatusCode::UnknownComponentType: return "unknown_component_type";
+    case StatusCode::IllegalConnection: return "illegal_connection";
+    case StatusCode::UnconnectedPort: return "unconnected_port";
+    case StatusCode::UndefinedKind: return "undefined_kind";
+    case StatusCode::InvalidParameter: return "invalid_parameter";
+    case StatusCode::UnknownParameter: return "unknown_parameter";
+    case StatusCode::InvalidSettings: return "invalid_settings";
+    case StatusCode::AlgebraicLoop: return "algebraic_loop";
+    case StatusCode::InitFailed: return "init_failed";
+    case StatusCode::SimulationStopped: return "simulation_stopped";
+    case StatusCode::InvalidState: return "invalid_state";
+    }
+    return "unknown";
+}
+
+} // namespace tlmhub
