@@ -22,7 +22,8 @@ void describe(const System& sys, const std::string& indent)
         for (const auto& p : c->parameters().all())
             if (p->value != p->defaultValue)
                 std::printf("%s      %s = %s\n", indent.c_str(), p->name.c_str(), p->value.c_str());
-        for (const auto& [pname, port] : c->portsByName()) {
+        for (const auto& [name, port] : c->portsByName()) {
+            const std::string& pname = name;   // clang 14 cannot capture a structured binding
             auto printConn = [&](const Port* from) {
                 for (const Port* q : from->connectedPorts) {
                     const std::string other = q->component() == &sys ? q->name() : q->component()->name();
