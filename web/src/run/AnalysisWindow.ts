@@ -2,7 +2,7 @@
 // another, over a chosen time range and window, from the current run; CSV and PNG export.
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
-import { PlotSurface } from './PlotSurface';
+import { DerivedPlotFrame } from './DerivedPlotFrame';
 import { amplitudeSpectrum, peakFrequency, WINDOWS, type WindowName } from '../analysis/fft';
 import { bode } from '../analysis/bode';
 import { toCsv } from './RunData';
@@ -14,55 +14,37 @@ interface Result { x: number[]; series: { label: string; data: number[]; colour:
 
 export class AnalysisWindow {
     readonly element: HTMLElement;
-    private readonly surface = new PlotSurface();
-    private readonly body: HTMLElement;
-    private readonly note: HTMLElement;
+    private readonly frame: DerivedPlotFrame;
     private readonly inputSelect: HTMLSelectElement;
     private readonly outputSelect: HTMLSelectElement;
     private readonly windowSelect: HTMLSelectElement;
-    private readonly fromInput: HTMLInputElement;
-    private readonly toInput: HTMLInputElement;
     private run: RunData | null = null;
-    private computedFor = '';
     private result: Result | null = null;
 
     constructor(readonly id: number, readonly kind: AnalysisKind, variables: string[], private readonly labelOf: (name: string) => string,
-        private readonly onClose: (w: AnalysisWindow) => void) {
+        onClose: (w: AnalysisWindow) => void) {
         const choice = (name: string, label: string, selected: string | undefined) => h('select', { name, 'aria-label': label, onchange: () => this.recompute() },
             ...variables.map((v) => h('option', { value: v, selected: v === selected }, this.labelOf(v))));
         this.inputSelect = choice('input', kind === 'fft' ? 'Variable' : 'Input', variables[0]);
         this.outputSelect = choice('output', 'Output', variables[1] ?? variables[0]);
         this.windowSelect = h('select', { name: 'window', 'aria-label': 'Window', onchange: () => this.recompute() },
             ...WINDOWS.map((w) => h('option', { value: w }, w)));
-        const time = (name: string, label: string) => h('input', { name, 'aria-label': label, size: 6, placeholder: name === 'from' ? 'start' : 'end', onchange: () => this.recompute() });
-        this.fromInput = time('from', 'From time');
-        this.toInput = time('to', 'To time');
-        this.note = h('span', { class: 'analysis-note', 'data-testid': 'analysis-note' });
-        this.body = h('div', { class: 'plot-body' }, this.surface.element);
-        this.element = h('section', { class: 'plot-window analysis-window', 'data-analysis': kind, 'data-plot-id': `a${id}` },
-            h('header', { class: 'plot-header' },
-                h('strong', {}, kind === 'fft' ? 'Spectrum (FFT)' : 'Bode'),
-                kind === 'fft' ? this.inputSelect : h('span', { class: 'analysis-pair' }, 'out ', this.outputSelect, ' / in ', this.inputSelect),
-                this.windowSelect, this.fromInput, '–', this.toInput, ' s',
-                this.note,
-                h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export as CSV' }, 'CSV'),
-                h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save as PNG' }, 'PNG'),
-                h('button', { class: 'small', onclick: () => this.onClose(this), title: 'Close', 'aria-label': 'Close analysis' }, '×')),
-            this.body);
+        this.frame = new DerivedPlotFrame({
+            plotId: `a${id}`, analysis: kind, title: kind === 'fft' ? 'Spectrum (FFT)' : 'Bode', closeLabel: 'Close analysis',
+            controls: [kind === 'fft' ? this.inputSelect : h('span', { class: 'analysis-pair' }, 'out ', this.outputSelect, ' / in ', this.inputSelect),
+                this.windowSelect],
+            changed: () => this.recompute(),
+            exportCsv: () => this.exportCsv(),
+            exportPng: () => this.exportPng(),
+            close: () => onClose(this),
+        });
+        this.element = this.frame.element;
     }
 
     /** Recomputes when the run has new data (finished runs only: a spectrum of half a run misleads). */
     update(current: RunData | null): void {
         this.run = current;
-        const key = current ? `${current.jobId}:${current.state}:${current.time.length}` : '';
-        if (key === this.computedFor) return;
-        this.computedFor = key;
-        this.recompute();
-    }
-
-    private range(input: HTMLInputElement): number | undefined {
-        const text = input.value.trim();
-        return text === '' || !Number.isFinite(Number(text)) ? undefined : Number(text);
+        if (this.frame.runChanged(current)) this.recompute();
     }
 
     private recompute(): void {
@@ -70,8 +52,7 @@ export class AnalysisWindow {
         if (!run || !run.finished) return this.show(null, run ? 'Waiting for the run to finish.' : 'Run the model first.');
         try {
             const window = this.windowSelect.value as WindowName;
-            const from = this.range(this.fromInput);
-            const to = this.range(this.toInput);
+            const { from, to } = this.frame.timeRange();
             const column = (name: string) => {
                 const data = run.columns.get(name);
                 if (!data) throw new Error(`${this.labelOf(name)} is not in this run`);
@@ -97,14 +78,14 @@ export class AnalysisWindow {
 
     private show(result: Result | null, note: string): void {
         this.result = result;
-        this.note.textContent = note;
-        if (!result) return this.surface.clear();
+        this.frame.setNote(note);
+        if (!result) return this.frame.surface.clear();
         const bodeAxes: uPlot.Axis[] = [
             { label: 'frequency [Hz]', size: 50 },
             { scale: 'dB', label: 'gain [dB]', size: 60, stroke: '#1f6fd1' },
             { scale: 'deg', label: 'phase [°]', side: 1, size: 60, stroke: '#d1421f', grid: { show: false } },
         ];
-        this.surface.draw({
+        this.frame.surface.draw({
             scales: { x: { time: false, distr: this.kind === 'bode' ? 3 : 1 } },
             cursor: { drag: { x: true, y: false } },
             legend: { live: true },
@@ -120,11 +101,8 @@ export class AnalysisWindow {
     }
 
     private exportPng(): void {
-        this.surface.exportPng(`${this.kind}-${this.id}.png`, (this.result?.series ?? []).map((s) => ({ label: s.label, colour: s.colour, dashed: false })));
+        this.frame.surface.exportPng(`${this.kind}-${this.id}.png`, (this.result?.series ?? []).map((s) => ({ label: s.label, colour: s.colour, dashed: false })));
     }
 
-    destroy(): void {
-        this.surface.destroy();
-        this.element.remove();
-    }
+    destroy(): void { this.frame.destroy(); }
 }

@@ -2,7 +2,7 @@
 // over position), over an optional time range; CSV and PNG export.
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
-import { PlotSurface } from './PlotSurface';
+import { DerivedPlotFrame } from './DerivedPlotFrame';
 import { samplesIn } from '../analysis/fft';
 import { toCsv } from './RunData';
 import { siPrefix, unitOfVariable } from './units';
@@ -25,45 +25,31 @@ const pointToPoint: uPlot.Series.PathBuilder = (u, seriesIdx) => {
 
 export class XyWindow {
     readonly element: HTMLElement;
-    private readonly surface = new PlotSurface();
+    private readonly frame: DerivedPlotFrame;
     private readonly xSelect: HTMLSelectElement;
     private readonly ySelect: HTMLSelectElement;
-    private readonly fromInput: HTMLInputElement;
-    private readonly toInput: HTMLInputElement;
-    private readonly note: HTMLElement;
     private run: RunData | null = null;
-    private computedFor = '';
     private points: { x: number[]; y: number[] } | null = null;
 
-    constructor(readonly id: number, variables: string[], private readonly labelOf: (name: string) => string, private readonly onClose: (w: XyWindow) => void) {
+    constructor(readonly id: number, variables: string[], private readonly labelOf: (name: string) => string, onClose: (w: XyWindow) => void) {
         const choice = (label: string, selected: string | undefined) => h('select', { 'aria-label': label, onchange: () => this.redraw() },
             ...variables.map((v) => h('option', { value: v, selected: v === selected }, labelOf(v))));
         this.xSelect = choice('X variable', variables[0]);
         this.ySelect = choice('Y variable', variables[1] ?? variables[0]);
-        const time = (label: string, placeholder: string) => h('input', { 'aria-label': label, size: 6, placeholder, onchange: () => this.redraw() });
-        this.fromInput = time('From time', 'start');
-        this.toInput = time('To time', 'end');
-        this.note = h('span', { class: 'analysis-note', 'data-testid': 'analysis-note' });
-        this.element = h('section', { class: 'plot-window analysis-window', 'data-analysis': 'xy', 'data-plot-id': `xy${id}` },
-            h('header', { class: 'plot-header' },
-                h('strong', {}, 'XY'), 'y ', this.ySelect, ' over x ', this.xSelect, this.fromInput, '–', this.toInput, ' s', this.note,
-                h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export as CSV' }, 'CSV'),
-                h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save as PNG' }, 'PNG'),
-                h('button', { class: 'small', onclick: () => this.onClose(this), title: 'Close', 'aria-label': 'Close XY plot' }, '×')),
-            h('div', { class: 'plot-body' }, this.surface.element));
+        this.frame = new DerivedPlotFrame({
+            plotId: `xy${id}`, analysis: 'xy', title: 'XY', closeLabel: 'Close XY plot',
+            controls: ['y ', this.ySelect, ' over x ', this.xSelect],
+            changed: () => this.redraw(),
+            exportCsv: () => this.exportCsv(),
+            exportPng: () => this.exportPng(),
+            close: () => onClose(this),
+        });
+        this.element = this.frame.element;
     }
 
     update(current: RunData | null): void {
         this.run = current;
-        const key = current ? `${current.jobId}:${current.state}:${current.time.length}` : '';
-        if (key === this.computedFor) return;
-        this.computedFor = key;
-        this.redraw();
-    }
-
-    private time(input: HTMLInputElement): number | undefined {
-        const text = input.value.trim();
-        return text === '' || !Number.isFinite(Number(text)) ? undefined : Number(text);
+        if (this.frame.runChanged(current)) this.redraw();
     }
 
     private redraw(): void {
@@ -72,17 +58,16 @@ export class XyWindow {
         const ys = run?.columns.get(this.ySelect.value);
         if (!run || !xs || !ys) {
             this.points = null;
-            this.note.textContent = run ? 'The variables are not in this run yet.' : 'Run the model first.';
-            return this.surface.clear();
+            this.frame.setNote(run ? 'The variables are not in this run yet.' : 'Run the model first.');
+            return this.frame.surface.clear();
         }
         try {
-            const from = this.time(this.fromInput);
-            const to = this.time(this.toInput);
+            const { from, to } = this.frame.timeRange();
             const x = samplesIn({ time: run.time, values: xs }, from, to).values;
             const y = samplesIn({ time: run.time, values: ys }, from, to).values;
             this.points = { x, y };
             this.element.dataset.points = String(x.length);
-            this.note.textContent = `${x.length} points`;
+            this.frame.setNote(`${x.length} points`);
             const label = (v: string) => this.labelOf(v);
             const axis = (name: string, values: number[], size: number): uPlot.Axis => {
                 const prefixed = siPrefix(values.reduce((m, v) => Math.max(m, Math.abs(v)), 0), unitOfVariable(name));
@@ -91,7 +76,7 @@ export class XyWindow {
                     values: (_u, splits) => splits.map((v) => String(Number((v / prefixed.factor).toPrecision(4)))),
                 };
             };
-            this.surface.draw({
+            this.frame.surface.draw({
                 mode: 2,
                 scales: { x: { time: false, auto: true }, y: { auto: true } },
                 cursor: { drag: { x: true, y: true } },
@@ -104,7 +89,7 @@ export class XyWindow {
                 } as uPlot.Series],
             }, [null, [x, y]] as unknown as uPlot.AlignedData);
         } catch (e) {
-            this.note.textContent = errorText(e);
+            this.frame.setNote(errorText(e));
         }
     }
 
@@ -115,11 +100,8 @@ export class XyWindow {
     }
 
     private exportPng(): void {
-        this.surface.exportPng(`xy-${this.id}.png`, [{ label: `${this.labelOf(this.ySelect.value)} over ${this.labelOf(this.xSelect.value)}`, colour: COLOUR, dashed: false }]);
+        this.frame.surface.exportPng(`xy-${this.id}.png`, [{ label: `${this.labelOf(this.ySelect.value)} over ${this.labelOf(this.xSelect.value)}`, colour: COLOUR, dashed: false }]);
     }
 
-    destroy(): void {
-        this.surface.destroy();
-        this.element.remove();
-    }
+    destroy(): void { this.frame.destroy(); }
 }
