@@ -1,5 +1,7 @@
 #include "fuzz/FuzzServer.h"
 
+#include "server/auth/PasswordHasher.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -35,10 +37,16 @@ FuzzServer& FuzzServer::instance()
 
 FuzzServer::FuzzServer()
 {
+    // Before the first hash (bootstrap's admin, the login decoy): inputs that create users or
+    // log in would otherwise take 0.1 s each.
+    server::setPasswordCost(server::PasswordCost::Minimal);
     server::ServerOptions options;
     options.dataDir = (mDir.path() / "data").string();
     options.webRoot = (mDir.path() / "web").string();   // empty: no web app served
-    options.exampleDirs = {TLMHUB_SHARED_DIR "/hopsan-models/Example Models"};
+    // Small models of our own rather than the shared examples: opening and serialising a
+    // large model would take most of each run (65 runs/s with the examples), and the hmf
+    // target covers the loader.
+    options.exampleDirs = {TLMHUB_FUZZ_MODELS_DIR};
     if (!fs::is_directory(options.exampleDirs[0])) fail("no example models at " + options.exampleDirs[0]);
     options.workers = 1;
     mApp = std::make_unique<server::TlmhubApp>(options);

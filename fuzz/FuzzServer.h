@@ -1,6 +1,6 @@
 #pragma once
 // A TlmhubApp for the server fuzz targets, driven without a network: a fresh temporary data
-// directory seeded with the shared example models, and a logged-in admin. Job workers are
+// directory seeded with the small models in fuzz/models/, and a logged-in admin. Job workers are
 // never started, so a submitted job stays queued and the fuzz loop never simulates.
 #include "server/app/TlmhubApp.h"
 #include "server/auth/TokenService.h"

@@ -7,6 +7,13 @@
 
 namespace tlmhub::server {
 
+// The costs of new hashes, process-wide. Minimal (libsodium's least: one pass, 8 KiB) is for
+// the fuzz targets only, where a 0.1 s hash per input would stall the fuzzer; the server
+// never sets it. Verifying reads the costs from the stored hash, so either setting verifies
+// every hash.
+enum class PasswordCost { Interactive, Minimal };
+void setPasswordCost(PasswordCost cost);
+
 // Throws std::runtime_error when libsodium cannot allocate the memory the hash needs.
 std::string hashPassword(const std::string& password);
 
