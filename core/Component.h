@@ -161,8 +161,6 @@ protected:
     double* getSafeMultiPortNodeDataPtr(Port* port, std::size_t subIndex, int id, double initialValue);
     // Number of sub-ports of a multiport (connections), 1 for other ports.
     std::size_t getNumPorts(const Port* port) const;
-    double readNodeSafe(Port* port, int id) { return *getSafeNodeDataPtr(port, id); }
-    void writeNodeSafe(Port* port, int id, double v) { *getSafeNodeDataPtr(port, id) = v; }
 
 private:
     Port* addPortInternal(const std::string& name, PortKind kind, NodeType type, bool required);

@@ -290,11 +290,7 @@ bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
             for (Component* c : partQ[id]) runComponent(c, t);
             barrier.arriveAndWait([&] { stopSnapshot = stopRequested(); });
             if (logsAfter[step]) {
-                for (std::size_t k = shares[id].first; k < shares[id].second; ++k) {
-                    Node* node = mLoggedNodes[k];
-                    const std::size_t sz = node->size();
-                    std::copy(node->data(), node->data() + sz, node->logData.data() + slot * sz);
-                }
+                for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);
             }
             if (id == 0) {
                 mTime = t;

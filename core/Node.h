@@ -2,6 +2,7 @@
 // A node: the data vector shared by every port of one connection group (core.md §1, §2.5).
 #include "core/NodeTypes.h"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,6 +59,8 @@ public:
     // Logged samples, nSamples * size() doubles (sample-major).
     LogBuffer logData;
     System* logOwner = nullptr;   // system whose time vector belongs to logData
+    // Copies the current values into sample `slot` of logData.
+    void logSample(std::size_t slot) { std::copy(mData, mData + size(), logData.data() + slot * size()); }
 
 private:
     NodeType mType;

@@ -1,6 +1,7 @@
 #include "core/Simulation.h"
 
 #include "core/ParameterEvaluator.h"
+#include "core/numerics/StepCount.h"
 
 #include <cmath>
 #include <utility>
@@ -8,13 +9,6 @@
 namespace tlmhub {
 
 namespace {
-
-// Hopsan's round: truncate(x + 0.5) on a non-negative double (as System's step count).
-std::size_t roundSteps(double x)
-{
-    if (!(x > 0.0)) return 0;
-    return static_cast<std::size_t>(x + 0.5);
-}
 
 // The component a parameter path names: "Sub$Comp" walks subsystems; "" is the root.
 Component* componentAt(System& root, const std::string& path)

@@ -1,6 +1,7 @@
 #include "core/System.h"
 
 #include "core/ParameterEvaluator.h"
+#include "core/numerics/StepCount.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -11,13 +12,6 @@
 namespace tlmhub {
 
 namespace {
-
-// Hopsan's round: truncate(x + 0.5) on a non-negative double.
-std::size_t roundSteps(double x)
-{
-    if (!(x > 0.0)) return 0;
-    return static_cast<std::size_t>(x + 0.5);
-}
 
 const char* kReservedNames[] = {"self", "Time", "time", "Frequency", "frequency"};
 
@@ -944,10 +938,7 @@ void System::logSample()
 {
     if (mLogCounter >= mLogSteps.size() || mLogSteps[mLogCounter] != mTakenSteps) return;
     mLogTime[mLogCounter] = mTime;
-    for (Node* n : mLoggedNodes) {
-        const std::size_t sz = n->size();
-        std::copy(n->data(), n->data() + sz, n->logData.data() + mLogCounter * sz);
-    }
+    for (Node* n : mLoggedNodes) n->logSample(mLogCounter);
     ++mLogCounter;
 }
 

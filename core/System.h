@@ -76,8 +76,9 @@ public:
     bool checkModel(std::string& error);
     bool initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
-    // The same steps with the root's C and Q lists split over `threads` threads (0 = one per
-    // core); S components run on the calling thread. Results are identical to simulate().
+    // The same steps with the root's S, C and Q lists split over `threads` threads (0 = one
+    // per core; S components by signal cluster, see MultiThreadedSimulation.cpp). Results are
+    // identical to simulate().
     bool simulateMultiThreaded(double stopTime, unsigned threads);
     // Root: the next `steps` steps (runs can be continued step-exactly this way).
     bool simulateSteps(std::size_t steps);

@@ -130,7 +130,7 @@ private:
         ++mComponentCount;
         if (mLimits.maxComponents == 0 || mComponentCount <= mLimits.maxComponents) return true;
         error("the model has more than " + std::to_string(mLimits.maxComponents) +
-              " components and subsystems, the limit here");
+              " components and subsystems, the limit here" + mLimits.componentsHint);
         mFailed = true;
         return false;
     }
@@ -181,7 +181,7 @@ private:
         if (depth > mLimits.maxSubsystemDepth) {
             error("subsystem '" + std::string(node.attribute("name").as_string()) + "' is nested " +
                   std::to_string(depth) + " levels deep; the limit is " +
-                  std::to_string(mLimits.maxSubsystemDepth));
+                  std::to_string(mLimits.maxSubsystemDepth) + mLimits.depthHint);
             mFailed = true;
             return;
         }

@@ -20,6 +20,10 @@ struct LoadedModel {
 struct LoadLimits {
     std::size_t maxSubsystemDepth = 64;   // subsystems inside subsystems, the root is level 0
     std::size_t maxComponents = 0;        // components and subsystems in all; 0: no limit
+    // Appended to the refusal when the limit is hit, to say how it is raised (a server
+    // names its flag, e.g. " (--max-model-depth)").
+    std::string depthHint;
+    std::string componentsHint;
 };
 // Elements nested deeper than this are refused before anything is built (no model needs
 // more than a few dozen levels; every walk over the tree then stays shallow).

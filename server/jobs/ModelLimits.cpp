@@ -18,16 +18,10 @@ LoadedModel loadUntrustedModel(const std::string& hmf, const ModelLimits& limits
     }
     LoadLimits load;
     load.maxComponents = limits.maxComponents;
+    load.componentsHint = " (--max-model-components)";
     load.maxSubsystemDepth = limits.maxDepth;
-    LoadedModel loaded = loadHmfString(hmf, modelDirectory, sourceName, load);
-    // Say which server flag raises the limit the model ran into.
-    for (Message& m : loaded.messages) {
-        if (m.text.find("components and subsystems, the limit here") != std::string::npos)
-            m.text += " (--max-model-components)";
-        else if (m.text.find("levels deep; the limit is") != std::string::npos)
-            m.text += " (--max-model-depth)";
-    }
-    return loaded;
+    load.depthHint = " (--max-model-depth)";
+    return loadHmfString(hmf, modelDirectory, sourceName, load);
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #include "ServerHarness.h"
 
 #include <boost/asio/connect.hpp>
+#include <gtest/gtest.h>
 
 #include <chrono>
 #include <csignal>
@@ -232,6 +233,27 @@ nlohmann::json WsClient::call(const std::string& type, nlohmann::json fields)
         events.push_back(std::move(m));
     }
     return nlohmann::json();
+}
+
+std::string testPassword(const std::string& user)
+{
+    return user == "admin" ? kAdminPassword : user + "-password";
+}
+
+void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names)
+{
+    HttpClient admin = loggedInAs(server, "admin");
+    for (const char* name : names) {
+        const auto r = admin.post("/api/v1/users", {{"username", name}, {"password", testPassword(name)}, {"role", "user"}});
+        EXPECT_EQ(r.status, 201) << name << ": " << r.body;
+    }
+}
+
+HttpClient loggedInAs(const ServerProcess& server, const std::string& user)
+{
+    HttpClient c(server.port());
+    c.login(user, testPassword(user));
+    return c;
 }
 
 } // namespace tlmhub::test

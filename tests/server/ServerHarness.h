@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -93,5 +94,12 @@ std::string rawExchange(unsigned short port, const std::string& bytes, int timeo
 std::string readFile(const std::filesystem::path& path);
 std::filesystem::path freshTempDir(const std::string& name);
 constexpr const char* kAdminPassword = "admin-secret-pw";
+
+// Test users: `name` logs in with "<name>-password" (the admin with kAdminPassword).
+std::string testPassword(const std::string& user);
+// Creates each user with role "user" through the admin (the test fails if one is refused).
+void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names);
+// A client of `server` logged in as `user`.
+HttpClient loggedInAs(const ServerProcess& server, const std::string& user);
 
 } // namespace tlmhub::test

@@ -86,11 +86,7 @@ protected:
         fs::create_symlink(*dataDir / kSentinelFile, *dataDir / "web" / "link.txt");
         server = new ServerProcess(*dataDir, {"--web-root", (*dataDir / "web").string(),
                                               "--examples-dir", (kShared / "hopsan-models" / "Example Models").string()});
-        HttpClient admin(server->port());
-        admin.login("admin", kAdminPassword);
-        for (const char* name : {"alice", "bob"})
-            ASSERT_EQ(admin.post("/api/v1/users", {{"username", name}, {"password", std::string(name) + "-password"},
-                                                   {"role", "user"}}).status, 201);
+        createTestUsers(*server, {"alice", "bob"});
     }
     static void TearDownTestSuite()
     {
@@ -98,12 +94,7 @@ protected:
         fs::remove_all(*dataDir);
         delete dataDir;
     }
-    HttpClient as(const std::string& user)
-    {
-        HttpClient c(server->port());
-        c.login(user, user == "admin" ? kAdminPassword : user + "-password");
-        return c;
-    }
+    HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
     std::int64_t userId(const std::string& name)
     {
         for (const auto& u : as("admin").get("/api/v1/users").json())

@@ -23,12 +23,7 @@ protected:
     {
         dataDir = new fs::path(freshTempDir("api"));
         server = new ServerProcess(*dataDir);
-        HttpClient admin(server->port());
-        admin.login("admin", kAdminPassword);
-        for (const char* name : {"alice", "bob"}) {
-            const auto r = admin.post("/api/v1/users", {{"username", name}, {"password", std::string(name) + "-password"}, {"role", "user"}});
-            ASSERT_EQ(r.status, 201) << r.body;
-        }
+        createTestUsers(*server, {"alice", "bob"});
     }
     static void TearDownTestSuite()
     {
@@ -36,12 +31,7 @@ protected:
         fs::remove_all(*dataDir);
         delete dataDir;
     }
-    HttpClient as(const std::string& user)
-    {
-        HttpClient c(server->port());
-        c.login(user, user == "admin" ? kAdminPassword : user + "-password");
-        return c;
-    }
+    HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
     std::int64_t uploadModel(HttpClient& c, const fs::path& file, const std::string& name)
     {
         const auto r = c.request(http::verb::post, "/api/v1/models?name=" + name, readFile(file), "application/xml");

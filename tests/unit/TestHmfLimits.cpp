@@ -97,3 +97,16 @@ TEST(HmfLimits, AnExternalSubsystemThatIncludesItselfEndsAtTheDepthLimit)
     EXPECT_NE(loaded.firstError().find("the limit is 0"), std::string::npos) << loaded.firstError();
     fs::remove_all(dir);
 }
+
+TEST(HmfLimits, RefusalsEndWithTheCallersHintOnRaisingTheLimit)
+{
+    LoadLimits limits;
+    limits.maxSubsystemDepth = 2;
+    limits.depthHint = " (raise with --depth)";
+    limits.maxComponents = 3;
+    limits.componentsHint = " (raise with --components)";
+    const std::string deep = loadHmfString(nestedSubsystems(3), "", "deep.hmf", limits).firstError();
+    EXPECT_NE(deep.find("the limit is 2 (raise with --depth)"), std::string::npos) << deep;
+    const std::string many = loadHmfString(manyGains(4), "", "many.hmf", limits).firstError();
+    EXPECT_NE(many.find("the limit here (raise with --components)"), std::string::npos) << many;
+}
