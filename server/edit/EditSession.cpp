@@ -47,14 +47,11 @@ std::string valueString(const json& value)
     throw std::invalid_argument("value: expected string or number");
 }
 
-// The component part of each end of a preserved connection key "a.pa|b.pb". Names are
-// sanitised to [A-Za-z0-9_], so '.' and '|' cannot occur inside them.
+// The component part of each end of a preserved connection key "a.pa|b.pb".
 std::pair<std::string, std::string> keyComponents(const std::string& key)
 {
-    const std::size_t bar = key.find('|');
-    const std::string a = key.substr(0, bar);
-    const std::string b = bar == std::string::npos ? std::string() : key.substr(bar + 1);
-    return {a.substr(0, a.find('.')), b.substr(0, b.find('.'))};
+    const preserved::ConnectionKeyParts parts = preserved::parseConnectionKey(key);
+    return {parts.a, parts.b};
 }
 
 std::string renameKeyEnd(const std::string& end, const std::string& oldName, const std::string& newName)

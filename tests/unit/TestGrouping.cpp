@@ -1,0 +1,210 @@
+// System::group / System::ungroup on shared example models: a grouped model logs exactly
+// the same numbers (under the subsystem's variable names), a group that could not run is
+// refused without a change, and ungroup gives the original model back.
+#include "TestHelpers.h"
+
+#include "core/ResultTable.h"
+#include "core/hmf/HmfLoader.h"
+#include "core/hmf/HmfSaver.h"
+
+#include <set>
+
+using namespace tlmhub;
+using namespace tlmhub::test;
+
+namespace {
+
+const std::string kServo = "Example Models/Position Servo.hmf";
+const std::string kFeedback = "Example Models/Dynamic Pressure Feedback.hmf";
+const std::string kSubsystems = "Example Models/Sub System Example.hmf";
+
+std::unique_ptr<System> load(const std::string& relPath)
+{
+    LoadedModel loaded = loadHmfFile(sharedDir() + "/hopsan-models/" + relPath);
+    EXPECT_FALSE(loaded.hasErrors()) << loaded.firstError();
+    return std::move(loaded.root);
+}
+
+ResultTable simulate(System& root)
+{
+    std::string error;
+    EXPECT_TRUE(root.checkModel(error)) << error;
+    EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
+    EXPECT_TRUE(root.simulate(root.stopTime));
+    root.finalize();
+    return ResultTable::fromSystem(root);
+}
+
+// Every variable logged before is logged after, with the grouped components' variables
+// under `sub$`, and holds exactly the same values.
+void expectSameResults(const ResultTable& before, const ResultTable& after, const std::string& sub,
+                       const std::set<std::string>& grouped)
+{
+    ASSERT_FALSE(before.columns.empty());
+    EXPECT_EQ(before.time, after.time);
+    for (const ResultColumn& column : before.columns) {
+        const std::string component = column.name.substr(0, column.name.find_first_of("#$"));
+        const std::string name = grouped.count(component) ? sub + "$" + column.name : column.name;
+        const ResultColumn* now = after.column(name);
+        ASSERT_TRUE(now) << "no variable " << name << " after grouping";
+        EXPECT_EQ(now->data, column.data) << name;
+    }
+    if (const ResultColumn* subTime = after.column(sub + "$Time")) {
+        EXPECT_EQ(subTime->data, before.time);
+    }
+}
+
+void groupKeepsResults(const std::string& model, const std::vector<std::string>& names, CqsKind kind)
+{
+    auto original = load(model);
+    ASSERT_TRUE(original);
+    const ResultTable before = simulate(*original);
+
+    auto root = load(model);
+    std::string error;
+    const std::string sub = root->group(names, "Group", error);
+    ASSERT_EQ(sub, "Group") << error;
+    ASSERT_TRUE(root->subsystem(sub));
+    EXPECT_EQ(root->subsystem(sub)->kind(), kind);
+    const std::set<std::string> grouped(names.begin(), names.end());
+    expectSameResults(before, simulate(*root), sub, grouped);
+
+    // The grouped model saves as a model that runs the same.
+    LoadedModel reloaded = loadHmfString(saveHmfString(*root), original->modelDirectory, "grouped");
+    ASSERT_FALSE(reloaded.hasErrors()) << reloaded.firstError();
+    expectSameResults(before, simulate(*reloaded.root), sub, grouped);
+}
+
+} // namespace
+
+TEST(Grouping, QTypeHydraulicComponentsKeepEveryResult)
+{
+    groupKeepsResults(kServo, {"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"},
+                      CqsKind::Q);
+}
+
+TEST(Grouping, SubsystemsAndSensorsKeepEveryResult)
+{
+    groupKeepsResults(kSubsystems, {"Servo1", "Servo1_Position"}, CqsKind::Q);
+}
+
+TEST(Grouping, MultiportKeepsOneSystemPortPerNode)
+{
+    auto root = load(kServo);
+    std::string error;
+    const std::string sub = root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"},
+                                        "Group", error);
+    ASSERT_FALSE(sub.empty()) << error;
+    // Three separate connections to the volume's multiport stay three nodes.
+    const Port* volume = root->component("Hydraulic_Volume_Multi_Port")->port("P1");
+    ASSERT_EQ(volume->subPorts.size(), 3u);
+    std::set<const Node*> nodes;
+    for (const auto& p : volume->subPorts) {
+        ASSERT_EQ(p->connectedPorts.size(), 1u);
+        EXPECT_EQ(p->connectedPorts[0]->component(), root->subsystem(sub));
+        nodes.insert(p->node());
+    }
+    EXPECT_EQ(nodes.size(), 3u);
+}
+
+TEST(Grouping, SignalChainKeepsEveryResult)
+{
+    groupKeepsResults(kFeedback, {"Subtract_1", "Gain_1", "Subtract_2"}, CqsKind::S);
+}
+
+TEST(Grouping, UndefinedKindIsRefusedAndTheModelIsUnchanged)
+{
+    auto root = load(kServo);
+    const std::string before = saveHmfString(*root);
+    std::string error;
+    // The mass is Q-type, the cylinder C-type, and both have connections leaving the group.
+    EXPECT_TRUE(root->group({"Mass", "Cylinder_C"}, "Group", error).empty());
+    EXPECT_NE(error.find("undefined C/Q/S kind"), std::string::npos) << error;
+    EXPECT_EQ(saveHmfString(*root), before);
+    EXPECT_FALSE(root->component("Group"));
+}
+
+TEST(Grouping, BadSelectionsAreRefusedAndTheModelIsUnchanged)
+{
+    auto root = load(kServo);
+    const std::string before = saveHmfString(*root);
+    std::string error;
+    EXPECT_TRUE(root->group({}, "Group", error).empty());
+    EXPECT_NE(error.find("nothing"), std::string::npos) << error;
+    EXPECT_TRUE(root->group({"Mass", "Teapot"}, "Group", error).empty());
+    EXPECT_NE(error.find("Teapot"), std::string::npos) << error;
+    EXPECT_TRUE(root->group({"Mass", "Mass"}, "Group", error).empty());
+    EXPECT_NE(error.find("twice"), std::string::npos) << error;
+    EXPECT_EQ(saveHmfString(*root), before);
+}
+
+TEST(Grouping, SystemPortsOfTheSystemCannotBeGrouped)
+{
+    auto root = load(kSubsystems);
+    System* servo = root->subsystem("Servo1");
+    ASSERT_TRUE(servo);
+    Port* sp = nullptr;
+    for (Port* p : servo->ports())
+        if (p->kind() == PortKind::System) sp = p;
+    ASSERT_TRUE(sp);
+    std::string error;
+    EXPECT_TRUE(servo->group({sp->name()}, "Group", error).empty());
+    EXPECT_NE(error.find("system port"), std::string::npos) << error;
+}
+
+// Components listed one after another in the file come back in their places, so the saved
+// model is the original one, GUI data included.
+TEST(Grouping, UngroupRestoresTheModel)
+{
+    for (const auto& [model, names] :
+         {std::pair<std::string, std::vector<std::string>>{
+              kServo, {"Pressure_Relief_Valve", "Step", "Q_type_Fixed_Displacement_Pump_1"}},
+          std::pair<std::string, std::vector<std::string>>{kFeedback, {"Gain_1", "Subtract_1", "Subtract_2"}},
+          std::pair<std::string, std::vector<std::string>>{kSubsystems, {"Servo1", "Servo2"}}}) {
+        SCOPED_TRACE(model);
+        auto original = load(model);
+        const ResultTable before = simulate(*original);
+        auto root = load(model);
+        std::string error;
+        const std::string sub = root->group(names, "Group", error);
+        ASSERT_FALSE(sub.empty()) << error;
+        std::vector<std::string> moved;
+        ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+        EXPECT_EQ(moved, names);
+        EXPECT_EQ(saveHmfString(*root), saveHmfString(*original));
+        expectSameResults(before, simulate(*root), "", {});
+    }
+}
+
+// Components from different places in the file come back side by side; the model runs the same.
+TEST(Grouping, UngroupOfScatteredComponentsKeepsEveryResult)
+{
+    auto original = load(kServo);
+    const ResultTable before = simulate(*original);
+    auto root = load(kServo);
+    std::string error;
+    const std::string sub =
+        root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"}, "Group", error);
+    ASSERT_FALSE(sub.empty()) << error;
+    std::vector<std::string> moved;
+    ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+    EXPECT_EQ(moved, (std::vector<std::string>{"Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1",
+                                                "4_3_Servo_Valve"}));
+    expectSameResults(before, simulate(*root), "", {});
+}
+
+TEST(Grouping, UngroupMovesSubsystemParametersAndMakesNamesUnique)
+{
+    auto root = load(kServo);
+    std::string error;
+    const std::string sub = root->group({"GainP", "GainI"}, "Gains", error);
+    ASSERT_FALSE(sub.empty()) << error;
+    System* gains = root->subsystem(sub);
+    ASSERT_TRUE(gains->setSystemParameter("k", "2", "double", "", "", false, error)) << error;
+    add(*root, "SignalGain", "GainP");   // takes the name of a grouped component
+    std::vector<std::string> moved;
+    ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+    EXPECT_EQ(moved, (std::vector<std::string>{"GainI", "GainP_1"}));
+    EXPECT_TRUE(root->parameters().find("k"));
+    EXPECT_FALSE(root->component(sub));
+}
