@@ -5,6 +5,7 @@
 // grouped model simulates exactly as before.
 #include "core/System.h"
 
+#include "core/Node.h"
 #include "core/hmf/PreservedXml.h"
 
 #include <algorithm>
@@ -48,7 +49,8 @@ void copyStartValues(const Port* from, Port* to)
     if (!from->hasStartNode() || !to->hasStartNode()) return;
     to->startValues = from->startValues;
     for (const auto& v : nodeTypeInfo(to->nodeType()).variables) {
-        const std::string var = "#" + std::string(v.name);
+        std::string var = "#";
+        var += v.name;
         const Parameter* src = from->component()->parameters().find(from->name() + var);
         Parameter* dst = to->component()->parameters().find(to->name() + var);
         if (src && dst) dst->value = src->value;
@@ -65,6 +67,44 @@ std::string listNames(const std::set<std::string>& names)
     std::string out;
     for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
     return out;
+}
+
+// The components of `system` that the sort (core.md §3.3) must place after `c`: those
+// reading, through a Destination port, a node that `c` writes through a Source port.
+std::vector<const Component*> readersOf(const System& system, const Component& c)
+{
+    auto hint = [](const Port* p) { return p->kind() == PortKind::System ? p->internalSortHint : p->sortHint; };
+    std::vector<const Component*> out;
+    for (Port* p : connectionEnds(c)) {
+        if (hint(p) != SortHint::Source) continue;
+        for (const Port* r : p->node()->ports())
+            if (r->component() != &c && r->component()->parentSystem() == &system && hint(r) == SortHint::Destination)
+                out.push_back(r->component());
+    }
+    return out;
+}
+
+// Whether a group of `kind` would sit in a signal loop: a path from the selection through
+// other components of the same run list back into it, which the sort could not order.
+// Returns the first component on such a path, or null.
+const Component* loopThrough(const System& system, const std::vector<Component*>& chosen,
+                             const std::set<const Component*>& selected, CqsKind kind)
+{
+    for (const Component* start : chosen)
+        for (const Component* first : readersOf(system, *start)) {
+            if (selected.count(first) || first->kind() != kind) continue;
+            std::set<const Component*> seen{first};
+            std::deque<const Component*> todo{first};
+            while (!todo.empty()) {
+                const Component* c = todo.front();
+                todo.pop_front();
+                for (const Component* next : readersOf(system, *c)) {
+                    if (selected.count(next)) return first;
+                    if (next->kind() == kind && seen.insert(next).second) todo.push_back(next);
+                }
+            }
+        }
+    return nullptr;
 }
 
 // A connection from a selected component to one outside the selection, and what replaces
@@ -165,6 +205,13 @@ std::string System::group(const std::vector<std::string>& names, const std::stri
                 "both C-type (" + listNames(cs) + ") and Q-type (" + listNames(qs) +
                 ") components; select components so that the connections leaving the group are "
                 "all from C-type or all from Q-type ones";
+        return {};
+    }
+
+    if (const Component* c = loopThrough(*this, chosen, selected, newKind)) {
+        error = "the subsystem would be in a signal loop through '" + c->name() +
+                "', which feeds back into it (no order of the components could run it); select '" +
+                c->name() + "' too, or fewer components";
         return {};
     }
 

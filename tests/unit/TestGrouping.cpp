@@ -124,6 +124,20 @@ TEST(Grouping, UndefinedKindIsRefusedAndTheModelIsUnchanged)
     EXPECT_FALSE(root->component("Group"));
 }
 
+TEST(Grouping, ASignalLoopThroughTheRestIsRefused)
+{
+    auto root = load(kServo);
+    const std::string before = saveHmfString(*root);
+    std::string error;
+    // Subtract -> GainP -> Add (and Subtract -> Integrator -> GainI -> Add): without the
+    // middle the group would both feed and read it.
+    EXPECT_TRUE(root->group({"Subtract", "Add"}, "Group", error).empty());
+    EXPECT_NE(error.find("signal loop through '"), std::string::npos) << error;
+    EXPECT_EQ(saveHmfString(*root), before);
+    // With GainP (and GainI, on the integrator path) it is a chain again.
+    EXPECT_EQ(root->group({"Subtract", "GainP", "Integrator", "GainI", "Add"}, "Group", error), "Group") << error;
+}
+
 TEST(Grouping, BadSelectionsAreRefusedAndTheModelIsUnchanged)
 {
     auto root = load(kServo);

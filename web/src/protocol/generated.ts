@@ -699,7 +699,7 @@ export interface SysParamRemoveRequest {
     system?: SystemPath;
 }
 /**
- * Move components of a system into a new subsystem. Connections leaving the group go through new system ports, one per node. Refused (illegal_grouping, model unchanged) if the subsystem would have an undefined C/Q/S kind. The reply gives the subsystem's actual name; undo is model.ungroup of it.
+ * Move components of a system into a new subsystem. Connections leaving the group go through new system ports, one per node. Refused (illegal_grouping, model unchanged) if the subsystem would have an undefined C/Q/S kind or sit in a signal loop through the rest of the system. The reply gives the subsystem's actual name; undo is model.ungroup of it.
  */
 export interface ModelGroupRequest {
     id: RequestId;
