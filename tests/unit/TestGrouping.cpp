@@ -3,6 +3,7 @@
 // refused without a change, and ungroup gives the original model back.
 #include "TestHelpers.h"
 
+#include "core/ParameterEvaluator.h"
 #include "core/ResultTable.h"
 #include "core/hmf/HmfLoader.h"
 #include "core/hmf/HmfSaver.h"
@@ -14,13 +15,15 @@ using namespace tlmhub::test;
 
 namespace {
 
-const std::string kServo = "Example Models/Position Servo.hmf";
-const std::string kFeedback = "Example Models/Dynamic Pressure Feedback.hmf";
-const std::string kSubsystems = "Example Models/Sub System Example.hmf";
+const std::string kServo = sharedDir() + "/hopsan-models/Example Models/Position Servo.hmf";
+const std::string kFeedback = sharedDir() + "/hopsan-models/Example Models/Dynamic Pressure Feedback.hmf";
+const std::string kSubsystems = sharedDir() + "/hopsan-models/Example Models/Sub System Example.hmf";
+// Its relief valve's setting is the system parameter relief_pressure.
+const std::string kPressureBuildUp = std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf";
 
-std::unique_ptr<System> load(const std::string& relPath)
+std::unique_ptr<System> load(const std::string& path)
 {
-    LoadedModel loaded = loadHmfFile(sharedDir() + "/hopsan-models/" + relPath);
+    LoadedModel loaded = loadHmfFile(path);
     EXPECT_FALSE(loaded.hasErrors()) << loaded.firstError();
     return std::move(loaded.root);
 }
@@ -83,9 +86,30 @@ TEST(Grouping, QTypeHydraulicComponentsKeepEveryResult)
                       CqsKind::Q);
 }
 
+// A C-type subsystem's power ports have start values of their own, which overwrite the
+// inner ones at start; they begin as the inner ones.
+TEST(Grouping, CTypeComponentsKeepEveryResult)
+{
+    groupKeepsResults(kServo, {"Hydraulic_Volume_Multi_Port", "Cylinder_C", "Tank_C_2"}, CqsKind::C);
+}
+
 TEST(Grouping, SubsystemsAndSensorsKeepEveryResult)
 {
     groupKeepsResults(kSubsystems, {"Servo1", "Servo1_Position"}, CqsKind::Q);
+}
+
+TEST(Grouping, GroupedComponentsStillSeeTheSystemParameters)
+{
+    groupKeepsResults(kPressureBuildUp, {"ReliefValve", "ReturnTank"}, CqsKind::Q);
+    auto root = load(kPressureBuildUp);
+    std::string error;
+    const std::string sub = root->group({"ReliefValve"}, "Group", error);
+    ASSERT_FALSE(sub.empty()) << error;
+    ASSERT_TRUE(root->setSystemParameter("relief_pressure", "5e6", "double", "", "Pa", false, error)) << error;
+    double value = 0.0;
+    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*root->subsystem(sub)->component("ReliefValve"), "relief_pressure", value, error))
+        << error;
+    EXPECT_EQ(value, 5e6);
 }
 
 TEST(Grouping, MultiportKeepsOneSystemPortPerNode)
@@ -173,6 +197,7 @@ TEST(Grouping, UngroupRestoresTheModel)
     for (const auto& [model, names] :
          {std::pair<std::string, std::vector<std::string>>{
               kServo, {"Pressure_Relief_Valve", "Step", "Q_type_Fixed_Displacement_Pump_1"}},
+          std::pair<std::string, std::vector<std::string>>{kServo, {"Hydraulic_Volume_Multi_Port", "Sink", "Tank_C_1"}},
           std::pair<std::string, std::vector<std::string>>{kFeedback, {"Gain_1", "Subtract_1", "Subtract_2"}},
           std::pair<std::string, std::vector<std::string>>{kSubsystems, {"Servo1", "Servo2"}}}) {
         SCOPED_TRACE(model);
