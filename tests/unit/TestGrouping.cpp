@@ -39,20 +39,24 @@ ResultTable simulate(System& root)
 }
 
 // Every variable logged before is logged after, with the grouped components' variables
-// under `sub$`, and holds exactly the same values.
+// under `sub$` (in the system whose variables begin with `within`), and holds exactly the
+// same values.
 void expectSameResults(const ResultTable& before, const ResultTable& after, const std::string& sub,
-                       const std::set<std::string>& grouped)
+                       const std::set<std::string>& grouped, const std::string& within = "")
 {
     ASSERT_FALSE(before.columns.empty());
     EXPECT_EQ(before.time, after.time);
     for (const ResultColumn& column : before.columns) {
-        const std::string component = column.name.substr(0, column.name.find_first_of("#$"));
-        const std::string name = grouped.count(component) ? sub + "$" + column.name : column.name;
+        std::string name = column.name;
+        if (name.rfind(within, 0) == 0) {
+            const std::string local = name.substr(within.size());
+            if (grouped.count(local.substr(0, local.find_first_of("#$")))) name = within + sub + "$" + local;
+        }
         const ResultColumn* now = after.column(name);
         ASSERT_TRUE(now) << "no variable " << name << " after grouping";
         EXPECT_EQ(now->data, column.data) << name;
     }
-    if (const ResultColumn* subTime = after.column(sub + "$Time")) {
+    if (const ResultColumn* subTime = after.column(within + sub + "$Time")) {
         EXPECT_EQ(subTime->data, before.time);
     }
 }
@@ -110,6 +114,22 @@ TEST(Grouping, GroupedComponentsStillSeeTheSystemParameters)
     ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*root->subsystem(sub)->component("ReliefValve"), "relief_pressure", value, error))
         << error;
     EXPECT_EQ(value, 5e6);
+}
+
+// Inside a subsystem, connections to its own system ports cross the new boundary too.
+TEST(Grouping, InsideASubsystemKeepsEveryResultAndUngroupsBack)
+{
+    auto original = load(kSubsystems);
+    const ResultTable before = simulate(*original);
+    auto root = load(kSubsystems);
+    System* servo = root->subsystem("Servo1");
+    std::string error;
+    const std::string sub = servo->group({"Subtract", "Gain"}, "Group", error);
+    ASSERT_EQ(sub, "Group") << error;
+    expectSameResults(before, simulate(*root), sub, {"Subtract", "Gain"}, "Servo1$");
+    std::vector<std::string> moved;
+    ASSERT_TRUE(servo->ungroup(sub, moved, error)) << error;
+    EXPECT_EQ(saveHmfString(*root), saveHmfString(*original));
 }
 
 TEST(Grouping, MultiportKeepsOneSystemPortPerNode)
