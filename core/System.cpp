@@ -136,12 +136,17 @@ std::string System::uniqueName(const std::string& desired) const
 
 std::string System::addComponent(std::unique_ptr<Component> component)
 {
+    return insertComponent(std::move(component), mOrder.size());
+}
+
+std::string System::insertComponent(std::unique_ptr<Component> component, std::size_t orderPosition)
+{
     const std::string name = uniqueName(component->name());
     component->setNameRaw(name);
     component->setParentSystem(this);
     Component* raw = component.get();
     mComponents[name] = std::move(component);
-    mOrder.push_back(raw);
+    mOrder.insert(mOrder.begin() + static_cast<std::ptrdiff_t>(std::min(orderPosition, mOrder.size())), raw);
     return name;
 }
 
@@ -457,33 +462,40 @@ void System::moveToEnd(Component* c)
     mOrder.push_back(c);
 }
 
+CqsKind System::interfaceKind(const std::vector<const Port*>& innerPorts)
+{
+    int nC = 0, nQ = 0, nS = 0;
+    for (const Port* q : innerPorts) {
+        if (q->kind() == PortKind::Read || q->kind() == PortKind::Write ||
+            q->kind() == PortKind::ReadMultiport)
+            ++nS;
+        else {
+            CqsKind k = q->component()->kind();
+            if (k == CqsKind::C) ++nC;
+            else if (k == CqsKind::Q) ++nQ;
+            else if (k == CqsKind::S) ++nS;
+        }
+    }
+    if (nC > 0 && nQ == 0) return CqsKind::C;
+    if (nQ > 0 && nC == 0) return CqsKind::Q;
+    if (nS > 0 && nC == 0 && nQ == 0) return CqsKind::S;
+    if (nC == 0 && nQ == 0 && nS == 0) return CqsKind::S;   // no interface: runs with signals
+    return CqsKind::Undefined;
+}
+
 void System::determineKind()
 {
     if (isRoot()) {
         mSystemKind = CqsKind::S;   // the root's kind is irrelevant; never Undefined
         return;
     }
-    int nC = 0, nQ = 0, nS = 0;
+    std::vector<const Port*> inner;
     for (Port* sp : ports()) {
         if (sp->kind() != PortKind::System) continue;
-        for (Port* q : sp->connectedPorts) {
-            if (q->component() == this || q->component()->parentSystem() != this) continue;
-            if (q->kind() == PortKind::Read || q->kind() == PortKind::Write ||
-                q->kind() == PortKind::ReadMultiport)
-                ++nS;
-            else {
-                CqsKind k = q->component()->kind();
-                if (k == CqsKind::C) ++nC;
-                else if (k == CqsKind::Q) ++nQ;
-                else if (k == CqsKind::S) ++nS;
-            }
-        }
+        for (Port* q : sp->connectedPorts)
+            if (q->component() != this && q->component()->parentSystem() == this) inner.push_back(q);
     }
-    CqsKind k = CqsKind::Undefined;
-    if (nC > 0 && nQ == 0) k = CqsKind::C;
-    else if (nQ > 0 && nC == 0) k = CqsKind::Q;
-    else if (nS > 0 && nC == 0 && nQ == 0) k = CqsKind::S;
-    else if (nC == 0 && nQ == 0 && nS == 0) k = CqsKind::S;   // no interface: runs with signals
+    const CqsKind k = interfaceKind(inner);
     mSystemKind = k;
 
     // C-type subsystems carry start values on their power system ports.

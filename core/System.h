@@ -58,6 +58,19 @@ public:
                             const std::string& unit, bool internal, std::string& error);
     bool removeSystemParameter(const std::string& name);
 
+    // ---- grouping (core.md §2.7; SystemGrouping.cpp) ----
+    // Moves the named components into a new subsystem at the place of the first of them.
+    // A connection crossing the boundary goes through a system port of the subsystem, one
+    // port per node. Returns the subsystem's actual name, or empty with `error` and the
+    // model unchanged.
+    std::string group(const std::vector<std::string>& names, const std::string& subsystemName,
+                      std::string& error);
+    // The inverse: the subsystem's components (renamed if their names are taken) and its
+    // system parameters move into this system at its place, reconnected through its system
+    // ports, and the subsystem is removed. `moved` gets the components' names here. False
+    // with `error` and the model unchanged if it cannot be done.
+    bool ungroup(const std::string& subsystemName, std::vector<std::string>& moved, std::string& error);
+
     // ---- names ----
     bool isNameTaken(const std::string& name) const;
     std::string uniqueName(const std::string& desired) const;
@@ -134,6 +147,11 @@ public:
 private:
     friend class Component;
     void determineKind();
+    // The kind a subsystem gets from the inner ports attached to its system ports.
+    static CqsKind interfaceKind(const std::vector<const Port*>& innerPorts);
+    std::unique_ptr<Component> releaseComponent(Component* c);
+    // addComponent at a place in the insertion order.
+    std::string insertComponent(std::unique_ptr<Component> c, std::size_t orderPosition);
     void moveToEnd(Component* c);
     void buildRunLists();
     bool sortList(std::vector<Component*>& list, bool failOnLoop, std::string& error);

@@ -51,6 +51,21 @@ std::string connectionKey(const std::string& a, const std::string& pa, const std
     return a + "." + pa + "|" + b + "." + pb;
 }
 
+ConnectionKeyParts parseConnectionKey(const std::string& key)
+{
+    const std::size_t bar = key.find('|');
+    const std::string a = key.substr(0, bar);
+    const std::string b = bar == std::string::npos ? std::string() : key.substr(bar + 1);
+    auto split = [](const std::string& end) -> std::pair<std::string, std::string> {
+        const std::size_t dot = end.find('.');
+        if (dot == std::string::npos) return {end, std::string()};
+        return {end.substr(0, dot), end.substr(dot + 1)};
+    };
+    auto [ca, pa] = split(a);
+    auto [cb, pb] = split(b);
+    return {ca, pa, cb, pb};
+}
+
 void storeConnectionExtras(System& system, const std::string& a, const std::string& pa,
                            const std::string& b, const std::string& pb, pugi::xml_node element)
 {

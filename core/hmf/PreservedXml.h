@@ -25,6 +25,12 @@ void storeOtherObject(System& system, pugi::xml_node element);
 
 std::string connectionKey(const std::string& a, const std::string& pa, const std::string& b,
                           const std::string& pb);
+// The four names of a connectionKey; names are sanitised to [A-Za-z0-9_], so the
+// separators '.' and '|' cannot occur inside them.
+struct ConnectionKeyParts {
+    std::string a, pa, b, pb;
+};
+ConnectionKeyParts parseConnectionKey(const std::string& key);
 // Append the serialized children in `xml` to `parent`.
 void appendFragment(pugi::xml_node parent, const std::string& xml);
 

@@ -47,14 +47,11 @@ std::string valueString(const json& value)
     throw std::invalid_argument("value: expected string or number");
 }
 
-// The component part of each end of a preserved connection key "a.pa|b.pb". Names are
-// sanitised to [A-Za-z0-9_], so '.' and '|' cannot occur inside them.
+// The component part of each end of a preserved connection key "a.pa|b.pb".
 std::pair<std::string, std::string> keyComponents(const std::string& key)
 {
-    const std::size_t bar = key.find('|');
-    const std::string a = key.substr(0, bar);
-    const std::string b = bar == std::string::npos ? std::string() : key.substr(bar + 1);
-    return {a.substr(0, a.find('.')), b.substr(0, b.find('.'))};
+    const preserved::ConnectionKeyParts parts = preserved::parseConnectionKey(key);
+    return {parts.a, parts.b};
 }
 
 std::string renameKeyEnd(const std::string& end, const std::string& oldName, const std::string& newName)
@@ -151,6 +148,8 @@ Result EditSession::handle(const json& request)
         {"sysparam.set", &EditSession::sysparamSet},
         {"sysparam.remove", &EditSession::sysparamRemove},
         {"model.settings", &EditSession::modelSettings},
+        {"model.group", &EditSession::modelGroup},
+        {"model.ungroup", &EditSession::modelUngroup},
     };
     try {
         if (!request.is_object()) return fail("bad_request", "a request must be a JSON object");
@@ -407,6 +406,52 @@ Result EditSession::modelSettings(System&, const json& request)
     root.stopTime = stop;
     if (request.contains("log_samples")) root.requestedLogSamples = request.at("log_samples").get<std::size_t>();
     return success({{"simulation", simulationSettingsToJson(root)}});
+}
+
+// ---------------------------------------------------------------- grouping
+
+Result EditSession::modelGroup(System& system, const json& request)
+{
+    const std::vector<std::string> names = request.at("names").get<std::vector<std::string>>();
+    const std::string name = request.at("name").get<std::string>();
+    // The subsystem goes where the grouped components were, unless the request places it.
+    Pose pose;
+    if (request.contains("pose")) {
+        pose = request.at("pose").get<Pose>();
+    } else {
+        std::size_t found = 0;
+        for (const std::string& n : names)
+            if (const Component* c = system.component(n)) {
+                const Pose p = readPose(c->preservedXml);
+                pose.x += p.x;
+                pose.y += p.y;
+                ++found;
+            }
+        if (found > 0) {
+            pose.x /= static_cast<double>(found);
+            pose.y /= static_cast<double>(found);
+        }
+    }
+    std::string error;
+    const std::string actual = system.group(names, name, error);
+    if (actual.empty()) {
+        const bool allFound = std::all_of(names.begin(), names.end(),
+                                          [&system](const std::string& n) { return system.component(n) != nullptr; });
+        return fail(allFound ? "illegal_grouping" : "not_found", error);
+    }
+    writePose(system.component(actual)->preservedXml, pose);
+    return success({{"name", actual}});
+}
+
+Result EditSession::modelUngroup(System& system, const json& request)
+{
+    const std::string name = request.at("name").get<std::string>();
+    if (!system.subsystem(name))
+        return fail("not_found", "no subsystem named '" + name + "' in system '" + system.name() + "'");
+    std::vector<std::string> moved;
+    std::string error;
+    if (!system.ungroup(name, moved, error)) return fail("illegal_grouping", error);
+    return success({{"names", moved}});
 }
 
 } // namespace tlmhub::server

@@ -1,6 +1,7 @@
 #pragma once
 // One open model being edited: applies the WebSocket editing requests (model.get,
-// component.*, connect, disconnect, parameter.*, sysparam.set) to an in-memory System.
+// component.*, connect, disconnect, parameter.*, sysparam.*, model.settings,
+// model.group, model.ungroup) to an in-memory System.
 // It knows nothing of users, stores or sockets; the caller loads and saves the .hmf text.
 //
 // Requests arrive schema-validated, but handle() still checks every field it reads and
@@ -53,6 +54,8 @@ private:
     Result sysparamSet(System& system, const nlohmann::json& request);
     Result sysparamRemove(System& system, const nlohmann::json& request);
     Result modelSettings(System& system, const nlohmann::json& request);
+    Result modelGroup(System& system, const nlohmann::json& request);
+    Result modelUngroup(System& system, const nlohmann::json& request);
 
     // The subsystem named by request["system"] (absent or [] = root), or null with `failure`.
     System* targetSystem(const nlohmann::json& request, Result& failure);

@@ -515,6 +515,52 @@ TEST(EditSession, OpenRefusesTextThatIsNotAModel)
     EXPECT_FALSE(session.isOpen());
 }
 
+TEST(EditSession, GroupAndItsUndoUngroupGiveTheModelBack)
+{
+    EditSession session = openServo();
+    const std::string original = session.saveHmf();
+    const json names = {"Pressure_Relief_Valve", "Step", "Q_type_Fixed_Displacement_Pump_1"};
+    const auto grouped = session.handle({{"id", 1}, {"type", "model.group"}, {"names", names}, {"name", "Pump side"}});
+    expectReplyShape("model.group", grouped);
+    const std::string sub = grouped.data.at("name");
+    EXPECT_EQ(sub, "Pump_side");
+    const json system = rootSystem(session);
+    const json* subsystem = findByName(system.at("components"), sub);
+    ASSERT_NE(subsystem, nullptr);
+    EXPECT_EQ(subsystem->at("kind"), "system");
+    EXPECT_EQ(session.root()->component(sub)->kind(), tlmhub::CqsKind::Q);
+    EXPECT_EQ(findByName(system.at("components"), "Step"), nullptr);
+    // Placed among the components it replaces.
+    EXPECT_GT(subsystem->at("pose").at("x").get<double>(), 0.0);
+
+    // The client's undo of model.group is model.ungroup of the reply's name.
+    const auto ungrouped = session.handle({{"id", 2}, {"type", "model.ungroup"}, {"name", sub}});
+    expectReplyShape("model.ungroup", ungrouped);
+    EXPECT_EQ(ungrouped.data.at("names"), names);
+    EXPECT_EQ(session.saveHmf(), original);
+    // Redo groups again.
+    const auto regrouped = session.handle({{"id", 3}, {"type", "model.group"}, {"names", names}, {"name", sub}});
+    expectReplyShape("model.group", regrouped);
+    EXPECT_EQ(regrouped.data.at("name"), sub);
+}
+
+TEST(EditSession, GroupWithAnUndefinedKindIsRefusedWithTheReason)
+{
+    EditSession session = openServo();
+    const std::string original = session.saveHmf();
+    const auto r = session.handle({{"id", 1}, {"type", "model.group"}, {"names", {"Mass", "Cylinder_C"}}, {"name", "Sub"}});
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.code, "illegal_grouping");
+    EXPECT_NE(r.message.find("undefined C/Q/S kind"), std::string::npos) << r.message;
+    EXPECT_EQ(session.saveHmf(), original);
+
+    const auto missing = session.handle({{"id", 2}, {"type", "model.group"}, {"names", {"Nobody"}}, {"name", "Sub"}});
+    EXPECT_EQ(missing.code, "not_found");
+    const auto notASubsystem = session.handle({{"id", 3}, {"type", "model.ungroup"}, {"name", "Mass"}});
+    EXPECT_EQ(notASubsystem.code, "not_found");
+    EXPECT_EQ(session.saveHmf(), original);
+}
+
 TEST(GuiLayout, PoseIsWrittenBesideOtherGuiData)
 {
     std::string xml = "<ports/><hopsangui><nametext position=\"0\"/></hopsangui>";

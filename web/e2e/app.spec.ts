@@ -207,7 +207,6 @@ test('save keeps the change after a reload, and another user cannot open the mod
 test('groups a selection into a subsystem that can be entered and still runs', async ({ page }) => {
     await login(page, 'alice');
     await openExample(page, SERVO);
-    page.on('dialog', (dialog) => void dialog.accept());
     await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
     await page.locator('.canvas .component[data-name="Add"] .icon-frame').click({ modifiers: ['Shift'] });
     await expect(page.locator('.parameter-panel h2')).toHaveText('2 components selected');
@@ -215,8 +214,8 @@ test('groups a selection into a subsystem that can be entered and still runs', a
     const sub = page.locator('.canvas .component.subsystem[data-name="Subsystem"]');
     await expect(sub).toBeVisible();
     await expect(page.locator('.canvas .component[data-name="GainP"]')).toHaveCount(0);
-    // saved as alice's own copy first
-    await expect(page.getByTestId('save')).toHaveText('Save');
+    // an ordinary edit: nothing is saved (an example stays the example)
+    await expect(page.getByTestId('save')).toHaveText('Save as my copy');
 
     await sub.locator('.icon-frame').dblclick();
     await expect(page.locator('.breadcrumb')).toContainText('Subsystem');

@@ -70,9 +70,6 @@ export class RestClient {
     downloadHmf(id: number): Promise<string> {
         return this.call('GET', `/models/${id}?format=hmf`, undefined, undefined, 'application/xml');
     }
-    replaceHmf(id: number, hmf: string): Promise<ModelSummary> {
-        return this.call('PUT', `/models/${id}`, hmf, 'application/xml');
-    }
     renameModel(id: number, name: string): Promise<ModelSummary> {
         return this.call('PUT', `/models/${id}`, { name });
     }

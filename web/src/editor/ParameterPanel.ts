@@ -13,6 +13,7 @@ export interface PanelActions {
     flip(): void;
     remove(): void;
     group(): void;
+    ungroup(): void;
     plotPort(ref: PortRef, anchor: HTMLElement): void;
 }
 
@@ -115,6 +116,7 @@ export class ParameterPanel {
                 h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)' }, 'Rotate'),
                 h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)' }, 'Flip'),
                 comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
+                comp.system ? h('button', { onclick: () => this.actions.ungroup(), 'data-testid': 'ungroup' }, 'Ungroup') : null,
                 h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)' }, 'Delete')),
             h('h3', {}, 'Parameters'),
             parameters.length ? table(parameters) : h('p', { class: 'muted' }, 'No parameters.'),

@@ -281,3 +281,51 @@ export class SetSimulationSettings implements Command {
         if (this.previous) await ctx.send({ type: 'model.settings', ...this.previous });
     }
 }
+
+/** Moves components into a new subsystem on the server; undo ungroups it again. */
+export class GroupComponents implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private actual = '';
+
+    constructor(private readonly path: SystemPath, private readonly names: string[], private readonly name = 'Subsystem') {
+        this.label = `Group ${names.length} components`;
+    }
+
+    get subsystemName(): string { return this.actual; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const reply = await ctx.send({ type: 'model.group', system: this.path, names: this.names, name: this.name });
+        this.actual = reply.name as string;
+        await ctx.send({ type: 'model.get' });   // the system changed in more places than one reply says
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'model.ungroup', system: this.path, name: this.actual });
+        await ctx.send({ type: 'model.get' });
+    }
+}
+
+/** Moves a subsystem's content into the system holding it; undo groups it again. */
+export class UngroupSubsystem implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private moved: string[] = [];
+
+    constructor(private readonly path: SystemPath, private readonly name: string) {
+        this.label = `Ungroup ${name}`;
+    }
+
+    get movedNames(): string[] { return [...this.moved]; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const reply = await ctx.send({ type: 'model.ungroup', system: this.path, name: this.name });
+        this.moved = reply.names as string[];
+        await ctx.send({ type: 'model.get' });
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'model.group', system: this.path, names: this.moved, name: this.name });
+        await ctx.send({ type: 'model.get' });
+    }
+}

@@ -29,6 +29,7 @@ export type ErrorCode =
     | 'unknown_message_type'
     | 'unknown_component_type'
     | 'illegal_connection'
+    | 'illegal_grouping'
     | 'invalid_parameter'
     | 'invalid_model'
     | 'limit_exceeded'
@@ -81,6 +82,8 @@ export type ClientMessage =
     | ParameterSetRequest
     | SysParamSetRequest
     | SysParamRemoveRequest
+    | ModelGroupRequest
+    | ModelUngroupRequest
     | SimulateStartRequest
     | SimulateStopRequest
     | LogSubscribeRequest
@@ -165,6 +168,8 @@ export interface ProtocolDefinitions {
     ModelGetData?: ModelGetData;
     ComponentAddedData?: ComponentAddedData;
     ComponentRenamedData?: ComponentRenamedData;
+    ModelGroupedData?: ModelGroupedData;
+    ModelUngroupedData?: ModelUngroupedData;
     ConnectedData?: ConnectedData;
     ParameterData?: ParameterData;
     SysParamData?: SysParamData;
@@ -178,6 +183,8 @@ export interface ProtocolDefinitions {
     DoneEvent?: DoneEvent;
     ServerMessage?: ServerMessage;
     SysParamRemoveRequest?: SysParamRemoveRequest;
+    ModelGroupRequest?: ModelGroupRequest;
+    ModelUngroupRequest?: ModelUngroupRequest;
     ModelSettingsRequest?: ModelSettingsRequest;
     ModelSettingsData?: ModelSettingsData;
 }
@@ -691,6 +698,30 @@ export interface SysParamRemoveRequest {
     name: string;
     system?: SystemPath;
 }
+/**
+ * Move components of a system into a new subsystem. Connections leaving the group go through new system ports, one per node. Refused (illegal_grouping, model unchanged) if the subsystem would have an undefined C/Q/S kind or sit in a signal loop through the rest of the system. The reply gives the subsystem's actual name; undo is model.ungroup of it.
+ */
+export interface ModelGroupRequest {
+    id: RequestId;
+    type: 'model.group';
+    /**
+     * @minItems 1
+     * @maxItems 4096
+     */
+    names: [string, ...string[]];
+    name: string;
+    pose?: Pose;
+    system?: SystemPath;
+}
+/**
+ * Move the content of a subsystem into its parent system (names made unique), reconnect through its system ports and remove it. The reply lists the components' names in the parent; undo is model.group of them.
+ */
+export interface ModelUngroupRequest {
+    id: RequestId;
+    type: 'model.ungroup';
+    name: string;
+    system?: SystemPath;
+}
 export interface EmptyData {}
 export interface ModelOpenedData {
     model_id: number;
@@ -717,6 +748,12 @@ export interface ComponentAddedData {
 }
 export interface ComponentRenamedData {
     name: string;
+}
+export interface ModelGroupedData {
+    name: string;
+}
+export interface ModelUngroupedData {
+    names: string[];
 }
 export interface ConnectedData {
     connection: Connection;

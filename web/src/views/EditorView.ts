@@ -6,8 +6,7 @@ import { EditorStore } from '../editor/EditorStore';
 import { CanvasView } from '../editor/CanvasView';
 import { ParameterPanel } from '../editor/ParameterPanel';
 import { createPalette } from '../editor/Palette';
-import { copySelection, Disconnect, MoveComponents, Paste, RemoveComponents, SetSimulationSettings, type Clipboard } from '../editor/commands';
-import { groupIntoSubsystem } from '../editor/grouping';
+import { copySelection, Disconnect, GroupComponents, MoveComponents, Paste, RemoveComponents, SetSimulationSettings, UngroupSubsystem, type Clipboard } from '../editor/commands';
 import { RunController } from '../run/RunController';
 import { PlotArea } from '../run/PlotArea';
 import { RunPanel } from '../run/RunPanel';
@@ -105,7 +104,21 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             if (hasSub && !confirm('Deleting a subsystem cannot be undone. Delete?')) return;
             store.execute(command).catch(reportError);
         },
-        group: () => void group(),
+        group: () => {
+            const names = selectedComponents().map((c) => c.name);
+            if (names.length === 0) return;
+            const command = new GroupComponents(store.path, names);
+            store.execute(command).then(() => {
+                store.select([command.subsystemName]);
+                toast(`Grouped ${names.length} components into ${command.subsystemName}`);
+            }, reportError);
+        },
+        ungroup: () => {
+            const sub = selectedComponents().find((c) => c.system);
+            if (!sub) return;
+            const command = new UngroupSubsystem(store.path, sub.name);
+            store.execute(command).then(() => store.select(command.movedNames), reportError);
+        },
         plotPort: (ref: PortRef, anchor: HTMLElement) => {
             const r = anchor.getBoundingClientRect();
             showVariables(ref, { x: r.left - 200, y: r.top });
@@ -149,24 +162,6 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         } catch (e) {
             reportError(e);
             return false;
-        }
-    };
-
-    // Grouping rewrites the saved .hmf (the protocol cannot move components into a subsystem).
-    const group = async () => {
-        const names = [...store.selection];
-        if (names.length < 1) return;
-        if (!confirm('Grouping saves the model, moves the selection into a new subsystem and reopens it. Continue?')) return;
-        if (!(await save())) return;
-        try {
-            const hmf = await rest.downloadHmf(summary.id);
-            const grouped = groupIntoSubsystem(hmf, store.path, names);
-            await rest.replaceHmf(summary.id, grouped.hmf);
-            const reopened = await ws.request<{ model_id: number; model: Model }>('model.open', { model_id: summary.id });
-            store.replaceModel(reopened.model);
-            toast(`Grouped ${names.length} components into ${grouped.subsystemName}`);
-        } catch (e) {
-            reportError(e);
         }
     };
 
