@@ -24,23 +24,28 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     navigate: (hash: string, replace?: boolean) => void): Promise<EditorPage> {
     root.replaceChildren(h('main', { class: 'loading' }, h('p', { class: 'muted' }, 'Opening model…')));
     const rest = session.rest;
+    // the summary, the catalogue and the model are asked for at once: one after the other
+    // they took most of the time to open a big model
+    const ws = new WsClient(() => new WebSocket(socketUrl(session.token!, location)) as unknown as import('../api/WsClient').SocketLike);
+    const opening = Promise.all([
+        rest.components(),
+        ws.connect().then(() => ws.request<{ model_id: number; model: Model }>('model.open', { model_id: modelId })),
+    ]);
+    opening.catch(() => undefined);   // a failure is shown below, once the summary is in
     let summary: ModelSummary;
     try {
         summary = await rest.getModel(modelId);
     } catch (e) {
+        ws.close();
         const message = e instanceof ApiError && e.code === 'not_found' ? 'Model not found (it does not exist or is not yours).' : errorText(e);
         root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
             h('p', { class: 'form-error', role: 'alert', 'data-testid': 'open-error' }, message), h('a', { href: '#/models' }, 'Back to the models')));
         return { dispose: () => undefined, dirty: () => false };
     }
-    const ws = new WsClient(() => new WebSocket(socketUrl(session.token!, location)) as unknown as import('../api/WsClient').SocketLike);
     let catalogue: CatalogueEntry[];
     let opened: { model_id: number; model: Model };
     try {
-        [catalogue, opened] = await Promise.all([
-            rest.components(),
-            ws.connect().then(() => ws.request<{ model_id: number; model: Model }>('model.open', { model_id: modelId })),
-        ]);
+        [catalogue, opened] = await opening;
     } catch (e) {
         ws.close();
         root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
@@ -214,8 +219,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         h('section', { class: 'run-area' }, runPanel.element, plots.element),
         picker);
     root.replaceChildren(layout);
+    // (render fits the view to the model)
     canvas.render();
-    canvas.fit();
     plots.addWindow();
     layout.addEventListener('editor-error', (e) => toast((e as CustomEvent<string>).detail, 'error'));
 
