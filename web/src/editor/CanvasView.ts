@@ -1,5 +1,8 @@
 // The model drawn on an SVG canvas, derived from the store on every change. Pointer input
 // becomes commands: move, connect (port to port), select (click, shift-drag box), pan, zoom.
+// A render keeps every element whose component or connection did not change and only updates
+// the attributes that did (pose, selection, name spot, line points): rebuilding the whole
+// drawing per pointer move or selection click is too slow on big models.
 import { EditorStore } from './EditorStore';
 import { AddComponent, Connect, MoveComponents, type Move } from './commands';
 import { componentIcon } from './icons';
@@ -8,7 +11,7 @@ import {
     type Anchors, type ComponentLayout, type Point,
 } from '../model/geometry';
 import { appearanceLayout } from '../model/appearanceLayout';
-import { labelPlacement } from './labelPlacement';
+import { placeLabels, type LabelSpot } from './labelPlacement';
 import { nodeColour } from '../model/nodeTypes';
 import { sameRef, uniqueName } from '../model/modelState';
 import { abbreviation } from './icons';
@@ -30,6 +33,17 @@ type Drag =
 
 const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
 
+/** A drawn component or line with the attribute values it was last given. */
+interface DrawnComponent { el: SVGGElement; comp: Component; pose: string; cls: string; spot: string }
+interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string }
+
+/** Puts `children` in `parent` in this order, touching the DOM only when they differ. */
+function setChildren(parent: Element, children: Element[]): void {
+    const current = parent.children;
+    if (current.length === children.length && children.every((c, i) => current[i] === c)) return;
+    parent.replaceChildren(...children);
+}
+
 export class CanvasView {
     readonly element: HTMLDivElement;
     private readonly svg: SVGSVGElement;
@@ -41,6 +55,8 @@ export class CanvasView {
     private drag: Drag | null = null;
     private lastPress: { name: string; time: number } | null = null;
     private generation = 0;
+    private drawnPath: string | null = null;
+    private byName = new Map<string, Component>();
     private portError: { ref: PortRef; message: string; timer: number } | null = null;
     private fittedPath: string | null = null;
     /** A clicked connection (Delete removes it). */
@@ -65,20 +81,30 @@ export class CanvasView {
             e.preventDefault();
             void this.addComponent(type, this.sceneFromClient(e.clientX, e.clientY));
         });
-        store.subscribe(() => this.render());
+        this.world.append(this.connectionGroup, this.componentGroup, this.overlay);
+        this.unsubscribe = store.subscribe(() => this.render());
         this.resizeObserver.observe(this.element);
     }
 
-    /** What the last full render drew, for the partial redraws while dragging. */
-    private readonly componentEls = new Map<string, SVGGElement>();
-    private connectionEls: { conn: Connection; el: SVGPolylineElement }[] = [];
+    /** What the last render drew, reused by the next one where nothing changed. */
+    private drawnComponents = new Map<string, DrawnComponent>();
+    private drawnConnections = new Map<Connection, DrawnConnection>();
+    private drawnPorts = new Map<string, SVGGElement>();
+    private readonly connectionGroup = s('g', { class: 'connections' });
+    private readonly componentGroup = s('g', { class: 'components' });
     private overlay: SVGGElement = s('g', { class: 'overlay' });
+    /** Layouts by component object: a changed component is a new object. */
+    private layoutCache = new WeakMap<Component, ComponentLayout>();
+    private readonly unsubscribe: () => void;
 
     private readonly resizeObserver = new ResizeObserver(() => { if (this.fittedPath === null) this.render(); });
 
-    /** Stops watching the page (the editor was left). */
+    /** Stops watching the page and the store (the editor was left). */
     dispose(): void {
         this.resizeObserver.disconnect();
+        this.unsubscribe();
+        if (this.portError) clearTimeout(this.portError.timer);
+        this.portError = null;
     }
 
     private get pathKey(): string { return this.store.path.join('$'); }
@@ -162,7 +188,7 @@ export class CanvasView {
 
     /** Scene position of a port (a system port is its own pose). */
     portPoint(system: System, ref: PortRef): Point | null {
-        const comp = system.components.find((c) => c.name === ref.component);
+        const comp = this.byName.get(ref.component) ?? system.components.find((c) => c.name === ref.component);
         if (comp) {
             const local = this.layouts.get(comp.name)?.ports.get(ref.port);
             return local ? toScene(this.poseOf(comp), local) : toScene(this.poseOf(comp), { x: 0, y: 0 });
@@ -172,40 +198,55 @@ export class CanvasView {
     }
 
     render(): void {
-        if (this.generation !== this.store.generation) {
-            // another model (or the same one reopened): the author's drawing is read afresh
+        if (this.generation !== this.store.generation || this.drawnPath !== this.pathKey) {
+            // another model (or the same one reopened) or another subsystem: drawn afresh
+            if (this.generation !== this.store.generation) {
+                this.anchors.clear();
+                this.loadedPoses.clear();
+                this.fittedPath = null;
+            }
             this.generation = this.store.generation;
-            this.anchors.clear();
-            this.loadedPoses.clear();
-            this.fittedPath = null;
+            this.drawnPath = this.pathKey;
+            this.layoutCache = new WeakMap();
+            this.drawnComponents = new Map();
+            this.drawnConnections = new Map();
+            this.drawnPorts = new Map();
         }
         const system = this.store.system;
         const anchors = this.anchorsFor(system);
         // Hopsan's own icon size and port positions where known; our rules for subsystems and the rest
-        this.layouts = new Map(system.components.map((c) => [c.name,
-            appearanceLayout(c, anchors.get(c.name)) ?? layoutComponent(c, anchors.get(c.name))]));
+        this.layouts = new Map(system.components.map((c) => {
+            let layout = this.layoutCache.get(c);
+            if (!layout) {
+                layout = appearanceLayout(c, anchors.get(c.name)) ?? layoutComponent(c, anchors.get(c.name));
+                this.layoutCache.set(c, layout);
+            }
+            return [c.name, layout];
+        }));
+        this.byName = new Map(system.components.map((c) => [c.name, c]));
+        // fitted before the drawing is added, so that measuring the canvas lays out no drawing
         if (this.fittedPath !== this.pathKey) this.fit();
 
-        const connections = s('g', { class: 'connections' });
-        this.connectionEls = [];
+        const connections = new Map<Connection, DrawnConnection>();
         for (const conn of system.connections) {
-            const el = this.drawConnection(system, conn);
-            if (!el) continue;
-            connections.append(el);
-            this.connectionEls.push({ conn, el });
+            const drawn = this.drawConnection(system, conn, this.drawnConnections.get(conn));
+            if (drawn) connections.set(conn, drawn);
         }
+        this.drawnConnections = connections;
+        setChildren(this.connectionGroup, [...connections.values()].map((d) => d.el));
 
-        const components = s('g', { class: 'components' });
-        this.componentEls.clear();
-        for (const comp of system.components) {
-            const el = this.drawComponent(comp);
-            this.componentEls.set(comp.name, el);
-            components.append(el);
-        }
-        for (const sp of system.ports) components.append(this.drawSystemPort(sp.name, sp.node_type, sp.pose));
+        const labels = placeLabels(system.components.map((c) => ({ name: c.name, pose: this.poseOf(c), layout: this.layouts.get(c.name)! })));
+        const components = new Map<string, DrawnComponent>();
+        for (const comp of system.components) components.set(comp.name, this.drawComponent(comp, labels.get(comp.name)!, this.drawnComponents.get(comp.name)));
+        this.drawnComponents = components;
+        const ports = new Map(system.ports.map((sp) => {
+            const key = `${sp.name} ${sp.node_type} ${sp.pose.x},${sp.pose.y}`;
+            return [key, this.drawnPorts.get(key) ?? this.drawSystemPort(sp.name, sp.node_type, sp.pose)];
+        }));
+        this.drawnPorts = ports;
+        setChildren(this.componentGroup, [...[...components.values()].map((d) => d.el), ...ports.values()]);
 
-        this.overlay = this.drawOverlay(system);
-        this.world.replaceChildren(connections, components, this.overlay);
+        this.renderOverlay();
         this.applyView();
     }
 
@@ -216,51 +257,34 @@ export class CanvasView {
         this.overlay = fresh;
     }
 
-    private drawConnection(system: System, conn: Connection): SVGPolylineElement | null {
+    /** A connection's line: the one drawn before (`drawn`) with its points and class brought up to date. */
+    private drawConnection(system: System, conn: Connection, drawn: DrawnConnection | undefined): DrawnConnection | null {
         const a = this.portPoint(system, conn.from);
         const b = this.portPoint(system, conn.to);
         if (!a || !b) return null;
         const unmoved = [conn.from.component, conn.to.component].every((name) => {
-            const comp = system.components.find((c) => c.name === name);
+            const comp = this.byName.get(name);
             const loaded = this.loadedPoses.get(this.key(name));
             if (!comp) return true;   // system port
             const pose = this.poseOf(comp);
             return loaded !== undefined && loaded.x === pose.x && loaded.y === pose.y && loaded.angle === pose.angle && loaded.flipped === pose.flipped;
         });
         const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
-        const nodeType = this.portOf(system, conn.from)?.node_type ?? this.portOf(system, conn.to)?.node_type;
+        const nodeType = this.portOf(conn.from)?.node_type ?? this.portOf(conn.to)?.node_type;
         const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
-        return s('polyline', {
-            class: `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`,
-            points: pts.map((p) => `${p.x},${p.y}`).join(' '),
-            stroke: nodeColour(nodeType),
+        const points = pts.map((p) => `${p.x},${p.y}`).join(' ');
+        const cls = `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`;
+        if (drawn) {
+            if (drawn.points !== points) drawn.el.setAttribute('points', points);
+            if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
+            return { el: drawn.el, points, cls };
+        }
+        const el = s('polyline', {
+            class: cls, points, stroke: nodeColour(nodeType),
             'data-from': `${conn.from.component}.${conn.from.port}`,
             'data-to': `${conn.to.component}.${conn.to.port}`,
         });
-    }
-
-    /**
-     * While components are dragged: redraw only them and their connections (a full redraw of a
-     * big model per pointer move is too slow).
-     */
-    private renderMoved(names: string[]): void {
-        const system = this.store.system;
-        const moved = new Set(names);
-        for (const comp of system.components) {
-            if (!moved.has(comp.name)) continue;
-            const old = this.componentEls.get(comp.name);
-            if (!old) return this.render();
-            const fresh = this.drawComponent(comp);
-            old.replaceWith(fresh);
-            this.componentEls.set(comp.name, fresh);
-        }
-        for (const entry of this.connectionEls) {
-            if (!moved.has(entry.conn.from.component) && !moved.has(entry.conn.to.component)) continue;
-            const fresh = this.drawConnection(system, entry.conn);
-            if (!fresh) continue;
-            entry.el.replaceWith(fresh);
-            entry.el = fresh;
-        }
+        return { el, points, cls };
     }
 
     private drawOverlay(system: System): SVGGElement {
@@ -281,23 +305,37 @@ export class CanvasView {
         return overlay;
     }
 
-    private portOf(system: System, ref: PortRef): Port | undefined {
-        return system.components.find((c) => c.name === ref.component)?.ports.find((p) => p.name === ref.port);
+    private portOf(ref: PortRef): Port | undefined {
+        return this.byName.get(ref.component)?.ports.find((p) => p.name === ref.port);
     }
 
-    private drawComponent(comp: Component): SVGGElement {
+    /**
+     * A component: the element drawn before (`drawn`) while the component is the same object,
+     * with its pose, selection and name spot brought up to date; else a new one.
+     */
+    private drawComponent(comp: Component, label: LabelSpot, drawn: DrawnComponent | undefined): DrawnComponent {
+        const pose = poseTransform(this.poseOf(comp));
+        const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`;
+        const spot = `${label.x},${label.y},${label.anchor}`;
+        if (drawn && drawn.comp === comp) {
+            const [body, text] = [drawn.el.querySelector('.component-body')!, drawn.el.querySelector('.component-label')!];
+            if (drawn.pose !== pose) body.setAttribute('transform', pose);
+            if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
+            if (drawn.spot !== spot) {
+                text.setAttribute('x', String(label.x));
+                text.setAttribute('y', String(label.y));
+                text.setAttribute('text-anchor', label.anchor);
+            }
+            return { ...drawn, pose, cls, spot };
+        }
         const layout = this.layouts.get(comp.name)!;
-        const pose = this.poseOf(comp);
-        const selected = this.store.selection.has(comp.name);
-        const body = s('g', { class: 'component-body', transform: poseTransform(pose) },
+        const body = s('g', { class: 'component-body', transform: pose },
             componentIcon(comp.type, layout.halfWidth, layout.halfHeight),
             ...comp.ports.map((p) => this.drawPort(comp, p, layout.ports.get(p.name) ?? { x: 0, y: 0 })));
-        const at = labelPlacement(pose, layout);
-        const label = s('text', { class: 'component-label', x: at.x, y: at.y, 'text-anchor': 'middle' }, comp.name);
-        return s('g', {
-            class: `component${selected ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`,
-            'data-name': comp.name, 'data-type': comp.type,
-        }, s('title', {}, `${comp.name} (${comp.type})`), body, label);
+        const text = s('text', { class: 'component-label', x: label.x, y: label.y, 'text-anchor': label.anchor }, comp.name);
+        const el = s('g', { class: cls, 'data-name': comp.name, 'data-type': comp.type },
+            s('title', {}, `${comp.name} (${comp.type})`), body, text);
+        return { el, comp, pose, cls, spot };
     }
 
     private drawPort(comp: Component, port: Port, at: Point): SVGElement {
@@ -436,7 +474,7 @@ export class CanvasView {
             if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD) drag.moved = true;
             if (!drag.moved) return;
             for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + dx), y: Math.round(pose.y + dy) });
-            this.renderMoved([...drag.origin.keys()]);
+            this.render();
         } else {
             drag.current = scene;
             this.renderOverlay();
