@@ -17,6 +17,19 @@ function report(name: string, ms: number): void {
     writeFileSync(`${screenshots}timings.json`, JSON.stringify(timings, null, 2));
 }
 
+/** The browser's main-thread work (script, style, layout) while `work` runs, from Chromium's own counters. */
+async function mainThreadWork<T>(page: Page, work: () => Promise<T>): Promise<{ result: T; script: number; layout: number }> {
+    const cdp = await page.context().newCDPSession(page);
+    await cdp.send('Performance.enable');
+    const metrics = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+    const before = await metrics();
+    const result = await work();
+    const after = await metrics();
+    await cdp.detach();
+    const ms = (key: string) => (after[key] - before[key]) * 1000;
+    return { result, script: ms('ScriptDuration'), layout: ms('LayoutDuration') + ms('RecalcStyleDuration') };
+}
+
 async function openTimed(page: Page, name: string): Promise<number> {
     const row = page.getByTestId('example-models').locator('tr', { has: page.getByRole('link', { name, exact: true }) });
     const t0 = Date.now();
@@ -54,7 +67,8 @@ test('Position Servo and Load Sensing System as drawn; dragging in Load Sensing 
             document.body.offsetHeight;
             times.push(performance.now() - t0);
         }
-        const shift = frame.isConnected ? 0 : (document.querySelector(`.canvas .component[data-name="${frame.closest('.component')!.getAttribute('data-name')}"] .icon-frame`) as SVGElement).getBoundingClientRect().x - r.x;
+        const name = frame.closest('.component')!.getAttribute('data-name');
+        const shift = (document.querySelector(`.canvas .component[data-name="${name}"] .icon-frame`) as SVGElement).getBoundingClientRect().x - r.x;
         svg.dispatchEvent(new PointerEvent('pointerup', at(60)));
         times.sort((a, b) => a - b);
         return { median: times[30], worst: times[59], shift };
@@ -67,7 +81,10 @@ test('Position Servo and Load Sensing System as drawn; dragging in Load Sensing 
 
 test('F16systemManeuver: open, enter its subsystem, the aircraft block close up', async ({ page }) => {
     await login(page, 'alice');
-    report('open F16systemManeuver', await openTimed(page, 'F16systemManeuver'));
+    const open = await mainThreadWork(page, () => openTimed(page, 'F16systemManeuver'));
+    report('open F16systemManeuver', open.result);
+    report('open F16systemManeuver, script', open.script);
+    report('open F16systemManeuver, style and layout', open.layout);
     const aircraft = page.locator('.canvas .component[data-name="AeroAircraft6DOFSS"]');
     await expect(aircraft).toBeVisible();
     // zoom in on the aircraft block with the wheel, as a user would
@@ -93,9 +110,14 @@ test('F16systemManeuver: open, enter its subsystem, the aircraft block close up'
         await page.mouse.wheel(0, 240);
         await page.waitForTimeout(100);
     }
-    const t0 = Date.now();
-    await page.locator('.canvas .component[data-name="Subsystem"] .icon-frame').dblclick();
-    await expect(page.locator('.breadcrumb')).toContainText('Subsystem');
-    await expect(page.locator('.canvas .component[data-name="Gearbox_driven_pump_A"]')).toBeVisible();
-    report('enter the F16 subsystem (double-click to drawn)', Date.now() - t0);
+    const enter = await mainThreadWork(page, async () => {
+        const t0 = Date.now();
+        await page.locator('.canvas .component[data-name="Subsystem"] .icon-frame').dblclick();
+        await expect(page.locator('.breadcrumb')).toContainText('Subsystem');
+        await expect(page.locator('.canvas .component[data-name="Gearbox_driven_pump_A"]')).toBeVisible();
+        return Date.now() - t0;
+    });
+    report('enter the F16 subsystem (double-click to drawn)', enter.result);
+    report('enter the F16 subsystem, script', enter.script);
+    report('enter the F16 subsystem, style and layout', enter.layout);
 });
