@@ -30,6 +30,37 @@ async function mainThreadWork<T>(page: Page, work: () => Promise<T>): Promise<{ 
     return { result, script: ms('ScriptDuration'), layout: ms('LayoutDuration') + ms('RecalcStyleDuration') };
 }
 
+/**
+ * Median time of the page's own work for `step` on the open model (its render and the layout
+ * of what it drew), without network or browser round trips.
+ */
+async function pageWork(page: Page, step: 'redraw' | 'select' | 'enter'): Promise<number> {
+    return page.evaluate((which) => {
+        type Store = { model: unknown; path: string[]; system: { components: { name: string; system?: unknown }[] };
+            replaceModel(m: unknown): void; select(n: string[]): void; enterSystem(p: string[]): void };
+        const store = (window as unknown as { __tlmhub: { store: Store } }).__tlmhub.store;
+        const world = document.querySelector('svg.canvas .world')!;
+        const names = store.system.components.map((c) => c.name);
+        const sub = store.system.components.find((c) => c.system)!.name;
+        const times: number[] = [];
+        for (let i = 0; i < 7; i++) {
+            const t0 = performance.now();
+            if (which === 'redraw') store.replaceModel(store.model);
+            else if (which === 'select') store.select([names[i % names.length]]);
+            else store.enterSystem([sub]);
+            void world.getBoundingClientRect().width;
+            times.push(performance.now() - t0);
+            if (which === 'enter') {
+                store.enterSystem([]);
+                void world.getBoundingClientRect().width;
+            }
+        }
+        store.select([]);
+        times.sort((a, b) => a - b);
+        return times[3];
+    }, step);
+}
+
 async function openTimed(page: Page, name: string): Promise<number> {
     const row = page.getByTestId('example-models').locator('tr', { has: page.getByRole('link', { name, exact: true }) });
     const t0 = Date.now();
@@ -85,6 +116,9 @@ test('F16systemManeuver: open, enter its subsystem, the aircraft block close up'
     report('open F16systemManeuver', open.result);
     report('open F16systemManeuver, script', open.script);
     report('open F16systemManeuver, style and layout', open.layout);
+    report('F16 page work: draw the whole model afresh (median)', await pageWork(page, 'redraw'));
+    report('F16 page work: select a component (median)', await pageWork(page, 'select'));
+    report('F16 page work: enter the subsystem (median)', await pageWork(page, 'enter'));
     const aircraft = page.locator('.canvas .component[data-name="AeroAircraft6DOFSS"]');
     await expect(aircraft).toBeVisible();
     // zoom in on the aircraft block with the wheel, as a user would
