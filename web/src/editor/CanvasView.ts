@@ -123,7 +123,9 @@ export class CanvasView {
     }
 
     private applyView(): void {
-        this.world.setAttribute('transform', `translate(${this.view.tx},${this.view.ty}) scale(${this.view.scale})`);
+        // setting it, even unchanged, makes the browser lay out the whole drawing again
+        const transform = `translate(${this.view.tx},${this.view.ty}) scale(${this.view.scale})`;
+        if (this.world.getAttribute('transform') !== transform) this.world.setAttribute('transform', transform);
     }
 
     zoomBy(factor: number, aroundClient?: Point): void {
@@ -253,6 +255,7 @@ export class CanvasView {
     /** Redraws only the overlay (drag line, marquee, error bubble). */
     private renderOverlay(): void {
         const fresh = this.drawOverlay(this.store.system);
+        if (fresh.childElementCount === 0 && this.overlay.childElementCount === 0) return;
         this.overlay.replaceWith(fresh);
         this.overlay = fresh;
     }
