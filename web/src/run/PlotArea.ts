@@ -15,13 +15,14 @@ export class PlotArea {
     private readonly list: HTMLElement;
     private scheduled = false;
     private fetchedFor = 0;
+    private readonly unsubscribe: () => void;
 
     constructor(private readonly runs: RunController) {
         this.list = h('div', { class: 'plot-list' });
         this.element = h('div', { class: 'plot-area' },
             h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window')),
             this.list);
-        runs.subscribe(() => {
+        this.unsubscribe = runs.subscribe(() => {
             // variables added during a run were not streamed: load them when it ends
             const run = runs.current;
             if (run?.finished && run.jobId !== this.fetchedFor) {
@@ -32,8 +33,9 @@ export class PlotArea {
         });
     }
 
-    /** Closes every window (the editor was left): their resize observers stop. */
+    /** Closes every window (the editor was left): their resize observers stop, and runs are no longer followed. */
     dispose(): void {
+        this.unsubscribe();
         for (const w of [...this.windows]) this.close(w);
         for (const a of this.analyses.splice(0)) a.destroy();
     }
