@@ -190,7 +190,7 @@ export class CanvasView {
 
     /** Scene position of a port (a system port is its own pose). */
     portPoint(system: System, ref: PortRef): Point | null {
-        const comp = this.byName.get(ref.component) ?? system.components.find((c) => c.name === ref.component);
+        const comp = this.byName.get(ref.component);
         if (comp) {
             const local = this.layouts.get(comp.name)?.ports.get(ref.port);
             return local ? toScene(this.poseOf(comp), local) : toScene(this.poseOf(comp), { x: 0, y: 0 });
@@ -226,7 +226,7 @@ export class CanvasView {
             return [c.name, layout];
         }));
         this.byName = new Map(system.components.map((c) => [c.name, c]));
-        // fitted before the drawing is added, so that measuring the canvas lays out no drawing
+        // fitted before the new drawing is added, so that measuring the canvas does not lay it out
         if (this.fittedPath !== this.pathKey) this.fit();
 
         const connections = new Map<Connection, DrawnConnection>();
@@ -434,7 +434,7 @@ export class CanvasView {
         } else if (compEl) {
             const name = compEl.getAttribute('data-name')!;
             if (compEl.classList.contains('system-port')) return;
-            // the drawing is rebuilt between two clicks, so the browser's dblclick cannot be used
+            // an element may be rebuilt between two clicks, so the browser's dblclick cannot be used
             const now = performance.now();
             const last = this.lastPress;
             this.lastPress = { name, time: now };
