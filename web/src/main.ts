@@ -70,7 +70,14 @@ async function route(): Promise<void> {
     } else if (hash === '#/account') {
         renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
     } else if (model) {
-        editor = await renderEditor(page, session, Number(model[1]), navigate);
+        const opened = await renderEditor(page, session, Number(model[1]), navigate);
+        if (currentHash === hash) {
+            editor = opened;
+        } else {
+            // Left while the model was opening: this editor is not the page any more.
+            opened.dispose();
+            await route();
+        }
     } else {
         await renderModelList(page, session, (id) => { location.hash = `#/model/${id}`; });
     }
