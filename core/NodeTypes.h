@@ -70,6 +70,9 @@ enum : int {
     DensityWaveVariable, DensityCharImpedance, Temperature
 };
 }
+namespace NodePetriNet {
+enum : int { State = 0, Flow };   // place marking, token transfer this step
+}
 namespace NodeMechanic2D {
 enum : int {
     AngleR = 0, AngularVelocityR, TorqueR, WaveVariableR, CharImpedanceR, EquivalentInertiaR,

@@ -1,6 +1,7 @@
 #include "core/components/aero/AeroAircraft6DOFS.h"
 
 #include "core/ComponentFactory.h"
+#include "core/components/aero/AircraftControlSurfaces.h"
 #include "core/numerics/AuxiliarySimulationFunctions.h"
 
 #include <cmath>
@@ -8,6 +9,8 @@
 namespace tlmhub {
 
 namespace {
+using enum aircraft::ControlSurface;
+
 struct FrozenInput {
     const char* name;
     const char* unit;
@@ -94,13 +97,11 @@ const FrozenInput kFrozenInputs[AeroAircraft6DOFS::kNumFrozen] = {
     {"kground", "N/m", 10000.0},
     {"cground", "Ns/m", 1000.0},
 };
-const char* const kPortNames[7] = {"Pal1", "Par1", "Pal12", "Par12", "Pal2", "Par2", "Pfin"};
-enum { al1 = 0, ar1, al12, ar12, al2, ar2, fin };
 } // namespace
 
 void AeroAircraft6DOFS::configure()
 {
-    for (int i = 0; i < kNumPorts; ++i) { mpPorts[i] = addPowerPort(kPortNames[i], NodeType::MechanicRotational); }
+    for (int i = 0; i < kNumPorts; ++i) { mpPorts[i] = addPowerPort(aircraft::kControlSurfacePortNames[i], NodeType::MechanicRotational); }
 
     addInputVariable("thrustl", "Thrust left engine", "N", 0.0, &mpThrustl);
     addInputVariable("thrustr", "Thrust right engine", "N", 0.0, &mpThrustr);

@@ -1,6 +1,7 @@
 #include "core/components/aero/AeroAircraft6DOFSS.h"
 
 #include "core/ComponentFactory.h"
+#include "core/components/aero/AircraftControlSurfaces.h"
 #include "core/numerics/AuxiliarySimulationFunctions.h"
 #include "core/numerics/MathematicaWrappers.h"
 
@@ -9,6 +10,8 @@
 namespace tlmhub {
 
 namespace {
+using enum aircraft::ControlSurface;
+
 struct VarInfo {
     const char* name;
     const char* desc;
@@ -164,13 +167,11 @@ const VarInfo kOutputs[AeroAircraft6DOFSS::kNumOutputs] = {
     {"Fax", "Aerodynamic force x", "N", 0.0},
     {"Faz", "Aerodynamic force z", "N", 0.0},
 };
-const char* const kPortNames[7] = {"Pal1", "Par1", "Pal12", "Par12", "Pal2", "Par2", "Pfin"};
-enum { al1 = 0, ar1, al12, ar12, al2, ar2, fin };
 } // namespace
 
 void AeroAircraft6DOFSS::configure()
 {
-    for (int i = 0; i < kNumPorts; ++i) { mpPorts[i] = addPowerPort(kPortNames[i], NodeType::MechanicRotational); }
+    for (int i = 0; i < kNumPorts; ++i) { mpPorts[i] = addPowerPort(aircraft::kControlSurfacePortNames[i], NodeType::MechanicRotational); }
     for (int i = 0; i < kNumInputs; ++i) {
         addInputVariable(kInputs[i].name, kInputs[i].desc, kInputs[i].unit, kInputs[i].defaultValue, &mpIn[i]);
     }

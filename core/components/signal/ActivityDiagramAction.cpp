@@ -5,10 +5,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 void ActivityDiagramAction::configure()
 {
     addOutputVariable("state", "Place marking", "", 0.0, &mpState);
@@ -18,10 +14,10 @@ void ActivityDiagramAction::configure()
 
 void ActivityDiagramAction::initialize()
 {
-    mpS1 = getSafeNodeDataPtr(mpPpn1, kState);
-    mpQ1 = getSafeNodeDataPtr(mpPpn1, kFlow);
-    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
-    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
+    mpS1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::State);
+    mpQ1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::Flow);
+    mpS2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::State);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::Flow);
     mStated = *mpState;
     simulateOneTimestep();
 }

@@ -5,15 +5,29 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 bool ActivityDiagramActionN::tryAndLockToken()
 {
     if (mLocked) { return false; }
     mLocked = true;
     return true;
+}
+
+void ActivityDiagramActionN::collectAttached(Port* port, std::vector<ActivityDiagramActionN*>& out)
+{
+    out.clear();
+    for (Port* other : port->connectedPorts) {
+        Component* c = other->component();
+        if (c != nullptr && c->typeName() == "ActivityDiagramActionN") {
+            if (auto* a = dynamic_cast<ActivityDiagramActionN*>(c)) { out.push_back(a); }
+        }
+    }
+}
+
+bool ActivityDiagramActionN::tryLockAll(const std::vector<ActivityDiagramActionN*>& places)
+{
+    bool ok = true;
+    for (ActivityDiagramActionN* a : places) { ok = a->tryAndLockToken(); }
+    return ok;
 }
 
 void ActivityDiagramActionN::configure()
@@ -27,11 +41,11 @@ void ActivityDiagramActionN::initialize()
     const std::size_t n = getNumPorts(mpPpn1);
     mpS.assign(n, nullptr);
     mpQ.assign(n, nullptr);
-    const double s0 = getDefaultStartValue(mpPpn1, kState);
-    const double q0 = getDefaultStartValue(mpPpn1, kFlow);
+    const double s0 = getDefaultStartValue(mpPpn1, NodePetriNet::State);
+    const double q0 = getDefaultStartValue(mpPpn1, NodePetriNet::Flow);
     for (std::size_t i = 0; i < n; ++i) {
-        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState);
-        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow);
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::State);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::Flow);
         *mpS[i] = s0;
         // The start flow is shared out over the connections.
         *mpQ[i] = q0 / static_cast<double>(n);

@@ -15,6 +15,12 @@ public:
     // True (and locked) if the token was free this step, false if already taken.
     bool tryAndLockToken();
 
+    // For the transitions: the ActionN places attached to a port (they own a token lock),
+    // and locking them all (places of other types count as success; with several ActionN
+    // the last attempt decides).
+    static void collectAttached(Port* port, std::vector<ActivityDiagramActionN*>& out);
+    static bool tryLockAll(const std::vector<ActivityDiagramActionN*>& places);
+
 private:
     double* mpState = nullptr;
     Port* mpPpn1 = nullptr;

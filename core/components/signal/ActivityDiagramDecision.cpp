@@ -6,32 +6,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
-namespace {
-// Collects the ActionN places attached to a port (they own a token lock).
-void collectActionN(Port* port, std::vector<ActivityDiagramActionN*>& out)
-{
-    out.clear();
-    for (Port* other : port->connectedPorts) {
-        Component* c = other->component();
-        if (c != nullptr && c->typeName() == "ActivityDiagramActionN") {
-            if (auto* a = dynamic_cast<ActivityDiagramActionN*>(c)) { out.push_back(a); }
-        }
-    }
-}
-
-// Places of other types count as success; with several ActionN the last attempt decides.
-bool tryLockAll(const std::vector<ActivityDiagramActionN*>& places)
-{
-    bool ok = true;
-    for (ActivityDiagramActionN* a : places) { ok = a->tryAndLockToken(); }
-    return ok;
-}
-} // namespace
-
 void ActivityDiagramDecision::configure()
 {
     addInputVariable("event2", "Event for Ppn2", "", 0.0, &mpEvent2);
@@ -44,15 +18,15 @@ void ActivityDiagramDecision::configure()
 
 void ActivityDiagramDecision::initialize()
 {
-    mpS1 = getSafeNodeDataPtr(mpPpn1, kState);
-    mpQ1 = getSafeNodeDataPtr(mpPpn1, kFlow);
-    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
-    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
-    mpS3 = getSafeNodeDataPtr(mpPpn3, kState);
-    mpQ3 = getSafeNodeDataPtr(mpPpn3, kFlow);
-    collectActionN(mpPpn1, mLock1);
-    collectActionN(mpPpn2, mLock2);
-    collectActionN(mpPpn3, mLock3);
+    mpS1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::State);
+    mpQ1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::Flow);
+    mpS2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::State);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::Flow);
+    mpS3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::State);
+    mpQ3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::Flow);
+    ActivityDiagramActionN::collectAttached(mpPpn1, mLock1);
+    ActivityDiagramActionN::collectAttached(mpPpn2, mLock2);
+    ActivityDiagramActionN::collectAttached(mpPpn3, mLock3);
     mOldEvent2 = *mpEvent2;
     mOldEvent3 = *mpEvent3;
     simulateOneTimestep();
@@ -68,9 +42,9 @@ void ActivityDiagramDecision::simulateOneTimestep()
     const double q30 = dE3 * onPositive(s1 - s3);
     double q2 = 0.0, q3 = 0.0;
     bool ok1 = false, ok2 = false, ok3 = false;
-    if (q20 > 0.0 || q30 > 0.0) { ok1 = tryLockAll(mLock1); }
-    if (q20 > 0.0) { ok2 = tryLockAll(mLock2); }
-    if (q30 > 0.0) { ok3 = tryLockAll(mLock3); }
+    if (q20 > 0.0 || q30 > 0.0) { ok1 = ActivityDiagramActionN::tryLockAll(mLock1); }
+    if (q20 > 0.0) { ok2 = ActivityDiagramActionN::tryLockAll(mLock2); }
+    if (q30 > 0.0) { ok3 = ActivityDiagramActionN::tryLockAll(mLock3); }
     if (q20 > 0.0 || q30 > 0.0) {
         if (ok1 && ok2) { q2 = dE2 * onPositive(s1 - s2); }
         if (ok1 && ok3) { q3 = dE3 * (1.0 - q2) * onPositive(s1 - s3); }

@@ -5,10 +5,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 void ActivityDiagramFinal::configure()
 {
     addInputVariable("event", "Firing event", "", 1.0, &mpEvent);
@@ -18,8 +14,8 @@ void ActivityDiagramFinal::configure()
 
 void ActivityDiagramFinal::initialize()
 {
-    mpS1 = getSafeNodeDataPtr(mpPpn1, kState);
-    mpQ1 = getSafeNodeDataPtr(mpPpn1, kFlow);
+    mpS1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::State);
+    mpQ1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::Flow);
     mOldEvent = *mpEvent;
     simulateOneTimestep();
 }

@@ -5,10 +5,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 void ActivityDiagramFinalNode::configure()
 {
     addOutputVariable("state", "Place marking", "", 0.0, &mpState);
@@ -20,11 +16,11 @@ void ActivityDiagramFinalNode::initialize()
     const std::size_t n = getNumPorts(mpPpn1);
     mpS.assign(n, nullptr);
     mpQ.assign(n, nullptr);
-    const double s0 = getDefaultStartValue(mpPpn1, kState);
-    const double q0 = getDefaultStartValue(mpPpn1, kFlow);
+    const double s0 = getDefaultStartValue(mpPpn1, NodePetriNet::State);
+    const double q0 = getDefaultStartValue(mpPpn1, NodePetriNet::Flow);
     for (std::size_t i = 0; i < n; ++i) {
-        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState);
-        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow);
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::State);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::Flow);
         *mpS[i] = s0;
         // The start flow is shared out over the connections.
         *mpQ[i] = q0 / static_cast<double>(n);

@@ -6,32 +6,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
-namespace {
-// Collects the ActionN places attached to a port (they own a token lock).
-void collectActionN(Port* port, std::vector<ActivityDiagramActionN*>& out)
-{
-    out.clear();
-    for (Port* other : port->connectedPorts) {
-        Component* c = other->component();
-        if (c != nullptr && c->typeName() == "ActivityDiagramActionN") {
-            if (auto* a = dynamic_cast<ActivityDiagramActionN*>(c)) { out.push_back(a); }
-        }
-    }
-}
-
-// Places of other types count as success; with several ActionN the last attempt decides.
-bool tryLockAll(const std::vector<ActivityDiagramActionN*>& places)
-{
-    bool ok = true;
-    for (ActivityDiagramActionN* a : places) { ok = a->tryAndLockToken(); }
-    return ok;
-}
-} // namespace
-
 void ActivityDiagramFork::configure()
 {
     addInputVariable("event", "Firing event", "", 1.0, &mpEvent);
@@ -43,15 +17,15 @@ void ActivityDiagramFork::configure()
 
 void ActivityDiagramFork::initialize()
 {
-    mpS1 = getSafeNodeDataPtr(mpPpn1, kState);
-    mpQ1 = getSafeNodeDataPtr(mpPpn1, kFlow);
-    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
-    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
-    mpS3 = getSafeNodeDataPtr(mpPpn3, kState);
-    mpQ3 = getSafeNodeDataPtr(mpPpn3, kFlow);
-    collectActionN(mpPpn1, mLock1);
-    collectActionN(mpPpn2, mLock2);
-    collectActionN(mpPpn3, mLock3);
+    mpS1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::State);
+    mpQ1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::Flow);
+    mpS2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::State);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::Flow);
+    mpS3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::State);
+    mpQ3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::Flow);
+    ActivityDiagramActionN::collectAttached(mpPpn1, mLock1);
+    ActivityDiagramActionN::collectAttached(mpPpn2, mLock2);
+    ActivityDiagramActionN::collectAttached(mpPpn3, mLock3);
     // The reference evaluates the first step before oldEvent is set; use 0.
     mOldEvent = 0.0;
     simulateOneTimestep();
@@ -65,8 +39,8 @@ void ActivityDiagramFork::simulateOneTimestep()
     double q1 = 0.0, q2 = 0.0, q3 = 0.0;
     const double q10 = -dE * onPositive(-0.5 + s1 - s2 - s3);
     if (q10 < 0.0) {
-        const bool okU = tryLockAll(mLock1);
-        bool okD = tryLockAll(mLock2);
+        const bool okU = ActivityDiagramActionN::tryLockAll(mLock1);
+        bool okD = ActivityDiagramActionN::tryLockAll(mLock2);
         // Third port: every ActionN must agree; stop asking once one refuses.
         for (ActivityDiagramActionN* a : mLock3) { okD = okD && a->tryAndLockToken(); }
         if (okU && okD) {

@@ -5,10 +5,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 void ActivityDiagramForkN::configure()
 {
     addInputVariable("event", "Firing event", "", 1.0, &mpEvent);
@@ -25,11 +21,11 @@ void ActivityDiagramForkN::initialize()
     mpQ.assign(n, nullptr);
     // Hopsan zeroes the incoming sub-port nodes here (their start values do not survive).
     for (std::size_t i = 0; i < n; ++i) {
-        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kState, 0.0);
-        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, kFlow, 0.0);
+        mpS[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::State, 0.0);
+        mpQ[i] = getSafeMultiPortNodeDataPtr(mpPpn1, i, NodePetriNet::Flow, 0.0);
     }
-    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
-    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
+    mpS2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::State);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::Flow);
     mOldEvent = 0.0;
 }
 

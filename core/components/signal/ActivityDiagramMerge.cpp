@@ -5,10 +5,6 @@
 
 namespace tlmhub {
 
-// NodePetriNet slots: State (place marking) and Flow (token transfer this step).
-constexpr int kState = 0;
-constexpr int kFlow = 1;
-
 void ActivityDiagramMerge::configure()
 {
     addInputVariable("event1", "Event for Ppn1", "", 1.0, &mpEvent1);
@@ -21,12 +17,12 @@ void ActivityDiagramMerge::configure()
 
 void ActivityDiagramMerge::initialize()
 {
-    mpS1 = getSafeNodeDataPtr(mpPpn1, kState);
-    mpQ1 = getSafeNodeDataPtr(mpPpn1, kFlow);
-    mpS2 = getSafeNodeDataPtr(mpPpn2, kState);
-    mpQ2 = getSafeNodeDataPtr(mpPpn2, kFlow);
-    mpS3 = getSafeNodeDataPtr(mpPpn3, kState);
-    mpQ3 = getSafeNodeDataPtr(mpPpn3, kFlow);
+    mpS1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::State);
+    mpQ1 = getSafeNodeDataPtr(mpPpn1, NodePetriNet::Flow);
+    mpS2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::State);
+    mpQ2 = getSafeNodeDataPtr(mpPpn2, NodePetriNet::Flow);
+    mpS3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::State);
+    mpQ3 = getSafeNodeDataPtr(mpPpn3, NodePetriNet::Flow);
     mOldEvent1 = *mpEvent1;
     mOldEvent2 = *mpEvent2;
     simulateOneTimestep();
