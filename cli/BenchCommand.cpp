@@ -1,5 +1,6 @@
 #include "cli/Commands.h"
 #include "cli/Options.h"
+#include "cli/ThreadCount.h"
 
 #include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
@@ -26,19 +27,18 @@ long peakRssKiB()
     return -1;
 }
 
-// "--threads 1,2" -> {1, 2}; 0 means one per core.
+// "--threads 1,2,auto" -> {1, 2, autoThreads}.
 bool parseThreadList(const std::string& text, std::vector<unsigned>& out, std::string& error)
 {
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ',')) {
-        char* end = nullptr;
-        const long v = std::strtol(item.c_str(), &end, 10);
-        if (item.empty() || *end != '\0' || v < 0 || v > 256) {
-            error = "--threads needs counts such as 2 or 1,2; got '" + text + "'";
+        const std::optional<unsigned> threads = parseThreadCount(item);
+        if (!threads) {
+            error = "--threads needs counts or auto, such as 2 or 1,2,auto; got '" + text + "'";
             return false;
         }
-        out.push_back(v == 0 ? std::max(1u, std::thread::hardware_concurrency()) : static_cast<unsigned>(v));
+        out.push_back(*threads);
     }
     if (out.empty()) out.push_back(1);
     return true;
@@ -167,6 +167,7 @@ int benchCommand(const std::vector<std::string>& args)
     }
     Simulation& sim = *compiled;
     std::vector<std::vector<double>> times(threadCounts.size());
+    std::vector<unsigned> threadsUsed(threadCounts.size(), 1);
     for (int k = 0; k < static_cast<int>(repeat); ++k) {
         for (std::size_t c = 0; c < threadCounts.size(); ++c) {
             // Only the steps are timed: reset and initialisation happen before the clock starts.
@@ -184,6 +185,7 @@ int benchCommand(const std::vector<std::string>& args)
                 return 1;
             }
             times[c].push_back(std::chrono::duration<double>(s1 - s0).count());
+            threadsUsed[c] = sim.threadsUsed();
         }
     }
     const std::size_t steps = sim.totalSteps();
@@ -193,8 +195,11 @@ int benchCommand(const std::vector<std::string>& args)
     for (std::size_t c = 0; c < threadCounts.size(); ++c) {
         const auto [lo, hi] = std::minmax_element(times[c].begin(), times[c].end());
         const double med = median(times[c]);
-        std::printf("simulation min %.4f s, median %.4f s, max %.4f s (%zu runs, %u thread(s))\n", *lo, med, *hi,
-                    times[c].size(), threadCounts[c]);
+        const std::string used = threadCounts[c] == RunOptions::autoThreads
+                                     ? " (last run ended on " + std::to_string(threadsUsed[c]) + ")"
+                                     : "";
+        std::printf("simulation min %.4f s, median %.4f s, max %.4f s (%zu runs, %s thread(s)%s)\n", *lo, med, *hi,
+                    times[c].size(), threadCountName(threadCounts[c]).c_str(), used.c_str());
         std::printf("%.0f steps/s, %.2f ns per component-step\n", steps / med,
                     med * 1e9 / (static_cast<double>(steps) * static_cast<double>(comps)));
     }
@@ -202,8 +207,9 @@ int benchCommand(const std::vector<std::string>& args)
         std::vector<double> ratios;
         for (std::size_t k = 0; k < times[c].size(); ++k) ratios.push_back(times[0][k] / times[c][k]);
         const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
-        std::printf("speed-up %u vs %u thread(s): median %.2fx (per round %.2fx to %.2fx)\n", threadCounts[c],
-                    threadCounts[0], median(ratios), *lo, *hi);
+        std::printf("speed-up %s vs %s thread(s): median %.2fx (per round %.2fx to %.2fx)\n",
+                    threadCountName(threadCounts[c]).c_str(), threadCountName(threadCounts[0]).c_str(), median(ratios),
+                    *lo, *hi);
     }
     std::printf("peak RSS %ld KiB\n", peakRssKiB());
     return 0;

@@ -1,5 +1,6 @@
 #include "cli/Commands.h"
 #include "cli/Options.h"
+#include "cli/ThreadCount.h"
 
 #include "core/ResultTable.h"
 #include "core/Results.h"
@@ -57,15 +58,15 @@ int runCommand(const std::vector<std::string>& args)
     System& root = *model.root;
     double start = root.startTime, stop = root.stopTime, step = root.desiredTimestep;
     double samples = static_cast<double>(root.requestedLogSamples);
-    double threads = 1;
     std::string err;
     if (!opt.number("start", start, err) || !opt.number("stop", stop, err) ||
         !opt.number("step", step, err) || !opt.number("samples", samples, err)) {
         std::cerr << "error: " << err << "\n";
         return 2;
     }
-    if (!opt.number("threads", threads, err) || threads < 0) {
-        std::cerr << "error: --threads needs a count >= 0\n";
+    const std::optional<unsigned> threads = parseThreadCount(opt.has("threads") ? opt.value("threads") : "auto");
+    if (!threads) {
+        std::cerr << "error: --threads needs a count from 1 to 256 or auto, got '" << opt.value("threads") << "'\n";
         return 2;
     }
     if (!(stop >= start) || !(step > 0.0)) {
@@ -86,7 +87,7 @@ int runCommand(const std::vector<std::string>& args)
         return 1;
     }
     Simulation& sim = *compiled;
-    const RunOptions runOptions{.threads = static_cast<unsigned>(threads)};
+    const RunOptions runOptions{.threads = *threads};
     const auto t1 = std::chrono::steady_clock::now();
     const Status status = sim.run(runOptions);
     const auto t2 = std::chrono::steady_clock::now();

@@ -10,12 +10,12 @@ namespace {
 void usage(std::ostream& os)
 {
     os << "usage:\n"
-          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--threads N]\n"
+          "  tlmhub-cli run MODEL.hmf [--start S --step H --stop T] [--samples N] [--threads N|auto]\n"
           "                 [--csv OUT.csv] [--sha256] [--check-finite]\n"
           "  tlmhub-cli validate FILE.hvc [FILE.hvc ...]\n"
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"
-          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N[,N...]] [--vary Comp.param=a:b:n]\n"
+          "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N|auto[,...]] [--vary Comp.param=a:b:n]\n"
           "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n";
 }
 

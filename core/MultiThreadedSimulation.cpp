@@ -19,6 +19,13 @@ namespace tlmhub {
 
 namespace {
 
+// Automatic thread count (simulateStepsAutoThreaded).
+constexpr double kThreadTrialWindowSeconds = 0.5e-3;   // a timed window lasts at least this
+constexpr double kMinThreadedStepSeconds = 250e-9;     // cheaper steps stay on one thread
+constexpr double kMinThreadedRunSeconds = 20e-3;       // so do shorter rests of a run
+constexpr double kThreadedSpeedMargin = 0.93;          // threads must take < 93 % of the time
+constexpr unsigned kMaxAutoThreads = 8;
+
 // Sense-reversing barrier. With no more threads than cores it only spins: a phase lasts
 // microseconds, and a sched_yield per wait cost about 6 % of a 2-thread x200 run. With
 // more threads than cores it yields after a short spin so the others can run. The last
@@ -232,15 +239,82 @@ void timedRun(const std::vector<Component*>& list, std::vector<double>& cost, do
 
 } // namespace
 
+// Wall time per step of `steps` plain single-threaded steps.
+double System::timeSingleThreadedSteps(std::size_t steps, bool& ok)
+{
+    using Clock = std::chrono::steady_clock;
+    const auto begin = Clock::now();
+    ok = simulateSteps(steps);
+    return std::chrono::duration<double>(Clock::now() - begin).count() / static_cast<double>(steps);
+}
+
 bool System::simulateMultiThreaded(double tStop, unsigned threads)
 {
     return simulateStepsMultiThreaded(stepsUntil(tStop), threads);
 }
 
+// Automatic thread count: more threads only where they are measured to be faster. The run
+// first takes some single-threaded steps in windows of about a millisecond (the fastest
+// window is the baseline), then goes on with one thread per core and times the same windows
+// there; if that is not clearly faster, the threads stop at a step boundary and the rest of
+// the run is single-threaded. Results do not depend on the thread count, so switching in
+// the middle of a run changes nothing but the time.
+bool System::simulateStepsAutoThreaded(std::size_t n)
+{
+    const unsigned cores = std::thread::hardware_concurrency();
+    if (cores < 2) return simulateSteps(n);
+    std::size_t window = 16;
+    double single = std::numeric_limits<double>::infinity();
+    std::size_t done = 0;
+    for (int measured = 0; measured < 3 && done + window <= n;) {
+        bool ok = true;
+        const double perStep = timeSingleThreadedSteps(window, ok);
+        if (!ok) return false;
+        done += window;
+        if (perStep * static_cast<double>(window) < kThreadTrialWindowSeconds) {
+            window *= 2;   // too short to time well: grow the window, this one does not count
+            continue;
+        }
+        single = std::min(single, perStep);
+        ++measured;
+    }
+    const std::size_t rest = n - done;
+    // Too short a run to time (no window measured), a step so cheap that it cannot gain from
+    // threads (a barrier alone costs about this much), or a short rest: one thread.
+    const bool measured = single < std::numeric_limits<double>::infinity();
+    if (!measured || single < kMinThreadedStepSeconds || single * static_cast<double>(rest) < kMinThreadedRunSeconds)
+        return simulateSteps(rest);
+    return simulateStepsThreadTrial(rest, std::min(cores, kMaxAutoThreads), single, window);
+}
+
+bool System::simulateStepsThreadTrial(std::size_t n, unsigned threads, double singleThreadedStepSeconds,
+                                      std::size_t window)
+{
+    const ThreadTrial trial{singleThreadedStepSeconds, std::max<std::size_t>(window, 1)};
+    std::size_t taken = 0;
+    if (!runThreaded(n, threads, &trial, taken)) return false;
+    if (taken == n) return true;
+    mThreadsUsed = 1;
+    return simulateSteps(n - taken);
+}
+
 bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
 {
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    mThreadsUsed = 1;
+    if (threads == 0) return simulateStepsAutoThreaded(n);
     if (threads == 1 || n == 0) return simulateSteps(n);
+    std::size_t taken = 0;
+    return runThreaded(n, threads, nullptr, taken);
+}
+
+// Runs up to `n` steps on `threads` threads (all of them unless a trial gives up early);
+// `taken` gets the steps actually taken. With a trial, thread 0 times windows of steps
+// after a short warm-up and ends the threaded run when it is not faster than the trial's
+// single-threaded time per step by a margin.
+bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* trial, std::size_t& taken)
+{
+    const std::size_t takenBefore = mTakenSteps;
+    if (n == 0) return !stopRequested();
 
     // Measure each component's cost over the first steps (real steps of the run).
     using Clock = std::chrono::steady_clock;
@@ -270,25 +344,49 @@ bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
     // another thread is still copying. Only the master touches the time and counters.
     std::vector<char> logsAfter(n - probeSteps, 0);
     for (std::size_t k = mLogCounter; k < mLogSteps.size(); ++k) {
-        const std::size_t taken = mLogSteps[k];
-        if (taken > mTakenSteps && taken - mTakenSteps - 1 < logsAfter.size()) logsAfter[taken - mTakenSteps - 1] = 1;
+        const std::size_t step = mLogSteps[k];
+        if (step > mTakenSteps && step - mTakenSteps - 1 < logsAfter.size()) logsAfter[step - mTakenSteps - 1] = 1;
     }
     const auto shares = logShares(mLoggedNodes, threads);
     SpinBarrier barrier(threads);
-    bool stopSnapshot = false;   // written only by the last thread at the Q barrier
+    bool endSnapshot = false;   // written only by the last thread at the Q barrier
+    std::atomic<bool> giveUp{false};
     const double startTime = mTime;
     const std::size_t firstSlot = mLogCounter;
+    // Thread 0's trial: windows of trial->window steps after a warm-up.
+    constexpr std::size_t warmUpSteps = 16;
+    bool timing = trial != nullptr;
+    int windowsTimed = 0;
+    double fastest = std::numeric_limits<double>::infinity();
+    Clock::time_point windowStart;
+    auto timeTrial = [&](std::size_t step) {
+        if (step < warmUpSteps || (step - warmUpSteps) % trial->window != 0) return;
+        const auto now = Clock::now();
+        if (step > warmUpSteps) {
+            const double perStep = std::chrono::duration<double>(now - windowStart).count() /
+                                   static_cast<double>(trial->window);
+            fastest = std::min(fastest, perStep);
+            if (++windowsTimed == 3) {
+                timing = false;
+                if (!(fastest < kThreadedSpeedMargin * trial->singleThreadedStepSeconds))
+                    giveUp.store(true, std::memory_order_relaxed);
+                return;
+            }
+        }
+        windowStart = now;
+    };
     auto run = [&](unsigned id) {
         double t = startTime;
         std::size_t slot = firstSlot;
         for (std::size_t step = 0; step < logsAfter.size(); ++step) {
+            if (id == 0 && timing) timeTrial(step);
             t += mTimestep;
             for (Component* c : partS[id]) runComponent(c, t);
             if (barrierAfterS) barrier.arriveAndWait();
             for (Component* c : partC[id]) runComponent(c, t);
             barrier.arriveAndWait();
             for (Component* c : partQ[id]) runComponent(c, t);
-            barrier.arriveAndWait([&] { stopSnapshot = stopRequested(); });
+            barrier.arriveAndWait([&] { endSnapshot = stopRequested() || giveUp.load(std::memory_order_relaxed); });
             if (logsAfter[step]) {
                 for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);
             }
@@ -300,19 +398,21 @@ bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
                     ++mLogCounter;
                 }
                 if (mProgress && mProgressInterval && (mTakenSteps % mProgressInterval) == 0)
-                    mProgress(mProgressUser, probeSteps + step + 1, n);
+                    mProgress(mProgressUser, mTakenSteps - takenBefore, n);
             }
             if (logsAfter[step]) {
                 ++slot;
                 barrier.arriveAndWait();
             }
-            if (stopSnapshot) return;
+            if (endSnapshot) return;
         }
     };
+    mThreadsUsed = threads;
     std::vector<std::thread> pool;
     for (unsigned id = 1; id < threads; ++id) pool.emplace_back(run, id);
     run(0);
     for (auto& th : pool) th.join();
+    taken = mTakenSteps - takenBefore;
     return !stopRequested();
 }
 

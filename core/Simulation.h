@@ -41,7 +41,10 @@ struct SimulationSettings {
 };
 
 struct RunOptions {
-    unsigned threads = 1;   // 0 = one per core; results do not depend on it
+    // Results do not depend on it. autoThreads: one per core where the run measures that to be
+    // faster than one thread (System::simulateStepsMultiThreaded), else one.
+    unsigned threads = 1;
+    static constexpr unsigned autoThreads = 0;
     // Called on the running thread every `progressInterval` steps with the steps taken since
     // the start and the steps of the whole run.
     std::function<void(std::size_t stepsTaken, std::size_t stepsTotal)> progress = {};
@@ -85,6 +88,7 @@ public:
     std::size_t takenSteps() const;
     std::size_t totalSteps() const;   // steps from the start to the stop time
     std::size_t logSlots() const;     // samples a full run logs (known once initialised)
+    unsigned threadsUsed() const { return mRoot->threadsUsed(); }   // by the latest steps
 
     // The samples logged so far.
     ResultView results() const;

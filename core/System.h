@@ -89,13 +89,21 @@ public:
     bool checkModel(std::string& error);
     bool initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
-    // The same steps with the root's S, C and Q lists split over `threads` threads (0 = one
-    // per core; S components by signal cluster, see MultiThreadedSimulation.cpp). Results are
+    // The same steps with the root's S, C and Q lists split over `threads` threads (S
+    // components by signal cluster, see MultiThreadedSimulation.cpp); 0 = automatic: one per
+    // core where that is measured to be faster than one thread, else one. Results are
     // identical to simulate().
     bool simulateMultiThreaded(double stopTime, unsigned threads);
     // Root: the next `steps` steps (runs can be continued step-exactly this way).
     bool simulateSteps(std::size_t steps);
     bool simulateStepsMultiThreaded(std::size_t steps, unsigned threads);
+    // The automatic choice with a given single-threaded time per step as the baseline that
+    // `threads` threads must beat over timed windows of `window` steps (0 s: they lose and
+    // the run goes on single-threaded after the trial). For tests.
+    bool simulateStepsThreadTrial(std::size_t steps, unsigned threads, double singleThreadedStepSeconds,
+                                  std::size_t window);
+    // Threads the latest steps ran on.
+    unsigned threadsUsed() const { return mThreadsUsed; }
     // Number of root steps from the current time to `stopTime` (Hopsan's rounding).
     std::size_t stepsUntil(double stopTime) const;
     void finalize();
@@ -169,6 +177,13 @@ public:
     static void runComponent(Component* c, double time);
 
 private:
+    struct ThreadTrial {
+        double singleThreadedStepSeconds;
+        std::size_t window;   // steps per timed window
+    };
+    bool simulateStepsAutoThreaded(std::size_t steps);
+    double timeSingleThreadedSteps(std::size_t steps, bool& ok);
+    bool runThreaded(std::size_t steps, unsigned threads, const ThreadTrial* trial, std::size_t& taken);
     bool initializeInternal(double startTime, double stopTime);
     void propagateTimestep();
     Port* resolvePort(const std::string& compName, const std::string& portName,
@@ -187,6 +202,7 @@ private:
     std::atomic<bool> mStopRequested{false};
     std::mutex mMessagesMutex;
     std::size_t mTakenSteps = 0;
+    unsigned mThreadsUsed = 1;
 
     // logging
     std::vector<std::size_t> mLogSteps;

@@ -5,13 +5,18 @@
 #include "core/hmf/HmfLoader.h"
 
 #include <filesystem>
+#include <functional>
+#include <limits>
 
 using namespace tlmhub;
 using namespace tlmhub::test;
 
 namespace {
 
-std::vector<std::vector<double>> simulateWith(const std::string& path, unsigned threads)
+// How a test runs the steps of a loaded, initialised model.
+using StepRunner = std::function<bool(System& root, std::size_t steps)>;
+
+std::vector<std::vector<double>> simulateWith(const std::string& path, const StepRunner& runSteps)
 {
     LoadedModel m = loadHmfFile(path);
     EXPECT_FALSE(m.hasErrors()) << m.firstError();
@@ -20,11 +25,18 @@ std::vector<std::vector<double>> simulateWith(const std::string& path, unsigned 
     std::string err;
     EXPECT_TRUE(root.checkModel(err)) << err;
     EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
-    EXPECT_TRUE(root.simulateMultiThreaded(root.stopTime, threads));
+    EXPECT_TRUE(runSteps(root, root.stepsUntil(root.stopTime)));
     root.finalize();
     std::vector<std::vector<double>> out{root.logTime()};
     for (const auto& v : listLoggedVariables(root)) out.push_back(loggedData(*v.port, v.slot, v.count));
     return out;
+}
+
+std::vector<std::vector<double>> simulateWith(const std::string& path, unsigned threads)
+{
+    return simulateWith(path, [threads](System& root, std::size_t steps) {
+        return root.simulateStepsMultiThreaded(steps, threads);
+    });
 }
 
 class MultiThreading : public ::testing::TestWithParam<const char*> {};
@@ -43,6 +55,35 @@ TEST_P(MultiThreading, LogsAreBitwiseEqualToSingleThreaded)
         for (std::size_t i = 0; i < single.size(); ++i)
             ASSERT_EQ(single[i], multi[i]) << "column " << i << " with " << threads << " threads";
     }
+}
+
+// The automatic thread count switches to one thread in the middle of a run when the threads
+// lose their trial; the logs must not show where. Both outcomes of the trial are forced.
+TEST_P(MultiThreading, ThreadTrialEitherWayGivesTheSingleThreadedLogs)
+{
+    const std::string path = sharedDir() + "/hopsan-models/" + GetParam();
+    ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
+    const auto single = simulateWith(path, 1);
+    ASSERT_GT(single.size(), 1u);
+    for (const double baseline : {0.0, std::numeric_limits<double>::infinity()}) {
+        const bool threadsWin = baseline > 0.0;
+        unsigned used = 0;
+        std::size_t totalSteps = 0;
+        const auto trial = simulateWith(path, [&](System& root, std::size_t steps) {
+            totalSteps = steps;
+            const bool ok = root.simulateStepsThreadTrial(steps, 2, baseline, 8);
+            used = root.threadsUsed();
+            return ok;
+        });
+        ASSERT_EQ(single.size(), trial.size());
+        for (std::size_t i = 0; i < single.size(); ++i)
+            ASSERT_EQ(single[i], trial[i]) << "column " << i << (threadsWin ? ", threads kept" : ", threads gave up");
+        // Long enough runs finish where the trial said (a run shorter than its probe and
+        // trial windows ends on the threads whatever the outcome).
+        if (totalSteps > 1000) EXPECT_EQ(used, threadsWin ? 2u : 1u);
+    }
+    // Automatic: whatever it picks on this machine, the logs are the same.
+    EXPECT_EQ(simulateWith(path, 0u), single);
 }
 
 INSTANTIATE_TEST_SUITE_P(ValidationModels, MultiThreading,
@@ -110,4 +151,22 @@ TEST(MultiThreadingPartition, SignalBetweenTwoQComponentsStaysInOrderOnOneThread
     for (double q : single) largest = std::max(largest, std::abs(q));
     ASSERT_GT(largest, 0.0) << "the orifice must pass flow for the test to mean anything";
     for (int run = 0; run < 5; ++run) EXPECT_EQ(orificeFlowWithSameStepSignal(2), single) << "run " << run;
+}
+
+// A run far too short to gain from threads does not start them.
+TEST(MultiThreadingAuto, ShortRunOfASmallModelStaysOnOneThread)
+{
+    System s;
+    add(s, "HydraulicPressureSourceC", "Source");
+    add(s, "HydraulicLaminarOrifice", "Orifice");
+    add(s, "HydraulicTankC", "Tank");
+    connectOk(s, "Source", "P1", "Orifice", "P1");
+    connectOk(s, "Orifice", "P2", "Tank", "P1");
+    std::string err;
+    ASSERT_TRUE(s.checkModel(err)) << err;
+    ASSERT_TRUE(s.initialize(0.0, 1.0));
+    ASSERT_TRUE(s.simulateStepsMultiThreaded(s.stepsUntil(1.0), 0));
+    s.finalize();
+    EXPECT_EQ(s.threadsUsed(), 1u);
+    EXPECT_EQ(s.takenSteps(), 1000u);
 }
