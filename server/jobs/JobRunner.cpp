@@ -108,7 +108,7 @@ JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string
     return state;
 }
 
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control)
+JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -152,6 +152,7 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
             } else {
                 state.live = &live;
                 RunOptions options;
+                options.threads = threads;
                 options.progressInterval = kProgressInterval;
                 options.progress = [&state](std::size_t taken, std::size_t total) {
                     onProgress(&state, taken, total);

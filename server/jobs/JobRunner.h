@@ -40,7 +40,8 @@ public:
     JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
 
     // The job must already be marked running in the store. Returns its final state.
-    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control);
+    // `threads` as RunOptions::threads.
+    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads);
 
     // Steps between two progress callbacks: a clock read per 256 steps costs well under 1%
     // even for the smallest models, and bounds how late a wall-time limit is noticed.
