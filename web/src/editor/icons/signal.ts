@@ -56,11 +56,12 @@ export function delay(p: Pen, type: string): Glyph {
 export function filter(p: Pen, type: string): Glyph {
     const { w, h } = p;
     const steep = /2Filter/.test(type) ? 1.6 : 0.9;
-    const [x0, x1, top] = [-w * 0.8, w * 0.8, -h * 0.35];
+    const [x0, x1, top] = [-w * 0.8, w * 0.8, -h * 0.4];
     const knee = 0;
     const fall = Math.min(h * 0.75, (x1 - knee) * 0.5 * steep);
     const curve: Pt[] = /LP/.test(type) ? [[x0, top], [knee, top], [x1, top + fall]] : [[x0, top + fall], [-knee, top], [x1, top]];
-    return [p.line([[x0, h * 0.7], [x1, h * 0.7]], { cls: 'glyph-axis', faint: true }), p.line(curve, { cls: 'glyph-wave' })];
+    // on faint axes, so it reads as a plot (gain over frequency), not as a switch
+    return [p.line([[x0, -h * 0.75], [x0, h * 0.7], [x1, h * 0.7]], { cls: 'glyph-axis', faint: true }), p.line(curve, { cls: 'glyph-wave' })];
 }
 
 /** Small axes through the centre, behind a characteristic curve. */
