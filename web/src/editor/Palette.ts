@@ -2,13 +2,15 @@
 // display names, searchable by display name or type. Drag an entry onto the canvas, or
 // double-click it to place it in the middle of the view.
 import { h, s } from '../ui/dom';
-import { componentIcon } from './icons';
+import { componentIcon, fittedHalfSize } from './icons';
 import { filterCatalogue, groupByLibrary } from './paletteGroups';
 import { displayNameOf } from '../model/appearance';
 import type { CatalogueEntry } from '../protocol/types';
 
 function paletteIcon(type: string): SVGSVGElement {
-    return s('svg', { class: 'palette-icon', width: 22, height: 18, viewBox: '-11 -9 22 18', 'aria-hidden': 'true' }, componentIcon(type, 10, 8));
+    // at the type's own aspect, as on the canvas (a pump square, a cylinder long)
+    const [w, h] = fittedHalfSize(type, 10, 8);
+    return s('svg', { class: 'palette-icon', width: 22, height: 18, viewBox: '-11 -9 22 18', 'aria-hidden': 'true' }, componentIcon(type, w, h));
 }
 
 export function createPalette(catalogue: CatalogueEntry[], place: (type: string) => void): HTMLElement {

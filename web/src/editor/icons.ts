@@ -1,7 +1,21 @@
-// Component icons of our own: a frame coloured by domain with a small glyph per family,
-// drawn in the component's frame (centre 0,0; box ±w,±h).
+// Component icons of our own: a frame of the component's size coloured by domain, with the
+// symbol of the type's family drawn inside it (ISO 1219 fluid power, mechanics, electrics,
+// block diagrams; see icons/). Types of no family keep a labelled box. The drawing is in the
+// component's frame: centre 0,0, box ±w,±h.
 import { s } from '../ui/dom';
-import { valveGlyph } from './valveGlyphs';
+import { appearanceOf } from '../model/appearance';
+import { Pen, type Glyph } from './icons/draw';
+import { iconFamily, type Family } from './icons/families';
+import { checkValve, directionalValve, pressureValve, shuttleValve } from './icons/valves';
+import { accumulator, cylinder, fluidSource, line, orifice, plug, pumpOrMotor, tank, volume } from './icons/fluidPower';
+import { sensor } from './icons/sensors';
+import { damper, fixed, gear, inertia, lever, mass, mechanicSource, pulley, spring, torsionSpring } from './icons/mechanic';
+import { battery, boundarySource, capacitor, electricSwitch, ground, inductor, motor, resistor, source } from './icons/electric';
+import { characteristic, comparator, delay, filter, gain, integrator, latch, lookupTable, mathFunction, operatorCircle, saturation, transferFunction } from './icons/signal';
+import { clock, constant, sink, waveform } from './icons/sources';
+import { gate } from './icons/logic';
+
+export { iconFamily, type Family } from './icons/families';
 
 export const domainColours: Record<string, string> = {
     Hydraulic: '#e3eefc',
@@ -27,77 +41,42 @@ export function abbreviation(type: string): string {
     return (caps.length >= 2 ? caps : rest).slice(0, 4);
 }
 
-const stroke = { fill: 'none', stroke: 'currentColor', 'stroke-width': 1.5, 'stroke-linejoin': 'round', 'stroke-linecap': 'round' };
+type Draw = (p: Pen, type: string) => Glyph;
 
-function line(points: [number, number][]): SVGPolylineElement {
-    return s('polyline', { ...stroke, points: points.map((p) => p.join(',')).join(' ') });
+/** The drawing of each family. */
+const drawings: Record<Family, Draw> = {
+    'directional-valve': directionalValve, 'pressure-valve': pressureValve, 'check-valve': checkValve, 'shuttle-valve': shuttleValve,
+    pump: (p, t) => pumpOrMotor(p, t, false), motor: (p, t) => pumpOrMotor(p, t, true),
+    cylinder, accumulator, volume, line, orifice, tank, plug, 'fluid-source': fluidSource,
+    sensor,
+    mass, spring, damper, fixed, inertia, 'torsion-spring': torsionSpring, gear, pulley, lever, 'mechanic-source': mechanicSource,
+    resistor, capacitor, inductor, 'voltage-source': (p) => source(p, 'voltage'), 'current-source': (p) => source(p, 'current'),
+    battery, 'electric-ground': ground, 'electric-motor': motor, switch: electricSwitch, 'boundary-source': boundarySource,
+    gain, sum: operatorCircle, product: operatorCircle, integrator, delay, 'transfer-function': transferFunction, filter,
+    step: (p, t) => waveform(p, 'step', t), sine: (p) => waveform(p, 'sine'), ramp: (p) => waveform(p, 'ramp'), constant,
+    pulse: (p) => waveform(p, 'pulse'), square: (p) => waveform(p, 'square'), noise: (p) => waveform(p, 'noise'),
+    staircase: (p) => waveform(p, 'staircase'), clock, sink,
+    and: (p) => gate(p, 'and'), or: (p) => gate(p, 'or'), not: (p) => gate(p, 'not'), xor: (p) => gate(p, 'xor'),
+    comparator, latch, saturation, characteristic, 'lookup-table': lookupTable, 'math-function': mathFunction,
+};
+
+/** The labelled box of types without a family. */
+function fallback(type: string, w: number, h: number): Glyph {
+    const label = abbreviation(type);
+    // as large as fits, up to 14 px: the frame's size is Hopsan's, the label must stay inside it
+    const size = Math.max(2, Math.min(14, Math.min(w, h) * 0.56, (2 * h) / 0.95, (2 * w) / (0.62 * label.length)));
+    return [s('text', { x: 0, y: 0, 'font-size': Math.round(size * 100) / 100, 'text-anchor': 'middle', 'dominant-baseline': 'central', class: 'icon-text icon-fallback' }, label)];
 }
 
-function text(label: string, size: number, y = 0): SVGTextElement {
-    return s('text', { x: 0, y, 'font-size': size, 'text-anchor': 'middle', 'dominant-baseline': 'central', class: 'icon-text' }, label);
-}
-
-function zigzag(x0: number, x1: number, amp: number, n = 6): [number, number][] {
-    const pts: [number, number][] = [[x0, 0]];
-    const step = (x1 - x0) / (n + 1);
-    for (let i = 1; i <= n; ++i) pts.push([x0 + i * step, i % 2 ? -amp : amp]);
-    pts.push([x1, 0]);
-    return pts;
-}
-
-const OPEN_FAMILIES = /Cylinder/;
-
-// Glyphs by family, each scaled to the box (r = the smaller half side).
-function glyph(type: string, w: number, h: number, fill: string): SVGElement[] {
-    const r = Math.min(w, h) * 0.7;
-    const t = type;
-    if (/Tank/.test(t)) return [line([[-r, -r * 0.6], [-r, r * 0.6], [r, r * 0.6], [r, -r * 0.6]]), line([[-r * 0.8, 0], [r * 0.8, 0]])];
-    if (/Cylinder/.test(t)) {
-        // only the barrel is solid: in Hopsan's layout the load sits on the rod, inside the box
-        return [s('rect', { ...stroke, class: 'icon-solid', fill, x: -w * 0.8, y: -h * 0.5, width: w * 1.2, height: h }),
-            line([[-w * 0.1, -h * 0.5], [-w * 0.1, h * 0.5]]), line([[-w * 0.1, 0], [w * 0.9, 0]])];
-    }
-    if (/Pump|Motor/.test(t)) {
-        return [s('circle', { ...stroke, r }), s('polygon', { fill: 'currentColor', points: `0,${-r} ${-r * 0.35},${-r * 0.45} ${r * 0.35},${-r * 0.45}` })];
-    }
-    const valve = valveGlyph(t, w, h);
-    if (valve) return valve;
-    if (/Orifice|Restrict|Throttle/.test(t)) {
-        return [s('path', { ...stroke, d: `M${-r},${-r * 0.5} Q0,${-r * 0.05} ${r},${-r * 0.5} M${-r},${r * 0.5} Q0,${r * 0.05} ${r},${r * 0.5}` })];
-    }
-    if (/Volume|Line|Hose|Accumulator/.test(t)) return [s('rect', { ...stroke, x: -w * 0.8, y: -h * 0.4, width: w * 1.6, height: h * 0.8, rx: h * 0.4 })];
-    if (/Spring/.test(t)) return [line(zigzag(-w * 0.9, w * 0.9, h * 0.35))];
-    if (/Damper/.test(t)) {
-        return [line([[-w * 0.9, 0], [-w * 0.2, 0]]), line([[-w * 0.2, -h * 0.4], [-w * 0.2, h * 0.4]]),
-            line([[w * 0.3, -h * 0.5], [-w * 0.4, -h * 0.5], [-w * 0.4, h * 0.5], [w * 0.3, h * 0.5]]), line([[w * 0.3, 0], [w * 0.9, 0]])];
-    }
-    if (/Fixed|Ground|Reference/.test(t)) {
-        const hatch: SVGElement[] = [line([[-r, 0], [r, 0]])];
-        for (let i = -2; i <= 2; ++i) hatch.push(line([[i * r * 0.4, 0], [i * r * 0.4 - r * 0.3, r * 0.4]]));
-        return hatch;
-    }
-    if (/Sensor|Transducer|Meter/.test(t)) {
-        return [s('circle', { ...stroke, r }), line([[0, 0], [r * 0.6, -r * 0.6]]), s('circle', { fill: 'currentColor', r: 2 })];
-    }
-    if (/Mass|Inertia|Load/.test(t)) return [text(/Inertia/.test(t) ? 'J' : 'm', r * 1.2)];
-    if (/Resistor/.test(t)) return [line(zigzag(-w * 0.8, w * 0.8, h * 0.3))];
-    if (/Capacit/.test(t)) return [line([[-w * 0.8, 0], [-r * 0.2, 0]]), line([[-r * 0.2, -r], [-r * 0.2, r]]), line([[r * 0.2, -r], [r * 0.2, r]]), line([[r * 0.2, 0], [w * 0.8, 0]])];
-    if (/Inductor/.test(t)) return [s('path', { ...stroke, d: `M${-w * 0.8},0 a${r * 0.3},${r * 0.3} 0 0 1 ${r * 0.6},0 a${r * 0.3},${r * 0.3} 0 0 1 ${r * 0.6},0 a${r * 0.3},${r * 0.3} 0 0 1 ${r * 0.6},0` })];
-    if (/Gain/.test(t)) return [s('polygon', { ...stroke, points: `${-w * 0.7},${-h * 0.7} ${w * 0.7},0 ${-w * 0.7},${h * 0.7}` }), text('K', r * 0.6, 0)];
-    if (/Add|Subtract|Sum/.test(t)) return [s('circle', { ...stroke, r }), text(/Subtract/.test(t) ? '−' : '+', r * 1.3)];
-    if (/Multiply|Product/.test(t)) return [s('circle', { ...stroke, r }), text('×', r * 1.2)];
-    if (/Divide/.test(t)) return [s('circle', { ...stroke, r }), text('÷', r * 1.2)];
-    if (/Integrat/.test(t)) return [text('∫', r * 1.4)];
-    if (/Derivat/.test(t)) return [text('d/dt', r * 0.7)];
-    if (/Step/.test(t)) return [line([[-r, r * 0.5], [0, r * 0.5], [0, -r * 0.5], [r, -r * 0.5]])];
-    if (/Sink|Scope|Plot/.test(t)) return [s('rect', { ...stroke, x: -r, y: -r * 0.8, width: 2 * r, height: 1.6 * r }), s('path', { ...stroke, d: `M${-r * 0.8},${r * 0.4} C${-r * 0.2},${-r * 1.1} ${r * 0.2},${r * 0.9} ${r * 0.8},${-r * 0.4}` })];
-    if (/Sine|Sinus|Wave|Oscill/.test(t)) return [s('path', { ...stroke, d: `M${-r},0 C${-r * 0.5},${-r * 1.2} ${-r * 0.5},${-r * 1.2} 0,0 S${r * 0.5},${r * 1.2} ${r},0` })];
-    if (/Ramp/.test(t)) return [line([[-r, r * 0.5], [-r * 0.3, r * 0.5], [r * 0.5, -r * 0.5], [r, -r * 0.5]])];
-    if (/Constant|Source/.test(t) && t.startsWith('Signal')) return [text('C', r)];
-    if (/Voltage|Current|Pressure|Flow|Force|Velocity|Torque|Source/.test(t)) {
-        return [s('circle', { ...stroke, r }), line([[0, r * 0.6], [0, -r * 0.6]]), line([[-r * 0.25, -r * 0.3], [0, -r * 0.6], [r * 0.25, -r * 0.3]])];
-    }
-    return [text(abbreviation(type), Math.max(8, Math.min(14, r * 0.8)))];
+/**
+ * Half sizes with the type's own aspect (Hopsan's icon size) that fit maxW × maxH, no side under
+ * `min`: small icons (the palette's) then look like the component on the canvas.
+ */
+export function fittedHalfSize(type: string, maxW: number, maxH: number, min = maxH / 2): [number, number] {
+    const a = appearanceOf(type);
+    if (!a || !(a.width > 0 && a.height > 0)) return [maxW, maxH];
+    const k = Math.min(maxW / a.width, maxH / a.height) * 2;
+    return [Math.max(min, (a.width * k) / 2), Math.max(min, (a.height * k) / 2)];
 }
 
 /** The icon of a component type sized to its box (half width and height). */
@@ -105,13 +84,18 @@ export function componentIcon(type: string, halfWidth: number, halfHeight: numbe
     const domain = domainOf(type);
     const isSub = domain === 'Subsystem';
     const fill = domainColours[domain] ?? '#fff';
-    // open symbols leave their box see-through (still clickable) so neighbours placed inside it show
-    const open = OPEN_FAMILIES.test(type);
-    return s('g', { class: `icon icon-${domain.toLowerCase()}${open ? ' icon-open' : ''}` },
+    const family = isSub ? null : iconFamily(type);
+    // open symbols leave their box see-through (still clickable) so neighbours placed inside it
+    // show: in Hopsan's layouts the load sits on a cylinder's rod, inside the cylinder's box
+    const open = family === 'cylinder' && /Cylinder/.test(type);
+    const glyph = isSub
+        ? [s('text', { x: 0, y: 0, 'font-size': Math.min(halfWidth, halfHeight) * 0.5, 'text-anchor': 'middle', 'dominant-baseline': 'central', class: 'icon-text' }, 'SUB')]
+        : family ? drawings[family](new Pen(halfWidth, halfHeight, fill), type) : fallback(type, halfWidth, halfHeight);
+    return s('g', { class: `icon icon-${domain.toLowerCase()}${open ? ' icon-open' : ''}`, 'data-family': family ?? undefined },
         s('rect', {
             class: open ? 'icon-frame' : 'icon-frame icon-solid', x: -halfWidth, y: -halfHeight, width: 2 * halfWidth, height: 2 * halfHeight,
             rx: isSub ? 6 : 3, fill: open ? 'transparent' : fill,
         }),
         isSub ? s('rect', { class: 'icon-inner', x: -halfWidth + 4, y: -halfHeight + 4, width: 2 * halfWidth - 8, height: 2 * halfHeight - 8, rx: 4, fill: 'none' }) : null,
-        ...(isSub ? [text('SUB', Math.min(halfWidth, halfHeight) * 0.5)] : glyph(type, halfWidth, halfHeight, fill)));
+        ...glyph);
 }

@@ -1,6 +1,6 @@
 // @vitest-environment jsdom
 import { describe, expect, it } from 'vitest';
-import { valveGlyph } from './valveGlyphs';
+import { valveGlyph } from './valves';
 
 const parts = (type: string, w = 80, h = 25) => {
     const g = valveGlyph(type, w, h);
