@@ -25,22 +25,21 @@ std::string add(System& s, const std::string& type, const std::string& name)
 std::unique_ptr<System> hydraulicChain(int n)
 {
     auto s = std::make_unique<System>();
-    std::string err;
     add(*s, "HydraulicPressureSourceC", "Source");
     std::string prev = "Source";
     std::string prevPort = "P1";
     for (int i = 0; i < n; ++i) {
         const std::string o = add(*s, "HydraulicLaminarOrifice", "O" + std::to_string(i));
         const std::string v = add(*s, "HydraulicVolume", "V" + std::to_string(i));
-        s->connect(prev, prevPort, o, "P1", err);
-        s->connect(o, "P2", v, "P1", err);
+        s->connect(prev, prevPort, o, "P1");
+        s->connect(o, "P2", v, "P1");
         prev = v;
         prevPort = "P2";
     }
     const std::string o = add(*s, "HydraulicLaminarOrifice", "Out");
     add(*s, "HydraulicTankC", "Tank");
-    s->connect(prev, prevPort, o, "P1", err);
-    s->connect(o, "P2", "Tank", "P1", err);
+    s->connect(prev, prevPort, o, "P1");
+    s->connect(o, "P2", "Tank", "P1");
     return s;
 }
 

@@ -255,17 +255,22 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
 
 } // namespace
 
-bool evaluate(Component& owner, Parameter& param, std::string& error)
+Status evaluate(Component& owner, Parameter& param)
 {
-    return evaluateDepth(owner, param, error, 0);
+    std::string error;
+    if (evaluateDepth(owner, param, error, 0)) return Status::ok();
+    const std::string owned = owner.modelPath();
+    return {StatusCode::InvalidParameter, error, owned.empty() ? param.name : owned + "." + param.name};
 }
 
-bool evaluateExpression(Component& owner, const std::string& expression, double& result,
-                        std::string& error)
+Result<double> evaluateExpression(Component& owner, const std::string& expression)
 {
-    if (parseWholeDouble(expression, result)) return true;
+    double result = 0.0;
+    if (parseWholeDouble(expression, result)) return result;
     std::vector<const Parameter*> chain;
-    return evaluateExpressionDepth(owner, expression, result, error, nullptr, 0, chain);
+    std::string error;
+    if (evaluateExpressionDepth(owner, expression, result, error, nullptr, 0, chain)) return result;
+    return Status{StatusCode::InvalidParameter, error, owner.modelPath()};
 }
 
 } // namespace tlmhub::ParameterEvaluator

@@ -133,18 +133,15 @@ bool findNonFinite(const System& root, std::string& where)
     return Walker::walk(root, "", where);
 }
 
-bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,
-                     std::string& error)
+Result<VariableRef> resolveVariable(System& root, const std::string& fullName)
 {
     std::vector<std::string> fields;
     splitOn(fullName, '$', fields);
     const std::size_t m = fields.size() - 1;
     std::vector<std::string> parts;
     splitOn(fields[m], '#', parts);
-    if (parts.size() != 3) {
-        error = "variable name '" + fullName + "' is not Component#Port#Variable";
-        return false;
-    }
+    if (parts.size() != 3)
+        return Status{StatusCode::NotFound, "variable name '" + fullName + "' is not Component#Port#Variable"};
     System* sys = &root;
     for (std::size_t s = 0; s < m; ++s) {
         if (System* sub = sys->subsystem(fields[s])) {
@@ -153,32 +150,23 @@ bool resolveVariable(System& root, const std::string& fullName, Port*& port, int
             // "Root$Comp#Port#Var": the first field names the root itself.
         } else if (s == 0 && m >= 2) {
             System* alt = root.subsystem(fields[1]);
-            if (!alt) {
-                error = "no subsystem '" + fields[1] + "' in '" + root.name() + "'";
-                return false;
-            }
+            if (!alt)
+                return Status{StatusCode::NotFound, "no subsystem '" + fields[1] + "' in '" + root.name() + "'"};
             sys = alt;
         } else {
-            error = "no subsystem '" + fields[s] + "' in '" + sys->name() + "'";
-            return false;
+            return Status{StatusCode::NotFound, "no subsystem '" + fields[s] + "' in '" + sys->name() + "'"};
         }
     }
     Component* c = sys->component(parts[0]);
-    if (!c) {
-        error = "no component '" + parts[0] + "' in system '" + sys->name() + "'";
-        return false;
-    }
-    port = c->port(parts[1]);
-    if (!port) {
-        error = "component '" + parts[0] + "' has no port '" + parts[1] + "'";
-        return false;
-    }
-    slot = nodeVariableIndex(port->nodeType(), parts[2]);
-    if (slot < 0) {
-        error = "port '" + parts[0] + "#" + parts[1] + "' has no variable '" + parts[2] + "'";
-        return false;
-    }
-    return true;
+    if (!c)
+        return Status{StatusCode::NotFound, "no component '" + parts[0] + "' in system '" + sys->name() + "'"};
+    Port* port = c->port(parts[1]);
+    if (!port)
+        return Status{StatusCode::NotFound, "component '" + parts[0] + "' has no port '" + parts[1] + "'"};
+    const int slot = nodeVariableIndex(port->nodeType(), parts[2]);
+    if (slot < 0)
+        return Status{StatusCode::NotFound, "port '" + parts[0] + "#" + parts[1] + "' has no variable '" + parts[2] + "'"};
+    return VariableRef{port, slot};
 }
 
 } // namespace tlmhub

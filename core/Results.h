@@ -1,5 +1,6 @@
 #pragma once
 // Reading logged results by Hopsan's names (core.md §1.8, §4.4, §4.5).
+#include "core/Status.h"
 #include "core/System.h"
 
 #include <string>
@@ -35,7 +36,10 @@ void appendLoggedData(const Port& port, int slot, std::size_t from, std::size_t 
 bool findNonFinite(const System& root, std::string& where);
 
 // Resolve "[Sys$...]Comp#Port#Var" from the root, with the .hvc lookup quirk of core.md §7.3.
-bool resolveVariable(System& root, const std::string& fullName, Port*& port, int& slot,
-                     std::string& error);
+struct VariableRef {
+    Port* port;
+    int slot;   // index of the variable in the port's node
+};
+Result<VariableRef> resolveVariable(System& root, const std::string& fullName);
 
 } // namespace tlmhub

@@ -217,11 +217,10 @@ Status Simulation::setParameter(const std::string& path, const std::string& valu
     if (!parameter) return {StatusCode::UnknownParameter, "no parameter '" + path + "'", path};
     const std::string previous = parameter->value;
     parameter->value = value;
-    std::string error;
-    if (!ParameterEvaluator::evaluate(*component, *parameter, error)) {
+    if (const Status evaluated = ParameterEvaluator::evaluate(*component, *parameter); !evaluated) {
         parameter->value = previous;
-        ParameterEvaluator::evaluate(*component, *parameter, error);
-        return {StatusCode::InvalidParameter, "parameter '" + path + "': " + error, path};
+        ParameterEvaluator::evaluate(*component, *parameter);
+        return {StatusCode::InvalidParameter, "parameter '" + path + "': " + evaluated.message(), path};
     }
     return Status::ok();
 }

@@ -17,6 +17,9 @@ const char* statusCodeName(StatusCode code)
     case StatusCode::InitFailed: return "init_failed";
     case StatusCode::SimulationStopped: return "simulation_stopped";
     case StatusCode::InvalidState: return "invalid_state";
+    case StatusCode::NotFound: return "not_found";
+    case StatusCode::IllegalGrouping: return "illegal_grouping";
+    case StatusCode::IoError: return "io_error";
     }
     return "unknown";
 }

@@ -22,6 +22,9 @@ enum class StatusCode {
     InitFailed,             // a component refused to initialise
     SimulationStopped,      // a component or the caller stopped the run before its end
     InvalidState,           // an operation the simulation's state does not allow
+    NotFound,               // a component, port, system port, parameter or variable name that names nothing
+    IllegalGrouping,        // components that cannot be grouped into a subsystem, or ungrouped
+    IoError,                // a file that cannot be read, written or loaded
 };
 
 const char* statusCodeName(StatusCode code);
@@ -60,7 +63,9 @@ public:
     T& value() { return *mValue; }
     const T& value() const { return *mValue; }
     T* operator->() { return &*mValue; }
+    const T* operator->() const { return &*mValue; }
     T& operator*() { return *mValue; }
+    const T& operator*() const { return *mValue; }
 
 private:
     std::optional<T> mValue;

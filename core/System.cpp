@@ -177,13 +177,10 @@ std::size_t System::countComponents() const
     return n;
 }
 
-bool System::removeComponent(const std::string& name, std::string& error)
+Status System::removeComponent(const std::string& name)
 {
     Component* c = component(name);
-    if (!c) {
-        error = "no component named '" + name + "' in system '" + this->name() + "'";
-        return false;
-    }
+    if (!c) return {StatusCode::NotFound, "no component named '" + name + "' in system '" + this->name() + "'"};
     // Disconnect everything first.
     for (Port* p : c->ports()) {
         std::vector<Port*> targets;
@@ -194,25 +191,21 @@ bool System::removeComponent(const std::string& name, std::string& error)
             targets = p->connectedPorts;
         }
         for (Port* q : targets) {
-            std::string ignored;
             const std::string qComp = q->component() == this ? q->name() : q->component()->name();
-            disconnect(name, p->name(), qComp, q->name(), ignored);
+            disconnect(name, p->name(), qComp, q->name());
         }
     }
     mOrder.erase(std::remove(mOrder.begin(), mOrder.end(), c), mOrder.end());
     mComponents.erase(name);
     determineKind();
-    return true;
+    return Status::ok();
 }
 
-std::string System::renameComponent(const std::string& oldName, const std::string& newName,
-                                     std::string& error)
+Result<std::string> System::renameComponent(const std::string& oldName, const std::string& newName)
 {
     auto it = mComponents.find(oldName);
-    if (it == mComponents.end()) {
-        error = "no component named '" + oldName + "' in system '" + name() + "'";
-        return {};
-    }
+    if (it == mComponents.end())
+        return Status{StatusCode::NotFound, "no component named '" + oldName + "' in system '" + name() + "'"};
     if (sanitizeName(newName) == oldName) return oldName;
     std::unique_ptr<Component> c = std::move(it->second);
     mComponents.erase(it);
@@ -238,68 +231,59 @@ Port* System::systemPort(const std::string& name) const
     return p && p->kind() == PortKind::System ? p : nullptr;
 }
 
-bool System::renameSystemPort(const std::string& oldName, const std::string& newName,
-                              std::string& error)
+Result<std::string> System::renameSystemPort(const std::string& oldName, const std::string& newName)
 {
-    if (!systemPort(oldName)) {
-        error = "no system port named '" + oldName + "'";
-        return false;
-    }
+    if (!systemPort(oldName)) return Status{StatusCode::NotFound, "no system port named '" + oldName + "'"};
+    if (sanitizeName(newName) == oldName) return oldName;
     const std::string actual = uniqueName(newName);
-    return renamePort(oldName, actual);
+    renamePort(oldName, actual);
+    return actual;
 }
 
-bool System::deleteSystemPort(const std::string& name, std::string& error)
+Status System::deleteSystemPort(const std::string& name)
 {
     Port* p = systemPort(name);
-    if (!p) {
-        error = "no system port named '" + name + "'";
-        return false;
-    }
+    if (!p) return {StatusCode::NotFound, "no system port named '" + name + "'"};
     while (!p->connectedPorts.empty()) {
         Port* q = p->connectedPorts.front();
-        std::string ignored;
         if (q->component()->parentSystem() == this)
-            disconnect(name, name, q->component()->name(), q->name(), ignored);
+            disconnect(name, name, q->component()->name(), q->name());
         else if (parentSystem())
             parentSystem()->disconnect(this->name(), name,
                                        q->component() == parentSystem() ? q->name()
                                                                         : q->component()->name(),
-                                       q->name(), ignored);
+                                       q->name());
         else
             break;
     }
-    return removePort(name);
+    removePort(name);
+    return Status::ok();
 }
 
 // ---------------------------------------------------------------- connections
 
-Port* System::resolvePort(const std::string& compName, const std::string& portName,
-                          std::string& error) const
+Result<Port*> System::resolvePort(const std::string& compName, const std::string& portName) const
 {
     if (Component* c = component(compName)) {
-        Port* p = c->port(portName);
-        if (!p) error = "component '" + compName + "' has no port '" + portName + "'";
-        return p;
+        if (Port* p = c->port(portName)) return p;
+        return Status{StatusCode::NotFound, "component '" + compName + "' has no port '" + portName + "'"};
     }
     if (Port* p = systemPort(compName)) return p;
     if (Port* p = port(compName); p && compName == portName) return p;
-    error = "no component or system port named '" + compName + "' in system '" + name() + "'";
-    return nullptr;
+    return Status{StatusCode::NotFound,
+                  "no component or system port named '" + compName + "' in system '" + name() + "'"};
 }
 
-bool System::connect(const std::string& compA, const std::string& portA, const std::string& compB,
-                     const std::string& portB, std::string& error)
+Status System::connect(const std::string& compA, const std::string& portA, const std::string& compB,
+                       const std::string& portB)
 {
-    Port* a = resolvePort(compA, portA, error);
-    if (!a) return false;
-    Port* b = resolvePort(compB, portB, error);
-    if (!b) return false;
-    const std::string what = compA + "." + portA + " to " + compB + "." + portB;
-    if (!connectPorts(a, b, error)) {
-        error = "cannot connect " + what + ": " + error;
-        return false;
-    }
+    const Result<Port*> a = resolvePort(compA, portA);
+    if (!a) return a.status();
+    const Result<Port*> b = resolvePort(compB, portB);
+    if (!b) return b.status();
+    if (const std::string refusal = connectPorts(*a, *b); !refusal.empty())
+        return {StatusCode::IllegalConnection,
+                "cannot connect " + compA + "." + portA + " to " + compB + "." + portB + ": " + refusal};
     // Kinds are re-determined; every enclosing subsystem moves to the end of its
     // parent's lists (core.md §3.3).
     determineKind();
@@ -307,17 +291,17 @@ bool System::connect(const std::string& compA, const std::string& portA, const s
         s->parentSystem()->moveToEnd(s);
         s->parentSystem()->determineKind();
     }
-    return true;
+    return Status::ok();
 }
 
-bool System::connectPorts(Port* a, Port* b, std::string& error)
+std::string System::connectPorts(Port* a, Port* b)
 {
-    if (a == b) return error = "a port cannot be connected to itself", false;
-    if (a->isMultiport() && b->isMultiport()) return error = "both ports are multiports", false;
+    if (a == b) return "a port cannot be connected to itself";
+    if (a->isMultiport() && b->isMultiport()) return "both ports are multiports";
     const bool readMulti = a->kind() == PortKind::ReadMultiport || b->kind() == PortKind::ReadMultiport;
     if (!readMulti) {
         if (std::find(a->connectedPorts.begin(), a->connectedPorts.end(), b) != a->connectedPorts.end())
-            return error = "the ports are already connected", false;
+            return "the ports are already connected";
     }
     // Same system, or a system port of this system seen from inside.
     auto parentOf = [this](Port* p) -> System* {
@@ -325,17 +309,16 @@ bool System::connectPorts(Port* a, Port* b, std::string& error)
         return p->component()->parentSystem();
     };
     if (parentOf(a) != this || parentOf(b) != this)
-        return error = "the components are not in the same system", false;
+        return "the components are not in the same system";
     const bool blankA = a->kind() == PortKind::System && !a->isConnected();
     const bool blankB = b->kind() == PortKind::System && !b->isConnected();
-    if (blankA && blankB) return error = "two unconnected system ports cannot be connected", false;
+    if (blankA && blankB) return "two unconnected system ports cannot be connected";
     if ((a->kind() == PortKind::Read && b->isMultiport()) || (b->kind() == PortKind::Read && a->isMultiport()))
-        return error = "a read port cannot be connected to a multiport", false;
+        return "a read port cannot be connected to a multiport";
     const NodeType typeA = a->nodeType(), typeB = b->nodeType();
     if (!blankA && !blankB && typeA != typeB)
-        return error = std::string("node types differ (") + std::string(nodeTypeInfo(typeA).typeName) +
-                       " vs " + std::string(nodeTypeInfo(typeB).typeName) + ")",
-               false;
+        return std::string("node types differ (") + std::string(nodeTypeInfo(typeA).typeName) + " vs " +
+               std::string(nodeTypeInfo(typeB).typeName) + ")";
 
     // Multiports get a new sub-port for this connection.
     Port* subA = nullptr;
@@ -349,7 +332,7 @@ bool System::connectPorts(Port* a, Port* b, std::string& error)
 
     if (a->node() == b->node()) {
         undoSubPorts();
-        return error = "the ports already share a node", false;
+        return "the ports already share a node";
     }
     const NodeType type = blankA ? typeB : typeA;
 
@@ -388,8 +371,7 @@ bool System::connectPorts(Port* a, Port* b, std::string& error)
     else if (nQ > 1) reason = "two Q-type power ports cannot be connected directly (both compute flows)";
     if (reason) {
         undoSubPorts();
-        error = reason;
-        return false;
+        return reason;
     }
 
     // Commit: blank system ports adopt the type; everything moves to one new node.
@@ -399,16 +381,18 @@ bool System::connectPorts(Port* a, Port* b, std::string& error)
     b->connectedPorts.push_back(a);
     auto node = std::make_shared<Node>(type);
     for (Port* p : group) p->setNode(node);
-    return true;
+    return {};
 }
 
-bool System::disconnect(const std::string& compA, const std::string& portA,
-                        const std::string& compB, const std::string& portB, std::string& error)
+Status System::disconnect(const std::string& compA, const std::string& portA,
+                          const std::string& compB, const std::string& portB)
 {
-    Port* a = resolvePort(compA, portA, error);
-    if (!a) return false;
-    Port* b = resolvePort(compB, portB, error);
-    if (!b) return false;
+    const Result<Port*> resolvedA = resolvePort(compA, portA);
+    if (!resolvedA) return resolvedA.status();
+    const Result<Port*> resolvedB = resolvePort(compB, portB);
+    if (!resolvedB) return resolvedB.status();
+    Port* a = *resolvedA;
+    Port* b = *resolvedB;
     // Find the concrete (sub-)ports that are connected to each other.
     auto findPair = [](Port* x, Port* y, Port*& outX, Port*& outY) {
         std::vector<Port*> xs, ys;
@@ -425,10 +409,8 @@ bool System::disconnect(const std::string& compA, const std::string& portA,
     };
     Port* pa = nullptr;
     Port* pb = nullptr;
-    if (!findPair(a, b, pa, pb)) {
-        error = compA + "." + portA + " and " + compB + "." + portB + " are not connected";
-        return false;
-    }
+    if (!findPair(a, b, pa, pb))
+        return {StatusCode::NotFound, compA + "." + portA + " and " + compB + "." + portB + " are not connected"};
     pa->connectedPorts.erase(std::find(pa->connectedPorts.begin(), pa->connectedPorts.end(), pb));
     pb->connectedPorts.erase(std::find(pb->connectedPorts.begin(), pb->connectedPorts.end(), pa));
     for (Port* side : {pa, pb}) {
@@ -451,7 +433,7 @@ bool System::disconnect(const std::string& compA, const std::string& portA,
     }
     determineKind();
     if (parentSystem()) parentSystem()->determineKind();
-    return true;
+    return Status::ok();
 }
 
 void System::moveToEnd(Component* c)
@@ -531,19 +513,17 @@ void System::determineKind()
 
 // ---------------------------------------------------------------- parameters
 
-bool System::setSystemParameter(const std::string& pname, const std::string& value,
-                                const std::string& type, const std::string& description,
-                                const std::string& unit, bool internal, std::string& error)
+Status System::setSystemParameter(const std::string& pname, const std::string& value,
+                                  const std::string& type, const std::string& description,
+                                  const std::string& unit, bool internal)
 {
     ParameterType t = ParameterType::Double;
-    if (!type.empty() && !parameterTypeFromName(type, t)) {
-        error = "unknown parameter type '" + type + "'";
-        return false;
-    }
+    if (!type.empty() && !parameterTypeFromName(type, t))
+        return {StatusCode::InvalidParameter, "unknown parameter type '" + type + "'", pname};
     if (Parameter* existing = parameters().find(pname)) {
         if (existing->isStartValue) {
             existing->value = value;
-            return true;
+            return Status::ok();
         }
         existing->value = value;
         existing->type = t;
@@ -551,16 +531,14 @@ bool System::setSystemParameter(const std::string& pname, const std::string& val
         existing->unit = unit;
         existing->internal = internal;
         existing->bindOwnStorage();
-        return true;
+        return Status::ok();
     }
-    if (sanitizeName(pname) != pname && pname.find('#') == std::string::npos) {
-        error = "invalid system parameter name '" + pname + "' (letters, digits and _ only)";
-        return false;
-    }
-    if (isNameTaken(pname)) {
-        error = "the name '" + pname + "' is already used in system '" + name() + "'";
-        return false;
-    }
+    if (sanitizeName(pname) != pname && pname.find('#') == std::string::npos)
+        return {StatusCode::InvalidParameter,
+                "invalid system parameter name '" + pname + "' (letters, digits and _ only)", pname};
+    if (isNameTaken(pname))
+        return {StatusCode::InvalidParameter, "the name '" + pname + "' is already used in system '" + name() + "'",
+                pname};
     Parameter p;
     p.name = pname;
     p.value = value;
@@ -571,7 +549,7 @@ bool System::setSystemParameter(const std::string& pname, const std::string& val
     p.internal = internal;
     Parameter& added = parameters().add(std::move(p));
     added.bindOwnStorage();
-    return true;
+    return Status::ok();
 }
 
 bool System::removeSystemParameter(const std::string& pname)
@@ -593,13 +571,6 @@ void System::setProgressCallback(ProgressCallback cb, void* user, std::size_t in
     mProgress = cb;
     mProgressUser = user;
     mProgressInterval = interval;
-}
-
-bool System::checkModel(std::string& error)
-{
-    const Status status = check();
-    if (!status) error = status.message();
-    return status.isOk();
 }
 
 Status System::check()
@@ -649,26 +620,24 @@ Status System::check()
                         c->modelPath()};
             }
         }
-        std::string perr;
         for (const auto& param : c->parameters().all()) {
-            if (!ParameterEvaluator::evaluate(*c, *param, perr)) {
+            const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
+            if (!evaluated)
                 return {StatusCode::InvalidParameter,
-                        "parameter '" + param->name + "' of '" + c->name() + "': " + perr,
-                        c->modelPath() + "." + param->name};
-            }
+                        "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
+                        evaluated.path()};
         }
         if (c->isSystem()) {
             Status sub = static_cast<System*>(c)->check();
             if (!sub) return sub;
         }
     }
-    std::string perr;
     for (const auto& param : parameters().all()) {
-        if (!ParameterEvaluator::evaluate(*this, *param, perr)) {
-            const std::string path = isRoot() ? param->name : modelPath() + "." + param->name;
+        const Status evaluated = ParameterEvaluator::evaluate(*this, *param);
+        if (!evaluated)
             return {StatusCode::InvalidParameter,
-                    "system parameter '" + param->name + "' of '" + name() + "': " + perr, path};
-        }
+                    "system parameter '" + param->name + "' of '" + name() + "': " + evaluated.message(),
+                    evaluated.path()};
     }
     return Status::ok();
 }
@@ -713,7 +682,7 @@ void System::computeSortHintsOfSystemPorts()
     }
 }
 
-bool System::sortList(std::vector<Component*>& list, bool failOnLoop, std::string& error)
+Status System::sortList(std::vector<Component*>& list, bool failOnLoop)
 {
     std::vector<Component*> sorted;
     sorted.reserve(list.size());
@@ -763,41 +732,42 @@ bool System::sortList(std::vector<Component*>& list, bool failOnLoop, std::strin
             std::string names;
             for (Component* c : list)
                 if (!placed.count(c)) names += (names.empty() ? "" : ", ") + c->name();
-            error = "algebraic loop among signal components in system '" + name() + "': " + names;
-            return false;
+            return {StatusCode::AlgebraicLoop,
+                    "algebraic loop among signal components in system '" + name() + "': " + names, modelPath()};
         }
-        return true;
+        return Status::ok();
     }
     list = std::move(sorted);
-    return true;
+    return Status::ok();
 }
 
-bool System::evaluateAllParameters(std::string& error)
+Status System::evaluateAllParameters()
 {
-    std::string perr;
     for (const auto& param : parameters().all()) {
-        if (!ParameterEvaluator::evaluate(*this, *param, perr)) {
-            error = "system parameter '" + param->name + "' of '" + name() + "': " + perr;
-            return false;
-        }
+        const Status evaluated = ParameterEvaluator::evaluate(*this, *param);
+        if (!evaluated)
+            return {StatusCode::InvalidParameter,
+                    "system parameter '" + param->name + "' of '" + name() + "': " + evaluated.message(),
+                    evaluated.path()};
     }
     for (auto* list : {&mS, &mC, &mQ, &mDisabled}) {
         for (Component* c : *list) {
             if (c->isSystem()) {
                 auto* sub = static_cast<System*>(c);
                 sub->buildRunLists();
-                if (!sub->evaluateAllParameters(error)) return false;
+                if (Status evaluated = sub->evaluateAllParameters(); !evaluated) return evaluated;
                 continue;
             }
             for (const auto& param : c->parameters().all()) {
-                if (!ParameterEvaluator::evaluate(*c, *param, perr)) {
-                    error = "parameter '" + param->name + "' of '" + c->name() + "': " + perr;
-                    return false;
-                }
+                const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
+                if (!evaluated)
+                    return {StatusCode::InvalidParameter,
+                            "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
+                            evaluated.path()};
             }
         }
     }
-    return true;
+    return Status::ok();
 }
 
 namespace {
@@ -1049,16 +1019,15 @@ bool System::initializeInternal(double t0, double t1)
     for (auto* list : {&mS, &mC, &mQ})
         for (Component* c : *list)
             if (c->isSystem()) static_cast<System*>(c)->computeSortHintsOfSystemPorts();
-    std::string error;
-    if (!sortList(mS, true, error)) {
-        root->postMessage({MessageType::Error, error, "AlgebraicLoop", modelPath()});
+    if (const Status sorted = sortList(mS, true); !sorted) {
+        root->postMessage({MessageType::Error, sorted.message(), "AlgebraicLoop", sorted.path()});
         return false;
     }
-    sortList(mC, false, error);
-    sortList(mQ, false, error);
+    sortList(mC, false);
+    sortList(mQ, false);
     if (isRoot()) {
-        if (!evaluateAllParameters(error)) {
-            root->postMessage({MessageType::Error, error, "Parameter", {}});
+        if (const Status evaluated = evaluateAllParameters(); !evaluated) {
+            root->postMessage({MessageType::Error, evaluated.message(), "Parameter", evaluated.path()});
             return false;
         }
         loadStartValues();

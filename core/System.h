@@ -30,9 +30,9 @@ public:
 
     // ---- editing (names are sanitised and made unique; the actual name is returned) ----
     std::string addComponent(std::unique_ptr<Component> component);
-    bool removeComponent(const std::string& name, std::string& error);
-    std::string renameComponent(const std::string& oldName, const std::string& newName,
-                                std::string& error);
+    Status removeComponent(const std::string& name);
+    // The actual new name (sanitised, made unique).
+    Result<std::string> renameComponent(const std::string& oldName, const std::string& newName);
     Component* component(const std::string& name) const;
     System* subsystem(const std::string& name) const;
     // Sub-components in byte-wise name order.
@@ -43,33 +43,35 @@ public:
     const std::vector<Component*>& componentsInOrder() const { return mOrder; }
 
     Port* addSystemPort(const std::string& desiredName);
-    bool renameSystemPort(const std::string& oldName, const std::string& newName, std::string& error);
-    bool deleteSystemPort(const std::string& name, std::string& error);
+    // The actual new name (sanitised, made unique). Deleting disconnects it inside and out.
+    Result<std::string> renameSystemPort(const std::string& oldName, const std::string& newName);
+    Status deleteSystemPort(const std::string& name);
     Port* systemPort(const std::string& name) const;
 
-    bool connect(const std::string& compA, const std::string& portA, const std::string& compB,
-                 const std::string& portB, std::string& error);
-    bool disconnect(const std::string& compA, const std::string& portA, const std::string& compB,
-                    const std::string& portB, std::string& error);
+    // not_found for names that name no port; illegal_connection with the reason, naming both
+    // ports. A system port is named by its name as both component and port.
+    Status connect(const std::string& compA, const std::string& portA, const std::string& compB,
+                   const std::string& portB);
+    Status disconnect(const std::string& compA, const std::string& portA, const std::string& compB,
+                      const std::string& portB);
 
     // System parameters live in parameters(); type given by name ("double", ...).
-    bool setSystemParameter(const std::string& name, const std::string& value,
-                            const std::string& type, const std::string& description,
-                            const std::string& unit, bool internal, std::string& error);
+    Status setSystemParameter(const std::string& name, const std::string& value,
+                              const std::string& type, const std::string& description,
+                              const std::string& unit, bool internal);
     bool removeSystemParameter(const std::string& name);
 
     // ---- grouping (core.md §2.7; SystemGrouping.cpp) ----
     // Moves the named components into a new subsystem at the place of the first of them.
     // A connection crossing the boundary goes through a system port of the subsystem, one
-    // port per node. Returns the subsystem's actual name, or empty with `error` and the
-    // model unchanged.
-    std::string group(const std::vector<std::string>& names, const std::string& subsystemName,
-                      std::string& error);
+    // port per node. Returns the subsystem's actual name; on failure (not_found,
+    // illegal_grouping) the model is unchanged.
+    Result<std::string> group(const std::vector<std::string>& names, const std::string& subsystemName);
     // The inverse: the subsystem's components (renamed if their names are taken) and its
     // system parameters move into this system at its place, reconnected through its system
-    // ports, and the subsystem is removed. `moved` gets the components' names here. False
-    // with `error` and the model unchanged if it cannot be done.
-    bool ungroup(const std::string& subsystemName, std::vector<std::string>& moved, std::string& error);
+    // ports, and the subsystem is removed. Returns the components' names here; on failure
+    // the model is unchanged.
+    Result<std::vector<std::string>> ungroup(const std::string& subsystemName);
 
     // ---- names ----
     bool isNameTaken(const std::string& name) const;
@@ -84,9 +86,8 @@ public:
 
     // ---- running ----
     // Structure and parameter checks before a run: the first problem found, with its code
-    // and model path. checkModel is the same with the message only.
+    // and model path.
     Status check();
-    bool checkModel(std::string& error);
     bool initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
     // The same steps with the root's S, C and Q lists split over `threads` threads (S
@@ -162,9 +163,9 @@ private:
     std::string insertComponent(std::unique_ptr<Component> c, std::size_t orderPosition);
     void moveToEnd(Component* c);
     void buildRunLists();
-    bool sortList(std::vector<Component*>& list, bool failOnLoop, std::string& error);
+    Status sortList(std::vector<Component*>& list, bool failOnLoop);
     void computeSortHintsOfSystemPorts();
-    bool evaluateAllParameters(std::string& error);
+    Status evaluateAllParameters();
     void loadStartValues();
     void computeLogSchedule(double t0, double t1);
     void allocateLogStorage();
@@ -186,9 +187,9 @@ private:
     bool runThreaded(std::size_t steps, unsigned threads, const ThreadTrial* trial, std::size_t& taken);
     bool initializeInternal(double startTime, double stopTime);
     void propagateTimestep();
-    Port* resolvePort(const std::string& compName, const std::string& portName,
-                      std::string& error) const;
-    bool connectPorts(Port* a, Port* b, std::string& error);
+    Result<Port*> resolvePort(const std::string& compName, const std::string& portName) const;
+    // Connects two resolved ports; the reason if refused (empty if connected).
+    std::string connectPorts(Port* a, Port* b);
 
     CqsKind mSystemKind = CqsKind::Undefined;
     std::map<std::string, std::unique_ptr<Component>> mComponents;

@@ -119,29 +119,23 @@ struct Crossing {
     bool outsideJoins;          // the outside end is connected to the system port
 };
 
+Status refuseGrouping(std::string reason) { return {StatusCode::IllegalGrouping, std::move(reason)}; }
+
 } // namespace
 
-std::string System::group(const std::vector<std::string>& names, const std::string& subsystemName,
-                          std::string& error)
+Result<std::string> System::group(const std::vector<std::string>& names, const std::string& subsystemName)
 {
     // ---- what is selected
-    if (names.empty()) {
-        error = "nothing is selected to group";
-        return {};
-    }
+    if (names.empty()) return refuseGrouping("nothing is selected to group");
     std::set<const Component*> selected;
     for (const std::string& n : names) {
         Component* c = component(n);
         if (!c) {
-            error = systemPort(n) ? "'" + n + "' is a system port of '" + name() +
-                                        "'; only components can be grouped"
-                                  : "no component named '" + n + "' in system '" + name() + "'";
-            return {};
+            if (systemPort(n))
+                return refuseGrouping("'" + n + "' is a system port of '" + name() + "'; only components can be grouped");
+            return Status{StatusCode::NotFound, "no component named '" + n + "' in system '" + name() + "'"};
         }
-        if (!selected.insert(c).second) {
-            error = "'" + n + "' is selected twice";
-            return {};
-        }
+        if (!selected.insert(c).second) return refuseGrouping("'" + n + "' is selected twice");
     }
     std::vector<Component*> chosen;   // in this system's order
     for (Component* c : mOrder)
@@ -185,9 +179,9 @@ std::string System::group(const std::vector<std::string>& names, const std::stri
                 // an inner *power* port attaches to it; a subsystem port in its place would
                 // silently drop this system's start values.
                 if (q->component() == this && kind() == CqsKind::C && isPowerPort(p)) {
-                    error = "'" + c->name() + "' is connected to the power system port '" + q->name() +
-                            "' of C-type system '" + name() + "', whose start values grouping would drop";
-                    return {};
+                    return refuseGrouping("'" + c->name() + "' is connected to the power system port '" +
+                                          q->name() + "' of C-type system '" + name() +
+                                          "', whose start values grouping would drop");
                 }
                 crossings.push_back(x);
             }
@@ -201,18 +195,16 @@ std::string System::group(const std::vector<std::string>& names, const std::stri
                 if (p->component()->kind() == CqsKind::Q) qs.insert(p->component()->name());
             }
         }
-        error = "the subsystem would have an undefined C/Q/S kind: its system ports would lead to "
-                "both C-type (" + listNames(cs) + ") and Q-type (" + listNames(qs) +
-                ") components; select components so that the connections leaving the group are "
-                "all from C-type or all from Q-type ones";
-        return {};
+        return refuseGrouping("the subsystem would have an undefined C/Q/S kind: its system ports would lead to "
+                              "both C-type (" + listNames(cs) + ") and Q-type (" + listNames(qs) +
+                              ") components; select components so that the connections leaving the group are "
+                              "all from C-type or all from Q-type ones");
     }
 
     if (const Component* c = loopThrough(*this, chosen, selected, newKind)) {
-        error = "the subsystem would be in a signal loop through '" + c->name() +
-                "', which feeds back into it (no order of the components could run it); select '" +
-                c->name() + "' too, or fewer components";
-        return {};
+        return refuseGrouping("the subsystem would be in a signal loop through '" + c->name() +
+                              "', which feeds back into it (no order of the components could run it); select '" +
+                              c->name() + "' too, or fewer components");
     }
 
     // ---- build the subsystem (nothing below can fail)
@@ -274,42 +266,35 @@ std::string System::group(const std::vector<std::string>& names, const std::stri
     return actual;
 }
 
-bool System::ungroup(const std::string& subsystemName, std::vector<std::string>& moved, std::string& error)
+Result<std::vector<std::string>> System::ungroup(const std::string& subsystemName)
 {
     System* sub = subsystem(subsystemName);
-    if (!sub) {
-        error = "no subsystem named '" + subsystemName + "' in system '" + name() + "'";
-        return false;
-    }
-    if (!sub->externalPath.empty()) {
-        error = "'" + subsystemName + "' is an external subsystem; its content belongs to '" +
-                sub->externalPath + "'";
-        return false;
-    }
-    if (sub->isConditional()) {
-        error = "'" + subsystemName + "' is a conditional subsystem; its content would no longer "
-                "depend on its 'on' input";
-        return false;
-    }
+    if (!sub) return Status{StatusCode::NotFound, "no subsystem named '" + subsystemName + "' in system '" + name() + "'"};
+    if (!sub->externalPath.empty())
+        return refuseGrouping("'" + subsystemName + "' is an external subsystem; its content belongs to '" +
+                              sub->externalPath + "'");
+    if (sub->isConditional())
+        return refuseGrouping("'" + subsystemName + "' is a conditional subsystem; its content would no longer "
+                              "depend on its 'on' input");
+    if (!sub->inheritTimestep && sub->desiredTimestep != desiredTimestep)
+        return refuseGrouping("'" + subsystemName + "' runs with its own time step; its content would run with the time step of '" +
+                              name() + "'");
     // Its system parameters come here; one of the same name must be the same parameter.
     for (const auto& p : sub->parameters().all()) {
         if (p->isStartValue) continue;
         if (const Parameter* mine = parameters().find(p->name)) {
             if (mine->value != p->value || mine->type != p->type) {
-                error = "system parameter '" + p->name + "' of '" + subsystemName +
-                        "' differs from the one of the same name in '" + name() + "'";
-                return false;
+                return refuseGrouping("system parameter '" + p->name + "' of '" + subsystemName +
+                        "' differs from the one of the same name in '" + name() + "'");
             }
         } else if (isNameTaken(p->name)) {
-            error = "the name of system parameter '" + p->name + "' of '" + subsystemName +
-                    "' is already used in '" + name() + "'";
-            return false;
+            return refuseGrouping("the name of system parameter '" + p->name + "' of '" + subsystemName +
+                    "' is already used in '" + name() + "'");
         }
     }
     for (const auto& [alias, full] : sub->aliases)
         if (aliases.count(alias)) {
-            error = "alias '" + alias + "' of '" + subsystemName + "' is already used in '" + name() + "'";
-            return false;
+            return refuseGrouping("alias '" + alias + "' of '" + subsystemName + "' is already used in '" + name() + "'");
         }
 
     // ---- nothing below can fail
@@ -332,8 +317,8 @@ bool System::ungroup(const std::string& subsystemName, std::vector<std::string>&
             for (std::size_t i = 1; i < in.size(); ++i) replaceConnection(in[i]->connectedPorts, sp, {out.front()});
             sp->connectedPorts.clear();
         }
-        std::string ignored;   // what is left is one open side; disconnecting it splits the node
-        sub->deleteSystemPort(sp->name(), ignored);
+        // What is left is one open side; disconnecting it splits the node.
+        sub->deleteSystemPort(sp->name());
     }
 
     const std::size_t position =
@@ -344,6 +329,7 @@ bool System::ungroup(const std::string& subsystemName, std::vector<std::string>&
         parameters().add(*p).bindOwnStorage();
     }
     std::map<std::string, std::string> renamed;
+    std::vector<std::string> moved;
     const std::vector<Component*> inner = sub->mOrder;
     for (std::size_t i = 0; i < inner.size(); ++i) {
         const std::string old = inner[i]->name();
@@ -368,7 +354,7 @@ bool System::ungroup(const std::string& subsystemName, std::vector<std::string>&
         preservedConnectionXml[preserved::connectionKey(nameHere(k.a), k.pa, nameHere(k.b), k.pb)] = xml;
     }
     for (System* s = this; s; s = s->parentSystem()) s->determineKind();
-    return true;
+    return moved;
 }
 
 std::unique_ptr<Component> System::releaseComponent(Component* c)

@@ -132,9 +132,13 @@ bool runOnce(System& root, std::optional<Simulation>& sim, std::string& error)
 
 bool extract(System& root, const std::string& name, Extracted& out, std::string& error)
 {
-    Port* port = nullptr;
-    int slot = 0;
-    if (!resolveVariable(root, name, port, slot, error)) return false;
+    const Result<VariableRef> variable = resolveVariable(root, name);
+    if (!variable) {
+        error = variable.status().message();
+        return false;
+    }
+    const Port* port = variable->port;
+    const int slot = variable->slot;
     const Node* n = port->node();
     if (!n || !n->logOwner || n->logData.empty()) {
         error = "variable '" + name + "' is not logged";

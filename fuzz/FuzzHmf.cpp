@@ -12,9 +12,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // External subsystems resolve against a directory without models, so nothing outside
     // the input is read.
     tlmhub::LoadedModel model = tlmhub::loadHmfString(xml, "/nonexistent", "fuzz.hmf");
-    if (model.root) {
-        std::string error;
-        model.root->checkModel(error);
-    }
+    if (model.root) model.root->check();
     return 0;
 }

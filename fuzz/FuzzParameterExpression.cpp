@@ -19,18 +19,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::getline(in, expression, '\0');
 
     tlmhub::System root;
-    std::string error;
-    root.setSystemParameter("a", a, "double", "", "", false, error);
-    root.setSystemParameter("b", b, "double", "", "", false, error);
+    root.setSystemParameter("a", a, "double", "", "", false);
+    root.setSystemParameter("b", b, "double", "", "", false);
     auto gain = tlmhub::ComponentFactory::instance().create("SignalGain");
     gain->setNameRaw("G");
     root.addComponent(std::move(gain));
     tlmhub::Component& g = *root.component("G");
 
-    double value = 0;
-    tlmhub::ParameterEvaluator::evaluateExpression(g, expression, value, error);
+    tlmhub::ParameterEvaluator::evaluateExpression(g, expression);
     tlmhub::Parameter& k = *g.parameters().find("k#Value");
     k.value = expression;
-    tlmhub::ParameterEvaluator::evaluate(g, k, error);
+    tlmhub::ParameterEvaluator::evaluate(g, k);
     return 0;
 }

@@ -34,12 +34,12 @@ int main(int argc, char** argv)
     // Component libraries run code with the server's rights: only this start-up flag,
     // given by whoever starts the server, loads them.
     for (const std::string& lib : options.componentLibs) {
-        std::vector<std::string> added;
-        if (!tlmhub::loadComponentLibrary(lib, added, error)) {
-            std::cerr << "tlmhub-server: " << error << "\n";
+        const tlmhub::Result<std::vector<std::string>> added = tlmhub::loadComponentLibrary(lib);
+        if (!added) {
+            std::cerr << "tlmhub-server: " << added.status().message() << "\n";
             return 1;
         }
-        std::cout << "loaded " << added.size() << " component types from " << lib << "\n";
+        std::cout << "loaded " << added->size() << " component types from " << lib << "\n";
     }
     try {
         // A broken embedded schema shows now, not on the first request.

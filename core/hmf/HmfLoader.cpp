@@ -103,10 +103,9 @@ private:
             std::string value = p.attribute("value").as_string();
             std::string type = p.attribute("type").as_string("double");
             std::string unit = p.attribute("unit").as_string(p.attribute("quantity").as_string());
-            std::string err;
-            if (!sys.setSystemParameter(name, value, type, p.attribute("description").as_string(), unit,
-                                        parseBool(p.attribute("internal"), false), err))
-                warning("system '" + sys.name() + "', parameter '" + name + "': " + err);
+            const Status set = sys.setSystemParameter(name, value, type, p.attribute("description").as_string(),
+                                                      unit, parseBool(p.attribute("internal"), false));
+            if (!set) warning("system '" + sys.name() + "', parameter '" + name + "': " + set.message());
         }
     }
 
@@ -264,10 +263,9 @@ private:
             std::string pb = sanitizeName(c.attribute("endport").as_string());
             if (Component* ca = sys.component(a)) pa = legacy::currentPortName(ca->typeName(), pa, fullRenames);
             if (Component* cb = sys.component(b)) pb = legacy::currentPortName(cb->typeName(), pb, fullRenames);
-            std::string err;
-            if (!sys.connect(a, pa, b, pb, err)) {
+            if (const Status connected = sys.connect(a, pa, b, pb); !connected) {
                 error("system '" + sys.name() + "', <connect> " + a + "." + pa + " - " + b + "." + pb +
-                      ": " + err);
+                      ": " + connected.message());
             } else {
                 preserved::storeConnectionExtras(sys, a, pa, b, pb, c);
             }

@@ -166,19 +166,13 @@ std::string saveHmfString(const System& root)
     return os.str();
 }
 
-bool saveHmfFile(const System& root, const std::string& path, std::string& error)
+Status saveHmfFile(const System& root, const std::string& path)
 {
     std::ofstream out(path, std::ios::binary);
-    if (!out) {
-        error = "cannot write '" + path + "'";
-        return false;
-    }
+    if (!out) return {StatusCode::IoError, "cannot write '" + path + "'"};
     out << saveHmfString(root);
-    if (!out) {
-        error = "error writing '" + path + "'";
-        return false;
-    }
-    return true;
+    if (!out) return {StatusCode::IoError, "error writing '" + path + "'"};
+    return Status::ok();
 }
 
 } // namespace tlmhub

@@ -8,6 +8,6 @@
 namespace tlmhub {
 
 std::string saveHmfString(const System& root);
-bool saveHmfFile(const System& root, const std::string& path, std::string& error);
+Status saveHmfFile(const System& root, const std::string& path);
 
 } // namespace tlmhub

@@ -5,6 +5,7 @@
 #include "core/hmf/HmfLoader.h"
 #include "core/hmf/HmfSaver.h"
 #include "core/hmf/PreservedXml.h"
+#include "server/api/CoreErrorCodes.h"
 #include "server/edit/GuiLayout.h"
 #include "server/edit/ModelJson.h"
 
@@ -29,6 +30,9 @@ Result fail(std::string code, std::string message)
     r.message = std::move(message);
     return r;
 }
+
+Result fail(StatusCode code, std::string message) { return fail(protocolErrorCode(code), std::move(message)); }
+Result fail(const Status& status) { return fail(status.code(), status.message()); }
 
 Result success(json data = json::object())
 {
@@ -225,8 +229,7 @@ Result EditSession::componentAdd(System& system, const json& request)
 Result EditSession::componentRemove(System& system, const json& request)
 {
     const std::string name = request.at("name").get<std::string>();
-    std::string error;
-    if (!system.removeComponent(name, error)) return fail("not_found", error);
+    if (const Status removed = system.removeComponent(name); !removed) return fail(removed);
     // Drop what was kept for its connections and aliases, so a later component of the same
     // name does not inherit them.
     for (auto it = system.preservedConnectionXml.begin(); it != system.preservedConnectionXml.end();) {
@@ -242,9 +245,9 @@ Result EditSession::componentRename(System& system, const json& request)
 {
     const std::string name = request.at("name").get<std::string>();
     const std::string newName = request.at("new_name").get<std::string>();
-    std::string error;
-    const std::string actual = system.renameComponent(name, newName, error);
-    if (actual.empty()) return fail("not_found", error);
+    const auto renamed = system.renameComponent(name, newName);
+    if (!renamed) return fail(renamed.status());
+    const std::string& actual = *renamed;
     if (actual != name) {
         // Connection extras and aliases are keyed by component name.
         std::map<std::string, std::string> rekeyed;
@@ -285,9 +288,8 @@ Result EditSession::connect(System& system, const json& request)
     for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
         if (!portExists(system, comp, port))
             return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
-    std::string error;
-    if (!system.connect(e.fromComponent, e.fromPort, e.toComponent, e.toPort, error))
-        return fail("illegal_connection", error);
+    if (const Status connected = system.connect(e.fromComponent, e.fromPort, e.toComponent, e.toPort); !connected)
+        return fail(connected);
     eraseConnectionExtras(system, e);
     if (request.contains("points")) {
         std::vector<LinePoint> points;
@@ -306,9 +308,10 @@ Result EditSession::disconnect(System& system, const json& request)
     for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
         if (!portExists(system, comp, port))
             return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
-    std::string error;
-    if (!system.disconnect(e.fromComponent, e.fromPort, e.toComponent, e.toPort, error))
-        return fail("illegal_connection", error);
+    // Both ports exist (checked above): what is not found is a connection between them.
+    if (const Status disconnected = system.disconnect(e.fromComponent, e.fromPort, e.toComponent, e.toPort);
+        !disconnected)
+        return fail("illegal_connection", disconnected.message());
     eraseConnectionExtras(system, e);
     return success();
 }
@@ -337,13 +340,11 @@ Result EditSession::parameterSet(System& system, const json& request)
     if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
     const std::string old = p->value;
     p->value = value;
-    std::string error;
-    if (!ParameterEvaluator::evaluate(*c, *p, error)) {
+    if (const Status evaluated = ParameterEvaluator::evaluate(*c, *p); !evaluated) {
         // Keep the model as it was: the old string, and its value in the target variable.
         p->value = old;
-        std::string ignored;
-        ParameterEvaluator::evaluate(*c, *p, ignored);
-        return fail("invalid_parameter", compName + "." + paramName + ": " + error);
+        ParameterEvaluator::evaluate(*c, *p);
+        return fail(evaluated.code(), compName + "." + paramName + ": " + evaluated.message());
     }
     return success({{"parameter", parameterToJson(*p)}});
 }
@@ -363,22 +364,19 @@ Result EditSession::sysparamSet(System& system, const json& request)
     const std::string description = field("description", existing ? existing->description : std::string());
     const bool internal = existing && existing->internal;
 
-    std::string error;
-    if (!system.setSystemParameter(name, value, type, description, unit, internal, error))
-        return fail("invalid_parameter", error);
+    if (const Status set = system.setSystemParameter(name, value, type, description, unit, internal); !set)
+        return fail(set);
     Parameter* p = system.parameters().find(name);
     if (!p) return fail("internal", "system parameter '" + name + "' vanished after setting it");
-    if (!ParameterEvaluator::evaluate(system, *p, error)) {
-        std::string ignored;
+    if (const Status evaluated = ParameterEvaluator::evaluate(system, *p); !evaluated) {
         if (before) {
             system.setSystemParameter(name, before->value, parameterTypeName(before->type), before->description,
-                                      before->unit, before->internal, ignored);
-            if (Parameter* restored = system.parameters().find(name))
-                ParameterEvaluator::evaluate(system, *restored, ignored);
+                                      before->unit, before->internal);
+            if (Parameter* restored = system.parameters().find(name)) ParameterEvaluator::evaluate(system, *restored);
         } else {
             system.removeSystemParameter(name);
         }
-        return fail("invalid_parameter", name + ": " + error);
+        return fail(evaluated.code(), name + ": " + evaluated.message());
     }
     return success({{"parameter", systemParameterToJson(*p)}});
 }
@@ -432,26 +430,18 @@ Result EditSession::modelGroup(System& system, const json& request)
             pose.y /= static_cast<double>(found);
         }
     }
-    std::string error;
-    const std::string actual = system.group(names, name, error);
-    if (actual.empty()) {
-        const bool allFound = std::all_of(names.begin(), names.end(),
-                                          [&system](const std::string& n) { return system.component(n) != nullptr; });
-        return fail(allFound ? "illegal_grouping" : "not_found", error);
-    }
-    writePose(system.component(actual)->preservedXml, pose);
-    return success({{"name", actual}});
+    const auto grouped = system.group(names, name);
+    if (!grouped) return fail(grouped.status());
+    writePose(system.component(*grouped)->preservedXml, pose);
+    return success({{"name", *grouped}});
 }
 
 Result EditSession::modelUngroup(System& system, const json& request)
 {
     const std::string name = request.at("name").get<std::string>();
-    if (!system.subsystem(name))
-        return fail("not_found", "no subsystem named '" + name + "' in system '" + system.name() + "'");
-    std::vector<std::string> moved;
-    std::string error;
-    if (!system.ungroup(name, moved, error)) return fail("illegal_grouping", error);
-    return success({{"names", moved}});
+    const auto moved = system.ungroup(name);
+    if (!moved) return fail(moved.status());
+    return success({{"names", *moved}});
 }
 
 } // namespace tlmhub::server

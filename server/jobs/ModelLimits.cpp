@@ -28,10 +28,9 @@ namespace {
 
 std::string problemIn(System& system, const std::string& prefix)
 {
-    std::string why;
     for (const auto& param : system.parameters().all())
-        if (!ParameterEvaluator::evaluate(system, *param, why))
-            return "system parameter '" + prefix + param->name + "': " + why;
+        if (const Status evaluated = ParameterEvaluator::evaluate(system, *param); !evaluated)
+            return "system parameter '" + prefix + param->name + "': " + evaluated.message();
     for (Component* c : system.componentsInOrder()) {
         if (c->isSystem()) {
             const std::string inner = problemIn(*static_cast<System*>(c), prefix + c->name() + "$");
@@ -39,8 +38,8 @@ std::string problemIn(System& system, const std::string& prefix)
             continue;
         }
         for (const auto& param : c->parameters().all())
-            if (!ParameterEvaluator::evaluate(*c, *param, why))
-                return "parameter '" + prefix + c->name() + "." + param->name + "': " + why;
+            if (const Status evaluated = ParameterEvaluator::evaluate(*c, *param); !evaluated)
+                return "parameter '" + prefix + c->name() + "." + param->name + "': " + evaluated.message();
     }
     return {};
 }

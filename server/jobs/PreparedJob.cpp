@@ -41,10 +41,9 @@ bool setAndEvaluate(Component& owner, Parameter& p, const std::string& value, co
 {
     const std::string old = p.value;
     p.value = value;
-    std::string why;
-    if (!ParameterEvaluator::evaluate(owner, p, why)) {
+    if (const Status evaluated = ParameterEvaluator::evaluate(owner, p); !evaluated) {
         p.value = old;
-        error = "parameter '" + key + "' = '" + value + "': " + why;
+        error = "parameter '" + key + "' = '" + value + "': " + evaluated.message();
         return false;
     }
     return true;
@@ -129,8 +128,8 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
     }
     root.desiredTimestep = out.step;
     root.requestedLogSamples = out.logSamples;
-    if (!root.checkModel(why)) {
-        error = {"invalid_model", why};
+    if (const Status checked = root.check(); !checked) {
+        error = {"invalid_model", checked.message()};
         return false;
     }
     out.root = std::move(loaded.root);

@@ -60,7 +60,8 @@ ResultTable directRun(const std::string& hmf, const std::map<std::string, std::s
     std::string err;
     for (const auto& [k, v] : parameters) EXPECT_TRUE(applyParameter(root, k, v, err)) << err;
     const double t1 = stop.value_or(root.stopTime);
-    EXPECT_TRUE(root.checkModel(err)) << err;
+    const Status checked = root.check();
+    EXPECT_TRUE(checked) << checked.message();
     EXPECT_TRUE(root.initialize(root.startTime, t1));
     EXPECT_TRUE(root.simulate(t1));
     root.finalize();

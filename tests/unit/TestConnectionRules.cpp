@@ -9,9 +9,9 @@ namespace {
 std::string refuse(System& s, const std::string& a, const std::string& pa, const std::string& b,
                    const std::string& pb)
 {
-    std::string err;
-    EXPECT_FALSE(s.connect(a, pa, b, pb, err));
-    return err;
+    const Status refused = s.connect(a, pa, b, pb);
+    EXPECT_FALSE(refused);
+    return refused.message();
 }
 
 } // namespace
@@ -73,9 +73,9 @@ TEST(ConnectionRules, WritePortOnPowerNodeIsRefused)
     add(s, "HydraulicPressureSensor", "S");
     connectOk(s, "V", "P1", "O", "P1");
     connectOk(s, "S", "P1", "V", "P1");   // a sensor may read a power node
-    std::string err;
-    EXPECT_FALSE(s.connect("S", "out", "V", "P2", err));
-    EXPECT_FALSE(err.empty());
+    const Status refused = s.connect("S", "out", "V", "P2");
+    EXPECT_EQ(refused.code(), StatusCode::IllegalConnection);
+    EXPECT_FALSE(refused.message().empty());
 }
 
 TEST(ConnectionRules, ReadPortToMultiportIsRefused)
@@ -95,6 +95,7 @@ TEST(ConnectionRules, UnknownComponentOrPortIsNamed)
     EXPECT_NE(err.find("P9"), std::string::npos) << err;
     err = refuse(s, "V", "P1", "Nope", "P1");
     EXPECT_NE(err.find("Nope"), std::string::npos) << err;
+    EXPECT_EQ(s.connect("V", "P1", "Nope", "P1").code(), StatusCode::NotFound);
 }
 
 TEST(ConnectionRules, ReadPortToNothingFailsTheModelCheck)
@@ -104,9 +105,9 @@ TEST(ConnectionRules, ReadPortToNothingFailsTheModelCheck)
     add(s, "HydraulicVolume", "V");
     add(s, "HydraulicLaminarOrifice", "O");
     connectOk(s, "V", "P1", "O", "P1");
-    std::string err;
-    EXPECT_FALSE(s.checkModel(err));
-    EXPECT_NE(err.find("not connected"), std::string::npos) << err;
+    const Status checked = s.check();
+    EXPECT_EQ(checked.code(), StatusCode::UnconnectedPort);
+    EXPECT_NE(checked.message().find("not connected"), std::string::npos) << checked.message();
 }
 
 TEST(ConnectionRules, DisconnectSplitsTheNode)
@@ -115,10 +116,9 @@ TEST(ConnectionRules, DisconnectSplitsTheNode)
     add(s, "HydraulicVolume", "V");
     add(s, "HydraulicLaminarOrifice", "O");
     connectOk(s, "V", "P1", "O", "P1");
-    std::string err;
-    ASSERT_TRUE(s.disconnect("V", "P1", "O", "P1", err)) << err;
+    ASSERT_TRUE(isOk(s.disconnect("V", "P1", "O", "P1")));
     EXPECT_NE(s.component("V")->port("P1")->node(), s.component("O")->port("P1")->node());
-    EXPECT_FALSE(s.disconnect("V", "P1", "O", "P1", err));
+    EXPECT_EQ(s.disconnect("V", "P1", "O", "P1").code(), StatusCode::NotFound);
 }
 
 TEST(ConnectionRules, MultiportTakesManyConnectionsWithOneNodeEach)
@@ -140,11 +140,11 @@ TEST(ConnectionRules, NamesStayUniqueOnAddAndRename)
     EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol");
     EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_1");
     EXPECT_EQ(add(s, "HydraulicVolume", "Vol"), "Vol_2");
-    std::string err;
     // Renaming to a taken name: Vol -> Vol_1 (taken) -> Vol_2 (freed by this rename).
-    EXPECT_EQ(s.renameComponent("Vol_2", "Vol", err), "Vol_2");
-    EXPECT_EQ(s.renameComponent("Vol_2", "2/2 Valve", err), "2_2_Valve");
-    EXPECT_EQ(s.renameComponent("Vol_1", "Valve_3", err), "Valve_3");
+    EXPECT_EQ(*s.renameComponent("Vol_2", "Vol"), "Vol_2");
+    EXPECT_EQ(*s.renameComponent("Vol_2", "2/2 Valve"), "2_2_Valve");
+    EXPECT_EQ(*s.renameComponent("Vol_1", "Valve_3"), "Valve_3");
+    EXPECT_EQ(s.renameComponent("Nope", "Other").status().code(), StatusCode::NotFound);
     EXPECT_EQ(add(s, "HydraulicVolume", "Valve_3"), "Valve_1");
     EXPECT_EQ(add(s, "HydraulicVolume", "time"), "time_1");   // reserved name
 }
@@ -155,8 +155,7 @@ TEST(ConnectionRules, RemoveComponentDisconnectsFirst)
     add(s, "HydraulicVolume", "V");
     add(s, "HydraulicLaminarOrifice", "O");
     connectOk(s, "V", "P1", "O", "P1");
-    std::string err;
-    ASSERT_TRUE(s.removeComponent("O", err));
+    ASSERT_TRUE(isOk(s.removeComponent("O")));
     EXPECT_FALSE(s.component("V")->port("P1")->isConnected());
-    EXPECT_FALSE(s.removeComponent("O", err));
+    EXPECT_EQ(s.removeComponent("O").code(), StatusCode::NotFound);
 }

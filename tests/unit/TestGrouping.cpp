@@ -28,10 +28,24 @@ std::unique_ptr<System> load(const std::string& path)
     return std::move(loaded.root);
 }
 
+// The subsystem's name, or empty (and a test failure) if grouping failed.
+std::string nameOrFailure(const Result<std::string>& grouped)
+{
+    if (grouped) return *grouped;
+    ADD_FAILURE() << grouped.status().codeName() << ": " << grouped.status().message();
+    return {};
+}
+
+// Why grouping was refused (a test failure if it was not).
+std::string refusal(const Result<std::string>& grouped)
+{
+    EXPECT_FALSE(grouped) << "grouping should have been refused";
+    return grouped.status().message();
+}
+
 ResultTable simulate(System& root)
 {
-    std::string error;
-    EXPECT_TRUE(root.checkModel(error)) << error;
+    EXPECT_TRUE(isOk(root.check()));
     EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
     EXPECT_TRUE(root.simulate(root.stopTime));
     root.finalize();
@@ -68,9 +82,8 @@ void groupKeepsResults(const std::string& model, const std::vector<std::string>&
     const ResultTable before = simulate(*original);
 
     auto root = load(model);
-    std::string error;
-    const std::string sub = root->group(names, "Group", error);
-    ASSERT_EQ(sub, "Group") << error;
+    const std::string sub = nameOrFailure(root->group(names, "Group"));
+    ASSERT_EQ(sub, "Group");
     ASSERT_TRUE(root->subsystem(sub));
     EXPECT_EQ(root->subsystem(sub)->kind(), kind);
     const std::set<std::string> grouped(names.begin(), names.end());
@@ -106,14 +119,13 @@ TEST(Grouping, GroupedComponentsStillSeeTheSystemParameters)
 {
     groupKeepsResults(kPressureBuildUp, {"ReliefValve", "ReturnTank"}, CqsKind::Q);
     auto root = load(kPressureBuildUp);
-    std::string error;
-    const std::string sub = root->group({"ReliefValve"}, "Group", error);
-    ASSERT_FALSE(sub.empty()) << error;
-    ASSERT_TRUE(root->setSystemParameter("relief_pressure", "5e6", "double", "", "Pa", false, error)) << error;
-    double value = 0.0;
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*root->subsystem(sub)->component("ReliefValve"), "relief_pressure", value, error))
-        << error;
-    EXPECT_EQ(value, 5e6);
+    const std::string sub = nameOrFailure(root->group({"ReliefValve"}, "Group"));
+    ASSERT_FALSE(sub.empty());
+    ASSERT_TRUE(isOk(root->setSystemParameter("relief_pressure", "5e6", "double", "", "Pa", false)));
+    const Result<double> value =
+        ParameterEvaluator::evaluateExpression(*root->subsystem(sub)->component("ReliefValve"), "relief_pressure");
+    ASSERT_TRUE(isOk(value.status()));
+    EXPECT_EQ(*value, 5e6);
 }
 
 // Inside a subsystem, connections to its own system ports cross the new boundary too.
@@ -123,22 +135,21 @@ TEST(Grouping, InsideASubsystemKeepsEveryResultAndUngroupsBack)
     const ResultTable before = simulate(*original);
     auto root = load(kSubsystems);
     System* servo = root->subsystem("Servo1");
-    std::string error;
-    const std::string sub = servo->group({"Subtract", "Gain"}, "Group", error);
-    ASSERT_EQ(sub, "Group") << error;
+    const std::string sub = nameOrFailure(servo->group({"Subtract", "Gain"}, "Group"));
+    ASSERT_EQ(sub, "Group");
     expectSameResults(before, simulate(*root), sub, {"Subtract", "Gain"}, "Servo1$");
-    std::vector<std::string> moved;
-    ASSERT_TRUE(servo->ungroup(sub, moved, error)) << error;
+    const auto ungrouped = servo->ungroup(sub);
+    ASSERT_TRUE(isOk(ungrouped.status()));
+    const std::vector<std::string>& moved = *ungrouped;
     EXPECT_EQ(saveHmfString(*root), saveHmfString(*original));
 }
 
 TEST(Grouping, MultiportKeepsOneSystemPortPerNode)
 {
     auto root = load(kServo);
-    std::string error;
-    const std::string sub = root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"},
-                                        "Group", error);
-    ASSERT_FALSE(sub.empty()) << error;
+    const std::string sub = nameOrFailure(root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"},
+                                        "Group"));
+    ASSERT_FALSE(sub.empty());
     // Three separate connections to the volume's multiport stay three nodes.
     const Port* volume = root->component("Hydraulic_Volume_Multi_Port")->port("P1");
     ASSERT_EQ(volume->subPorts.size(), 3u);
@@ -160,10 +171,8 @@ TEST(Grouping, UndefinedKindIsRefusedAndTheModelIsUnchanged)
 {
     auto root = load(kServo);
     const std::string before = saveHmfString(*root);
-    std::string error;
     // The mass is Q-type, the cylinder C-type, and both have connections leaving the group.
-    EXPECT_TRUE(root->group({"Mass", "Cylinder_C"}, "Group", error).empty());
-    EXPECT_NE(error.find("undefined C/Q/S kind"), std::string::npos) << error;
+    EXPECT_NE(refusal(root->group({"Mass", "Cylinder_C"}, "Group")).find("undefined C/Q/S kind"), std::string::npos);
     EXPECT_EQ(saveHmfString(*root), before);
     EXPECT_FALSE(root->component("Group"));
 }
@@ -172,27 +181,21 @@ TEST(Grouping, ASignalLoopThroughTheRestIsRefused)
 {
     auto root = load(kServo);
     const std::string before = saveHmfString(*root);
-    std::string error;
     // Subtract -> GainP -> Add (and Subtract -> Integrator -> GainI -> Add): without the
     // middle the group would both feed and read it.
-    EXPECT_TRUE(root->group({"Subtract", "Add"}, "Group", error).empty());
-    EXPECT_NE(error.find("signal loop through '"), std::string::npos) << error;
+    EXPECT_NE(refusal(root->group({"Subtract", "Add"}, "Group")).find("signal loop through '"), std::string::npos);
     EXPECT_EQ(saveHmfString(*root), before);
     // With GainP (and GainI, on the integrator path) it is a chain again.
-    EXPECT_EQ(root->group({"Subtract", "GainP", "Integrator", "GainI", "Add"}, "Group", error), "Group") << error;
+    EXPECT_EQ(nameOrFailure(root->group({"Subtract", "GainP", "Integrator", "GainI", "Add"}, "Group")), "Group");
 }
 
 TEST(Grouping, BadSelectionsAreRefusedAndTheModelIsUnchanged)
 {
     auto root = load(kServo);
     const std::string before = saveHmfString(*root);
-    std::string error;
-    EXPECT_TRUE(root->group({}, "Group", error).empty());
-    EXPECT_NE(error.find("nothing"), std::string::npos) << error;
-    EXPECT_TRUE(root->group({"Mass", "Teapot"}, "Group", error).empty());
-    EXPECT_NE(error.find("Teapot"), std::string::npos) << error;
-    EXPECT_TRUE(root->group({"Mass", "Mass"}, "Group", error).empty());
-    EXPECT_NE(error.find("twice"), std::string::npos) << error;
+    EXPECT_NE(refusal(root->group({}, "Group")).find("nothing"), std::string::npos);
+    EXPECT_NE(refusal(root->group({"Mass", "Teapot"}, "Group")).find("Teapot"), std::string::npos);
+    EXPECT_NE(refusal(root->group({"Mass", "Mass"}, "Group")).find("twice"), std::string::npos);
     EXPECT_EQ(saveHmfString(*root), before);
 }
 
@@ -205,9 +208,7 @@ TEST(Grouping, SystemPortsOfTheSystemCannotBeGrouped)
     for (Port* p : servo->ports())
         if (p->kind() == PortKind::System) sp = p;
     ASSERT_TRUE(sp);
-    std::string error;
-    EXPECT_TRUE(servo->group({sp->name()}, "Group", error).empty());
-    EXPECT_NE(error.find("system port"), std::string::npos) << error;
+    EXPECT_NE(refusal(servo->group({sp->name()}, "Group")).find("system port"), std::string::npos);
 }
 
 // Components listed one after another in the file come back in their places, so the saved
@@ -224,11 +225,11 @@ TEST(Grouping, UngroupRestoresTheModel)
         auto original = load(model);
         const ResultTable before = simulate(*original);
         auto root = load(model);
-        std::string error;
-        const std::string sub = root->group(names, "Group", error);
-        ASSERT_FALSE(sub.empty()) << error;
-        std::vector<std::string> moved;
-        ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+            const std::string sub = nameOrFailure(root->group(names, "Group"));
+        ASSERT_FALSE(sub.empty());
+        const auto ungrouped = root->ungroup(sub);
+        ASSERT_TRUE(isOk(ungrouped.status()));
+        const std::vector<std::string>& moved = *ungrouped;
         EXPECT_EQ(moved, names);
         EXPECT_EQ(saveHmfString(*root), saveHmfString(*original));
         expectSameResults(before, simulate(*root), "", {});
@@ -241,12 +242,12 @@ TEST(Grouping, UngroupOfScatteredComponentsKeepsEveryResult)
     auto original = load(kServo);
     const ResultTable before = simulate(*original);
     auto root = load(kServo);
-    std::string error;
     const std::string sub =
-        root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"}, "Group", error);
-    ASSERT_FALSE(sub.empty()) << error;
-    std::vector<std::string> moved;
-    ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+        nameOrFailure(root->group({"4_3_Servo_Valve", "Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1"}, "Group"));
+    ASSERT_FALSE(sub.empty());
+    const auto ungrouped = root->ungroup(sub);
+    ASSERT_TRUE(isOk(ungrouped.status()));
+    const std::vector<std::string>& moved = *ungrouped;
     EXPECT_EQ(moved, (std::vector<std::string>{"Pressure_Relief_Valve", "Q_type_Fixed_Displacement_Pump_1",
                                                 "4_3_Servo_Valve"}));
     expectSameResults(before, simulate(*root), "", {});
@@ -255,14 +256,14 @@ TEST(Grouping, UngroupOfScatteredComponentsKeepsEveryResult)
 TEST(Grouping, UngroupMovesSubsystemParametersAndMakesNamesUnique)
 {
     auto root = load(kServo);
-    std::string error;
-    const std::string sub = root->group({"GainP", "GainI"}, "Gains", error);
-    ASSERT_FALSE(sub.empty()) << error;
+    const std::string sub = nameOrFailure(root->group({"GainP", "GainI"}, "Gains"));
+    ASSERT_FALSE(sub.empty());
     System* gains = root->subsystem(sub);
-    ASSERT_TRUE(gains->setSystemParameter("k", "2", "double", "", "", false, error)) << error;
+    ASSERT_TRUE(isOk(gains->setSystemParameter("k", "2", "double", "", "", false)));
     add(*root, "SignalGain", "GainP");   // takes the name of a grouped component
-    std::vector<std::string> moved;
-    ASSERT_TRUE(root->ungroup(sub, moved, error)) << error;
+    const auto ungrouped = root->ungroup(sub);
+    ASSERT_TRUE(isOk(ungrouped.status()));
+    const std::vector<std::string>& moved = *ungrouped;
     EXPECT_EQ(moved, (std::vector<std::string>{"GainI", "GainP_1"}));
     EXPECT_TRUE(root->parameters().find("k"));
     EXPECT_FALSE(root->component(sub));

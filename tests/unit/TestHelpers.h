@@ -20,11 +20,17 @@ inline std::string add(System& s, const std::string& type, const std::string& na
     return s.addComponent(std::move(c));
 }
 
+// Passes for an ok status; else fails showing its code and message.
+inline ::testing::AssertionResult isOk(const Status& status)
+{
+    if (status) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << status.codeName() << ": " << status.message();
+}
+
 inline void connectOk(System& s, const std::string& a, const std::string& pa, const std::string& b,
                       const std::string& pb)
 {
-    std::string err;
-    ASSERT_TRUE(s.connect(a, pa, b, pb, err)) << err;
+    ASSERT_TRUE(isOk(s.connect(a, pa, b, pb)));
 }
 
 inline void setParam(System& s, const std::string& comp, const std::string& name, const std::string& value)

@@ -17,7 +17,7 @@ namespace {
 std::vector<std::vector<double>> simulateAll(System& root)
 {
     std::string err;
-    EXPECT_TRUE(root.checkModel(err)) << err;
+    EXPECT_TRUE(isOk(root.check()));
     EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
     EXPECT_TRUE(root.simulate(root.stopTime));
     root.finalize();

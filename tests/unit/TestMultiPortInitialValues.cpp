@@ -52,7 +52,7 @@ TEST(MultiPortInitialValues, CylinderBlockZeroesItsPistonNodesOverridingStartVal
     s.desiredTimestep = 1e-5;
     s.requestedLogSamples = 2;
     std::string err;
-    ASSERT_TRUE(s.checkModel(err)) << err;
+    ASSERT_TRUE(isOk(s.check()));
     ASSERT_TRUE(s.initialize(0.0, 1e-3));
 
     // Piston A loaded x = 0.05, v = 0.3 as start values; the block's initialise zeroed them

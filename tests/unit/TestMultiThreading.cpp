@@ -23,7 +23,7 @@ std::vector<std::vector<double>> simulateWith(const std::string& path, const Ste
     if (m.hasErrors()) return {};
     System& root = *m.root;
     std::string err;
-    EXPECT_TRUE(root.checkModel(err)) << err;
+    EXPECT_TRUE(isOk(root.check()));
     EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
     EXPECT_TRUE(runSteps(root, root.stepsUntil(root.stopTime)));
     root.finalize();
@@ -133,7 +133,7 @@ std::vector<double> orificeFlowWithSameStepSignal(unsigned threads)
     s.desiredTimestep = 1e-4;
     s.requestedLogSamples = 2001;
     std::string err;
-    EXPECT_TRUE(s.checkModel(err)) << err;
+    EXPECT_TRUE(isOk(s.check()));
     EXPECT_TRUE(s.initialize(0.0, 0.2));
     EXPECT_TRUE(s.simulateMultiThreaded(0.2, threads));
     s.finalize();
@@ -163,7 +163,7 @@ TEST(MultiThreadingAuto, ShortRunOfASmallModelStaysOnOneThread)
     connectOk(s, "Source", "P1", "Orifice", "P1");
     connectOk(s, "Orifice", "P2", "Tank", "P1");
     std::string err;
-    ASSERT_TRUE(s.checkModel(err)) << err;
+    ASSERT_TRUE(isOk(s.check()));
     ASSERT_TRUE(s.initialize(0.0, 1.0));
     ASSERT_TRUE(s.simulateStepsMultiThreaded(s.stepsUntil(1.0), 0));
     s.finalize();

@@ -4,45 +4,59 @@
 
 #include "core/ParameterEvaluator.h"
 
+#include <cmath>
+
 using namespace tlmhub;
 using namespace tlmhub::test;
+
+namespace {
+
+// The value of an expression that must evaluate (NaN and a test failure otherwise).
+double evaluated(Component& owner, const std::string& expression)
+{
+    const Result<double> value = ParameterEvaluator::evaluateExpression(owner, expression);
+    if (value) return *value;
+    ADD_FAILURE() << expression << ": " << value.status().message();
+    return std::nan("");
+}
+
+// Why an expression that must not evaluate does not.
+std::string failureOf(const Result<double>& value)
+{
+    EXPECT_FALSE(value) << "the expression should not evaluate";
+    EXPECT_EQ(value.status().code(), StatusCode::InvalidParameter);
+    return value.status().message();
+}
+
+} // namespace
 
 TEST(Parameters, NumbersExpressionsAndSystemParameters)
 {
     System root;
-    std::string err;
-    ASSERT_TRUE(root.setSystemParameter("A2", "0.002", "double", "", "m^2", false, err)) << err;
-    ASSERT_TRUE(root.setSystemParameter("k", "2*A2 + 1", "double", "", "", false, err)) << err;
+    ASSERT_TRUE(isOk(root.setSystemParameter("A2", "0.002", "double", "", "m^2", false)));
+    ASSERT_TRUE(isOk(root.setSystemParameter("k", "2*A2 + 1", "double", "", "", false)));
     add(root, "SignalGain", "G");
     Component* g = root.component("G");
     Parameter* p = g->parameters().find("k#Value");
     ASSERT_TRUE(p);
-    double v = 0;
     p->value = "-A2";
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, p->value, v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, -0.002);
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, "k", v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, 1.004);
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, "sin(pi/2)^2 + max(1, 3)", v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, 4.0);
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, "log(exp(2))", v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, 2.0);
+    EXPECT_DOUBLE_EQ(evaluated(*g, p->value), -0.002);
+    EXPECT_DOUBLE_EQ(evaluated(*g, "k"), 1.004);
+    EXPECT_DOUBLE_EQ(evaluated(*g, "sin(pi/2)^2 + max(1, 3)"), 4.0);
+    EXPECT_DOUBLE_EQ(evaluated(*g, "log(exp(2))"), 2.0);
 }
 
 TEST(Parameters, NestedSystemsSeeOuterParameters)
 {
     System root;
-    std::string err;
-    ASSERT_TRUE(root.setSystemParameter("Force", "1000", "double", "", "N", false, err));
+    ASSERT_TRUE(isOk(root.setSystemParameter("Force", "1000", "double", "", "N", false)));
     auto sub = std::make_unique<System>();
     sub->setNameRaw("Sub");
     System* subRaw = sub.get();
     root.addComponent(std::move(sub));
     add(*subRaw, "SignalGain", "G");
     Component* g = subRaw->component("G");
-    double v = 0;
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, "Force/2", v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, 500.0);
+    EXPECT_DOUBLE_EQ(evaluated(*g, "Force/2"), 500.0);
 }
 
 TEST(Parameters, SelfReferenceReadsOwnParameter)
@@ -51,10 +65,7 @@ TEST(Parameters, SelfReferenceReadsOwnParameter)
     add(root, "SignalGain", "G");
     Component* g = root.component("G");
     g->parameters().find("k#Value")->value = "4";
-    double v = 0;
-    std::string err;
-    ASSERT_TRUE(ParameterEvaluator::evaluateExpression(*g, "self.k*2", v, err)) << err;
-    EXPECT_DOUBLE_EQ(v, 8.0);
+    EXPECT_DOUBLE_EQ(evaluated(*g, "self.k*2"), 8.0);
 }
 
 TEST(Parameters, UnknownNameAndSyntaxErrorsAreReported)
@@ -62,34 +73,31 @@ TEST(Parameters, UnknownNameAndSyntaxErrorsAreReported)
     System root;
     add(root, "SignalGain", "G");
     Component* g = root.component("G");
-    double v = 0;
-    std::string err;
-    EXPECT_FALSE(ParameterEvaluator::evaluateExpression(*g, "nosuchname*2", v, err));
+    std::string err = failureOf(ParameterEvaluator::evaluateExpression(*g, "nosuchname*2"));
     EXPECT_NE(err.find("nosuchname"), std::string::npos) << err;
-    EXPECT_FALSE(ParameterEvaluator::evaluateExpression(*g, "2*(3", v, err));
+    err = failureOf(ParameterEvaluator::evaluateExpression(*g, "2*(3"));
     EXPECT_FALSE(err.empty());
     // The model check names the component and parameter of a bad value.
     g->parameters().find("k#Value")->value = "oops";
-    EXPECT_FALSE(root.checkModel(err));
-    EXPECT_NE(err.find("k#Value"), std::string::npos) << err;
+    const Status checked = root.check();
+    EXPECT_EQ(checked.code(), StatusCode::InvalidParameter);
+    EXPECT_EQ(checked.path(), "G.k#Value");
+    EXPECT_NE(checked.message().find("k#Value"), std::string::npos) << checked.message();
 }
 
 TEST(Parameters, ReferenceLoopIsStopped)
 {
     System root;
-    std::string err;
-    ASSERT_TRUE(root.setSystemParameter("a", "b+1", "double", "", "", false, err));
-    ASSERT_TRUE(root.setSystemParameter("b", "a+1", "double", "", "", false, err));
+    ASSERT_TRUE(isOk(root.setSystemParameter("a", "b+1", "double", "", "", false)));
+    ASSERT_TRUE(isOk(root.setSystemParameter("b", "a+1", "double", "", "", false)));
     add(root, "SignalGain", "G");
-    double v = 0;
-    EXPECT_FALSE(ParameterEvaluator::evaluateExpression(*root.component("G"), "a", v, err));
+    failureOf(ParameterEvaluator::evaluateExpression(*root.component("G"), "a"));
 }
 
 TEST(Parameters, ExpressionValueReachesTheSimulation)
 {
     System root;
-    std::string err;
-    ASSERT_TRUE(root.setSystemParameter("gain", "2.5", "double", "", "", false, err));
+    ASSERT_TRUE(isOk(root.setSystemParameter("gain", "2.5", "double", "", "", false)));
     add(root, "SignalConstant", "C");
     add(root, "SignalGain", "G");
     add(root, "SignalSink", "S");
@@ -106,12 +114,10 @@ TEST(Parameters, ExpressionValueReachesTheSimulation)
 TEST(Parameters, LoopOverThreeParametersFailsAtOnce)
 {
     System root;
-    std::string err;
-    ASSERT_TRUE(root.setSystemParameter("a", "b+c", "double", "", "", false, err));
-    ASSERT_TRUE(root.setSystemParameter("b", "a+c", "double", "", "", false, err));
-    ASSERT_TRUE(root.setSystemParameter("c", "a+b", "double", "", "", false, err));
+    ASSERT_TRUE(isOk(root.setSystemParameter("a", "b+c", "double", "", "", false)));
+    ASSERT_TRUE(isOk(root.setSystemParameter("b", "a+c", "double", "", "", false)));
+    ASSERT_TRUE(isOk(root.setSystemParameter("c", "a+b", "double", "", "", false)));
     add(root, "SignalGain", "G");
-    double v = 0;
-    EXPECT_FALSE(ParameterEvaluator::evaluateExpression(*root.component("G"), "a", v, err));
+    std::string err = failureOf(ParameterEvaluator::evaluateExpression(*root.component("G"), "a"));
     EXPECT_NE(err.find("reference loop"), std::string::npos) << err;
 }

@@ -26,7 +26,7 @@ std::unique_ptr<System> runModel(const std::string& path)
     EXPECT_FALSE(m.hasErrors()) << m.firstError();
     if (m.hasErrors()) return nullptr;
     std::string err;
-    EXPECT_TRUE(m.root->checkModel(err)) << err;
+    EXPECT_TRUE(isOk(m.root->check()));
     EXPECT_TRUE(m.root->initialize(m.root->startTime, m.root->stopTime));
     EXPECT_TRUE(m.root->simulate(m.root->stopTime));
     m.root->finalize();

@@ -50,8 +50,7 @@ void buildMassSpring(System& s, const std::string& stiffness)
     connectOk(s, "Wall", "Pm1", "Spring", "P1");
     connectOk(s, "Spring", "P2", "Mass", "P1");
     connectOk(s, "Mass", "P2", "Force", "P1");
-    std::string error;
-    ASSERT_TRUE(s.setSystemParameter("stiffness", stiffness, "double", "", "N/m", false, error)) << error;
+    ASSERT_TRUE(isOk(s.setSystemParameter("stiffness", stiffness, "double", "", "N/m", false)));
     setParam(s, "Spring", "k#Value", "stiffness");
     setParam(s, "Mass", "m", "1");
     setParam(s, "Mass", "B#Value", "0");

@@ -42,7 +42,7 @@ TEST(StepOrder, AlgebraicLoopIsRefused)
     connectOk(s, "B", "out", "A", "in");
     s.requestedLogSamples = 2;
     std::string err;
-    ASSERT_TRUE(s.checkModel(err)) << err;
+    ASSERT_TRUE(isOk(s.check()));
     EXPECT_FALSE(s.initialize(0, 1));
     bool reported = false;
     for (const auto& m : s.messages()) reported = reported || m.text.find("algebraic loop") != std::string::npos;

@@ -42,11 +42,9 @@ TEST(Subsystems, SystemPortsPassSignalsThroughOneNode)
     ASSERT_TRUE(run(root, 0, 0.01, 0.001, 11));
     EXPECT_DOUBLE_EQ(sub.component("G")->port("out")->node()->value(0), 6.0);
     // The crossing node is logged by the outer system under both names.
-    std::string err;
-    Port* p = nullptr;
-    int slot = -1;
-    ASSERT_TRUE(resolveVariable(root, "Sub$G#out#Value", p, slot, err)) << err;
-    EXPECT_EQ(loggedData(*p, slot, root.numLoggedSamples()).back(), 6.0);
+    const Result<VariableRef> variable = resolveVariable(root, "Sub$G#out#Value");
+    ASSERT_TRUE(variable) << variable.status().message();
+    EXPECT_EQ(loggedData(*variable->port, variable->slot, root.numLoggedSamples()).back(), 6.0);
 }
 
 TEST(Subsystems, KindFollowsInsideConnectionsAndTLMRulesHoldAcrossPorts)
@@ -62,10 +60,10 @@ TEST(Subsystems, KindFollowsInsideConnectionsAndTLMRulesHoldAcrossPorts)
     // A C-type subsystem carries start values for its power port.
     EXPECT_NE(sub.parameters().find("P#Pressure"), nullptr);
     add(root, "HydraulicVolume", "Outside");
-    std::string err;
-    EXPECT_FALSE(root.connect("Outside", "P1", "Sub", "P", err));
-    EXPECT_NE(err.find("two C-type"), std::string::npos) << err;
-    ASSERT_TRUE(root.removeComponent("Outside", err)) << err;
+    const Status refused = root.connect("Outside", "P1", "Sub", "P");
+    EXPECT_EQ(refused.code(), StatusCode::IllegalConnection);
+    EXPECT_NE(refused.message().find("two C-type"), std::string::npos) << refused.message();
+    ASSERT_TRUE(isOk(root.removeComponent("Outside")));
     add(root, "HydraulicFlowSourceQ", "Pump");
     connectOk(root, "Pump", "P1", "Sub", "P");
     setParam(root, "Pump", "q#Value", "1e-5");

@@ -461,11 +461,13 @@ void SignalNumHopSISO::initialize()
             double* slot = &mStorage.back();
             if (tr.locals.count(name) == 0) {
                 // A Hopsan name (self.X or a system parameter): read once, here.
-                std::string err;
-                if (!ParameterEvaluator::evaluateExpression(*this, name, *slot, err)) {
-                    stopSimulation("SignalNumHopSISO: unknown name '" + name + "' in script: " + err);
+                const Result<double> value = ParameterEvaluator::evaluateExpression(*this, name);
+                if (!value) {
+                    stopSimulation("SignalNumHopSISO: unknown name '" + name + "' in script: " +
+                                   value.status().message());
                     return;
                 }
+                *slot = *value;
             }
             p.DefineVar(id, slot);
         }
