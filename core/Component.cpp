@@ -349,6 +349,13 @@ void Component::stopSimulation(const std::string& reason)
     if (root) root->requestStop();
 }
 
+RandomStream& Component::randomStream()
+{
+    System* root = mParent ? mParent->rootSystem() : static_cast<System*>(this);
+    root->mDrawsRandomNumbers = true;
+    return root->mRandom;
+}
+
 std::string Component::modelDirectory() const
 {
     const System* root = mParent ? mParent->rootSystem() : nullptr;

@@ -11,6 +11,7 @@
 #include "core/NodeTypes.h"
 #include "core/Parameter.h"
 #include "core/Port.h"
+#include "core/numerics/RandomStream.h"
 
 #include <map>
 #include <memory>
@@ -100,6 +101,9 @@ public:
     void stopSimulation(const std::string& reason = {});
     // Directory of the model file (for components reading data files).
     std::string modelDirectory() const;
+    // The simulation's random numbers (for noise sources; bind it in initialize()). The root
+    // reseeds it at every start; a model that draws from it runs on one thread, in list order.
+    RandomStream& randomStream();
     // Resolve a possibly relative path against the model directory.
     // Empty (with an error message) when model file access is off (core/FileAccess.h).
     std::string findFilePath(const std::string& path);

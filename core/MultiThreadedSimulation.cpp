@@ -301,6 +301,8 @@ bool System::simulateStepsThreadTrial(std::size_t n, unsigned threads, double si
 bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
 {
     mThreadsUsed = 1;
+    // Draws from the one random stream must come in list order to give the same numbers.
+    if (mDrawsRandomNumbers) return simulateSteps(n);
     if (threads == 0) return simulateStepsAutoThreaded(n);
     if (threads == 1 || n == 0) return simulateSteps(n);
     std::size_t taken = 0;

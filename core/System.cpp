@@ -996,6 +996,10 @@ bool System::initialize(double t0, double t1)
         startTime = t0;
         stopTime = t1;
     }
+    if (isRoot()) {
+        mRandom.reseed(1);
+        mDrawsRandomNumbers = false;
+    }
     return initializeInternal(t0, t1);
 }
 

@@ -200,6 +200,8 @@ private:
     double* mpOn = nullptr;
 
     std::vector<Message> mMessages;
+    RandomStream mRandom;                // root: the noise sources' numbers
+    bool mDrawsRandomNumbers = false;    // root: some component took mRandom at initialize
     std::atomic<bool> mStopRequested{false};
     std::mutex mMessagesMutex;
     std::size_t mTakenSteps = 0;

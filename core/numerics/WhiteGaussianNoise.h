@@ -1,15 +1,15 @@
 // Standard normal random numbers (utilities.md §13): Box-Muller (cosine
-// branch only) on the C library rand(). rand() is used on purpose, because
-// bit-exact noise reproduction needs the same generator and sequence as the
-// reference (glibc rand(), default seed 1 unless someone calls srand).
+// branch only) on the simulation's RandomStream, which gives the numbers of glibc's
+// rand() from seed 1, as the reference draws them.
 #pragma once
+#include "core/numerics/RandomStream.h"
 
 namespace tlmhub {
 
 class WhiteGaussianNoise
 {
 public:
-    static double getValue();
+    static double getValue(RandomStream& random);
 };
 
 } // namespace tlmhub

@@ -14,12 +14,13 @@ void SignalAdditiveNoise::configure()
 
 void SignalAdditiveNoise::initialize()
 {
+    mpRandom = &randomStream();
     simulateOneTimestep();
 }
 
 void SignalAdditiveNoise::simulateOneTimestep()
 {
-    *mpOut = *mpIn + (*mpStd_dev) * WhiteGaussianNoise::getValue();
+    *mpOut = *mpIn + (*mpStd_dev) * WhiteGaussianNoise::getValue(*mpRandom);
 }
 
 TLMHUB_REGISTER_COMPONENT(SignalAdditiveNoise, "Signal")

@@ -3,7 +3,7 @@
 
 namespace tlmhub {
 
-// Adds white Gaussian noise (C library rand(), never seeded here) to a signal.
+// Adds white Gaussian noise (the simulation's random stream) to a signal.
 class SignalAdditiveNoise : public ComponentSignal {
 public:
     void configure() override;
@@ -11,6 +11,7 @@ public:
     void simulateOneTimestep() override;
 
 private:
+    RandomStream* mpRandom = nullptr;
     double* mpIn = nullptr;
     double* mpStd_dev = nullptr;
     double* mpOut = nullptr;

@@ -13,12 +13,13 @@ void SignalNoiseGenerator::configure()
 
 void SignalNoiseGenerator::initialize()
 {
+    mpRandom = &randomStream();
     simulateOneTimestep();
 }
 
 void SignalNoiseGenerator::simulateOneTimestep()
 {
-    *mpOut = *mpStdDev * WhiteGaussianNoise::getValue();
+    *mpOut = *mpStdDev * WhiteGaussianNoise::getValue(*mpRandom);
 }
 
 TLMHUB_REGISTER_COMPONENT(SignalNoiseGenerator, "Signal")

@@ -11,6 +11,7 @@ public:
     void simulateOneTimestep() override;
 
 private:
+    RandomStream* mpRandom = nullptr;
     double* mpStdDev = nullptr;
     double* mpOut = nullptr;
 };

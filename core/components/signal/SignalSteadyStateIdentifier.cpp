@@ -27,6 +27,7 @@ void SignalSteadyStateIdentifier::configure()
 
 void SignalSteadyStateIdentifier::initialize()
 {
+    mpRandom = &randomStream();
     // Window length fixed from the t0 value of wl (truncated quotient).
     const double q = std::floor(*mpWl / mTimestep);
     const long long n = (q > 0.0) ? static_cast<long long>(q) : 0;
@@ -72,7 +73,7 @@ void SignalSteadyStateIdentifier::simulateOneTimestep()
         const double dN1 = static_cast<double>(mN - 1);
         double sum = 0.0;
         for (std::size_t i = 0; i < mN; ++i) {
-            mNoisy[i] = mWindow[i] + sd * WhiteGaussianNoise::getValue();
+            mNoisy[i] = mWindow[i] + sd * WhiteGaussianNoise::getValue(*mpRandom);
             sum += mNoisy[i];
         }
         const double m = sum / dN;
@@ -100,7 +101,7 @@ void SignalSteadyStateIdentifier::simulateOneTimestep()
         const double l1 = *mpL1;
         const double l2 = *mpL2;
         const double l3 = *mpL3;
-        const double x = in + *mpSd * WhiteGaussianNoise::getValue();
+        const double x = in + *mpSd * WhiteGaussianNoise::getValue(*mpRandom);
         const double e1 = x - mXfd;
         const double vf = l2 * (e1 * e1);
         double s1 = (2.0 - l1) / 2.0 * vf;

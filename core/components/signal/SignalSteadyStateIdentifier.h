@@ -17,6 +17,7 @@ public:
     void simulateOneTimestep() override;
 
 private:
+    RandomStream* mpRandom = nullptr;
     double* mpIn = nullptr;
     double* mpOut = nullptr;
     double* mpTol = nullptr;
