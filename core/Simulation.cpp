@@ -115,17 +115,14 @@ const std::vector<Message>& Simulation::messages() const { return mRoot->message
 
 void Simulation::requestStop() { mRoot->requestStop(); }
 
-// The first error a component or the engine reported, with its code and model path.
-Status Simulation::failure(StatusCode fallback, const std::string& fallbackMessage) const
+// A run that ended early: the first error a component reported (its text and model path),
+// else the fallback message.
+Status Simulation::stopped(const std::string& fallbackMessage) const
 {
-    for (const Message& m : mRoot->messages()) {
-        if (m.type != MessageType::Error && m.type != MessageType::Fatal) continue;
-        StatusCode code = fallback;
-        if (m.tag == "AlgebraicLoop") code = StatusCode::AlgebraicLoop;
-        else if (m.tag == "Parameter") code = StatusCode::InvalidParameter;
-        return {code, m.text, m.source};
-    }
-    return {fallback, fallbackMessage};
+    for (const Message& m : mRoot->messages())
+        if (m.type == MessageType::Error || m.type == MessageType::Fatal)
+            return {StatusCode::SimulationStopped, m.text, m.source};
+    return {StatusCode::SimulationStopped, fallbackMessage};
 }
 
 void Simulation::finish(SimulationState state)
@@ -140,9 +137,9 @@ Status Simulation::initialise()
         return {StatusCode::InvalidState, std::string("cannot initialise a simulation that is ") +
                                               simulationStateName(mState) + " (reset it first)"};
     mRoot->messages().clear();
-    if (!mRoot->initialize(mStartTime, mStopTime)) {
+    if (Status started = mRoot->initialize(mStartTime, mStopTime); !started) {
         finish(SimulationState::Failed);
-        return failure(StatusCode::InitFailed, "initialisation failed");
+        return started;
     }
     mState = SimulationState::Initialised;
     return Status::ok();
@@ -181,7 +178,7 @@ Status Simulation::run(double until, const RunOptions& options)
         finish(SimulationState::Stopped);
         char when[64];
         std::snprintf(when, sizeof when, "%g", mRoot->time());
-        return failure(StatusCode::SimulationStopped, std::string("simulation stopped at t=") + when);
+        return stopped(std::string("simulation stopped at t=") + when);
     }
     if (mRoot->takenSteps() >= mTotalSteps) finish(SimulationState::Finished);
     else mState = SimulationState::Paused;

@@ -101,7 +101,7 @@ public:
 private:
     friend Result<Simulation> compile(System& root, const SimulationSettings& settings);
     Simulation(System& root, double start, double stop, double timestep);
-    Status failure(StatusCode fallback, const std::string& fallbackMessage) const;
+    Status stopped(const std::string& fallbackMessage) const;
     void finish(SimulationState state);
 
     System* mRoot = nullptr;

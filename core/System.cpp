@@ -987,7 +987,7 @@ std::vector<Node*> System::allNodes()
     return nodes;
 }
 
-bool System::initialize(double t0, double t1)
+Status System::initialize(double t0, double t1)
 {
     mStopRequested.store(false);
     if (isRoot()) {
@@ -1003,7 +1003,7 @@ bool System::initialize(double t0, double t1)
     return initializeInternal(t0, t1);
 }
 
-bool System::initializeInternal(double t0, double t1)
+Status System::initializeInternal(double t0, double t1)
 {
     buildRunLists();
     System* root = rootSystem();
@@ -1015,7 +1015,7 @@ bool System::initializeInternal(double t0, double t1)
     mTakenSteps = 0;
     if (mTimestep < 10.0 * DBL_MIN) {
         addErrorMessage("time step too low");
-        return false;
+        return {StatusCode::InvalidSettings, "time step too low", modelPath()};
     }
     computeLogSchedule(t0, t1);
     allocateLogStorage();
@@ -1025,14 +1025,14 @@ bool System::initializeInternal(double t0, double t1)
             if (c->isSystem()) static_cast<System*>(c)->computeSortHintsOfSystemPorts();
     if (const Status sorted = sortList(mS, true); !sorted) {
         root->postMessage({MessageType::Error, sorted.message(), "AlgebraicLoop", sorted.path()});
-        return false;
+        return sorted;
     }
     sortList(mC, false);
     sortList(mQ, false);
     if (isRoot()) {
         if (const Status evaluated = evaluateAllParameters(); !evaluated) {
             root->postMessage({MessageType::Error, evaluated.message(), "Parameter", evaluated.path()});
-            return false;
+            return evaluated;
         }
         loadStartValues();
     }
@@ -1043,21 +1043,33 @@ bool System::initializeInternal(double t0, double t1)
                 auto* sub = static_cast<System*>(c);
                 sub->requestedLogSamples = requestedLogSamples;
                 sub->logStartTime = logStartTime;
-                if (!sub->initializeInternal(t0, t1)) {
+                if (Status started = sub->initializeInternal(t0, t1); !started) {
                     root->requestStop();
-                    return false;
+                    return started;
                 }
             } else {
                 c->mTime = t0;
                 c->initialize();
             }
-            if (root->stopRequested()) return false;
+            if (root->stopRequested()) return root->initFailure(*c);
         }
     }
     if (mOnPort) bindAutoVariables();
     logSample();
-    return true;
+    return Status::ok();
 }
+
+// A component that stopped the simulation in its initialize(): its first error is the reason.
+Status System::initFailure(const Component& c) const
+{
+    const std::string path = c.modelPath();
+    for (const Message& m : mMessages)
+        if ((m.type == MessageType::Error || m.type == MessageType::Fatal) && m.source == path)
+            return {StatusCode::InitFailed, m.text, path};
+    return {StatusCode::InitFailed, "'" + c.name() + "' stopped the simulation while initialising", path};
+}
+
+
 
 void System::runComponent(Component* c, double time)
 {

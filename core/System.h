@@ -88,7 +88,9 @@ public:
     // Structure and parameter checks before a run: the first problem found, with its code
     // and model path.
     Status check();
-    bool initialize(double startTime, double stopTime);
+    // Root: initialises every component for a run from startTime; a component that fails
+    // (stopSimulation in its initialize()) gives init_failed with its reason and path.
+    Status initialize(double startTime, double stopTime);
     bool simulate(double stopTime);   // root: runs until stopTime
     // The same steps with the root's S, C and Q lists split over `threads` threads (S
     // components by signal cluster, see MultiThreadedSimulation.cpp); 0 = automatic: one per
@@ -185,7 +187,8 @@ private:
     bool simulateStepsAutoThreaded(std::size_t steps);
     double timeSingleThreadedSteps(std::size_t steps, bool& ok);
     bool runThreaded(std::size_t steps, unsigned threads, const ThreadTrial* trial, std::size_t& taken);
-    bool initializeInternal(double startTime, double stopTime);
+    Status initializeInternal(double startTime, double stopTime);
+    Status initFailure(const Component& c) const;
     void propagateTimestep();
     Result<Port*> resolvePort(const std::string& compName, const std::string& portName) const;
     // Connects two resolved ports; the reason if refused (empty if connected).
