@@ -35,7 +35,7 @@ const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
 
 /** A drawn component or line with the attribute values it was last given. */
 interface DrawnComponent { el: SVGGElement; comp: Component; pose: string; cls: string; spot: string }
-interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string }
+interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string; path: Point[] }
 
 /** Puts `children` in `parent` in this order, touching the DOM only when they differ. */
 function setChildren(parent: Element, children: Element[]): void {
@@ -237,7 +237,9 @@ export class CanvasView {
         this.drawnConnections = connections;
         setChildren(this.connectionGroup, [...connections.values()].map((d) => d.el));
 
-        const labels = placeLabels(system.components.map((c) => ({ name: c.name, pose: this.poseOf(c), layout: this.layouts.get(c.name)! })));
+        // names keep off the lines where they can
+        const lines = [...connections.values()].map((d) => d.path);
+        const labels = placeLabels(system.components.map((c) => ({ name: c.name, pose: this.poseOf(c), layout: this.layouts.get(c.name)! })), lines);
         const components = new Map<string, DrawnComponent>();
         for (const comp of system.components) components.set(comp.name, this.drawComponent(comp, labels.get(comp.name)!, this.drawnComponents.get(comp.name)));
         this.drawnComponents = components;
@@ -280,14 +282,14 @@ export class CanvasView {
         if (drawn) {
             if (drawn.points !== points) drawn.el.setAttribute('points', points);
             if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
-            return { el: drawn.el, points, cls };
+            return { el: drawn.el, points, cls, path: pts };
         }
         const el = s('polyline', {
             class: cls, points, stroke: nodeColour(nodeType),
             'data-from': `${conn.from.component}.${conn.from.port}`,
             'data-to': `${conn.to.component}.${conn.to.port}`,
         });
-        return { el, points, cls };
+        return { el, points, cls, path: pts };
     }
 
     private drawOverlay(system: System): SVGGElement {
