@@ -34,8 +34,9 @@ type Drag =
 const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
 
 /** A drawn component or line with the attribute values it was last given. */
-interface DrawnComponent { el: SVGGElement; comp: Component; pose: string; cls: string; spot: string }
-interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string }
+interface DrawnComponent { el: SVGGElement; body: SVGGElement; text: SVGTextElement; comp: Component; pose: string; cls: string; spot: string }
+/** `inputs`: what the line was drawn from (the system, both ends' components and poses, whether it is selected). */
+interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string; path: Point[]; inputs: unknown[] }
 
 /** Puts `children` in `parent` in this order, touching the DOM only when they differ. */
 function setChildren(parent: Element, children: Element[]): void {
@@ -237,7 +238,9 @@ export class CanvasView {
         this.drawnConnections = connections;
         setChildren(this.connectionGroup, [...connections.values()].map((d) => d.el));
 
-        const labels = placeLabels(system.components.map((c) => ({ name: c.name, pose: this.poseOf(c), layout: this.layouts.get(c.name)! })));
+        // names keep off the lines where they can
+        const lines = [...connections.values()].map((d) => d.path);
+        const labels = placeLabels(system.components.map((c) => ({ name: c.name, pose: this.poseOf(c), layout: this.layouts.get(c.name)! })), lines);
         const components = new Map<string, DrawnComponent>();
         for (const comp of system.components) components.set(comp.name, this.drawComponent(comp, labels.get(comp.name)!, this.drawnComponents.get(comp.name)));
         this.drawnComponents = components;
@@ -262,6 +265,11 @@ export class CanvasView {
 
     /** A connection's line: the one drawn before (`drawn`) with its points and class brought up to date. */
     private drawConnection(system: System, conn: Connection, drawn: DrawnConnection | undefined): DrawnConnection | null {
+        // while neither end moved, the line is as drawn (a drag moves few of the many lines)
+        const ends = [conn.from.component, conn.to.component].map((name) => this.byName.get(name));
+        const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
+        const inputs = [system, chosen, ...ends, ...ends.map((c) => c && this.poseOf(c))];
+        if (drawn && inputs.every((x, i) => x === drawn.inputs[i])) return drawn;
         const a = this.portPoint(system, conn.from);
         const b = this.portPoint(system, conn.to);
         if (!a || !b) return null;
@@ -274,20 +282,19 @@ export class CanvasView {
         });
         const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
         const nodeType = this.portOf(conn.from)?.node_type ?? this.portOf(conn.to)?.node_type;
-        const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
         const points = pts.map((p) => `${p.x},${p.y}`).join(' ');
         const cls = `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`;
         if (drawn) {
             if (drawn.points !== points) drawn.el.setAttribute('points', points);
             if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
-            return { el: drawn.el, points, cls };
+            return { el: drawn.el, points, cls, path: pts, inputs };
         }
         const el = s('polyline', {
             class: cls, points, stroke: nodeColour(nodeType),
             'data-from': `${conn.from.component}.${conn.from.port}`,
             'data-to': `${conn.to.component}.${conn.to.port}`,
         });
-        return { el, points, cls };
+        return { el, points, cls, path: pts, inputs };
     }
 
     private drawOverlay(system: System): SVGGElement {
@@ -321,15 +328,15 @@ export class CanvasView {
         const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`;
         const spot = `${label.x},${label.y},${label.anchor}`;
         if (drawn && drawn.comp === comp) {
-            const [body, text] = [drawn.el.querySelector('.component-body')!, drawn.el.querySelector('.component-label')!];
-            if (drawn.pose !== pose) body.setAttribute('transform', pose);
+            if (drawn.pose !== pose) drawn.body.setAttribute('transform', pose);
             if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
             if (drawn.spot !== spot) {
-                text.setAttribute('x', String(label.x));
-                text.setAttribute('y', String(label.y));
-                text.setAttribute('text-anchor', label.anchor);
+                drawn.text.setAttribute('x', String(label.x));
+                drawn.text.setAttribute('y', String(label.y));
+                drawn.text.setAttribute('text-anchor', label.anchor);
             }
-            return { ...drawn, pose, cls, spot };
+            [drawn.pose, drawn.cls, drawn.spot] = [pose, cls, spot];
+            return drawn;
         }
         const layout = this.layouts.get(comp.name)!;
         const body = s('g', { class: 'component-body', transform: pose },
@@ -338,7 +345,7 @@ export class CanvasView {
         const text = s('text', { class: 'component-label', x: label.x, y: label.y, 'text-anchor': label.anchor }, comp.name);
         const el = s('g', { class: cls, 'data-name': comp.name, 'data-type': comp.type },
             s('title', {}, `${comp.name} (${comp.type})`), body, text);
-        return { el, comp, pose, cls, spot };
+        return { el, body, text, comp, pose, cls, spot };
     }
 
     private drawPort(comp: Component, port: Port, at: Point): SVGElement {

@@ -18,7 +18,9 @@ export interface PanelActions {
 }
 
 export class ParameterPanel {
-    readonly element = h('aside', { class: 'parameter-panel', 'aria-label': 'Parameters' });
+    /** The panel's content, inside `element` (see .parameter-panel-body in styles.css). */
+    private readonly body = h('div', { class: 'parameter-panel-body' });
+    readonly element = h('aside', { class: 'parameter-panel', 'aria-label': 'Parameters' }, this.body);
     private signature = '';
     /** Values the server refused, kept with its message until changed. */
     private readonly refused = new Map<string, { value: string; message: string }>();
@@ -42,9 +44,9 @@ export class ParameterPanel {
         const signature = JSON.stringify([this.store.path, selected, comp ?? system.parameters, this.nameError, [...this.refused]]);
         if (signature === this.signature) return;
         this.signature = signature;
-        if (comp) this.element.replaceChildren(...this.componentView(comp));
-        else if (selected.length > 1) this.element.replaceChildren(...this.multiView(selected.length));
-        else this.element.replaceChildren(...this.systemView(system));
+        if (comp) this.body.replaceChildren(...this.componentView(comp));
+        else if (selected.length > 1) this.body.replaceChildren(...this.multiView(selected.length));
+        else this.body.replaceChildren(...this.systemView(system));
     }
 
     private run(work: Promise<void>, onError: (message: string) => void): void {

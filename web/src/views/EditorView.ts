@@ -177,34 +177,48 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const redoButton = h('button', { onclick: () => store.redo().catch(reportError), 'data-testid': 'redo', title: 'Redo (Ctrl+Y)' }, '↷ Redo');
     const saveButton = h('button', { class: 'primary', onclick: () => void save(), 'data-testid': 'save', title: 'Save (Ctrl+S)' }, 'Save');
     const dirtyMark = h('span', { class: 'dirty-mark', 'data-testid': 'dirty', title: 'Unsaved changes' });
+    // Runs on every store change (a click that selects, a move): only what changed is written,
+    // since rewriting the header and the breadcrumb makes the browser lay out the whole page,
+    // the canvas's drawing with it.
+    let headerKey = '';
+    let breadcrumbKey = '';
     const renderHeader = () => {
         const dirty = store.dirty;
-        dirtyMark.textContent = dirty ? '● unsaved' : '';
-        dirtyMark.dataset.dirty = String(dirty);
-        saveButton.textContent = isOwner() ? 'Save' : 'Save as my copy';
-        undoButton.disabled = !store.history.canUndo;
-        redoButton.disabled = !store.history.canRedo;
-        undoButton.title = store.history.undoLabel ? `Undo ${store.history.undoLabel} (Ctrl+Z)` : 'Undo (Ctrl+Z)';
-        redoButton.title = store.history.redoLabel ? `Redo ${store.history.redoLabel} (Ctrl+Y)` : 'Redo (Ctrl+Y)';
-        header.replaceChildren(
-            h('a', { href: '#/models', class: 'back' }, '← Models'),
-            h('h1', { class: 'model-name', 'data-testid': 'model-name' }, summary.name),
-            summary.is_example ? h('span', { class: 'badge' }, 'example') : '',
-            dirtyMark, saveButton, undoButton, redoButton,
-            h('button', { onclick: () => canvas.zoomBy(1.25), title: 'Zoom in' }, '+'),
-            h('button', { onclick: () => canvas.zoomBy(0.8), title: 'Zoom out' }, '−'),
-            h('button', { onclick: () => canvas.fit(), title: 'Show all' }, 'Fit'),
-            h('button', {
-                onclick: async () => {
-                    try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
-                },
-                title: 'Download the saved model as .hmf',
-            }, 'Download .hmf'));
+        const set = <T extends object, K extends keyof T>(target: T, key: K, value: T[K]) => { if (target[key] !== value) target[key] = value; };
+        set(dirtyMark, 'textContent', dirty ? '● unsaved' : '');
+        set(dirtyMark.dataset, 'dirty', String(dirty));
+        set(saveButton, 'textContent', isOwner() ? 'Save' : 'Save as my copy');
+        set(undoButton, 'disabled', !store.history.canUndo);
+        set(redoButton, 'disabled', !store.history.canRedo);
+        set(undoButton, 'title', store.history.undoLabel ? `Undo ${store.history.undoLabel} (Ctrl+Z)` : 'Undo (Ctrl+Z)');
+        set(redoButton, 'title', store.history.redoLabel ? `Redo ${store.history.redoLabel} (Ctrl+Y)` : 'Redo (Ctrl+Y)');
+        const nextHeaderKey = JSON.stringify([summary.name, summary.is_example]);
+        if (nextHeaderKey !== headerKey) {
+            headerKey = nextHeaderKey;
+            header.replaceChildren(
+                h('a', { href: '#/models', class: 'back' }, '← Models'),
+                h('h1', { class: 'model-name', 'data-testid': 'model-name' }, summary.name),
+                summary.is_example ? h('span', { class: 'badge' }, 'example') : '',
+                dirtyMark, saveButton, undoButton, redoButton,
+                h('button', { onclick: () => canvas.zoomBy(1.25), title: 'Zoom in' }, '+'),
+                h('button', { onclick: () => canvas.zoomBy(0.8), title: 'Zoom out' }, '−'),
+                h('button', { onclick: () => canvas.fit(), title: 'Show all' }, 'Fit'),
+                h('button', {
+                    onclick: async () => {
+                        try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
+                    },
+                    title: 'Download the saved model as .hmf',
+                }, 'Download .hmf'));
+        }
         const path = store.path;
-        breadcrumb.replaceChildren(
-            h('button', { class: 'crumb', onclick: () => store.enterSystem([]) }, store.model.system.name),
-            ...path.flatMap((name, i) => [h('span', { class: 'sep' }, '›'),
-                h('button', { class: 'crumb', onclick: () => store.enterSystem(path.slice(0, i + 1)) }, name)]));
+        const nextBreadcrumbKey = JSON.stringify([store.model.system.name, ...path]);
+        if (nextBreadcrumbKey !== breadcrumbKey) {
+            breadcrumbKey = nextBreadcrumbKey;
+            breadcrumb.replaceChildren(
+                h('button', { class: 'crumb', onclick: () => store.enterSystem([]) }, store.model.system.name),
+                ...path.flatMap((name, i) => [h('span', { class: 'sep' }, '›'),
+                    h('button', { class: 'crumb', onclick: () => store.enterSystem(path.slice(0, i + 1)) }, name)]));
+        }
     };
     store.subscribe(renderHeader);
     renderHeader();
