@@ -11,6 +11,7 @@
 #include "core/NodeTypes.h"
 #include "core/Parameter.h"
 #include "core/Port.h"
+#include "core/Status.h"
 #include "core/numerics/RandomStream.h"
 
 #include <map>
@@ -32,6 +33,7 @@ struct Message {
     std::string text;
     std::string tag;
     std::string source = {};   // model path of the component that reported it ("Sub$Comp")
+    StatusCode code = StatusCode::Ok;   // of an error, where the reporter gives one
 };
 
 class Component {

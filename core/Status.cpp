@@ -20,6 +20,7 @@ const char* statusCodeName(StatusCode code)
     case StatusCode::NotFound: return "not_found";
     case StatusCode::IllegalGrouping: return "illegal_grouping";
     case StatusCode::IoError: return "io_error";
+    case StatusCode::InvalidModel: return "invalid_model";
     }
     return "unknown";
 }

@@ -25,6 +25,7 @@ enum class StatusCode {
     NotFound,               // a component, port, system port, parameter or variable name that names nothing
     IllegalGrouping,        // components that cannot be grouped into a subsystem, or ungrouped
     IoError,                // a file that cannot be read, written or loaded
+    InvalidModel,           // model text that is not a model, or breaks a load limit
 };
 
 const char* statusCodeName(StatusCode code);

@@ -30,6 +30,15 @@ std::string LoadedModel::firstError() const
     return root ? std::string() : std::string("model could not be loaded");
 }
 
+Status LoadedModel::status() const
+{
+    for (const auto& m : messages)
+        if (m.type == MessageType::Error || m.type == MessageType::Fatal)
+            return {m.code == StatusCode::Ok ? StatusCode::InvalidModel : m.code, m.text, m.source};
+    if (!root) return {StatusCode::InvalidModel, "model could not be loaded"};
+    return Status::ok();
+}
+
 namespace {
 
 class Loader {
@@ -65,11 +74,14 @@ public:
     }
 
 private:
-    void message(MessageType type, const std::string& text)
+    void message(MessageType type, const std::string& text, StatusCode code = StatusCode::Ok)
     {
-        mMessages.push_back({type, mSource + ": " + text, {}});
+        mMessages.push_back({type, mSource + ": " + text, {}, {}, code});
     }
-    void error(const std::string& text) { message(MessageType::Error, text); }
+    void error(const std::string& text, StatusCode code = StatusCode::InvalidModel)
+    {
+        message(MessageType::Error, text, code);
+    }
     void warning(const std::string& text) { message(MessageType::Warning, text); }
 
     static bool parseBool(const pugi::xml_attribute& a, bool def)
@@ -142,7 +154,8 @@ private:
         std::unique_ptr<Component> comp = ComponentFactory::instance().create(type);
         if (!comp) {
             error("component '" + std::string(node.attribute("name").as_string()) + "' in system '" +
-                  sys.name() + "': unknown component type '" + originalType + "'");
+                      sys.name() + "': unknown component type '" + originalType + "'",
+                  StatusCode::UnknownComponentType);
             mFailed = true;
             return;
         }
@@ -350,7 +363,7 @@ LoadedModel loadHmfFile(const std::string& path, const LoadLimits& limits)
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         LoadedModel result;
-        result.messages.push_back({MessageType::Error, path + ": cannot open the file", {}});
+        result.messages.push_back({MessageType::Error, path + ": cannot open the file", {}, {}, StatusCode::IoError});
         return result;
     }
     std::stringstream ss;

@@ -13,6 +13,9 @@ struct LoadedModel {
     std::vector<Message> messages;   // errors, warnings, info produced while loading
     bool hasErrors() const;
     std::string firstError() const;
+    // Ok, or the first error: unknown_component_type for a type no library has, else
+    // invalid_model (not a model file, a broken element or connection, a load limit).
+    Status status() const;
 };
 
 // Bounds on what one model file may contain. Loading walks subsystems recursively, so the

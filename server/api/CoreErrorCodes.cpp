@@ -10,6 +10,7 @@ const char* protocolErrorCode(StatusCode code)
     case StatusCode::IllegalGrouping: return "illegal_grouping";
     case StatusCode::InvalidParameter:
     case StatusCode::UnknownParameter: return "invalid_parameter";
+    case StatusCode::InvalidModel:
     case StatusCode::UnconnectedPort:
     case StatusCode::UndefinedKind:
     case StatusCode::AlgebraicLoop: return "invalid_model";

@@ -1,5 +1,6 @@
 // /models: list, create (upload .hmf, JSON, duplicate), read (.hmf or JSON), update, delete.
 #include "server/api/ApiSupport.h"
+#include "server/api/CoreErrorCodes.h"
 
 #include "server/auth/AccessPolicy.h"
 #include "server/edit/ModelJson.h"
@@ -20,9 +21,8 @@ namespace {
 std::unique_ptr<System> checkedModel(Services& s, const std::string& hmf, Response& error)
 {
     LoadedModel loaded = loadUntrustedModel(hmf, s.options.limits.model, "", "uploaded model");
-    if (loaded.hasErrors() || !loaded.root) {
-        error = apiError(http::status::bad_request, "invalid_model",
-                         loaded.firstError().empty() ? "the model does not load" : loaded.firstError());
+    if (const Status status = loaded.status(); !status) {
+        error = apiError(http::status::bad_request, protocolErrorCode(status.code()), status.message());
         return nullptr;
     }
     if (const std::string problem = firstParameterProblem(*loaded.root); !problem.empty()) {

@@ -1,5 +1,7 @@
 #include "server/jobs/PreparedJob.h"
 
+#include "server/api/CoreErrorCodes.h"
+
 #include "core/ParameterEvaluator.h"
 #include "core/hmf/HmfLoader.h"
 
@@ -82,8 +84,8 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
     }
     const std::string source = request.modelId ? "model " + std::to_string(*request.modelId) : "model";
     LoadedModel loaded = loadUntrustedModel(request.hmf, limits.model, request.modelDirectory, source);
-    if (!loaded.root || loaded.hasErrors()) {
-        error = {"invalid_model", loaded.firstError().empty() ? "the model does not load" : loaded.firstError()};
+    if (const Status status = loaded.status(); !status) {
+        error = {protocolErrorCode(status.code()), status.message()};
         return false;
     }
     System& root = *loaded.root;

@@ -18,7 +18,7 @@ struct PreparedJob {
 };
 
 struct PrepareError {
-    std::string code;      // invalid_model | invalid_parameter | limit_exceeded | bad_request
+    std::string code;      // a protocol error code: invalid_model, unknown_component_type, invalid_parameter, ...
     std::string message;
 };
 

@@ -156,6 +156,12 @@ TEST_F(ServerApi, BadRequestsGetClearErrors)
     r = alice.request(http::verb::post, "/api/v1/models?name=broken", "<hopsanmodelfile><system", "application/xml");
     EXPECT_EQ(r.status, 400);
     EXPECT_EQ(r.json()["error"]["code"], "invalid_model");
+    r = alice.request(http::verb::post, "/api/v1/models?name=teapot",
+                      R"(<hopsanmodelfile><system name="Root"><objects><component typename="HydraulicTeapot" )"
+                      R"(name="Pot"/></objects></system></hopsanmodelfile>)",
+                      "application/xml");
+    EXPECT_EQ(r.status, 400);
+    EXPECT_EQ(r.json()["error"]["code"], "unknown_component_type") << r.body;
     r = alice.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 1e9}, {"step", 1e-6}});
     EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded") << r.body;
     r = alice.request(http::verb::post, "/api/v1/models", std::string(25u << 20, 'x'), "application/xml");

@@ -80,7 +80,9 @@ TEST_P(MultiThreading, ThreadTrialEitherWayGivesTheSingleThreadedLogs)
             ASSERT_EQ(single[i], trial[i]) << "column " << i << (threadsWin ? ", threads kept" : ", threads gave up");
         // Long enough runs finish where the trial said (a run shorter than its probe and
         // trial windows ends on the threads whatever the outcome).
-        if (totalSteps > 1000) EXPECT_EQ(used, threadsWin ? 2u : 1u);
+        if (totalSteps > 1000) {
+            EXPECT_EQ(used, threadsWin ? 2u : 1u);
+        }
     }
     // Automatic: whatever it picks on this machine, the logs are the same.
     EXPECT_EQ(simulateWith(path, 0u), single);
