@@ -51,20 +51,6 @@ std::string valueString(const json& value)
     throw std::invalid_argument("value: expected string or number");
 }
 
-// The component part of each end of a preserved connection key "a.pa|b.pb".
-std::pair<std::string, std::string> keyComponents(const std::string& key)
-{
-    const preserved::ConnectionKeyParts parts = preserved::parseConnectionKey(key);
-    return {parts.a, parts.b};
-}
-
-std::string renameKeyEnd(const std::string& end, const std::string& oldName, const std::string& newName)
-{
-    const std::size_t dot = end.find('.');
-    if (end.substr(0, dot) != oldName) return end;
-    return newName + (dot == std::string::npos ? std::string() : end.substr(dot));
-}
-
 // Whether comp.port names a port visible in `system`; a system port is named twice.
 bool portExists(const System& system, const std::string& comp, const std::string& port)
 {
@@ -233,8 +219,8 @@ Result EditSession::componentRemove(System& system, const json& request)
     // Drop what was kept for its connections and aliases, so a later component of the same
     // name does not inherit them.
     for (auto it = system.preservedConnectionXml.begin(); it != system.preservedConnectionXml.end();) {
-        auto [a, b] = keyComponents(it->first);
-        it = (a == name || b == name) ? system.preservedConnectionXml.erase(it) : std::next(it);
+        const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(it->first);
+        it = (k.a == name || k.b == name) ? system.preservedConnectionXml.erase(it) : std::next(it);
     }
     for (auto it = system.aliases.begin(); it != system.aliases.end();)
         it = it->second.rfind(name + "#", 0) == 0 ? system.aliases.erase(it) : std::next(it);
@@ -251,12 +237,10 @@ Result EditSession::componentRename(System& system, const json& request)
     if (actual != name) {
         // Connection extras and aliases are keyed by component name.
         std::map<std::string, std::string> rekeyed;
+        auto renamedEnd = [&](const std::string& end) { return end == name ? actual : end; };
         for (auto& [key, xml] : system.preservedConnectionXml) {
-            const std::size_t bar = key.find('|');
-            std::string a = renameKeyEnd(key.substr(0, bar), name, actual);
-            std::string b = bar == std::string::npos ? std::string()
-                                                     : "|" + renameKeyEnd(key.substr(bar + 1), name, actual);
-            rekeyed[a + b] = std::move(xml);
+            const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(key);
+            rekeyed[preserved::connectionKey(renamedEnd(k.a), k.pa, renamedEnd(k.b), k.pb)] = std::move(xml);
         }
         system.preservedConnectionXml = std::move(rekeyed);
         for (auto& [alias, full] : system.aliases)
