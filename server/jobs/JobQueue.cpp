@@ -3,8 +3,6 @@
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/PreparedJob.h"
 
-#include "core/Simulation.h"
-
 #include <algorithm>
 
 namespace tlmhub::server {
@@ -132,9 +130,6 @@ void JobQueue::workerLoop()
         std::int64_t jobId = 0, ownerId = 0;
         mWake.wait(lock, [&] { return mStopping || pickNext(jobId, ownerId); });
         if (mStopping) return;
-        // A job alone on the server may use the cores (where that is faster); otherwise the
-        // workers already do, one job each.
-        const bool alone = mActive.empty() && mQueued.empty();
         auto control = std::make_shared<JobControl>();
         const bool marked = mStore.markRunning(jobId);
         if (marked) mActive.emplace(jobId, control);
@@ -143,7 +138,11 @@ void JobQueue::workerLoop()
         if (marked) {
             const auto request = mStore.request(jobId);
             if (request) {
-                mRunner.run(jobId, *request, *control, alone ? RunOptions::autoThreads : 1);
+                // One thread per job: the workers already use the cores. (Automatic threads
+                // for a job alone on the server made a 15-million-step job under ASan exceed
+                // its 300 s limit when other processes took a core: the trial's choice went
+                // stale and the spinning barrier waited on a descheduled thread.)
+                mRunner.run(jobId, *request, *control, 1);
             } else {
                 mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
                 mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");

@@ -1,7 +1,6 @@
 #pragma once
 // The job queue: validates and stores submitted jobs, and runs them on a pool of worker
-// threads (one job per thread; a job that starts with no other job queued or running may
-// use more cores, RunOptions::autoThreads, the others run single-threaded).
+// threads (one job per thread, each single-threaded).
 //
 // Fairness: each user has a FIFO of queued jobs, and the workers serve users round robin,
 // skipping users who already run JobLimits::maxRunningPerUser jobs. A user with many queued
