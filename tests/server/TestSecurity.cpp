@@ -361,9 +361,13 @@ TEST(SecurityBacklog, AClientThatNeverReadsIsDisconnectedAndItsQueueFreed)
     for (int i = 0; i < 1000 && !ec; ++i)
         ws.write(net::buffer(nlohmann::json{{"id", i + 2}, {"type", "model.get"}}.dump()), ec);
     nlohmann::json stats;
+    // The counter goes up when the close starts; the queue and the socket go a moment later
+    // (under load, after the next stats read): wait for all three.
     for (int i = 0; i < 100; ++i) {
         stats = admin.get("/api/v1/stats").json();
-        if (stats["websockets_closed_for_backlog"] == 1) break;
+        if (stats["websockets_closed_for_backlog"] == 1 && stats["websocket_queued_bytes"] == 0 &&
+            stats["websockets"] == 0)
+            break;
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     EXPECT_EQ(stats["websockets_closed_for_backlog"], 1) << stats.dump();
