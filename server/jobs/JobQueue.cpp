@@ -138,11 +138,7 @@ void JobQueue::workerLoop()
         if (marked) {
             const auto request = mStore.request(jobId);
             if (request) {
-                // One thread per job: the workers already use the cores. (Automatic threads
-                // for a job alone on the server made a 15-million-step job under ASan exceed
-                // its 300 s limit when other processes took a core: the trial's choice went
-                // stale and the spinning barrier waited on a descheduled thread.)
-                mRunner.run(jobId, *request, *control, 1);
+                mRunner.run(jobId, *request, *control);
             } else {
                 mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
                 mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");

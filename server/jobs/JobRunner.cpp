@@ -108,7 +108,7 @@ JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string
     return state;
 }
 
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads)
+JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -151,8 +151,11 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
                 ok = false;
             } else {
                 state.live = &live;
+                // One thread per job: the workers already use the cores. (Automatic threads
+                // for a job alone on the server made a 15-million-step job under ASan exceed
+                // its 300 s limit when other processes took a core: the trial's choice went
+                // stale and the spinning barrier waited on a descheduled thread.)
                 RunOptions options;
-                options.threads = threads;
                 options.progressInterval = kProgressInterval;
                 options.progress = [&state](std::size_t taken, std::size_t total) {
                     onProgress(&state, taken, total);

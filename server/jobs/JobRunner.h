@@ -40,8 +40,7 @@ public:
     JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
 
     // The job must already be marked running in the store. Returns its final state.
-    // `threads` as RunOptions::threads.
-    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads);
+    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control);
 
     // Steps between two progress callbacks: a clock read per 256 steps costs well under 1%
     // even for the smallest models, and bounds how late a wall-time limit is noticed.
