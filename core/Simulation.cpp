@@ -69,6 +69,14 @@ Result<Simulation> compile(System& root, const SimulationSettings& settings)
     return Simulation(root, start, stop, timestep);
 }
 
+Result<Simulation> compile(std::unique_ptr<System> root, const SimulationSettings& settings)
+{
+    if (!root) return Status{StatusCode::InvalidModel, "no model to compile"};
+    Result<Simulation> compiled = compile(*root, settings);
+    if (compiled) compiled->mOwnedRoot = std::move(root);
+    return compiled;
+}
+
 Simulation::Simulation(System& root, double start, double stop, double timestep)
     : mRoot(&root), mStartTime(start), mStopTime(stop), mTimestep(timestep),
       mTotalSteps(roundSteps((stop - start) / timestep)), mNodes(root.allNodes())
@@ -84,11 +92,13 @@ Simulation& Simulation::operator=(Simulation&& other) noexcept
     if (mRoot && (mState == SimulationState::Initialised || mState == SimulationState::Paused))
         mRoot->finalize();
     mRoot = std::exchange(other.mRoot, nullptr);
+    mOwnedRoot = std::move(other.mOwnedRoot);
     mStartTime = other.mStartTime;
     mStopTime = other.mStopTime;
     mTimestep = other.mTimestep;
     mState = other.mState;
     mTotalSteps = other.mTotalSteps;
+    mParametersEvaluated = other.mParametersEvaluated;
     mNodes = std::move(other.mNodes);
     mStartValues = std::move(other.mStartValues);
     return *this;
@@ -137,7 +147,10 @@ Status Simulation::initialise()
         return {StatusCode::InvalidState, std::string("cannot initialise a simulation that is ") +
                                               simulationStateName(mState) + " (reset it first)"};
     mRoot->messages().clear();
-    if (Status started = mRoot->initialize(mStartTime, mStopTime); !started) {
+    const auto evaluation = mParametersEvaluated ? System::ParameterEvaluation::AlreadyEvaluated
+                                                 : System::ParameterEvaluation::Evaluate;
+    mParametersEvaluated = true;
+    if (Status started = mRoot->initialize(mStartTime, mStopTime, evaluation); !started) {
         finish(SimulationState::Failed);
         return started;
     }
@@ -146,6 +159,15 @@ Status Simulation::initialise()
 }
 
 Status Simulation::run(double until, const RunOptions& options)
+{
+    // Steps are counted from the start, so a run continued in pieces takes exactly the steps
+    // of one whole run.
+    const std::size_t target = std::min(roundSteps((until - mStartTime) / mTimestep), mTotalSteps);
+    const std::size_t taken = takenSteps();
+    return runSteps(target > taken ? target - taken : 0, options);
+}
+
+Status Simulation::runSteps(std::size_t requested, const RunOptions& options)
 {
     switch (mState) {
     case SimulationState::Compiled: {
@@ -160,10 +182,8 @@ Status Simulation::run(double until, const RunOptions& options)
                 std::string("cannot run a simulation that is ") + simulationStateName(mState) +
                     " (reset it first)"};
     }
-    // Steps are counted from the start, so a run continued in pieces takes exactly the steps
-    // of one whole run.
-    const std::size_t target = std::min(roundSteps((until - mStartTime) / mTimestep), mTotalSteps);
-    const std::size_t steps = target > mRoot->takenSteps() ? target - mRoot->takenSteps() : 0;
+    const std::size_t left = mTotalSteps > mRoot->takenSteps() ? mTotalSteps - mRoot->takenSteps() : 0;
+    const std::size_t steps = std::min(requested, left);
 
     ProgressRelay relay{&options, mRoot, mTotalSteps};
     if (options.progress && options.progressInterval)
@@ -219,6 +239,7 @@ Status Simulation::setParameter(const std::string& path, const std::string& valu
         ParameterEvaluator::evaluate(*component, *parameter);
         return {StatusCode::InvalidParameter, "parameter '" + path + "': " + evaluated.message(), path};
     }
+    mParametersEvaluated = false;   // its dependents are evaluated again at the next start
     return Status::ok();
 }
 

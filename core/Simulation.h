@@ -8,7 +8,7 @@
 //   sim->run(2.0, {.threads = 2});
 //   ResultView results = sim->results();
 //   sim->setParameter("Mass.m", "20");
-//   sim->reset();                    // back to the start, parameters evaluated again
+//   sim->reset();                    // back to the start; the new value and what depends on it apply
 //   sim->run();
 //
 // States: compiled -> (first run initialises) initialised -> running -> paused (stopped
@@ -16,15 +16,17 @@
 // reset() returns to compiled from any state but running. Log storage is allocated when a
 // run starts from compiled, not at compile.
 //
-// The System stays the edit graph and holds what the step loop walks (run lists, node block,
-// log schedule and storage); it must outlive the Simulation and not be edited while one
-// exists.
+// The System is the edit graph and holds what the step loop walks (run lists, node block,
+// log schedule and storage). compile(System&) borrows it: it must outlive the Simulation and
+// not be edited while one exists. compile(std::unique_ptr<System>) hands it over: the
+// Simulation then stands alone (a server holds queued jobs this way).
 #include "core/ResultView.h"
 #include "core/Status.h"
 #include "core/System.h"
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -69,6 +71,9 @@ public:
     // Simulates from the current time up to `until` (at most the stop time).
     Status run(double until, const RunOptions& options = {});
     Status run(const RunOptions& options = {}) { return run(mStopTime, options); }
+    // The next `steps` steps (fewer if the stop time comes first); run in slices this way, a
+    // caller can change the options between them.
+    Status runSteps(std::size_t steps, const RunOptions& options = {});
 
     // Back to the state right after compile (node values as before the first run).
     Status reset();
@@ -100,14 +105,18 @@ public:
 
 private:
     friend Result<Simulation> compile(System& root, const SimulationSettings& settings);
+    friend Result<Simulation> compile(std::unique_ptr<System> root, const SimulationSettings& settings);
     Simulation(System& root, double start, double stop, double timestep);
     Status stopped(const std::string& fallbackMessage) const;
     void finish(SimulationState state);
 
     System* mRoot = nullptr;
+    std::unique_ptr<System> mOwnedRoot;   // set when compile took the System over
     double mStartTime = 0.0, mStopTime = 0.0, mTimestep = 0.0;
     SimulationState mState = SimulationState::Compiled;
     std::size_t mTotalSteps = 0;
+    // compile() evaluated every parameter; a setParameter() since asks for it again.
+    bool mParametersEvaluated = true;
     // Node values from before the first run, for reset().
     std::vector<Node*> mNodes;
     std::vector<double> mStartValues;
@@ -115,5 +124,7 @@ private:
 
 // Checks the model (structure, connections, every parameter) and applies the settings.
 Result<Simulation> compile(System& root, const SimulationSettings& settings = {});
+// The same, and the Simulation owns the System from then on.
+Result<Simulation> compile(std::unique_ptr<System> root, const SimulationSettings& settings = {});
 
 } // namespace tlmhub

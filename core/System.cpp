@@ -575,6 +575,12 @@ void System::setProgressCallback(ProgressCallback cb, void* user, std::size_t in
 
 Status System::check()
 {
+    if (Status structure = checkStructure(); !structure) return structure;
+    return evaluateParameters();
+}
+
+Status System::checkStructure()
+{
     for (Component* c : componentsByName()) {
         if (c->kind() == CqsKind::Undefined) {
             return {StatusCode::UndefinedKind,
@@ -620,24 +626,10 @@ Status System::check()
                         c->modelPath()};
             }
         }
-        for (const auto& param : c->parameters().all()) {
-            const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
-            if (!evaluated)
-                return {StatusCode::InvalidParameter,
-                        "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
-                        evaluated.path()};
-        }
         if (c->isSystem()) {
-            Status sub = static_cast<System*>(c)->check();
+            Status sub = static_cast<System*>(c)->checkStructure();
             if (!sub) return sub;
         }
-    }
-    for (const auto& param : parameters().all()) {
-        const Status evaluated = ParameterEvaluator::evaluate(*this, *param);
-        if (!evaluated)
-            return {StatusCode::InvalidParameter,
-                    "system parameter '" + param->name + "' of '" + name() + "': " + evaluated.message(),
-                    evaluated.path()};
     }
     return Status::ok();
 }
@@ -741,7 +733,8 @@ Status System::sortList(std::vector<Component*>& list, bool failOnLoop)
     return Status::ok();
 }
 
-Status System::evaluateAllParameters()
+// System parameters first: the components' values may refer to them.
+Status System::evaluateParameters()
 {
     for (const auto& param : parameters().all()) {
         const Status evaluated = ParameterEvaluator::evaluate(*this, *param);
@@ -750,21 +743,17 @@ Status System::evaluateAllParameters()
                     "system parameter '" + param->name + "' of '" + name() + "': " + evaluated.message(),
                     evaluated.path()};
     }
-    for (auto* list : {&mS, &mC, &mQ, &mDisabled}) {
-        for (Component* c : *list) {
-            if (c->isSystem()) {
-                auto* sub = static_cast<System*>(c);
-                sub->buildRunLists();
-                if (Status evaluated = sub->evaluateAllParameters(); !evaluated) return evaluated;
-                continue;
-            }
-            for (const auto& param : c->parameters().all()) {
-                const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
-                if (!evaluated)
-                    return {StatusCode::InvalidParameter,
-                            "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
-                            evaluated.path()};
-            }
+    for (Component* c : mOrder) {
+        if (c->isSystem()) {
+            if (Status evaluated = static_cast<System*>(c)->evaluateParameters(); !evaluated) return evaluated;
+            continue;
+        }
+        for (const auto& param : c->parameters().all()) {
+            const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
+            if (!evaluated)
+                return {StatusCode::InvalidParameter,
+                        "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
+                        evaluated.path()};
         }
     }
     return Status::ok();
@@ -987,7 +976,7 @@ std::vector<Node*> System::allNodes()
     return nodes;
 }
 
-Status System::initialize(double t0, double t1)
+Status System::initialize(double t0, double t1, ParameterEvaluation evaluation)
 {
     mStopRequested.store(false);
     if (isRoot()) {
@@ -1000,10 +989,10 @@ Status System::initialize(double t0, double t1)
         mRandom.reseed(1);
         mDrawsRandomNumbers = false;
     }
-    return initializeInternal(t0, t1);
+    return initializeInternal(t0, t1, evaluation);
 }
 
-Status System::initializeInternal(double t0, double t1)
+Status System::initializeInternal(double t0, double t1, ParameterEvaluation evaluation)
 {
     buildRunLists();
     System* root = rootSystem();
@@ -1030,9 +1019,11 @@ Status System::initializeInternal(double t0, double t1)
     sortList(mC, false);
     sortList(mQ, false);
     if (isRoot()) {
-        if (const Status evaluated = evaluateAllParameters(); !evaluated) {
-            root->postMessage({MessageType::Error, evaluated.message(), "Parameter", evaluated.path()});
-            return evaluated;
+        if (evaluation == ParameterEvaluation::Evaluate) {
+            if (const Status evaluated = evaluateParameters(); !evaluated) {
+                root->postMessage({MessageType::Error, evaluated.message(), "Parameter", evaluated.path()});
+                return evaluated;
+            }
         }
         loadStartValues();
     }
@@ -1043,7 +1034,7 @@ Status System::initializeInternal(double t0, double t1)
                 auto* sub = static_cast<System*>(c);
                 sub->requestedLogSamples = requestedLogSamples;
                 sub->logStartTime = logStartTime;
-                if (Status started = sub->initializeInternal(t0, t1); !started) {
+                if (Status started = sub->initializeInternal(t0, t1, evaluation); !started) {
                     root->requestStop();
                     return started;
                 }

@@ -85,12 +85,16 @@ public:
     void setTimestep(double ts) override;
 
     // ---- running ----
-    // Structure and parameter checks before a run: the first problem found, with its code
-    // and model path.
+    // Structure checks before a run, then every parameter evaluated: the first problem
+    // found, with its code and model path.
     Status check();
     // Root: initialises every component for a run from startTime; a component that fails
     // (stopSimulation in its initialize()) gives init_failed with its reason and path.
-    Status initialize(double startTime, double stopTime);
+    // AlreadyEvaluated skips evaluating the parameters again: for a caller that ran check()
+    // and changed no parameter since (Simulation does).
+    enum class ParameterEvaluation { Evaluate, AlreadyEvaluated };
+    Status initialize(double startTime, double stopTime,
+                      ParameterEvaluation evaluation = ParameterEvaluation::Evaluate);
     bool simulate(double stopTime);   // root: runs until stopTime
     // The same steps with the root's S, C and Q lists split over `threads` threads (S
     // components by signal cluster, see MultiThreadedSimulation.cpp); 0 = automatic: one per
@@ -167,7 +171,8 @@ private:
     void buildRunLists();
     Status sortList(std::vector<Component*>& list, bool failOnLoop);
     void computeSortHintsOfSystemPorts();
-    Status evaluateAllParameters();
+    Status checkStructure();
+    Status evaluateParameters();
     void loadStartValues();
     void computeLogSchedule(double t0, double t1);
     void allocateLogStorage();
@@ -187,7 +192,7 @@ private:
     bool simulateStepsAutoThreaded(std::size_t steps);
     double timeSingleThreadedSteps(std::size_t steps, bool& ok);
     bool runThreaded(std::size_t steps, unsigned threads, const ThreadTrial* trial, std::size_t& taken);
-    Status initializeInternal(double startTime, double stopTime);
+    Status initializeInternal(double startTime, double stopTime, ParameterEvaluation evaluation);
     Status initFailure(const Component& c) const;
     void propagateTimestep();
     Result<Port*> resolvePort(const std::string& compName, const std::string& portName) const;

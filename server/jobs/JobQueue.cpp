@@ -44,15 +44,15 @@ void JobQueue::shutdown()
 
 JobQueue::Submitted JobQueue::submit(const JobRequest& request)
 {
-    PreparedJob prepared;
+    auto prepared = std::make_unique<PreparedJob>();
     PrepareError error;
-    if (!prepareJob(request, mLimits, prepared, error)) return {std::nullopt, error.code, error.message};
+    if (!prepareJob(request, mLimits, *prepared, error)) return {std::nullopt, error.code, error.message};
     JobInfo resolved;
-    resolved.start = prepared.start;
-    resolved.step = prepared.step;
-    resolved.stop = prepared.stop;
-    resolved.logSamples = prepared.logSamples;
-    resolved.steps = prepared.steps;
+    resolved.start = prepared->start;
+    resolved.step = prepared->step;
+    resolved.stop = prepared->stop;
+    resolved.logSamples = prepared->logSamples;
+    resolved.steps = prepared->steps;
 
     const std::size_t stored = mStore.storedBytes(request.ownerId);
     if (stored >= mLimits.maxStoredBytesPerUser) {
@@ -71,6 +71,7 @@ JobQueue::Submitted JobQueue::submit(const JobRequest& request)
                     std::to_string(mLimits.maxQueuedPerUser)};
     }
     const std::int64_t id = mStore.create(request, resolved);
+    if (mCompiled.size() < kMaxCompiledQueued) mCompiled.emplace(id, std::move(prepared));
     enqueue(request.ownerId, id);
     lock.unlock();
     mWake.notify_all();
@@ -81,6 +82,7 @@ bool JobQueue::cancel(std::int64_t jobId)
 {
     std::unique_lock lock(mMutex);
     if (removeQueued(jobId)) {
+        mCompiled.erase(jobId);
         mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr);
         lock.unlock();
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
@@ -131,14 +133,22 @@ void JobQueue::workerLoop()
         mWake.wait(lock, [&] { return mStopping || pickNext(jobId, ownerId); });
         if (mStopping) return;
         auto control = std::make_shared<JobControl>();
+        std::unique_ptr<PreparedJob> compiled;
+        if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
+            compiled = std::move(it->second);
+            mCompiled.erase(it);
+        }
         const bool marked = mStore.markRunning(jobId);
         if (marked) mActive.emplace(jobId, control);
         lock.unlock();
 
         if (marked) {
-            const auto request = mStore.request(jobId);
-            if (request) {
-                mRunner.run(jobId, *request, *control);
+            const auto alone = [this, jobId] { return isAlone(jobId); };
+            const auto request = compiled ? std::nullopt : mStore.request(jobId);
+            if (compiled) {
+                mRunner.run(jobId, *compiled, *control, alone);
+            } else if (request) {
+                mRunner.run(jobId, *request, *control, alone);
             } else {
                 mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
                 mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");
@@ -151,6 +161,18 @@ void JobQueue::workerLoop()
         mJobEnded.notify_all();
         mWake.notify_all();
     }
+}
+
+std::size_t JobQueue::compiledQueued()
+{
+    std::lock_guard lock(mMutex);
+    return mCompiled.size();
+}
+
+bool JobQueue::isAlone(std::int64_t jobId)
+{
+    std::lock_guard lock(mMutex);
+    return mQueued.empty() && mActive.size() == 1 && mActive.count(jobId) == 1;
 }
 
 bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId)

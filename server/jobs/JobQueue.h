@@ -1,6 +1,7 @@
 #pragma once
-// The job queue: validates and stores submitted jobs, and runs them on a pool of worker
-// threads (one job per thread, each single-threaded).
+// The job queue: compiles and stores submitted jobs, and runs them on a pool of worker
+// threads (one job per thread; a job alone on the server may use more threads, see
+// JobRunner::run).
 //
 // Fairness: each user has a FIFO of queued jobs, and the workers serve users round robin,
 // skipping users who already run JobLimits::maxRunningPerUser jobs. A user with many queued
@@ -8,6 +9,7 @@
 #include "server/jobs/Job.h"
 #include "server/jobs/JobRunner.h"
 #include "server/jobs/JobStore.h"
+#include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
 
 #include <condition_variable>
@@ -39,8 +41,13 @@ public:
         std::optional<std::int64_t> id;
         std::string code, message;   // limit_exceeded, invalid_model, invalid_parameter, bad_request
     };
-    // Validates (loads the model, applies parameters, checks limits) before queuing.
+    // Compiles the job (loads the model, applies parameters, checks limits) before queuing;
+    // the worker runs that compiled job.
     Submitted submit(const JobRequest& request);
+    // Queued jobs held compiled in memory (the others are compiled again when they run).
+    std::size_t compiledQueued();
+    // Beyond this many, a queued job keeps only its stored request: memory stays bounded.
+    static constexpr std::size_t kMaxCompiledQueued = 256;
 
     // Queued: cancelled at once. Running: stopped, and the call waits (a few seconds at most)
     // until the job has reached its final state. False if the job is not queued or running.
@@ -62,6 +69,7 @@ private:
     void enqueue(std::int64_t ownerId, std::int64_t jobId);   // caller holds mMutex
     bool removeQueued(std::int64_t jobId);                      // caller holds mMutex
     bool isQueuedInMemory(std::int64_t jobId) const;            // caller holds mMutex
+    bool isAlone(std::int64_t jobId);   // no other job queued or running
 
     JobStore& mStore;
     StreamHub& mHub;
@@ -76,6 +84,7 @@ private:
     std::deque<std::int64_t> mRotation;                        // owners with queued jobs, next first
     std::map<std::int64_t, int> mRunningPerOwner;
     std::map<std::int64_t, std::shared_ptr<JobControl>> mActive;   // running job -> control
+    std::map<std::int64_t, std::unique_ptr<PreparedJob>> mCompiled;   // queued job -> compiled
     std::vector<std::thread> mWorkers;
     bool mStarted = false;
     bool mStopping = false;

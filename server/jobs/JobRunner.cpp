@@ -3,8 +3,8 @@
 #include "core/ResultTable.h"
 #include "core/Simulation.h"
 #include "server/jobs/FrameSource.h"
-#include "server/jobs/PreparedJob.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace tlmhub::server {
@@ -108,22 +108,46 @@ JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string
     return state;
 }
 
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control)
+bool JobRunner::runInSlices(Simulation& sim, RunOptions options, const std::function<bool()>& alone)
+{
+    std::size_t sliceSteps = 4096;
+    while (sim.state() != SimulationState::Finished) {
+        options.threads = alone() ? RunOptions::autoThreads : 1;
+        const auto sliceStart = Clock::now();
+        if (!sim.runSteps(sliceSteps, options)) return false;
+        // The next slice lasts about kThreadSlicePeriod at the speed of this one.
+        const double seconds = std::chrono::duration<double>(Clock::now() - sliceStart).count();
+        const double scale = seconds > 0.0 ? kThreadSlicePeriod / seconds : 4.0;
+        sliceSteps = static_cast<std::size_t>(
+            std::clamp(static_cast<double>(sliceSteps) * std::min(scale, 4.0), 256.0, 1e9));
+    }
+    return true;
+}
+
+JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control,
+                        const std::function<bool()>& alone)
+{
+    try {
+        PreparedJob job;
+        PrepareError prepareError;
+        if (!prepareJob(request, mLimits, job, prepareError))
+            return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
+        return run(jobId, job, control, alone);
+    } catch (const std::exception& e) {
+        return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
+    }
+}
+
+JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control,
+                        const std::function<bool()>& alone)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
                                         std::chrono::duration<double>(mLimits.maxWallSeconds));
     try {
-        PreparedJob job;
-        PrepareError prepareError;
-        if (!prepareJob(request, mLimits, job, prepareError)) {
-            return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
-        }
-        System& root = *job.root;
-        Result<Simulation> compiled = compile(root, {job.start, job.stop, job.step, job.logSamples});
-        if (!compiled) return finish(jobId, JobState::Failed, compiled.status().message(), 0, nullptr);
-        Simulation& sim = *compiled;
-        // Detached before `job` (and the System) is destroyed, also when something throws.
+        Simulation& sim = *job.simulation;
+        System& root = sim.system();
+        // Detached when the run ends, also when something throws.
         struct Detach {
             JobControl& control;
             ~Detach() { control.detach(); }
@@ -151,16 +175,12 @@ JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobContro
                 ok = false;
             } else {
                 state.live = &live;
-                // One thread per job: the workers already use the cores. (Automatic threads
-                // for a job alone on the server made a 15-million-step job under ASan exceed
-                // its 300 s limit when other processes took a core: the trial's choice went
-                // stale and the spinning barrier waited on a descheduled thread.)
                 RunOptions options;
                 options.progressInterval = kProgressInterval;
                 options.progress = [&state](std::size_t taken, std::size_t total) {
                     onProgress(&state, taken, total);
                 };
-                ok = sim.run(options).isOk();
+                ok = runInSlices(sim, options, alone);
             }
         }
         control.detach();

@@ -128,13 +128,12 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
                                        " is above the limit of " + std::to_string(limits.maxLogSamples)};
         return false;
     }
-    root.desiredTimestep = out.step;
-    root.requestedLogSamples = out.logSamples;
-    if (const Status checked = root.check(); !checked) {
-        error = {"invalid_model", checked.message()};
+    Result<Simulation> compiled = compile(std::move(loaded.root), {out.start, out.stop, out.step, out.logSamples});
+    if (!compiled) {
+        error = {protocolErrorCode(compiled.status().code()), compiled.status().message()};
         return false;
     }
-    out.root = std::move(loaded.root);
+    out.simulation.emplace(std::move(*compiled));
     return true;
 }
 

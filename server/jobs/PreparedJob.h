@@ -1,17 +1,19 @@
 #pragma once
-// Turning a JobRequest into a model ready to initialize: load the .hmf, apply the parameter
-// overrides, resolve the settings and check the limits. Done once at submit (to refuse a bad
-// job with a precise error) and again by the runner (queued jobs keep only their request).
+// Turning a JobRequest into a compiled simulation: load the .hmf, apply the parameter
+// overrides, resolve the settings, check the limits and compile. Done once, at submission;
+// the queue keeps the compiled job for its worker. Only a job queued before a restart (the
+// store keeps its request, not the compiled model) is prepared again by the runner.
+#include "core/Simulation.h"
 #include "core/System.h"
 #include "server/jobs/Job.h"
 
-#include <memory>
+#include <optional>
 #include <string>
 
 namespace tlmhub::server {
 
 struct PreparedJob {
-    std::unique_ptr<System> root;
+    std::optional<Simulation> simulation;         // owns the loaded model
     double start = 0.0, step = 0.0, stop = 0.0;   // s
     std::size_t logSamples = 0;
     std::uint64_t steps = 0;                      // ceil((stop - start) / step)

@@ -151,6 +151,39 @@ TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
     EXPECT_EQ(result->toCsv(), directRun(readFile(kExample)).toCsv());
 }
 
+TEST_F(Jobs, AJobIsCompiledAtSubmissionAndTheWorkerRunsThatCompiledJob)
+{
+    JobQueue queue(store, hub, {}, 1);   // not started yet: the jobs wait in the queue
+    const auto kept = queue.submit(request(kExample));
+    const auto cancelled = queue.submit(request(kExample));
+    ASSERT_TRUE(kept.id && cancelled.id);
+    EXPECT_EQ(queue.compiledQueued(), 2u);
+    ASSERT_TRUE(queue.cancel(*cancelled.id));
+    EXPECT_EQ(queue.compiledQueued(), 1u);   // a cancelled job's compiled model is freed
+    queue.start();
+    ASSERT_TRUE(finishes(*kept.id));
+    EXPECT_EQ(state(*kept.id), JobState::Done) << store.info(*kept.id)->error;
+    EXPECT_EQ(queue.compiledQueued(), 0u);
+    EXPECT_EQ(store.result(*kept.id)->toCsv(), directRun(readFile(kExample)).toCsv());
+}
+
+TEST_F(Jobs, AJobQueuedBeforeARestartIsCompiledAgainFromItsStoredRequest)
+{
+    std::int64_t id = 0;
+    {
+        JobQueue queue(store, hub, {}, 1);
+        JobRequest r = request(kExample);
+        r.parameters = {{"Orifice.Kc", "2e-10"}};
+        id = *queue.submit(r).id;
+    }   // the server stops before the job ran: its compiled form is gone
+    JobQueue restarted(store, hub, {}, 1);
+    EXPECT_EQ(restarted.compiledQueued(), 0u);
+    restarted.start();
+    ASSERT_TRUE(finishes(id));
+    EXPECT_EQ(state(id), JobState::Done) << store.info(id)->error;
+    EXPECT_EQ(store.result(id)->toCsv(), directRun(readFile(kExample), {{"Orifice.Kc", "2e-10"}}).toCsv());
+}
+
 TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 {
     JobQueue queue(store, hub, {}, 1);

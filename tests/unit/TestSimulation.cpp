@@ -90,6 +90,24 @@ TEST(Simulation, RunInPiecesEqualsOneWholeRun)
     EXPECT_EQ(csvOf(*sim), whole);
 }
 
+TEST(Simulation, RunInSlicesOfStepsEqualsOneWholeRunAndStopsAtTheStopTime)
+{
+    const std::string whole = freshRunCsv(servoPath());
+    // Handed over: the simulation owns the model, nothing else keeps it alive.
+    Result<Simulation> sim = compile(load(servoPath()));
+    ASSERT_TRUE(sim) << sim.status().message();
+    ASSERT_TRUE(sim->runSteps(1));
+    EXPECT_EQ(sim->takenSteps(), 1u);
+    for (unsigned threads : {2u, RunOptions::autoThreads, 1u}) {
+        ASSERT_TRUE(sim->runSteps(7777, {.threads = threads}));
+        EXPECT_EQ(sim->state(), SimulationState::Paused);
+    }
+    ASSERT_TRUE(sim->runSteps(1'000'000));   // more than are left: ends at the stop time
+    EXPECT_EQ(sim->state(), SimulationState::Finished);
+    EXPECT_EQ(sim->takenSteps(), sim->totalSteps());
+    EXPECT_EQ(csvOf(*sim), whole);
+}
+
 TEST(Simulation, ResetThenRunEqualsAFreshCompile)
 {
     const std::string fresh = freshRunCsv(servoPath());
