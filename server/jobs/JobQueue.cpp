@@ -143,12 +143,11 @@ void JobQueue::workerLoop()
         lock.unlock();
 
         if (marked) {
-            const auto alone = [this, jobId] { return isAlone(jobId); };
             const auto request = compiled ? std::nullopt : mStore.request(jobId);
             if (compiled) {
-                mRunner.run(jobId, *compiled, *control, alone);
+                mRunner.run(jobId, *compiled, *control);
             } else if (request) {
-                mRunner.run(jobId, *request, *control, alone);
+                mRunner.run(jobId, *request, *control);
             } else {
                 mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
                 mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");
@@ -167,12 +166,6 @@ std::size_t JobQueue::compiledQueued()
 {
     std::lock_guard lock(mMutex);
     return mCompiled.size();
-}
-
-bool JobQueue::isAlone(std::int64_t jobId)
-{
-    std::lock_guard lock(mMutex);
-    return mQueued.empty() && mActive.size() == 1 && mActive.count(jobId) == 1;
 }
 
 bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId)

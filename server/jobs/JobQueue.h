@@ -1,7 +1,6 @@
 #pragma once
 // The job queue: compiles and stores submitted jobs, and runs them on a pool of worker
-// threads (one job per thread; a job alone on the server may use more threads, see
-// JobRunner::run).
+// threads (one thread per job, see JobRunner::run).
 //
 // Fairness: each user has a FIFO of queued jobs, and the workers serve users round robin,
 // skipping users who already run JobLimits::maxRunningPerUser jobs. A user with many queued
@@ -69,7 +68,6 @@ private:
     void enqueue(std::int64_t ownerId, std::int64_t jobId);   // caller holds mMutex
     bool removeQueued(std::int64_t jobId);                      // caller holds mMutex
     bool isQueuedInMemory(std::int64_t jobId) const;            // caller holds mMutex
-    bool isAlone(std::int64_t jobId);   // no other job queued or running
 
     JobStore& mStore;
     StreamHub& mHub;

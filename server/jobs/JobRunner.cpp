@@ -4,7 +4,6 @@
 #include "core/Simulation.h"
 #include "server/jobs/FrameSource.h"
 
-#include <algorithm>
 #include <sstream>
 
 namespace tlmhub::server {
@@ -108,38 +107,20 @@ JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string
     return state;
 }
 
-bool JobRunner::runInSlices(Simulation& sim, RunOptions options, const std::function<bool()>& alone)
-{
-    std::size_t sliceSteps = 4096;
-    while (sim.state() != SimulationState::Finished) {
-        options.threads = alone() ? RunOptions::autoThreads : 1;
-        const auto sliceStart = Clock::now();
-        if (!sim.runSteps(sliceSteps, options)) return false;
-        // The next slice lasts about kThreadSlicePeriod at the speed of this one.
-        const double seconds = std::chrono::duration<double>(Clock::now() - sliceStart).count();
-        const double scale = seconds > 0.0 ? kThreadSlicePeriod / seconds : 4.0;
-        sliceSteps = static_cast<std::size_t>(
-            std::clamp(static_cast<double>(sliceSteps) * std::min(scale, 4.0), 256.0, 1e9));
-    }
-    return true;
-}
-
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control,
-                        const std::function<bool()>& alone)
+JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control)
 {
     try {
         PreparedJob job;
         PrepareError prepareError;
         if (!prepareJob(request, mLimits, job, prepareError))
             return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
-        return run(jobId, job, control, alone);
+        return run(jobId, job, control);
     } catch (const std::exception& e) {
         return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }
 }
 
-JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control,
-                        const std::function<bool()>& alone)
+JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -175,12 +156,16 @@ JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& contro
                 ok = false;
             } else {
                 state.live = &live;
+                // One thread per job, also for a job alone on the server: on a machine whose
+                // cores other processes share, a thread of the pair gets descheduled and the
+                // other waits at every phase barrier (a 15-million-step job under ASan ran
+                // past its 300 s limit that way, twice, with and without re-timed slices).
                 RunOptions options;
                 options.progressInterval = kProgressInterval;
                 options.progress = [&state](std::size_t taken, std::size_t total) {
                     onProgress(&state, taken, total);
                 };
-                ok = runInSlices(sim, options, alone);
+                ok = sim.run(options).isOk();
             }
         }
         control.detach();

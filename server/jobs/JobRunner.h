@@ -8,7 +8,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <functional>
 #include <mutex>
 
 namespace tlmhub {
@@ -41,14 +40,9 @@ public:
     JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
 
     // The job must already be marked running in the store. Returns its final state.
-    // `alone` says whether this job is the only one queued or running: only then may it use
-    // more than one thread (otherwise the other workers use the cores). It is asked again
-    // every slice of about kThreadSlicePeriod, so a job that got threads gives them up soon
-    // after another job arrives.
-    JobState run(std::int64_t jobId, PreparedJob& job, JobControl& control, const std::function<bool()>& alone);
+    JobState run(std::int64_t jobId, PreparedJob& job, JobControl& control);
     // A job whose compiled form was not kept (queued before a restart): prepared from its request.
-    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control,
-                 const std::function<bool()>& alone);
+    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control);
 
     // Steps between two progress callbacks: a clock read per 256 steps costs well under 1%
     // even for the smallest models, and bounds how late a wall-time limit is noticed.
@@ -56,12 +50,10 @@ public:
     static constexpr auto kProgressEventPeriod = std::chrono::milliseconds(100);
     static constexpr auto kProgressStorePeriod = std::chrono::seconds(1);
     static constexpr auto kFramePollPeriod = std::chrono::milliseconds(5);
-    static constexpr double kThreadSlicePeriod = 0.25;   // s
 
 private:
     struct RunState;
     static void onProgress(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
-    static bool runInSlices(Simulation& sim, RunOptions options, const std::function<bool()>& alone);
     JobState finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
                     const ResultTable* result);
 
