@@ -1,6 +1,6 @@
 #include "core/Simulation.h"
 
-#include "core/ParameterEvaluator.h"
+#include "core/ParameterPath.h"
 #include "core/numerics/StepCount.h"
 
 #include <cmath>
@@ -9,22 +9,6 @@
 namespace tlmhub {
 
 namespace {
-
-// The component a parameter path names: "Sub$Comp" walks subsystems; "" is the root.
-Component* componentAt(System& root, const std::string& path)
-{
-    if (path.empty()) return &root;
-    System* system = &root;
-    std::size_t begin = 0;
-    while (true) {
-        const std::size_t end = path.find('$', begin);
-        const std::string name = path.substr(begin, end == std::string::npos ? end : end - begin);
-        if (end == std::string::npos) return system->component(name);
-        system = system->subsystem(name);
-        if (!system) return nullptr;
-        begin = end + 1;
-    }
-}
 
 struct ProgressRelay {
     const RunOptions* options;
@@ -226,19 +210,7 @@ Status Simulation::setParameter(const std::string& path, const std::string& valu
     if (mState == SimulationState::Running || mState == SimulationState::Initialised ||
         mState == SimulationState::Paused)
         return {StatusCode::InvalidState, "parameters change between runs: reset the simulation first", path};
-    const std::size_t dot = path.find('.');
-    const std::string owner = dot == std::string::npos ? std::string() : path.substr(0, dot);
-    const std::string name = dot == std::string::npos ? path : path.substr(dot + 1);
-    Component* component = componentAt(*mRoot, owner);
-    Parameter* parameter = component ? component->parameters().find(name) : nullptr;
-    if (!parameter) return {StatusCode::UnknownParameter, "no parameter '" + path + "'", path};
-    const std::string previous = parameter->value;
-    parameter->value = value;
-    if (const Status evaluated = ParameterEvaluator::evaluate(*component, *parameter); !evaluated) {
-        parameter->value = previous;
-        ParameterEvaluator::evaluate(*component, *parameter);
-        return {StatusCode::InvalidParameter, "parameter '" + path + "': " + evaluated.message(), path};
-    }
+    if (Status set = setParameterValue(*mRoot, path, value); !set) return set;
     mParametersEvaluated = false;   // its dependents are evaluated again at the next start
     return Status::ok();
 }

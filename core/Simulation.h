@@ -77,8 +77,8 @@ public:
 
     // Back to the state right after compile (node values as before the first run).
     Status reset();
-    // "Comp.param", "Sub$Comp.param", or a system parameter "param" / "Sub.param". The value
-    // must evaluate; it takes effect from the next start (after reset(), or at once while the
+    // A path as core/ParameterPath.h names it ("Comp.param", "Sub$Comp.param", "param"). The
+    // value must evaluate; it takes effect from the next start (after reset(), or at once while the
     // simulation is still compiled).
     Status setParameter(const std::string& path, const std::string& value);
 

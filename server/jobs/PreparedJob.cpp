@@ -2,7 +2,7 @@
 
 #include "server/api/CoreErrorCodes.h"
 
-#include "core/ParameterEvaluator.h"
+#include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <cmath>
@@ -19,62 +19,7 @@ std::string describe(double v)
     return os.str();
 }
 
-Component* findComponent(System& root, const std::string& path, std::string& error)
-{
-    System* system = &root;
-    std::size_t begin = 0;
-    for (std::size_t dollar; (dollar = path.find('$', begin)) != std::string::npos; begin = dollar + 1) {
-        const std::string name = path.substr(begin, dollar - begin);
-        System* sub = system->subsystem(name);
-        if (!sub) {
-            error = "no subsystem '" + name + "' in system '" + system->name() + "'";
-            return nullptr;
-        }
-        system = sub;
-    }
-    const std::string name = path.substr(begin);
-    Component* c = system->component(name);
-    if (!c) error = "no component '" + name + "' in system '" + system->name() + "'";
-    return c;
-}
-
-bool setAndEvaluate(Component& owner, Parameter& p, const std::string& value, const std::string& key,
-                    std::string& error)
-{
-    const std::string old = p.value;
-    p.value = value;
-    if (const Status evaluated = ParameterEvaluator::evaluate(owner, p); !evaluated) {
-        p.value = old;
-        error = "parameter '" + key + "' = '" + value + "': " + evaluated.message();
-        return false;
-    }
-    return true;
-}
-
 } // namespace
-
-bool applyParameter(System& root, const std::string& key, const std::string& value, std::string& error)
-{
-    const std::size_t dot = key.find('.');
-    if (dot == std::string::npos) {
-        Parameter* p = root.parameters().find(key);
-        if (!p || p->isStartValue) {
-            error = "no system parameter '" + key + "' in system '" + root.name() + "'";
-            return false;
-        }
-        return setAndEvaluate(root, *p, value, key, error);
-    }
-    Component* c = findComponent(root, key.substr(0, dot), error);
-    if (!c) return false;
-    const std::string name = key.substr(dot + 1);
-    Parameter* p = c->parameters().find(name);
-    if (!p) p = c->parameters().find(name + "#Value");
-    if (!p) {
-        error = "component '" + c->name() + "' has no parameter '" + name + "'";
-        return false;
-    }
-    return setAndEvaluate(*c, *p, value, key, error);
-}
 
 bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out, PrepareError& error)
 {
@@ -91,13 +36,12 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
     System& root = *loaded.root;
 
     // System parameters first: component values may refer to them.
-    std::string why;
     for (int pass = 0; pass < 2; ++pass) {
         for (const auto& [key, value] : request.parameters) {
             const bool isSystemParameter = key.find('.') == std::string::npos;
             if (isSystemParameter != (pass == 0)) continue;
-            if (!applyParameter(root, key, value, why)) {
-                error = {"invalid_parameter", why};
+            if (const Status set = setParameterValue(root, key, value); !set) {
+                error = {protocolErrorCode(set.code()), set.message()};
                 return false;
             }
         }

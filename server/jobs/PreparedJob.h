@@ -30,10 +30,4 @@ constexpr std::size_t kDefaultLogSamples = 1024;
 bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out,
                 PrepareError& error);
 
-// Set one parameter: "Comp.Param" (component at the root), "Sub$Comp.Param" (nested), or a
-// bare system parameter name of the root. "Comp.x" also finds the input variable "x#Value".
-// The value must evaluate; otherwise the old value is kept and `error` says why.
-bool applyParameter(System& root, const std::string& key, const std::string& value,
-                    std::string& error);
-
 } // namespace tlmhub::server

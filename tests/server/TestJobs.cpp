@@ -1,6 +1,7 @@
 // Jobs: submit/validate, the fair worker pool, cancel, limits, shutdown/restart, results and
 // streamed frames.
 #include "core/ResultTable.h"
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 #include "server/jobs/JobQueue.h"
 #include "server/jobs/JobStore.h"
@@ -50,22 +51,24 @@ bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-// The result of running a model directly with the core, as the CLI does.
+// The result of running a model directly with the core's run API, as the CLI does; the
+// parameters are changed on the compiled simulation (a job applies them before compiling).
 ResultTable directRun(const std::string& hmf, const std::map<std::string, std::string>& parameters = {},
-                      std::optional<double> stop = std::nullopt)
+                      std::optional<double> stop = std::nullopt,
+                      std::optional<std::size_t> logSamples = std::nullopt)
 {
     LoadedModel m = loadHmfString(hmf, "", "direct");
     EXPECT_FALSE(m.hasErrors()) << m.firstError();
-    System& root = *m.root;
-    std::string err;
-    for (const auto& [k, v] : parameters) EXPECT_TRUE(applyParameter(root, k, v, err)) << err;
-    const double t1 = stop.value_or(root.stopTime);
-    const Status checked = root.check();
-    EXPECT_TRUE(checked) << checked.message();
-    EXPECT_TRUE(root.initialize(root.startTime, t1));
-    EXPECT_TRUE(root.simulate(t1));
-    root.finalize();
-    return ResultTable::fromSystem(root);
+    Result<Simulation> sim = compile(*m.root, {.stopTime = stop, .logSamples = logSamples});
+    EXPECT_TRUE(sim) << sim.status().message();
+    if (!sim) return {};
+    for (const auto& [k, v] : parameters) {
+        const Status set = sim->setParameter(k, v);
+        EXPECT_TRUE(set) << set.message();
+    }
+    const Status ran = sim->run();
+    EXPECT_TRUE(ran) << ran.message();
+    return ResultTable::fromView(sim->results());
 }
 
 // Every event a subscription received, thread-safe.
@@ -203,14 +206,8 @@ TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 
     // The same overrides applied directly give the same numbers, and they differ from the
     // model's own values.
-    LoadedModel m = loadHmfString(readFile(kExample), "", "direct");
-    std::string err;
-    ASSERT_TRUE(applyParameter(*m.root, "Orifice.Kc", "2e-10", err)) << err;
-    ASSERT_TRUE(applyParameter(*m.root, "pump_flow", "2e-4", err)) << err;
-    m.root->requestedLogSamples = 101;
-    ASSERT_TRUE(m.root->initialize(0.0, 1.0) && m.root->simulate(1.0));
-    m.root->finalize();
-    const ResultTable direct = ResultTable::fromSystem(*m.root);
+    const ResultTable direct =
+        directRun(readFile(kExample), {{"Orifice.Kc", "2e-10"}, {"pump_flow", "2e-4"}}, 1.0, 101);
     EXPECT_EQ(result->toCsv(), direct.toCsv());
     const ResultTable plain = directRun(readFile(kExample), {}, 1.0);
     ASSERT_EQ(plain.columns.size(), result->columns.size());
@@ -386,28 +383,11 @@ TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
     EXPECT_EQ(store.listAll().size(), 2u);
 }
 
+// The path syntax itself is tested with the core (TestParameterPath).
 TEST_F(Jobs, NestedParametersReachIntoSubsystems)
 {
     const std::string path =
         std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Example Models/Sub System Example.hmf";
-    LoadedModel m = loadHmfFile(path);
-    ASSERT_TRUE(m.root);
-    System& root = *m.root;
-    std::string err;
-    EXPECT_TRUE(applyParameter(root, "Servo1$Translational_Mass.m", "400", err)) << err;
-    EXPECT_TRUE(applyParameter(root, "Servo1.PGain", "0.01", err)) << err;         // a subsystem's parameter
-    EXPECT_TRUE(applyParameter(root, "Servo1$Gain.k", "PGain * 2", err)) << err;   // its own scope
-    EXPECT_TRUE(applyParameter(root, "Force", "2000", err)) << err;
-    EXPECT_EQ(root.subsystem("Servo1")->component("Translational_Mass")->parameters().find("m")->value, "400");
-    EXPECT_EQ(root.subsystem("Servo1")->parameters().find("PGain")->value, "0.01");
-    EXPECT_EQ(root.subsystem("Servo1")->component("Gain")->parameters().find("k#Value")->value, "PGain * 2");
-    EXPECT_EQ(root.subsystem("Servo2")->component("Translational_Mass")->parameters().find("m")->value, "200");
-    EXPECT_FALSE(applyParameter(root, "Servo1$NoSuch.m", "1", err));
-    EXPECT_NE(err.find("NoSuch"), std::string::npos) << err;
-    EXPECT_FALSE(applyParameter(root, "NoSuch$Gain.k", "1", err));
-    EXPECT_FALSE(applyParameter(root, "Servo1$Gain.k", "Force2 * 2", err));   // unknown name
-    EXPECT_EQ(root.subsystem("Servo1")->component("Gain")->parameters().find("k#Value")->value, "PGain * 2");
-
     JobQueue queue(store, hub, {}, 1);
     queue.start();
     JobRequest r = request(path);

@@ -1,0 +1,30 @@
+#pragma once
+// Parameters named by path, the one syntax of the run API, server jobs and the CLI:
+//   "Comp.param"       a parameter of a component of the root system
+//   "Sub$Comp.param"   of a component inside subsystem Sub (more '$' for deeper nesting)
+//   "Sub.param"        a subsystem's own system parameter
+//   "param"            a system parameter of the root
+// "Comp.x" also finds the start value "x#Value" of an input variable.
+#include "core/Status.h"
+
+#include <string>
+
+namespace tlmhub {
+
+class Component;
+class System;
+struct Parameter;
+
+struct ParameterRef {
+    Component* owner = nullptr;
+    Parameter* parameter = nullptr;
+};
+
+// unknown_parameter naming the part of the path that names nothing.
+Result<ParameterRef> findParameter(System& root, const std::string& path);
+
+// Sets the value string and evaluates it in its owner's scope. A value that does not
+// evaluate is refused (invalid_parameter) and the old value is kept.
+Status setParameterValue(System& root, const std::string& path, const std::string& value);
+
+} // namespace tlmhub
