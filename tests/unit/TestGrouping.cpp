@@ -45,11 +45,9 @@ std::string refusal(const Result<std::string>& grouped)
 
 ResultTable simulate(System& root)
 {
-    EXPECT_TRUE(isOk(root.check()));
-    EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
-    EXPECT_TRUE(root.simulate(root.stopTime));
-    root.finalize();
-    return ResultTable::fromSystem(root);
+    const std::optional<Simulation> sim = runToStop(compile(root));
+    if (!sim) return {};
+    return ResultTable::fromView(sim->results());
 }
 
 // Every variable logged before is logged after, with the grouped components' variables

@@ -1,5 +1,5 @@
 #pragma once
-// Small helpers shared by the unit tests: build systems through the string API.
+// Small helpers shared by the unit tests: build systems through the string API, run them.
 #include "core/ComponentFactory.h"
 #include "core/Simulation.h"
 #include "core/System.h"
@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace tlmhub::test {
 
@@ -52,6 +54,26 @@ inline bool run(System& s, double t0, double t1, double ts, std::size_t samples)
         return false;
     }
     return sim->run().isOk();
+}
+
+// Runs a compiled simulation to its stop time. A compile or run error is a test failure
+// naming its status; nullopt if it did not compile.
+inline std::optional<Simulation> runToStop(Result<Simulation> compiled, const RunOptions& options = {})
+{
+    if (!compiled) {
+        ADD_FAILURE() << compiled.status().codeName() << ": " << compiled.status().message();
+        return std::nullopt;
+    }
+    EXPECT_TRUE(isOk(compiled->run(options)));
+    return std::move(*compiled);
+}
+
+// The logged time, then every logged variable in list order: what two runs compare.
+inline std::vector<std::vector<double>> loggedColumns(const ResultView& results)
+{
+    std::vector<std::vector<double>> columns{{results.time().begin(), results.time().end()}};
+    for (std::size_t i = 0; i < results.numVariables(); ++i) columns.push_back(results.data(i));
+    return columns;
 }
 
 inline std::string sharedDir()

@@ -2,7 +2,6 @@
 // data the core does not interpret is kept.
 #include "TestHelpers.h"
 
-#include "core/Results.h"
 #include "core/hmf/HmfLoader.h"
 #include "core/hmf/HmfSaver.h"
 
@@ -16,15 +15,9 @@ namespace {
 
 std::vector<std::vector<double>> simulateAll(System& root)
 {
-    std::string err;
-    EXPECT_TRUE(isOk(root.check()));
-    EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
-    EXPECT_TRUE(root.simulate(root.stopTime));
-    root.finalize();
-    std::vector<std::vector<double>> out;
-    out.push_back(root.logTime());
-    for (const auto& v : listLoggedVariables(root)) out.push_back(loggedData(*v.port, v.slot, v.count));
-    return out;
+    const std::optional<Simulation> sim = runToStop(compile(root));
+    if (!sim) return {};
+    return loggedColumns(sim->results());
 }
 
 std::size_t countOf(const std::string& text, const std::string& what)

@@ -49,11 +49,9 @@ TEST(MultiPortInitialValues, CylinderBlockZeroesItsPistonNodesOverridingStartVal
 {
     System s;
     buildPump(s);
-    s.desiredTimestep = 1e-5;
-    s.requestedLogSamples = 2;
-    std::string err;
-    ASSERT_TRUE(isOk(s.check()));
-    ASSERT_TRUE(s.initialize(0.0, 1e-3));
+    Result<Simulation> sim = compile(s, {.startTime = 0.0, .stopTime = 1e-3, .timestep = 1e-5, .logSamples = 2});
+    ASSERT_TRUE(isOk(sim.status()));
+    ASSERT_TRUE(isOk(sim->initialise()));
 
     // Piston A loaded x = 0.05, v = 0.3 as start values; the block's initialise zeroed them
     // and set the equivalent mass the pistons use for their minimum volume.
@@ -65,10 +63,9 @@ TEST(MultiPortInitialValues, CylinderBlockZeroesItsPistonNodesOverridingStartVal
     // So the stroke is centred on x = 0: after one step piston k sits at
     // 0 + r*tan(angle)*sin(-theta_offset - 2*pi*k/N), the block still at angle 0
     // (with the start value kept, piston A would sit 0.05 further out).
-    ASSERT_TRUE(s.simulate(1e-5));
+    ASSERT_TRUE(isOk(sim->runSteps(1)));
     const double stroke = 0.04 * std::tan(0.2);
     const double pi = 3.141592653589793;
     EXPECT_NEAR(nodeValue(s, "A", "P3", NodeMechanic::Position), stroke * std::sin(-0.5), 1e-15);
     EXPECT_NEAR(nodeValue(s, "B", "P3", NodeMechanic::Position), stroke * std::sin(-0.5 - pi), 1e-15);
-    s.finalize();
 }

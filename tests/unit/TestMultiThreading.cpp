@@ -1,7 +1,6 @@
 // Multi-threaded simulation gives bitwise the same logs as the single-threaded loop.
 #include "TestHelpers.h"
 
-#include "core/Results.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <filesystem>
@@ -13,30 +12,24 @@ using namespace tlmhub::test;
 
 namespace {
 
-// How a test runs the steps of a loaded, initialised model.
-using StepRunner = std::function<bool(System& root, std::size_t steps)>;
+// How a test runs a loaded, compiled model to its stop time.
+using ModelRunner = std::function<Status(Simulation& sim)>;
 
-std::vector<std::vector<double>> simulateWith(const std::string& path, const StepRunner& runSteps)
+std::vector<std::vector<double>> simulateWith(const std::string& path, const ModelRunner& runModel)
 {
     LoadedModel m = loadHmfFile(path);
     EXPECT_FALSE(m.hasErrors()) << m.firstError();
     if (m.hasErrors()) return {};
-    System& root = *m.root;
-    std::string err;
-    EXPECT_TRUE(isOk(root.check()));
-    EXPECT_TRUE(root.initialize(root.startTime, root.stopTime));
-    EXPECT_TRUE(runSteps(root, root.stepsUntil(root.stopTime)));
-    root.finalize();
-    std::vector<std::vector<double>> out{root.logTime()};
-    for (const auto& v : listLoggedVariables(root)) out.push_back(loggedData(*v.port, v.slot, v.count));
-    return out;
+    Result<Simulation> sim = compile(*m.root);
+    EXPECT_TRUE(isOk(sim.status()));
+    if (!sim) return {};
+    EXPECT_TRUE(isOk(runModel(*sim)));
+    return loggedColumns(sim->results());
 }
 
 std::vector<std::vector<double>> simulateWith(const std::string& path, unsigned threads)
 {
-    return simulateWith(path, [threads](System& root, std::size_t steps) {
-        return root.simulateStepsMultiThreaded(steps, threads);
-    });
+    return simulateWith(path, [threads](Simulation& sim) { return sim.run({.threads = threads}); });
 }
 
 class MultiThreading : public ::testing::TestWithParam<const char*> {};
@@ -69,11 +62,13 @@ TEST_P(MultiThreading, ThreadTrialEitherWayGivesTheSingleThreadedLogs)
         const bool threadsWin = baseline > 0.0;
         unsigned used = 0;
         std::size_t totalSteps = 0;
-        const auto trial = simulateWith(path, [&](System& root, std::size_t steps) {
-            totalSteps = steps;
-            const bool ok = root.simulateStepsThreadTrial(steps, 2, baseline, 8);
-            used = root.threadsUsed();
-            return ok;
+        const auto trial = simulateWith(path, [&](Simulation& sim) {
+            if (Status started = sim.initialise(); !started) return started;
+            totalSteps = sim.totalSteps();
+            // RunOptions cannot force the trial's outcome, so the initialised System runs it.
+            const bool finished = sim.system().simulateStepsThreadTrial(totalSteps, 2, baseline, 8);
+            used = sim.threadsUsed();
+            return finished ? Status::ok() : Status{StatusCode::SimulationStopped, "the thread trial stopped early"};
         });
         ASSERT_EQ(single.size(), trial.size());
         for (std::size_t i = 0; i < single.size(); ++i)
@@ -132,15 +127,13 @@ std::vector<double> orificeFlowWithSameStepSignal(unsigned threads)
     connectOk(s, "Valve", "xv", "Orifice", "Kc");
     setParam(s, "Command", "y_A#Value", "0.005");
     setParam(s, "Command", "f#Value", "20");
-    s.desiredTimestep = 1e-4;
-    s.requestedLogSamples = 2001;
-    std::string err;
-    EXPECT_TRUE(isOk(s.check()));
-    EXPECT_TRUE(s.initialize(0.0, 0.2));
-    EXPECT_TRUE(s.simulateMultiThreaded(0.2, threads));
-    s.finalize();
-    Port* p = s.component("Orifice")->port("P2");
-    return loggedData(*p, NodeHydraulic::Flow, s.numLoggedSamples());
+    const std::optional<Simulation> sim =
+        runToStop(compile(s, {.startTime = 0.0, .stopTime = 0.2, .timestep = 1e-4, .logSamples = 2001}),
+                  {.threads = threads});
+    if (!sim) return {};
+    const std::optional<std::vector<double>> flow = sim->results().data("Orifice#P2#Flow");
+    EXPECT_TRUE(flow) << "Orifice#P2#Flow is not logged";
+    return flow.value_or(std::vector<double>{});
 }
 
 } // namespace
@@ -164,11 +157,9 @@ TEST(MultiThreadingAuto, ShortRunOfASmallModelStaysOnOneThread)
     add(s, "HydraulicTankC", "Tank");
     connectOk(s, "Source", "P1", "Orifice", "P1");
     connectOk(s, "Orifice", "P2", "Tank", "P1");
-    std::string err;
-    ASSERT_TRUE(isOk(s.check()));
-    ASSERT_TRUE(s.initialize(0.0, 1.0));
-    ASSERT_TRUE(s.simulateStepsMultiThreaded(s.stepsUntil(1.0), 0));
-    s.finalize();
-    EXPECT_EQ(s.threadsUsed(), 1u);
-    EXPECT_EQ(s.takenSteps(), 1000u);
+    Result<Simulation> sim = compile(s, {.startTime = 0.0, .stopTime = 1.0});
+    ASSERT_TRUE(isOk(sim.status()));
+    ASSERT_TRUE(isOk(sim->run({.threads = RunOptions::autoThreads})));
+    EXPECT_EQ(sim->threadsUsed(), 1u);
+    EXPECT_EQ(sim->takenSteps(), 1000u);
 }

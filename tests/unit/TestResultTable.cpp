@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -20,17 +21,13 @@ using namespace tlmhub::test;
 
 namespace {
 
-std::unique_ptr<System> runModel(const std::string& path)
+// The model run to its stop time; the Simulation owns it.
+std::optional<Simulation> runModel(const std::string& path)
 {
     LoadedModel m = loadHmfFile(path);
     EXPECT_FALSE(m.hasErrors()) << m.firstError();
-    if (m.hasErrors()) return nullptr;
-    std::string err;
-    EXPECT_TRUE(isOk(m.root->check()));
-    EXPECT_TRUE(m.root->initialize(m.root->startTime, m.root->stopTime));
-    EXPECT_TRUE(m.root->simulate(m.root->stopTime));
-    m.root->finalize();
-    return std::move(m.root);
+    if (m.hasErrors()) return std::nullopt;
+    return runToStop(compile(std::move(m.root)));
 }
 
 // The CSV exactly as tlmhub-cli wrote it before ResultTable existed (printf per cell).
@@ -94,15 +91,15 @@ ResultTable smallTable()
 
 } // namespace
 
-TEST(ResultTable, FromSystemHasEveryLoggedVariableInListOrder)
+TEST(ResultTable, FromViewHasEveryLoggedVariableInListOrder)
 {
-    auto root = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
-    ASSERT_TRUE(root);
-    const ResultTable t = ResultTable::fromSystem(*root);
-    const auto vars = listLoggedVariables(*root);
+    auto sim = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
+    ASSERT_TRUE(sim);
+    const ResultTable t = ResultTable::fromView(sim->results());
+    const auto vars = listLoggedVariables(sim->system());
     ASSERT_EQ(t.columns.size(), vars.size());
     ASSERT_GT(vars.size(), 0u);
-    EXPECT_EQ(t.time.size(), root->numLoggedSamples());
+    EXPECT_EQ(t.time.size(), sim->system().numLoggedSamples());
     EXPECT_EQ(t.time.size(), 501u);
     for (std::size_t i = 0; i < vars.size(); ++i) {
         EXPECT_EQ(t.columns[i].name, vars[i].fullName);
@@ -114,29 +111,29 @@ TEST(ResultTable, FromSystemHasEveryLoggedVariableInListOrder)
 
 TEST(ResultTable, CsvIsByteIdenticalToThePrintfFormat)
 {
-    auto root = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
-    ASSERT_TRUE(root);
-    EXPECT_EQ(ResultTable::fromSystem(*root).toCsv(), referenceCsv(*root));
+    auto sim = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
+    ASSERT_TRUE(sim);
+    EXPECT_EQ(ResultTable::fromView(sim->results()).toCsv(), referenceCsv(sim->system()));
 }
 
 TEST(ResultTable, CsvOfModelWithSubsystemsIsByteIdentical)
 {
     const std::string path = sharedDir() + "/hopsan-models/Example Models/Sub System Example.hmf";
     ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
-    auto root = runModel(path);
-    ASSERT_TRUE(root);
-    const ResultTable t = ResultTable::fromSystem(*root);
+    auto sim = runModel(path);
+    ASSERT_TRUE(sim);
+    const ResultTable t = ResultTable::fromView(sim->results());
     bool nested = false;
     for (const auto& c : t.columns) nested = nested || c.name.find('$') != std::string::npos;
     EXPECT_TRUE(nested);
-    EXPECT_EQ(t.toCsv(), referenceCsv(*root));
+    EXPECT_EQ(t.toCsv(), referenceCsv(sim->system()));
 }
 
 TEST(ResultTable, CsvValuesReadBackExactly)
 {
-    auto root = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
-    ASSERT_TRUE(root);
-    const ResultTable t = ResultTable::fromSystem(*root);
+    auto sim = runModel(std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf");
+    ASSERT_TRUE(sim);
+    const ResultTable t = ResultTable::fromView(sim->results());
     const auto rows = parseCsv(t.toCsv());
     ASSERT_EQ(rows.size(), t.time.size() + 1);
     ASSERT_EQ(rows[0].size(), t.columns.size() + 1);

@@ -40,12 +40,11 @@ TEST(StepOrder, AlgebraicLoopIsRefused)
     add(s, "SignalGain", "B");
     connectOk(s, "A", "out", "B", "in");
     connectOk(s, "B", "out", "A", "in");
-    s.requestedLogSamples = 2;
-    std::string err;
-    ASSERT_TRUE(isOk(s.check()));
-    EXPECT_FALSE(s.initialize(0, 1));
+    Result<Simulation> sim = compile(s, {.startTime = 0.0, .stopTime = 1.0, .logSamples = 2});
+    ASSERT_TRUE(isOk(sim.status()));
+    EXPECT_EQ(sim->initialise().code(), StatusCode::AlgebraicLoop);
     bool reported = false;
-    for (const auto& m : s.messages()) reported = reported || m.text.find("algebraic loop") != std::string::npos;
+    for (const auto& m : sim->messages()) reported = reported || m.text.find("algebraic loop") != std::string::npos;
     EXPECT_TRUE(reported);
 }
 
@@ -72,19 +71,19 @@ TEST(StepOrder, RequestStopFromAnotherThreadEndsARunKeepingItsLog)
     add(s, "SignalTime", "T");
     add(s, "SignalSink", "Sink");
     connectOk(s, "T", "out", "Sink", "in");
-    s.desiredTimestep = 1e-3;
-    s.requestedLogSamples = 1000001;
     s.logStartTime = 0.0;
-    ASSERT_TRUE(s.initialize(0.0, 1e6));
-    std::thread canceller([&s] {
+    Result<Simulation> sim = compile(s, {.startTime = 0.0, .stopTime = 1e6, .timestep = 1e-3, .logSamples = 1000001});
+    ASSERT_TRUE(isOk(sim.status()));
+    // Initialised first: starting clears stop requests, so the canceller's must come after.
+    ASSERT_TRUE(isOk(sim->initialise()));
+    std::thread canceller([&sim] {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        s.requestStop();
+        sim->requestStop();
     });
-    const bool finished = s.simulate(1e6);
+    const Status finished = sim->run();
     canceller.join();
-    s.finalize();
-    EXPECT_FALSE(finished);
-    EXPECT_GT(s.takenSteps(), 0u);
-    EXPECT_LT(s.takenSteps(), 1000000000u);
-    EXPECT_GT(s.numLoggedSamples(), 0u);
+    EXPECT_EQ(finished.code(), StatusCode::SimulationStopped);
+    EXPECT_GT(sim->takenSteps(), 0u);
+    EXPECT_LT(sim->takenSteps(), 1000000000u);
+    EXPECT_GT(sim->results().numSamples(), 0u);
 }
