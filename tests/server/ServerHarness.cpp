@@ -22,14 +22,6 @@ namespace http = beast::http;
 namespace net = boost::asio;
 using tcp = net::ip::tcp;
 
-std::string readFile(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::filesystem::path freshTempDir(const std::string& name)
 {
     const auto dir = std::filesystem::temp_directory_path() /

@@ -7,6 +7,8 @@
 #include <boost/beast/websocket.hpp>
 #include <nlohmann/json.hpp>
 
+#include "TestFiles.h"
+
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -91,7 +93,6 @@ private:
 // closes or `timeoutMs` passes without data (for requests a client library would refuse).
 std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs = 3000);
 
-std::string readFile(const std::filesystem::path& path);
 std::filesystem::path freshTempDir(const std::string& name);
 constexpr const char* kAdminPassword = "admin-secret-pw";
 

@@ -1,3 +1,5 @@
+#include "TestFiles.h"
+
 #include "server/edit/EditSession.h"
 #include "server/edit/GuiLayout.h"
 #include "server/protocol/SchemaValidator.h"
@@ -10,20 +12,12 @@
 #include <sstream>
 
 using namespace tlmhub::server;
+using tlmhub::test::readFile;
 using nlohmann::json;
 
 namespace {
 
 const std::string kModels = TLMHUB_SOURCE_DIR "/../shared/hopsan-models/Example Models/";
-
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in.good()) << "cannot read " << path;
-    std::ostringstream os;
-    os << in.rdbuf();
-    return os.str();
-}
 
 // A session with Position Servo open (root system Position_Servo, 20 components).
 EditSession openServo()

@@ -1,5 +1,7 @@
 // Jobs: submit/validate, the fair worker pool, cancel, limits, shutdown/restart, results and
 // streamed frames.
+#include "TestFiles.h"
+
 #include "core/ResultTable.h"
 #include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
@@ -21,16 +23,9 @@
 
 using namespace tlmhub;
 using namespace tlmhub::server;
+using tlmhub::test::readFile;
 
 namespace {
-
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream os;
-    os << in.rdbuf();
-    return os.str();
-}
 
 const std::string kExample = std::string(TLMHUB_SOURCE_DIR) + "/examples/pressure-build-up.hmf";
 const std::string kServo =

@@ -1,3 +1,5 @@
+#include "TestFiles.h"
+
 #include "server/protocol/SchemaValidator.h"
 
 #include "core/Catalogue.h"
@@ -11,6 +13,7 @@
 #include <sstream>
 
 using namespace tlmhub::server;
+using tlmhub::test::readFile;
 using nlohmann::json;
 
 namespace {
@@ -35,14 +38,6 @@ std::string rejection(const SchemaValidator& v, const std::string& def, const js
     std::string error;
     EXPECT_FALSE(v.validate(def, value, error)) << value.dump();
     return error;
-}
-
-std::string readFile(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream os;
-    os << in.rdbuf();
-    return os.str();
 }
 
 json protocolFile(const std::string& name)

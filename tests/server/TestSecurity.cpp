@@ -21,8 +21,6 @@ namespace websocket = boost::beast::websocket;
 
 namespace {
 
-const fs::path kShared = fs::path(TLMHUB_SOURCE_DIR) / ".." / "shared";
-const fs::path kPositionServo = kShared / "hopsan-models" / "Example Models" / "Position Servo.hmf";
 constexpr const char* kSentinel = "SENTINEL-7f3a9c-outside-the-web-root";
 
 void writeFile(const fs::path& path, const std::string& text)
@@ -85,7 +83,7 @@ protected:
         writeFile(*dataDir / kSentinelFile, kSentinel);
         fs::create_symlink(*dataDir / kSentinelFile, *dataDir / "web" / "link.txt");
         server = new ServerProcess(*dataDir, {"--web-root", (*dataDir / "web").string(),
-                                              "--examples-dir", (kShared / "hopsan-models" / "Example Models").string()});
+                                              "--examples-dir", kExampleModels.string()});
         createTestUsers(*server, {"alice", "bob"});
     }
     static void TearDownTestSuite()
@@ -345,7 +343,7 @@ TEST(SecurityBacklog, AClientThatNeverReadsIsDisconnectedAndItsQueueFreed)
 {
     const fs::path dir = freshTempDir("backlog");
     ServerProcess server(dir, {"--max-ws-queue-bytes", "2000000", "--examples-dir",
-                               (kShared / "hopsan-models" / "Example Models").string()});
+                               kExampleModels.string()});
     HttpClient admin(server.port());
     const std::string token = admin.login("admin", kAdminPassword);
     const std::int64_t servo = exampleId(admin, "Position Servo");
@@ -390,7 +388,7 @@ TEST(SecurityModelLimits, UploadsPastTheLimitsAreRefusedNamingTheFlag)
         EXPECT_EQ(huge.status, 400);
         EXPECT_NE(huge.body.find("more than 20000 components and subsystems, the limit here (--max-model-components)"),
                   std::string::npos) << huge.body.substr(0, 300);
-        const fs::path x200 = kShared / "bench-models" / "position-servo-x200.hmf";
+        const fs::path x200 = kSharedDir / "bench-models" / "position-servo-x200.hmf";
         ASSERT_TRUE(fs::exists(x200)) << x200;
         EXPECT_EQ(uploadXml(admin, readFile(x200), "x200").status, 201);
     }
@@ -599,7 +597,9 @@ TEST_F(Security, SlowHeadersAndManyIdleConnectionsDoNotBlockOthers)
         address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
         ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0) << i;
         // Half of them start a request and never finish its header.
-        if (i % 2 == 0) ASSERT_GT(::send(fd, "GET /api/v1/health HTTP/1.1\r\nHost:", 34, MSG_NOSIGNAL), 0);
+        if (i % 2 == 0) {
+            ASSERT_GT(::send(fd, "GET /api/v1/health HTTP/1.1\r\nHost:", 34, MSG_NOSIGNAL), 0);
+        }
         sockets.push_back(fd);
     }
     const auto start = std::chrono::steady_clock::now();

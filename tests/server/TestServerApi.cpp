@@ -13,9 +13,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kShared = fs::path(TLMHUB_SOURCE_DIR) / ".." / "shared" / "hopsan-models";
-const fs::path kPositionServo = kShared / "Example Models" / "Position Servo.hmf";
-
 // One server for the tests that do not restart it; users alice and bob exist.
 class ServerApi : public ::testing::Test {
 protected:
