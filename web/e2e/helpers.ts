@@ -68,8 +68,11 @@ export async function setRunField(page: Page, label: string, value: string): Pro
 }
 
 export async function runAndWait(page: Page): Promise<number> {
-    await page.getByTestId('run').click();
     const status = page.getByTestId('run-status');
+    // The status still shows the previous run (done) until the server accepts the new one.
+    const previousJob = await status.getAttribute('data-job');
+    await page.getByTestId('run').click();
+    if (previousJob) await expect(status).not.toHaveAttribute('data-job', previousJob, { timeout: 60_000 });
     await expect(status).toHaveAttribute('data-state', 'done', { timeout: 60_000 });
     return Number(await status.getAttribute('data-job'));
 }

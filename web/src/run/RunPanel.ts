@@ -107,11 +107,15 @@ export class RunPanel {
                 for (const v of this.defaultVariables()) this.plots.addVariable(v);
             }
             this.runButton.disabled = true;
+            // Until the server accepts the run, the status must not still say the last one is done.
+            this.status.textContent = 'Starting…';
+            this.status.dataset.state = 'starting';
             const start = chosen.start ?? this.model?.start;
             const stop = chosen.stop ?? this.model?.stop;
             const span: [number, number] | null = start !== undefined && stop !== undefined && stop > start ? [start, stop] : null;
             await this.runs.start(chosen, this.plots.allVariables(), span);
         } catch (e) {
+            this.status.dataset.state = 'not-started';
             const inField = fieldOfServerError(errorText(e));
             if (inField) {
                 this.showError(inField.field, inField.text);
