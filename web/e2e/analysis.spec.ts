@@ -66,7 +66,10 @@ test('the XY window plots the cylinder pressure over the mass position, point fo
     const position = await plotVariable(page, 'Mass', 'P2', 'Position');
     await plotVariable(page, 'Cylinder_C', 'P1', 'Pressure');
     await runAndWait(page);
-    const points = Number(await page.locator('.plot-window').first().getAttribute('data-points'));
+    // The plot draws the finished run on its next update, a moment after the status says done.
+    const timePlot = page.locator('.plot-window').first();
+    await expect(timePlot).toHaveAttribute('data-state', 'done');
+    const points = Number(await timePlot.getAttribute('data-points'));
     await page.locator('.plot-window').first().getByRole('button', { name: 'XY' }).click();
     const xy = page.locator('.analysis-window[data-analysis="xy"]');
     await expect(xy.getByLabel('X variable')).toHaveValue(position);
