@@ -7,25 +7,25 @@ namespace tlmhub {
 
 namespace {
 
-// The component "Sub$Comp" names, walking subsystems from the root. Failures name the part
-// that is missing; the caller gives them the whole path.
-Result<Component*> componentAt(System& root, const std::string& path)
+// The component "Sub$Comp" (`owner`) names, walking subsystems from the root. Failures name
+// the part that is missing and carry the whole parameter path.
+Result<Component*> componentAt(System& root, const std::string& owner, const std::string& path)
 {
     System* system = &root;
     std::size_t begin = 0;
-    for (std::size_t dollar; (dollar = path.find('$', begin)) != std::string::npos; begin = dollar + 1) {
-        const std::string name = path.substr(begin, dollar - begin);
+    for (std::size_t dollar; (dollar = owner.find('$', begin)) != std::string::npos; begin = dollar + 1) {
+        const std::string name = owner.substr(begin, dollar - begin);
         System* sub = system->subsystem(name);
         if (!sub)
             return Status{StatusCode::UnknownParameter,
-                          "no subsystem '" + name + "' in system '" + system->name() + "'"};
+                          "no subsystem '" + name + "' in system '" + system->name() + "'", path};
         system = sub;
     }
-    const std::string name = path.substr(begin);
+    const std::string name = owner.substr(begin);
     Component* c = system->component(name);
     if (!c)
         return Status{StatusCode::UnknownParameter,
-                      "no component '" + name + "' in system '" + system->name() + "'"};
+                      "no component '" + name + "' in system '" + system->name() + "'", path};
     return c;
 }
 
@@ -41,8 +41,8 @@ Result<ParameterRef> findParameter(System& root, const std::string& path)
                           "no system parameter '" + path + "' in system '" + root.name() + "'", path};
         return ParameterRef{&root, p};
     }
-    Result<Component*> owner = componentAt(root, path.substr(0, dot));
-    if (!owner) return Status{owner.status().code(), owner.status().message(), path};
+    Result<Component*> owner = componentAt(root, path.substr(0, dot), path);
+    if (!owner) return owner.status();
     const std::string name = path.substr(dot + 1);
     Parameter* p = (*owner)->parameters().find(name);
     if (!p) p = (*owner)->parameters().find(name + "#Value");
@@ -56,16 +56,22 @@ Status setParameterValue(System& root, const std::string& path, const std::strin
 {
     Result<ParameterRef> found = findParameter(root, path);
     if (!found) return found.status();
-    Parameter& p = *found->parameter;
-    const std::string previous = p.value;
-    p.value = value;
-    if (const Status evaluated = ParameterEvaluator::evaluate(*found->owner, p); !evaluated) {
-        p.value = previous;
-        ParameterEvaluator::evaluate(*found->owner, p);   // its target holds the old value again
-        return {StatusCode::InvalidParameter,
-                "parameter '" + path + "' = '" + value + "': " + evaluated.message(), path};
-    }
+    if (const Status assigned = assignParameter(*found->owner, *found->parameter, value); !assigned)
+        return {StatusCode::InvalidParameter, "parameter '" + path + "' = '" + value + "': " + assigned.message(),
+                path};
     return Status::ok();
+}
+
+Status assignParameter(Component& owner, Parameter& parameter, const std::string& value)
+{
+    const std::string previous = parameter.value;
+    parameter.value = value;
+    const Status evaluated = ParameterEvaluator::evaluate(owner, parameter);
+    if (!evaluated) {
+        parameter.value = previous;
+        ParameterEvaluator::evaluate(owner, parameter);   // its target holds the old value again
+    }
+    return evaluated;
 }
 
 } // namespace tlmhub

@@ -27,4 +27,8 @@ Result<ParameterRef> findParameter(System& root, const std::string& path);
 // evaluate is refused (invalid_parameter) and the old value is kept.
 Status setParameterValue(System& root, const std::string& path, const std::string& value);
 
+// The same for a parameter already found: a refused value leaves the old string and its
+// evaluated value in place. The failure is the evaluator's, without the path.
+Status assignParameter(Component& owner, Parameter& parameter, const std::string& value);
+
 } // namespace tlmhub

@@ -78,8 +78,8 @@ public:
     // Back to the state right after compile (node values as before the first run).
     Status reset();
     // A path as core/ParameterPath.h names it ("Comp.param", "Sub$Comp.param", "param"). The
-    // value must evaluate; it takes effect from the next start (after reset(), or at once while the
-    // simulation is still compiled).
+    // value must evaluate; it takes effect from the next start (after reset(), or at once
+    // while the simulation is still compiled).
     Status setParameter(const std::string& path, const std::string& value);
 
     // Thread-safe: ends a run in progress (state stopped).

@@ -2,6 +2,7 @@
 
 #include "core/ComponentFactory.h"
 #include "core/ParameterEvaluator.h"
+#include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
 #include "core/hmf/HmfSaver.h"
 #include "core/hmf/PreservedXml.h"
@@ -322,14 +323,8 @@ Result EditSession::parameterSet(System& system, const json& request)
     if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
     Parameter* p = c->parameters().find(paramName);
     if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
-    const std::string old = p->value;
-    p->value = value;
-    if (const Status evaluated = ParameterEvaluator::evaluate(*c, *p); !evaluated) {
-        // Keep the model as it was: the old string, and its value in the target variable.
-        p->value = old;
-        ParameterEvaluator::evaluate(*c, *p);
-        return fail(evaluated.code(), compName + "." + paramName + ": " + evaluated.message());
-    }
+    if (const Status assigned = assignParameter(*c, *p, value); !assigned)
+        return fail(assigned.code(), compName + "." + paramName + ": " + assigned.message());
     return success({{"parameter", parameterToJson(*p)}});
 }
 
