@@ -14,6 +14,7 @@
 #include "core/Status.h"
 #include "core/numerics/RandomStream.h"
 
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <string>
@@ -22,6 +23,10 @@
 namespace tlmhub {
 
 class System;
+class Component;
+
+// Steps `count` components of one type at `time`: one batch of a run list (core/StepBatches.h).
+using BatchStepper = void (*)(Component* const* components, std::size_t count, double time);
 
 enum class CqsKind { C, Q, S, Undefined };
 const char* cqsKindName(CqsKind kind);
@@ -51,6 +56,10 @@ public:
     virtual void finalize() {}
     // Not virtual: the step loop asks this of every component every step.
     bool isSystem() const { return mIsSystem; }
+    // The batch step of this component's type; null runs it by its virtual call. The
+    // factory sets it (TLMHUB_REGISTER_COMPONENT).
+    BatchStepper batchStepper() const { return mBatchStepper; }
+    void setBatchStepper(BatchStepper step) { mBatchStepper = step; }
 
     // --- identity ---
     const std::string& name() const { return mName; }
@@ -119,6 +128,7 @@ public:
 
 protected:
     bool mIsSystem = false;   // set by System's constructor
+    BatchStepper mBatchStepper = nullptr;
 
     // --- port registration ---
     Port* addPowerPort(const std::string& name, NodeType type, bool required = true);

@@ -2,6 +2,7 @@
 // Component factory: makes components from a type-name string (core.md §9).
 // Each component type registers itself in its own .cpp with TLMHUB_REGISTER_COMPONENT.
 #include "core/Component.h"
+#include "core/StepBatches.h"
 
 #include <map>
 #include <memory>
@@ -42,6 +43,8 @@ private:
     [[maybe_unused]] const bool tlmhubRegistered_##Type =                                    \
         ::tlmhub::ComponentFactory::instance().registerType(                                 \
             #Type, Domain, []() -> std::unique_ptr<::tlmhub::Component> {                    \
-                return std::make_unique<Type>();                                             \
+                auto component = std::make_unique<Type>();                                   \
+                component->setBatchStepper(&::tlmhub::stepBatchOf<Type>);                    \
+                return component;                                                            \
             });                                                                              \
     }

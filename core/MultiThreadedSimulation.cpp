@@ -3,6 +3,7 @@
 // identical to the single-threaded loop. Clusters of components linked by a node go whole
 // to one thread (their order matters); on log steps every thread copies its own share of
 // the logged nodes.
+#include "core/ComponentClusters.h"
 #include "core/System.h"
 
 #include <algorithm>
@@ -60,49 +61,6 @@ private:
     const unsigned mSpinsBeforeYield;
 };
 
-// Nodes attached to a port (one per sub-port of a multiport).
-std::vector<Node*> portNodes(Port* port)
-{
-    std::vector<Node*> nodes;
-    if (port->isMultiport())
-        for (auto& sub : port->subPorts) nodes.push_back(sub->node());
-    else if (port->node())
-        nodes.push_back(port->node());
-    return nodes;
-}
-
-// Signal clusters (core.md §10): S components linked by signal connections, directly or
-// through other S components, form one cluster; clusters share no signal node, so whole
-// clusters can run on different threads. Returns a cluster id per entry of `list`.
-std::vector<std::size_t> signalClusters(const std::vector<Component*>& list)
-{
-    std::vector<std::size_t> parent(list.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](std::size_t i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    };
-    std::map<const Component*, std::size_t> index;
-    for (std::size_t i = 0; i < list.size(); ++i) index[list[i]] = i;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        for (Port* p : list[i]->ports()) {
-            for (Node* n : portNodes(p)) {
-                for (Port* q : n->ports()) {
-                    // Owners inside subsystems count as the subsystem in this list.
-                    const Component* owner = q->component();
-                    while (owner && !index.count(owner)) owner = owner->parentSystem();
-                    if (!owner) continue;
-                    const std::size_t a = find(i), b = find(index[owner]);
-                    if (a != b) parent[a] = b;
-                }
-            }
-        }
-    }
-    std::vector<std::size_t> cluster(list.size());
-    for (std::size_t i = 0; i < list.size(); ++i) cluster[i] = find(i);
-    return cluster;
-}
-
 // Threads get contiguous regions of the model (insertion order, which is also the order
 // of the node data) with about equal measured cost. A C component and the Q component it
 // talks to are usually neighbours, so they share a thread and their node stays in that
@@ -142,7 +100,7 @@ Partition partitionByRegion(const std::vector<Component*>& order, const std::vec
     p.c.resize(threads);
     p.q.resize(threads);
     auto assignClusters = [&](const std::vector<Component*>& list, std::vector<std::vector<Component*>>& out) {
-        const std::vector<std::size_t> cluster = signalClusters(list);
+        const std::vector<std::size_t> cluster = linkedClusters(list);
         std::map<std::size_t, unsigned> clusterThread;
         for (std::size_t i = 0; i < list.size(); ++i) {
             auto [it, inserted] = clusterThread.emplace(cluster[i], threadOf[list[i]]);
@@ -188,7 +146,7 @@ bool keepSignalPhaseThreadLocal(Partition& p, const std::vector<Component*>& lis
     for (unsigned t = 0; t < p.c.size(); ++t)
         for (const Component* c : p.c[t]) cThread[c] = t;
     std::map<const Component*, std::size_t> cCluster;
-    const std::vector<std::size_t> clusterOfIndex = signalClusters(listC);
+    const std::vector<std::size_t> clusterOfIndex = linkedClusters(listC);
     for (std::size_t i = 0; i < listC.size(); ++i) cCluster[listC[i]] = clusterOfIndex[i];
     auto topLevel = [&](const Component* c) {
         while (c && !cThread.count(c) && !sThread.count(c)) c = c->parentSystem();
@@ -334,9 +292,15 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
     }
     Partition part = partitionByRegion(mOrder, mS, costS, mC, costC, mQ, costQ, threads);
     const bool barrierAfterS = !keepSignalPhaseThreadLocal(part, mC);
-    const auto& partS = part.s;
-    const auto& partC = part.c;
-    const auto& partQ = part.q;
+    // Each thread's share of a list as batches: regrouping inside a share is safe for the
+    // same reason as splitting the list by cluster.
+    const StepBatches::Order order = StepBatches::Order::Regroup;
+    std::vector<StepBatches> partS, partC, partQ;
+    for (unsigned id = 0; id < threads; ++id) {
+        partS.emplace_back(part.s[id], order);
+        partC.emplace_back(part.c[id], order);
+        partQ.emplace_back(part.q[id], order);
+    }
 
     // Per step: S | C | Q phases with a barrier after each (after S only when some node is
     // shared across threads between S and C components). Every thread advances its own
@@ -383,11 +347,11 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
         for (std::size_t step = 0; step < logsAfter.size(); ++step) {
             if (id == 0 && timing) timeTrial(step);
             t += mTimestep;
-            for (Component* c : partS[id]) runComponent(c, t);
+            partS[id].step(t);
             if (barrierAfterS) barrier.arriveAndWait();
-            for (Component* c : partC[id]) runComponent(c, t);
+            partC[id].step(t);
             barrier.arriveAndWait();
-            for (Component* c : partQ[id]) runComponent(c, t);
+            partQ[id].step(t);
             barrier.arriveAndWait([&] { endSnapshot = stopRequested() || giveUp.load(std::memory_order_relaxed); });
             if (logsAfter[step]) {
                 for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);

@@ -72,9 +72,20 @@ std::string sanitizeName(const std::string& name)
     return out;
 }
 
+namespace {
+
+// The batch step of subsystems: each runs its own steps up to the parent's time.
+void stepSubsystems(Component* const* systems, std::size_t count, double time)
+{
+    for (std::size_t i = 0; i < count; ++i) static_cast<System*>(systems[i])->simulateTo(time);
+}
+
+} // namespace
+
 System::System() : Component(CqsKind::Undefined)
 {
     mIsSystem = true;
+    setBatchStepper(&stepSubsystems);
     setTypeName("Subsystem");
 }
 
@@ -1046,8 +1057,21 @@ Status System::initializeInternal(double t0, double t1, ParameterEvaluation eval
         }
     }
     if (mOnPort) bindAutoVariables();
+    // Only now is it known whether anything draws random numbers (components take the
+    // stream in initialize()), and subsystems initialise inside this loop.
+    if (isRoot()) buildStepBatches(mDrawsRandomNumbers ? StepBatches::Order::Keep : StepBatches::Order::Regroup);
     logSample();
     return Status::ok();
+}
+
+void System::buildStepBatches(StepBatches::Order order)
+{
+    mBatchS = StepBatches(mS, order);
+    mBatchC = StepBatches(mC, order);
+    mBatchQ = StepBatches(mQ, order);
+    for (auto* list : {&mS, &mC, &mQ})
+        for (Component* c : *list)
+            if (c->isSystem()) static_cast<System*>(c)->buildStepBatches(order);
 }
 
 // A component that stopped the simulation in its initialize(): its first error is the reason.
@@ -1075,9 +1099,9 @@ void System::runComponent(Component* c, double time)
 void System::stepOnce()
 {
     const double t = mTime;
-    for (Component* c : mS) runComponent(c, t);
-    for (Component* c : mC) runComponent(c, t);
-    for (Component* c : mQ) runComponent(c, t);
+    mBatchS.step(t);
+    mBatchC.step(t);
+    mBatchQ.step(t);
     ++mTakenSteps;
     logSample();
 }

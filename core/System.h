@@ -4,6 +4,7 @@
 #include "core/Component.h"
 #include "core/LogArena.h"
 #include "core/Status.h"
+#include "core/StepBatches.h"
 
 #include <atomic>
 #include <map>
@@ -177,6 +178,7 @@ private:
     void computeLogSchedule(double t0, double t1);
     void allocateLogStorage();
     void logSample();
+    void buildStepBatches(StepBatches::Order order);
     void stepOnce();
     void packNodeData();
 
@@ -203,6 +205,7 @@ private:
     std::map<std::string, std::unique_ptr<Component>> mComponents;
     std::vector<Component*> mOrder;                // insertion order
     std::vector<Component*> mS, mC, mQ;            // run lists (sorted at initialize)
+    StepBatches mBatchS, mBatchC, mBatchQ;         // the same, as the step runs them
     std::vector<Component*> mDisabled;
     Port* mOnPort = nullptr;
     double* mpOn = nullptr;
