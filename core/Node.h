@@ -12,24 +12,28 @@ namespace tlmhub {
 class Port;
 class System;
 
-// One node's logged samples: a view into its system's LogArena ([sample][variable]).
+// One node's logged samples: a view into its system's LogArena, which stores a log step's
+// values of all the system's logged nodes side by side (a row per sample), so logging a
+// step writes one contiguous row.
 class LogBuffer {
 public:
-    void assign(double* data, std::size_t n)
+    // `first`: this node's values in sample 0; `stride`: values per row.
+    void assign(double* first, std::size_t stride, std::size_t samples)
     {
-        mData = n ? data : nullptr;
-        mSize = n;
+        mData = samples ? first : nullptr;
+        mStride = stride;
+        mSamples = samples;
     }
-    void clear() { assign(nullptr, 0); }
-    bool empty() const { return mSize == 0; }
-    std::size_t size() const { return mSize; }
-    double* data() { return mData; }
-    const double* data() const { return mData; }
-    double operator[](std::size_t i) const { return mData[i]; }
+    void clear() { assign(nullptr, 0, 0); }
+    bool empty() const { return mSamples == 0; }
+    std::size_t samples() const { return mSamples; }
+    double* sample(std::size_t slot) { return mData + slot * mStride; }
+    double value(std::size_t slot, std::size_t variable) const { return mData[slot * mStride + variable]; }
 
 private:
     double* mData = nullptr;
-    std::size_t mSize = 0;
+    std::size_t mStride = 0;
+    std::size_t mSamples = 0;
 };
 
 class Node {
@@ -56,11 +60,11 @@ public:
     std::string signalUnit;
 
     // --- logging (§4) ---
-    // Logged samples, nSamples * size() doubles (sample-major).
+    // Logged samples, each of size() values.
     LogBuffer logData;
     System* logOwner = nullptr;   // system whose time vector belongs to logData
     // Copies the current values into sample `slot` of logData.
-    void logSample(std::size_t slot) { std::copy(mData, mData + size(), logData.data() + slot * size()); }
+    void logSample(std::size_t slot) { std::copy(mData, mData + size(), logData.sample(slot)); }
 
 private:
     NodeType mType;

@@ -1,5 +1,6 @@
 #include "core/Results.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -70,11 +71,9 @@ std::vector<double> loggedData(const Port& port, int slot, std::size_t count)
     std::vector<double> out;
     const Node* n = port.node();
     if (!n || n->logData.empty()) return out;
-    const std::size_t sz = n->size();
-    const std::size_t slots = n->logData.size() / sz;
-    if (count > slots) count = slots;
+    count = std::min(count, n->logData.samples());
     out.resize(count);
-    for (std::size_t i = 0; i < count; ++i) out[i] = n->logData[i * sz + slot];
+    for (std::size_t i = 0; i < count; ++i) out[i] = n->logData.value(i, slot);
     return out;
 }
 
@@ -83,13 +82,10 @@ void appendLoggedData(const Port& port, int slot, std::size_t from, std::size_t 
 {
     const Node* n = port.node();
     if (!n || n->logData.empty()) return;
-    const std::size_t sz = n->size();
-    const std::size_t slots = n->logData.size() / sz;
-    if (to > slots) to = slots;
+    to = std::min(to, n->logData.samples());
     if (from >= to) return;
     out.reserve(out.size() + (to - from));
-    const double* base = n->logData.data() + slot;
-    for (std::size_t i = from; i < to; ++i) out.push_back(base[i * sz]);
+    for (std::size_t i = from; i < to; ++i) out.push_back(n->logData.value(i, slot));
 }
 
 bool findNonFinite(const System& root, std::string& where)

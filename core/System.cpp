@@ -905,14 +905,23 @@ void System::allocateLogStorage()
     for (Port* p : ports())
         if (!p->isMultiport()) consider(p);
 
-    std::size_t total = 0;
-    for (const Node* n : mLoggedNodes) total += mLogSteps.size() * n->size();
-    mLogArena.reserve(total);
-    double* next = mLogArena.data();
+    // One row per log step: the logged nodes' values side by side. Nodes whose data lie
+    // next to each other in the node block (most of them, both being in model order) are
+    // copied by one run.
+    mLogRowSize = 0;
+    mLogCopies.clear();
     for (Node* n : mLoggedNodes) {
-        const std::size_t values = mLogSteps.size() * n->size();
-        n->logData.assign(next, values);
-        next += values;
+        if (!mLogCopies.empty() && mLogCopies.back().from + mLogCopies.back().count == n->data())
+            mLogCopies.back().count += n->size();
+        else
+            mLogCopies.push_back({n->data(), n->size()});
+        mLogRowSize += n->size();
+    }
+    mLogArena.reserve(mLogSteps.size() * mLogRowSize);
+    std::size_t offset = 0;
+    for (Node* n : mLoggedNodes) {
+        n->logData.assign(mLogArena.data() + offset, mLogRowSize, mLogSteps.size());
+        offset += n->size();
     }
 }
 
@@ -920,7 +929,11 @@ void System::logSample()
 {
     if (mLogCounter >= mLogSteps.size() || mLogSteps[mLogCounter] != mTakenSteps) return;
     mLogTime[mLogCounter] = mTime;
-    for (Node* n : mLoggedNodes) n->logSample(mLogCounter);
+    double* row = mLogArena.data() + mLogCounter * mLogRowSize;
+    for (const LogCopy& copy : mLogCopies) {
+        std::copy(copy.from, copy.from + copy.count, row);
+        row += copy.count;
+    }
     ++mLogCounter;
 }
 

@@ -223,7 +223,13 @@ private:
     std::vector<double> mLogTime;
     std::size_t mLogCounter = 0;
     std::vector<Node*> mLoggedNodes;
-    LogArena mLogArena;   // the logged samples of mLoggedNodes, one block
+    LogArena mLogArena;   // the logged samples of mLoggedNodes, one row per log step
+    std::size_t mLogRowSize = 0;
+    struct LogCopy {
+        const double* from;   // node data, contiguous for `count` values
+        std::size_t count;
+    };
+    std::vector<LogCopy> mLogCopies;   // a row's values, in row order
 
     // Root: every node's data in one contiguous block (filled at initialize).
     std::vector<double> mNodeArena;
