@@ -73,6 +73,7 @@ def errors(*statuses):
              "403": "forbidden (role may not do this) or account_disabled (login of a disabled account)",
              "404": "not_found (also for objects of others the caller may not read)",
              "409": "conflict", "413": "payload_too_large", "429": "rate_limited or limit_exceeded",
+             "503": "busy (too many logins or password changes wait for a hashing thread; Retry-After: 1)",
              "507": "storage_full (the server's disk is full: deleting still works)"}
     return {s: {"description": texts[s], "content": {"application/json": {"schema": ref("ErrorBody")}}}
             for s in statuses}
@@ -99,19 +100,19 @@ paths = {
     "/openapi.json": {"get": op("This document", ok("OpenAPI 3.0 document", {"type": "object"}),
                                 public=True, tag="meta")},
     "/auth/login": {"post": op("Log in; returns a bearer token",
-                               {**ok("Logged in", "LoginResponse"), **errors("400", "401", "429")},
+                               {**ok("Logged in", "LoginResponse"), **errors("400", "401", "429", "503")},
                                body=json_body("LoginRequest"), public=True, tag="auth")},
     "/auth/logout": {"post": op("Revoke the token used", {"204": {"description": "Logged out"},
                                                           **errors("401")}, tag="auth")},
     "/auth/me": {"get": op("The logged-in user", {**ok("The user", "User"), **errors("401")}, tag="auth")},
     "/auth/password": {"post": op("Change the own password (new one at least 8 characters)",
-                                  {"204": {"description": "Changed"}, **errors("400", "401")},
+                                  {"204": {"description": "Changed"}, **errors("400", "401", "503")},
                                   body=json_body("PasswordChange"), tag="auth")},
     "/users": {
         "get": op("List users (admin)", {**ok("Users", {"type": "array", "items": ref("User")}),
                                          **errors("401", "403")}, tag="users"),
         "post": op("Create a user (admin); names are unique regardless of case",
-                   {**ok("Created", "User", "201"), **errors("400", "401", "403", "409")},
+                   {**ok("Created", "User", "201"), **errors("400", "401", "403", "409", "503")},
                    body=json_body("UserCreate"), tag="users")},
     "/users/{id}": {
         "patch": op("Change a user's role and/or disable or re-enable the account (admin); the last "

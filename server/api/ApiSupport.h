@@ -47,11 +47,17 @@ struct Call {
 
 using RouteHandler = std::function<Response(Services&, Call&)>;
 
+// Where a route's handler runs. Instant: on the I/O thread (no storage, microseconds: a
+// health probe must answer while everything else is busy). Storage: on the request pool.
+// PasswordHash: on the bounded hashing pool (an argon2id hash or check per call).
+enum class RouteWork { Storage, Instant, PasswordHash };
+
 struct RouteSpec {
     http::verb method;
     std::string pattern;   // below /api/v1
     bool needsAuth;
     RouteHandler handler;
+    RouteWork work = RouteWork::Storage;
 };
 
 Response jsonResponse(http::status status, const nlohmann::json& body);

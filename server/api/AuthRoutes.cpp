@@ -76,10 +76,10 @@ Response downloadLink(Services& s, Call& call)
 
 void addAuthRoutes(std::vector<RouteSpec>& routes)
 {
-    routes.push_back({http::verb::post, "/auth/login", false, login});
+    routes.push_back({http::verb::post, "/auth/login", false, login, RouteWork::PasswordHash});
     routes.push_back({http::verb::post, "/auth/logout", true, logout});
     routes.push_back({http::verb::get, "/auth/me", true, me});
-    routes.push_back({http::verb::post, "/auth/password", true, changePassword});
+    routes.push_back({http::verb::post, "/auth/password", true, changePassword, RouteWork::PasswordHash});
     routes.push_back({http::verb::post, "/auth/download-link", true, downloadLink});
 }
 

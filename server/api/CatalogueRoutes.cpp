@@ -45,8 +45,8 @@ Response stats(Services&, Call& call)
 
 void addCatalogueRoutes(std::vector<RouteSpec>& routes)
 {
-    routes.push_back({http::verb::get, "/health", false, health});
-    routes.push_back({http::verb::get, "/openapi.json", false, openapi});
+    routes.push_back({http::verb::get, "/health", false, health, RouteWork::Instant});
+    routes.push_back({http::verb::get, "/openapi.json", false, openapi, RouteWork::Instant});
     routes.push_back({http::verb::get, "/components", true, components});
     routes.push_back({http::verb::get, "/stats", true, stats});
 }

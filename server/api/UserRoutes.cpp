@@ -65,7 +65,7 @@ Response updateUser(Services& s, Call& call)
 void addUserRoutes(std::vector<RouteSpec>& routes)
 {
     routes.push_back({http::verb::get, "/users", true, listUsers});
-    routes.push_back({http::verb::post, "/users", true, createUser});
+    routes.push_back({http::verb::post, "/users", true, createUser, RouteWork::PasswordHash});
     routes.push_back({http::verb::patch, "/users/{id}", true, updateUser});
 }
 

@@ -4,8 +4,10 @@
 #include "server/app/Bootstrap.h"
 #include "server/http/HttpSession.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 
 namespace tlmhub::server {
 
@@ -14,6 +16,8 @@ const std::string kApiPrefix = "/api/v1";
 // An open WebSocket whose login ended (expiry included) closes within this period.
 constexpr auto kLoginCheckPeriod = std::chrono::milliseconds(250);
 constexpr auto kDownloadLinkTtl = std::chrono::seconds(60);
+// Logins and password changes waiting for a hashing thread; more are answered 503 at once.
+constexpr std::size_t kHashingQueueLimit = 256;
 } // namespace
 
 TlmhubApp::TlmhubApp(const ServerOptions& options)
@@ -47,20 +51,11 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     addUserRoutes(routes);
     addModelRoutes(routes);
     addJobRoutes(routes);
-    for (RouteSpec& r : routes) {
-        const bool needsAuth = r.needsAuth;
-        RouteHandler handler = std::move(r.handler);
-        mRouter.add(r.method, kApiPrefix + r.pattern,
-                    [this, needsAuth, handler](Services& s, Call& call) -> Response {
-                        if (needsAuth) {
-                            call.user = authenticate(call.request, call.params, call.token, false);
-                            if (!call.user)
-                                return apiError(http::status::unauthorized, "unauthorized",
-                                                "log in first: send 'Authorization: Bearer <token>'");
-                        }
-                        return handler(s, call);
-                    });
-    }
+    for (RouteSpec& r : routes)
+        mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
+                                            kHashingQueueLimit);
 }
 
 TlmhubApp::~TlmhubApp()
@@ -85,6 +80,7 @@ void TlmhubApp::startJobs()
 
 void TlmhubApp::shutdown()
 {
+    if (mPools) mPools->stop();
     if (mQueue) mQueue->shutdown();
 }
 
@@ -111,29 +107,65 @@ std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteP
     return std::nullopt;
 }
 
-Response TlmhubApp::handle(const Incoming& in)
+void TlmhubApp::handle(const Incoming& in, Reply reply)
 {
     const std::string target(in.request.target());
-    if (target.rfind(kApiPrefix + "/", 0) != 0 && target != kApiPrefix)
-        return mStaticFiles.serve(in.request, parseRequestTarget(target).pathOnly);
-    const RouteHandler* handler = nullptr;
+    if (target.rfind(kApiPrefix + "/", 0) != 0 && target != kApiPrefix) {
+        // Static files are read from disk: not on the I/O thread either.
+        mPools->runRequest([this, &request = in.request, target, reply = std::move(reply)] {
+            reply(mStaticFiles.serve(request, parseRequestTarget(target).pathOnly));
+        });
+        return;
+    }
+    const Route* route = nullptr;
     RouteParams params;
-    switch (mRouter.find(in.request.method(), target, handler, params)) {
-    case Router<RouteHandler>::Match::None:
-        return apiError(http::status::not_found, "not_found", "no API route " + params.pathOnly);
-    case Router<RouteHandler>::Match::WrongMethod:
-        return apiError(http::status::method_not_allowed, "bad_request",
-                        std::string(in.request.method_string()) + " is not allowed on " + params.pathOnly);
-    case Router<RouteHandler>::Match::Found:
+    switch (mRouter.find(in.request.method(), target, route, params)) {
+    case Router<Route>::Match::None:
+        return reply(apiError(http::status::not_found, "not_found", "no API route " + params.pathOnly));
+    case Router<Route>::Match::WrongMethod:
+        return reply(apiError(http::status::method_not_allowed, "bad_request",
+                              std::string(in.request.method_string()) + " is not allowed on " + params.pathOnly));
+    case Router<Route>::Match::Found:
         break;
     }
-    Call call{in.request, in.clientAddress, std::move(params), std::nullopt, {}};
+    auto run = [this, &request = in.request, address = in.clientAddress, params = std::move(params), route,
+                reply]() mutable {
+        Call call{request, address, std::move(params), std::nullopt, {}};
+        reply(callRoute(*route, call));
+    };
+    switch (route->work) {
+    case RouteWork::Instant:
+        return run();
+    case RouteWork::Storage:
+        return mPools->runRequest(std::move(run));
+    case RouteWork::PasswordHash:
+        if (!mPools->runHashing(std::move(run))) {
+            Response busy = apiError(http::status::service_unavailable, "busy",
+                                     "too many logins and password changes at once; try again in a moment");
+            busy.set(http::field::retry_after, "1");
+            reply(std::move(busy));
+        }
+        return;
+    }
+}
+
+Response TlmhubApp::callRoute(const Route& route, Call& call)
+{
     try {
-        return (*handler)(*mServices, call);
+        if (route.needsAuth) {
+            call.user = authenticate(call.request, call.params, call.token, false);
+            if (!call.user)
+                return apiError(http::status::unauthorized, "unauthorized",
+                                "log in first: send 'Authorization: Bearer <token>'");
+        }
+        return route.handler(*mServices, call);
     } catch (const SQLite::Exception& e) {
-        if (!Database::isDiskFull(e)) throw;
+        if (!Database::isDiskFull(e))
+            return apiError(http::status::internal_server_error, "internal", e.what());
         return apiError(http::status::insufficient_storage, "storage_full",
                         "the server's disk is full: delete jobs or models to free space");
+    } catch (const std::exception& e) {
+        return apiError(http::status::internal_server_error, "internal", e.what());
     }
 }
 

@@ -2,6 +2,7 @@
 // The composition root of a running server: opens the database, builds the stores, the job
 // queue and the routes, and answers the transport's requests.
 #include "server/api/ApiSupport.h"
+#include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
@@ -25,13 +26,20 @@ public:
     void startJobs();
     void shutdown();   // stops running jobs (marked interrupted) and the workers
 
-    Response handle(const Incoming& in) override;
+    void handle(const Incoming& in, Reply reply) override;
     std::shared_ptr<WebSocketHandler> acceptWebSocket(const Incoming& in,
                                                       std::shared_ptr<WebSocketSender> sender,
                                                       Response& refusal) override;
     int interruptedAtStart() const { return mInterruptedAtStart; }
 
 private:
+    struct Route {
+        bool needsAuth;
+        RouteWork work;
+        RouteHandler handler;
+    };
+    // Authenticates where the route needs it, then runs it; errors become error responses.
+    Response callRoute(const Route& route, Call& call);
     // Bearer header; or, where `queryToken` allows (the WebSocket upgrade), ?token=; or, on
     // GET, a signed download link.
     std::optional<User> authenticate(const Request& request, const RouteParams& params,
@@ -51,9 +59,11 @@ private:
     std::unique_ptr<LiveSessions> mLiveSessions;
     std::unique_ptr<DownloadLinks> mDownloadLinks;
     std::unique_ptr<Services> mServices;
-    Router<RouteHandler> mRouter;
+    Router<Route> mRouter;
     StaticFiles mStaticFiles;
     int mInterruptedAtStart = 0;
+    // Last: destroyed first, so no handler runs on a store that is gone.
+    std::unique_ptr<HandlerPools> mPools;
 };
 
 } // namespace tlmhub::server

@@ -4,6 +4,7 @@
 #include "server/http/HttpTypes.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -31,8 +32,11 @@ public:
 
 class HttpApplication {
 public:
+    using Reply = std::function<void(Response)>;
     virtual ~HttpApplication() = default;
-    virtual Response handle(const Incoming& in) = 0;
+    // Answers a request by calling `reply` once, at once or later on any thread; `in` stays
+    // valid until then. An I/O thread calls this: what takes long must go elsewhere.
+    virtual void handle(const Incoming& in, Reply reply) = 0;
     // A WebSocket upgrade request: a handler to accept it, or null with `refusal` filled.
     virtual std::shared_ptr<WebSocketHandler> acceptWebSocket(
         const Incoming& in, std::shared_ptr<WebSocketSender> sender, Response& refusal) = 0;

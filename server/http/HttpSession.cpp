@@ -66,9 +66,9 @@ void HttpSession::onRead(beast::error_code ec)
         return write(errorResponse(http::status::bad_request, "bad_request",
                                    "malformed HTTP request: " + ec.message()));
     }
-    Request request = mParser->release();
-    const Incoming in{request, mClientAddress};
-    if (beast::websocket::is_upgrade(request)) {
+    auto request = std::make_shared<Request>(mParser->release());
+    if (beast::websocket::is_upgrade(*request)) {
+        const Incoming in{*request, mClientAddress};
         auto wsSession = std::make_shared<WebSocketSession>(mStream.release_socket(), mLimits);
         Response refusal;
         auto handler = mApp.acceptWebSocket(in, wsSession->sender(), refusal);
@@ -77,18 +77,23 @@ void HttpSession::onRead(beast::error_code ec)
             wsSession->refuse(std::move(refusal));
             return;
         }
-        wsSession->start(std::move(request), std::move(handler));
+        wsSession->start(std::move(*request), std::move(handler));
         return;
     }
-    Response response;
+    // The reply may come from another thread: it is written on this session's strand. The
+    // next request is read only after it, so a request is handled one at a time per session.
+    auto reply = [self = shared_from_this(), request](Response response) {
+        net::dispatch(self->mStream.get_executor(), [self, request, response = std::move(response)]() mutable {
+            response.version(request->version());
+            response.keep_alive(request->keep_alive());
+            self->write(std::move(response), request->method() == http::verb::head);
+        });
+    };
     try {
-        response = mApp.handle(in);
+        mApp.handle(Incoming{*request, mClientAddress}, reply);
     } catch (const std::exception& e) {
-        response = errorResponse(http::status::internal_server_error, "internal", e.what());
+        reply(errorResponse(http::status::internal_server_error, "internal", e.what()));
     }
-    response.version(request.version());
-    response.keep_alive(request.keep_alive());
-    write(std::move(response), request.method() == http::verb::head);
 }
 
 void HttpSession::write(Response response, bool headOnly)

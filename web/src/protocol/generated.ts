@@ -36,6 +36,7 @@ export type ErrorCode =
     | 'not_open'
     | 'simulation_failed'
     | 'storage_full'
+    | 'busy'
     | 'internal';
 export type Role = 'admin' | 'teacher' | 'user';
 /**

@@ -1,0 +1,43 @@
+#include "server/app/HandlerPools.h"
+
+#include <boost/asio/post.hpp>
+
+namespace tlmhub::server {
+
+HandlerPools::HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit)
+    : mRequests(requestThreads), mHashing(hashingThreads), mHashingQueueLimit(hashingQueueLimit)
+{
+}
+
+HandlerPools::~HandlerPools()
+{
+    stop();
+}
+
+void HandlerPools::runRequest(std::function<void()> task)
+{
+    boost::asio::post(mRequests, std::move(task));
+}
+
+bool HandlerPools::runHashing(std::function<void()> task)
+{
+    if (mHashingPending.fetch_add(1) >= mHashingQueueLimit) {
+        mHashingPending.fetch_sub(1);
+        return false;
+    }
+    boost::asio::post(mHashing, [this, task = std::move(task)] {
+        mHashingPending.fetch_sub(1);
+        task();
+    });
+    return true;
+}
+
+void HandlerPools::stop()
+{
+    mRequests.stop();
+    mHashing.stop();
+    mRequests.join();
+    mHashing.join();
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,35 @@
+#pragma once
+// The threads REST handlers run on, so no I/O thread waits for storage or a password hash:
+// a request pool for handlers that touch the database, and a smaller pool for password
+// hashing (argon2id at its interactive limits takes tens of milliseconds of CPU per call).
+// The hashing pool is bounded: forty students logging in at once queue there, while other
+// requests and health probes go on.
+#include <boost/asio/thread_pool.hpp>
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+
+namespace tlmhub::server {
+
+class HandlerPools {
+public:
+    HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit);
+    ~HandlerPools();
+    HandlerPools(const HandlerPools&) = delete;
+    HandlerPools& operator=(const HandlerPools&) = delete;
+
+    void runRequest(std::function<void()> task);
+    // False (and `task` not run) when `hashingQueueLimit` hashing tasks are already waiting.
+    bool runHashing(std::function<void()> task);
+    // Waits for the tasks already started; later ones do not run.
+    void stop();
+
+private:
+    boost::asio::thread_pool mRequests;
+    boost::asio::thread_pool mHashing;
+    const std::size_t mHashingQueueLimit;
+    std::atomic<std::size_t> mHashingPending{0};
+};
+
+} // namespace tlmhub::server

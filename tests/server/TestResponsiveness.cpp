@@ -1,0 +1,78 @@
+// No I/O thread waits for slow work: while a class logs in at once (argon2id, tens of
+// milliseconds of CPU each) and running jobs are cancelled, health probes still answer fast.
+#include "ServerHarness.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace tlmhub::test {
+namespace {
+
+namespace http = boost::beast::http;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kStudents = 40;
+constexpr int kMinProbes = 200;
+constexpr auto kProbeBound = std::chrono::milliseconds(500);
+
+TEST(Responsiveness, HealthAnswersWhileFortyLogInAndJobsAreCancelled)
+{
+    ServerProcess server(freshTempDir("responsiveness"));
+    HttpClient admin = loggedInAs(server, "admin");
+    // Long runs to cancel while the logins go on.
+    std::vector<std::int64_t> jobs;
+    for (int i = 0; i < 2; ++i) {
+        const auto r = admin.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 500.0}});
+        ASSERT_EQ(r.status, 201) << r.body;
+        jobs.push_back(r.json()["id"].get<std::int64_t>());
+    }
+
+    std::atomic<int> loginsOk{0}, loginsDone{0};
+    std::vector<std::thread> students;
+    for (int i = 0; i < kStudents; ++i) {
+        students.emplace_back([&] {
+            HttpClient client(server.port());
+            const auto r = client.post("/api/v1/auth/login", {{"username", "admin"}, {"password", kAdminPassword}});
+            if (r.status == 200 && r.json().contains("token")) ++loginsOk;
+            ++loginsDone;
+        });
+    }
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        HttpClient client = admin;
+        for (std::int64_t job : jobs) client.request(http::verb::delete_, "/api/v1/jobs/" + std::to_string(job));
+    });
+
+    // Probe one after the other until every login is answered and enough probes were made.
+    HttpClient probe(server.port());
+    int probes = 0, slow = 0, failed = 0;
+    Clock::duration slowest{};
+    while (probes < kMinProbes || loginsDone.load() < kStudents) {
+        const auto sent = Clock::now();
+        const auto r = probe.get("/api/v1/health");
+        const auto took = Clock::now() - sent;
+        ++probes;
+        if (r.status != 200) ++failed;
+        if (took > kProbeBound) ++slow;
+        slowest = std::max(slowest, took);
+        if (probes > 20000) break;   // the logins never finished: reported below
+    }
+    for (auto& s : students) s.join();
+    canceller.join();
+
+    EXPECT_EQ(loginsOk.load(), kStudents);
+    EXPECT_GE(probes, kMinProbes);
+    EXPECT_EQ(failed, 0);
+    EXPECT_EQ(slow, 0) << "slowest probe: "
+                       << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count() << " ms";
+    for (std::int64_t job : jobs)
+        EXPECT_EQ(admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"], "cancelled");
+}
+
+} // namespace
+} // namespace tlmhub::test
