@@ -25,14 +25,22 @@ public:
         mMerged += other.mMerged + 1;
     }
     std::size_t bytes() const override { return mSamples.size(); }
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "s" + std::to_string(...).
     std::string text() override
     {
-        return "s" + std::to_string(mStream) + ":" + mSamples + (mMerged ? "+" + std::to_string(mMerged) : "");
+        std::string out = "s";
+        out += std::to_string(mStream);
+        out += ':';
+        out += mSamples;
+        if (mMerged) out += '+' + std::to_string(mMerged);
+        return out;
     }
     std::string giveUp() override
     {
         *mGivenUp = true;
-        return "resync" + std::to_string(mStream);
+        std::string out = "resync";
+        out += std::to_string(mStream);
+        return out;
     }
     bool streamGivenUp() const override { return *mGivenUp; }
 
