@@ -142,6 +142,7 @@ void WebSocketSession::writeNext()
                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
                         self->mWriting = false;
                         self->mQueue.written();
+                        std::string().swap(self->mWritten);   // a merged frame can be megabytes
                         if (ec) return self->closed();
                         if (self->mClosing) return self->sendClose();
                         self->trackQueuedBytes();
