@@ -16,12 +16,12 @@ using namespace tlmhub;
 
 class CheckingSender : public server::WebSocketSender {
 public:
-    void send(std::string text, bool) override
+    void send(std::string text) override
     {
         const nlohmann::json frame = nlohmann::json::parse(text, nullptr, false);
         if (!frame.is_object() || !frame.contains("type")) fuzz::fail("server sent a frame that is not a message: " + text);
     }
-    std::uint64_t droppedCount() const override { return 0; }
+    void sendFrame(std::unique_ptr<server::MergeableFrame> frame) override { send(frame->text()); }
     void close(std::string) override {}
 };
 

@@ -1,5 +1,6 @@
 #include "server/api/WsApi.h"
 
+#include "server/api/QueuedFrame.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/http/JsonText.h"
 #include "server/protocol/SchemaValidator.h"
@@ -45,8 +46,7 @@ WsApi::WsApi(Services& services, User user, const std::string& token, std::share
     : mServices(services), mUser(std::move(user)), mSender(std::move(sender)),
       mLiveSession(services.liveSessions.add(token, mUser.id, mSender))
 {
-    mSender->send(toJsonText({{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}),
-                  false);
+    mSender->send(toJsonText({{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}));
 }
 
 WsApi::~WsApi() = default;
@@ -60,8 +60,7 @@ void WsApi::onClose()
 
 void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
 {
-    mSender->send(toJsonText({{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}),
-                  false);
+    mSender->send(toJsonText({{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}));
 }
 
 void WsApi::onMessage(const std::string& text)
@@ -82,7 +81,7 @@ void WsApi::onMessage(const std::string& text)
         mAfterReply = nullptr;
         return sendError(id, reply.code, reply.message);
     }
-    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}), false);
+    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}));
     // Stream events start after the reply, so a client always knows the job id first.
     if (mAfterReply) std::exchange(mAfterReply, nullptr)();
 }
@@ -156,15 +155,22 @@ void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
         for (const auto& v : msg["variables"]) variables.push_back(v.get<std::string>());
     if (variables.size() > kMaxStreamedVariables) variables.resize(kMaxStreamedVariables);
     const double rate = msg.value("rate", 30.0);
-    // The sink runs on the job's thread: it only serialises and queues, never waits.
+    // The sink runs on the job's thread: it only queues, never waits. Frames stay numbers
+    // until written, so the socket's queue can merge them (QueuedFrame).
     std::weak_ptr<WebSocketSender> weakSender = mSender;
-    mSubscriptions.push_back(mServices.queue.subscribe(jobId, variables, rate, [weakSender](nlohmann::json event) {
+    auto stream = std::make_shared<FrameStream>();
+    stream->id = ++mStreams;
+    StreamSink sink;
+    sink.event = [weakSender](nlohmann::json event) {
+        if (auto sender = weakSender.lock()) sender->send(toJsonText(event));
+    };
+    sink.frame = [weakSender, stream](StreamFrame frame) {
         auto sender = weakSender.lock();
-        if (!sender) return;
-        const bool isFrame = event.value("type", "") == "event.frame";
-        if (isFrame) event["dropped"] = sender->droppedCount();
-        sender->send(toJsonText(event), isFrame);
-    }));
+        // After event.resync the client reads the stored result: no more frames for it.
+        if (!sender || stream->givenUp.load()) return;
+        sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
+    };
+    mSubscriptions.push_back(mServices.queue.subscribe(jobId, variables, rate, std::move(sink)));
 }
 
 WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)

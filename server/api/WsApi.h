@@ -41,6 +41,7 @@ private:
     std::optional<std::int64_t> mModelId;
     std::string mModelName;
     std::vector<std::uint64_t> mSubscriptions;
+    std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;
 };
 

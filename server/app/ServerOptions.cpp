@@ -27,8 +27,11 @@ const char* kHelp =
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
     "  --max-model-components N components and subsystems in a model (default 20000)\n"
     "  --max-model-depth N      subsystems nested in subsystems (default 16)\n"
-    "  --max-ws-queue-bytes N   replies waiting for a WebSocket client that does not read;\n"
-    "                           past it the connection is closed (default 16777216)\n"
+    "  --max-ws-queue-messages N  messages waiting for a slow WebSocket client; past it a\n"
+    "                           job's new samples merge into its waiting frame (default 256)\n"
+    "  --max-ws-queue-bytes N   bytes waiting for a WebSocket client: past it a job's waiting\n"
+    "                           frames give way to event.resync, and a client whose replies\n"
+    "                           alone pass it is disconnected (default 16777216)\n"
     "  --disk-reserve-bytes N   space kept beside the database and given back when the disk\n"
     "                           is full, so logging in and deleting still work (default 8388608)\n"
     "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
@@ -107,6 +110,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.model.maxComponents);
         } else if (flag == "--max-model-depth") {
             ok = parseNumber(value, o.limits.model.maxDepth);
+        } else if (flag == "--max-ws-queue-messages") {
+            ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
         } else if (flag == "--max-ws-queue-bytes") {
             ok = parseNumber(value, o.wsQueueBytes);
         } else {

@@ -20,8 +20,8 @@ struct ServerOptions {
     std::chrono::seconds tokenTtl{12 * 3600};
     std::chrono::seconds resultTtl{0};          // finished jobs kept this long; 0 = for ever
     std::size_t maxBodyBytes = 24u << 20;       // above limits.model.maxBytes: a JSON-wrapped model
-    std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before drop-oldest
-    std::size_t wsQueueBytes = 16u << 20;       // bytes queued per WebSocket before it is closed
+    std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before frames merge
+    std::size_t wsQueueBytes = 16u << 20;       // bytes per WebSocket: frames resync, then it closes
     std::size_t diskReserveBytes = 8u << 20;    // given back when the disk is full (deleting works)
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};

@@ -2,6 +2,7 @@
 // The boundary between the transport (sockets, HTTP parsing, WebSocket framing) and the
 // application (routes, users, jobs). The transport knows nothing of tlmhub's API.
 #include "server/http/HttpTypes.h"
+#include "server/http/MergeableFrame.h"
 
 #include <cstdint>
 #include <functional>
@@ -14,10 +15,11 @@ namespace tlmhub::server {
 class WebSocketSender {
 public:
     virtual ~WebSocketSender() = default;
-    // Queues a text message. `droppable` messages (stream frames) are the ones thrown away,
-    // oldest first, when the connection's queue is full; replies are never dropped.
-    virtual void send(std::string text, bool droppable) = 0;
-    virtual std::uint64_t droppedCount() const = 0;
+    // Queues a reply or event; these are never dropped.
+    virtual void send(std::string text) = 0;
+    // Queues a stream frame, which a slow connection merges with the next frames of its
+    // stream, or gives up for the frame's notice past its byte limit (OutgoingQueue).
+    virtual void sendFrame(std::unique_ptr<MergeableFrame> frame) = 0;
     // Ends the connection with a close frame giving `reason`; nothing queued is sent after.
     virtual void close(std::string reason) = 0;
 };

@@ -10,8 +10,8 @@ namespace tlmhub::server {
 
 struct TransportLimits {
     std::size_t maxBodyBytes = 8u << 20;
-    std::size_t wsQueueLimit = 256;           // messages; past it the oldest frame goes
-    std::size_t wsQueueBytes = 16u << 20;     // bytes; past it (replies alone) the socket closes
+    std::size_t wsQueueLimit = 256;           // messages; past it a stream's frames merge
+    std::size_t wsQueueBytes = 16u << 20;     // bytes; past it frames resync, then the socket closes
 };
 
 class Listener : public std::enable_shared_from_this<Listener> {

@@ -1,39 +1,95 @@
 #include "server/http/OutgoingQueue.h"
 
 #include <algorithm>
+#include <map>
 
 namespace tlmhub::server {
 
-bool OutgoingQueue::dropOldestFrame(bool frontInFlight)
+void OutgoingQueue::push(std::string text)
 {
-    const auto first = mItems.begin() + (frontInFlight && !mItems.empty() ? 1 : 0);
-    const auto oldest = std::find_if(first, mItems.end(), [](const Item& i) { return i.droppable; });
-    if (oldest == mItems.end()) return false;
-    mBytes -= oldest->text.size();
-    mItems.erase(oldest);
-    ++mDropped;
-    return true;
+    const std::size_t size = text.size();
+    add({std::move(text), nullptr, size});
 }
 
-bool OutgoingQueue::push(std::string text, bool droppable, bool frontInFlight)
+void OutgoingQueue::push(std::unique_ptr<MergeableFrame> frame)
 {
-    if (mItems.size() >= mLimit && !dropOldestFrame(frontInFlight) && droppable) {
-        ++mDropped;   // only replies waiting: the new frame goes instead
-        return false;
+    if (frame->streamGivenUp()) return;
+    if (mItems.size() >= mLimit) {
+        if (Item* waiting = lastFrameOf(frame->stream())) {
+            mBytes -= waiting->bytes;
+            waiting->frame->merge(*frame);
+            waiting->bytes = waiting->frame->bytes();
+            mBytes += waiting->bytes;
+            return giveUpStreamsPastTheByteLimit();
+        }
     }
-    const auto first = mItems.begin() + (frontInFlight && !mItems.empty() ? 1 : 0);
-    const auto olderFrames = std::count_if(first, mItems.end(), [](const Item& i) { return i.droppable; });
-    mBytes += text.size();
-    mItems.push_back({std::move(text), droppable});
-    std::ptrdiff_t drops = 0;
-    while (overflowing() && dropOldestFrame(frontInFlight)) ++drops;
-    return drops <= olderFrames;   // more drops than older frames: the new one went too
+    const std::size_t size = frame->bytes();
+    add({{}, std::move(frame), size});
 }
 
-void OutgoingQueue::pop()
+void OutgoingQueue::add(Item item)
 {
-    mBytes -= mItems.front().text.size();
+    mBytes += item.bytes;
+    mItems.push_back(std::move(item));
+    giveUpStreamsPastTheByteLimit();
+}
+
+OutgoingQueue::Item* OutgoingQueue::lastFrameOf(std::uint64_t stream)
+{
+    for (auto it = mItems.rbegin(); it != mItems.rend(); ++it)
+        if (it->frame && it->frame->stream() == stream) return &*it;
+    return nullptr;
+}
+
+void OutgoingQueue::giveUpStreamsPastTheByteLimit()
+{
+    while (overflowing()) {
+        // The stream holding the most is the one furthest behind; a connection has few streams.
+        std::map<std::uint64_t, std::size_t> waiting;
+        for (const Item& item : mItems)
+            if (item.frame) waiting[item.frame->stream()] += item.bytes;
+        if (waiting.empty()) return;   // replies alone: overflowing() stays true
+        const auto most = std::max_element(waiting.begin(), waiting.end(),
+                                           [](const auto& a, const auto& b) { return a.second < b.second; });
+        giveUp(most->first);
+    }
+}
+
+void OutgoingQueue::giveUp(std::uint64_t stream)
+{
+    auto isFrameOf = [stream](const Item& item) { return item.frame && item.frame->stream() == stream; };
+    // The notice takes the place of the first frame, so it comes before event.done (queued
+    // after every frame of its stream).
+    const auto first = std::find_if(mItems.begin(), mItems.end(), isFrameOf);
+    first->text = first->frame->giveUp();
+    first->frame.reset();
+    mBytes -= first->bytes;
+    first->bytes = first->text.size();
+    mBytes += first->bytes;
+    for (auto it = std::next(first); it != mItems.end();) {
+        if (isFrameOf(*it)) {
+            mBytes -= it->bytes;
+            it = mItems.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+std::string OutgoingQueue::takeNext()
+{
+    Item item = std::move(mItems.front());
     mItems.pop_front();
+    std::string text = item.frame ? item.frame->text() : std::move(item.text);
+    mBytes = mBytes - item.bytes + text.size();
+    mInFlight = text.size();
+    return text;
+}
+
+void OutgoingQueue::written()
+{
+    mBytes -= mInFlight;
+    mInFlight = 0;
 }
 
 void OutgoingQueue::clear()
@@ -41,6 +97,7 @@ void OutgoingQueue::clear()
     mItems.clear();
     mItems.shrink_to_fit();
     mBytes = 0;
+    mInFlight = 0;
 }
 
 } // namespace tlmhub::server

@@ -1,14 +1,23 @@
 #pragma once
-// Messages waiting to be written to one WebSocket. Bounded twice: by count, where the oldest
-// droppable message (a stream frame) makes room and is counted, and by bytes, where frames go
-// first and, if replies alone pass the byte limit, the queue reports itself overflowing (the
-// session then closes: a client that never reads must not hold the server's memory). Replies
-// are never dropped; the message being written (the front, while a write is in flight) is
-// never touched.
+// Messages waiting to be written to one WebSocket, bounded twice:
+// - by count: at the limit, a stream frame is merged into the last waiting frame of its
+//   stream (its samples appended: a slow client gets fewer, larger frames, never fewer
+//   samples). A frame whose stream has none waiting is queued anyway, so the count can pass
+//   the limit by one frame per stream; the byte limit still holds.
+// - by bytes: past the limit, the stream with the most bytes waiting gives way to its notice
+//   (event.resync: the client reads the stored result instead), until the queue fits again.
+//   If replies and notices alone pass the limit the queue reports itself overflowing (the
+//   session then closes: a client that never reads must not hold the server's memory).
+// Replies and events other than frames are never dropped, merged or reordered. The message
+// being written has left the queue (takeNext), so nothing here can touch it, but its bytes
+// count until it is written.
+#include "server/http/MergeableFrame.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace tlmhub::server {
@@ -18,30 +27,37 @@ public:
     explicit OutgoingQueue(std::size_t limit, std::size_t byteLimit = std::numeric_limits<std::size_t>::max())
         : mLimit(limit), mByteLimit(byteLimit) {}
 
-    // Returns false if the message itself was dropped (full of replies, message droppable).
-    bool push(std::string text, bool droppable, bool frontInFlight);
+    void push(std::string text);   // a reply or event: always queued
+    // A frame of a stream that was given up is discarded: its client reads the stored result.
+    void push(std::unique_ptr<MergeableFrame> frame);
     bool empty() const { return mItems.empty(); }
     std::size_t size() const { return mItems.size(); }
     std::size_t bytes() const { return mBytes; }
     bool overflowing() const { return mBytes > mByteLimit; }
-    const std::string& front() const { return mItems.front().text; }
-    void pop();
+    // Removes the first message and returns its text (a waiting frame is written out now);
+    // its bytes count until written().
+    std::string takeNext();
+    void written();
     void clear();
-    std::uint64_t dropped() const { return mDropped; }
 
 private:
     struct Item {
-        std::string text;
-        bool droppable;
+        std::string text;                        // a reply, event or notice; empty for a frame
+        std::unique_ptr<MergeableFrame> frame;   // a frame, still data
+        std::size_t bytes = 0;
     };
-    // Drops the oldest droppable message that is not in flight; false if there is none.
-    bool dropOldestFrame(bool frontInFlight);
+    void add(Item item);
+    // The stream's last waiting frame, or null.
+    Item* lastFrameOf(std::uint64_t stream);
+    void giveUpStreamsPastTheByteLimit();
+    // The stream's first frame becomes its notice; its other frames go.
+    void giveUp(std::uint64_t stream);
 
     std::size_t mLimit;
     std::size_t mByteLimit;
     std::deque<Item> mItems;
-    std::size_t mBytes = 0;
-    std::uint64_t mDropped = 0;
+    std::size_t mBytes = 0;      // waiting and being written
+    std::size_t mInFlight = 0;   // being written
 };
 
 } // namespace tlmhub::server

@@ -18,16 +18,17 @@ public:
     explicit SessionSender(std::weak_ptr<WebSocketSession> session, net::any_io_executor executor)
         : mSession(std::move(session)), mExecutor(std::move(executor)) {}
 
-    void send(std::string text, bool droppable) override
+    void send(std::string text) override
     {
-        net::post(mExecutor, [weak = mSession, text = std::move(text), droppable]() mutable {
-            if (auto session = weak.lock()) session->enqueue(std::move(text), droppable);
+        net::post(mExecutor, [weak = mSession, text = std::move(text)]() mutable {
+            if (auto session = weak.lock()) session->enqueue(std::move(text));
         });
     }
-    std::uint64_t droppedCount() const override
+    void sendFrame(std::unique_ptr<MergeableFrame> frame) override
     {
-        auto session = mSession.lock();
-        return session ? session->droppedCount() : 0;
+        net::post(mExecutor, [weak = mSession, frame = std::move(frame)]() mutable {
+            if (auto session = weak.lock()) session->enqueueFrame(std::move(frame));
+        });
     }
     void close(std::string reason) override
     {
@@ -51,8 +52,7 @@ WebSocketSession::WebSocketSession(net::ip::tcp::socket&& socket, TransportLimit
 
 WebSocketSession::~WebSocketSession()
 {
-    mQueue.clear();
-    trackQueuedBytes();
+    freeQueue();
     if (mCounted) --TransportStats::instance().webSockets;
 }
 
@@ -105,11 +105,22 @@ void WebSocketSession::read()
     });
 }
 
-void WebSocketSession::enqueue(std::string text, bool droppable)
+void WebSocketSession::enqueue(std::string text)
 {
     if (mClosing) return;
-    mQueue.push(std::move(text), droppable, mWriting);
-    mDropped.store(mQueue.dropped());
+    mQueue.push(std::move(text));
+    afterEnqueue();
+}
+
+void WebSocketSession::enqueueFrame(std::unique_ptr<MergeableFrame> frame)
+{
+    if (mClosing) return;
+    mQueue.push(std::move(frame));
+    afterEnqueue();
+}
+
+void WebSocketSession::afterEnqueue()
+{
     trackQueuedBytes();
     if (mQueue.overflowing()) {
         // Replies alone fill the limit: the client is not reading. Free the memory now; a
@@ -124,13 +135,16 @@ void WebSocketSession::writeNext()
 {
     if (mWriting || !mOpen || mClosing || mQueue.empty()) return;
     mWriting = true;
+    mWritten = mQueue.takeNext();
+    trackQueuedBytes();
     mWs.text(true);
-    mWs.async_write(net::buffer(mQueue.front()),
+    mWs.async_write(net::buffer(mWritten),
                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
                         self->mWriting = false;
+                        self->mQueue.written();
+                        std::string().swap(self->mWritten);   // a merged frame can be megabytes
                         if (ec) return self->closed();
                         if (self->mClosing) return self->sendClose();
-                        self->mQueue.pop();
                         self->trackQueuedBytes();
                         self->writeNext();
                     });
@@ -147,8 +161,7 @@ void WebSocketSession::closeWithReason(const std::string& reason)
 
 void WebSocketSession::sendClose()
 {
-    mQueue.clear();
-    trackQueuedBytes();
+    freeQueue();
     mWs.async_close(websocket::close_reason(websocket::close_code::policy_error, mCloseReason),
                     [self = shared_from_this()](beast::error_code) { self->closed(); });
 }
@@ -156,10 +169,7 @@ void WebSocketSession::sendClose()
 void WebSocketSession::detach()
 {
     mClosing = true;
-    if (!mWriting) {
-        mQueue.clear();
-        trackQueuedBytes();
-    }
+    if (!mWriting) freeQueue();
     if (mHandler) {
         std::shared_ptr<WebSocketHandler> handler = std::move(mHandler);   // no call after this
         handler->onClose();   // breaks the handler -> sender -> session cycle when it goes
@@ -171,10 +181,16 @@ void WebSocketSession::closed()
     detach();
     mOpen = false;
     beast::get_lowest_layer(mWs).close();
-    if (!mWriting) {
-        mQueue.clear();
-        trackQueuedBytes();
-    }
+    if (!mWriting) freeQueue();
+}
+
+// Also the message last written: it is only freed here (a write in flight reads it).
+void WebSocketSession::freeQueue()
+{
+    mQueue.clear();
+    mWritten.clear();
+    mWritten.shrink_to_fit();
+    trackQueuedBytes();
 }
 
 void WebSocketSession::trackQueuedBytes()

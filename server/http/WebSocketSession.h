@@ -1,9 +1,9 @@
 #pragma once
 // One WebSocket connection. Incoming text messages go to the handler one at a time; outgoing
-// messages wait in a queue bounded in count and bytes (OutgoingQueue): a slow reader loses
-// the oldest stream frames, and one that lets replies pile up past the byte limit is
-// disconnected and its buffers freed, so it never holds up a simulation, other clients or
-// the server's memory. Once the connection ends (either side, or a failed write) the handler
+// messages wait in a queue bounded in count and bytes (OutgoingQueue): a slow reader gets
+// merged stream frames (or event.resync past the byte limit), and one that lets replies pile
+// up past the byte limit is disconnected and its buffers freed, so it never holds up a
+// simulation, other clients or the server's memory. Once the connection ends (either side, or a failed write) the handler
 // is told once and never called again.
 #include "server/http/Listener.h"
 #include "server/http/OutgoingQueue.h"
@@ -11,7 +11,6 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 
-#include <atomic>
 
 namespace tlmhub::server {
 
@@ -25,9 +24,9 @@ public:
     void refuse(Response refusal);
 
     // Called on the strand through the sender.
-    void enqueue(std::string text, bool droppable);
+    void enqueue(std::string text);
+    void enqueueFrame(std::unique_ptr<MergeableFrame> frame);
     void closeWithReason(const std::string& reason);
-    std::uint64_t droppedCount() const { return mDropped.load(); }   // any thread
 
 private:
     void read();
@@ -37,6 +36,8 @@ private:
     // The connection is over: detach and close the socket, cancelling what is pending.
     void closed();
     void sendClose();   // the close handshake, with mCloseReason
+    void afterEnqueue();
+    void freeQueue();
     void trackQueuedBytes();
 
     boost::beast::websocket::stream<boost::beast::tcp_stream> mWs;
@@ -44,13 +45,13 @@ private:
     TransportLimits mLimits;
     std::shared_ptr<WebSocketHandler> mHandler;
     OutgoingQueue mQueue;
+    std::string mWritten;   // the message being written, out of the queue
     std::string mCloseReason;
     std::size_t mCountedBytes = 0;   // this queue's share of TransportStats' gauge
     bool mWriting = false;
     bool mOpen = false;
     bool mClosing = false;
     bool mCounted = false;
-    std::atomic<std::uint64_t> mDropped{0};
 };
 
 } // namespace tlmhub::server

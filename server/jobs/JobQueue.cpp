@@ -107,7 +107,7 @@ bool JobQueue::cancel(std::int64_t jobId)
 }
 
 std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
-                                  EventSink sink)
+                                  StreamSink sink)
 {
     // Subscribe first, then look at the state: the runner stores the final state before it
     // ends the job's subscriptions, so either it serves this subscription or we do, once.

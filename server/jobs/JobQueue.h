@@ -55,7 +55,7 @@ public:
     // Subscribe to a job's events (see StreamHub). A job that has already finished gets one
     // frame with its whole result and event.done at once, on the calling thread.
     std::uint64_t subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
-                            EventSink sink);
+                            StreamSink sink);
 
     JobStore& store() { return mStore; }
     StreamHub& hub() { return mHub; }

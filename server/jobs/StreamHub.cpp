@@ -5,7 +5,7 @@
 namespace tlmhub::server {
 
 std::uint64_t StreamHub::subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
-                                   EventSink sink)
+                                   StreamSink sink)
 {
     if (!(rate > 0.0)) rate = kDefaultRate;
     rate = std::min(rate, kMaxRate);
@@ -54,7 +54,7 @@ void StreamHub::publishProgress(std::int64_t jobId, double progress)
     std::lock_guard lock(mMutex);
     auto [first, last] = mByJob.equal_range(jobId);
     for (auto j = first; j != last; ++j)
-        mSubscriptions.at(j->second).sink({{"type", "event.progress"}, {"job_id", jobId}, {"progress", progress}});
+        mSubscriptions.at(j->second).sink.event({{"type", "event.progress"}, {"job_id", jobId}, {"progress", progress}});
 }
 
 void StreamHub::publishFrames(std::int64_t jobId, const FrameSource& source)
@@ -104,53 +104,49 @@ void StreamHub::finishSubscription(std::uint64_t subscription, const FrameSource
 // New samples since the subscription's previous frame; nothing when there are none.
 void StreamHub::sendFrame(Subscription& s, const FrameSource& source)
 {
-    if (!s.resolved) {
+    if (!s.names) {
+        std::vector<std::string> names;
         if (s.wanted.empty()) {
             const auto& all = source.names();
-            s.names.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(
-                                                          std::min(all.size(), kMaxFrameVariables)));
+            names.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(
+                                                        std::min(all.size(), kMaxFrameVariables)));
         } else {
             for (const auto& name : s.wanted) {
-                if (s.names.size() == kMaxFrameVariables) break;
-                if (source.find(name) && std::find(s.names.begin(), s.names.end(), name) == s.names.end())
-                    s.names.push_back(name);
+                if (names.size() == kMaxFrameVariables) break;
+                if (source.find(name) && std::find(names.begin(), names.end(), name) == names.end())
+                    names.push_back(name);
             }
         }
-        s.sent.assign(s.names.size(), 0);
-        s.resolved = true;
+        s.sent.assign(names.size(), 0);
+        s.names = std::make_shared<const std::vector<std::string>>(std::move(names));
     }
     const std::size_t timeTo = source.timeCount();
     bool anything = timeTo > s.timeSent;
-    std::vector<double> time;
-    source.appendTime(s.timeSent, timeTo, time);
-    nlohmann::json variables = nlohmann::json::object();
-    for (std::size_t i = 0; i < s.names.size(); ++i) {
-        std::vector<double> data;
+    StreamFrame frame;
+    frame.jobId = s.jobId;
+    frame.names = s.names;
+    source.appendTime(s.timeSent, timeTo, frame.time);
+    frame.columns.resize(s.names->size());
+    for (std::size_t i = 0; i < s.names->size(); ++i) {
         std::size_t to = s.sent[i];
-        if (auto column = source.find(s.names[i])) {
+        if (auto column = source.find((*s.names)[i])) {
             to = std::max(to, source.count(*column));
-            source.appendData(*column, s.sent[i], to, data);
+            source.appendData(*column, s.sent[i], to, frame.columns[i]);
         }
-        anything = anything || !data.empty();
+        anything = anything || !frame.columns[i].empty();
         s.sent[i] = to;
-        variables[s.names[i]] = std::move(data);
     }
     if (!anything) return;
     s.timeSent = std::max(s.timeSent, timeTo);
     s.lastFrame = std::chrono::steady_clock::now();
-    s.sink({{"type", "event.frame"},
-            {"job_id", s.jobId},
-            {"seq", s.seq++},
-            {"time", std::move(time)},
-            {"variables", std::move(variables)},
-            {"dropped", 0}});
+    s.sink.frame(std::move(frame));
 }
 
 void StreamHub::sendDone(Subscription& s, JobState state, const std::string& error)
 {
     nlohmann::json done = {{"type", "event.done"}, {"job_id", s.jobId}, {"state", jobStateName(state)}};
     if (!error.empty()) done["error"] = error;
-    s.sink(std::move(done));
+    s.sink.event(std::move(done));
 }
 
 } // namespace tlmhub::server

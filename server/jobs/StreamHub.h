@@ -7,9 +7,12 @@
 //
 // Frames of one subscription, concatenated, equal the job's stored result: each
 // subscription remembers how many samples of each of its variables it has sent, and the final
-// frames (from the stored ResultTable) send the rest before event.done.
+// frames (from the stored ResultTable) send the rest before event.done. Frames go out as
+// numbers (StreamFrame), numbered by whoever writes them, so that a slow connection can merge
+// them without losing samples or leaving gaps in `seq`.
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
+#include "server/jobs/StreamFrame.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,13 +20,18 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 namespace tlmhub::server {
 
-using EventSink = std::function<void(nlohmann::json event)>;
+// Where a subscription's events go; both run on the publishing thread (see above).
+struct StreamSink {
+    std::function<void(nlohmann::json event)> event;   // event.progress, event.done
+    std::function<void(StreamFrame frame)> frame;      // the samples of event.frame
+};
 
 class StreamHub {
 public:
@@ -34,7 +42,7 @@ public:
     // `variables`: ResultTable column names (unknown ones are ignored, at most 16 kept);
     // empty = the first 16 logged variables. `rate` <= 0 means the default.
     std::uint64_t subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
-                            EventSink sink);
+                            StreamSink sink);
     void unsubscribe(std::uint64_t subscription);
     bool hasSubscribers(std::int64_t jobId) const;
     std::size_t subscriptionCount() const;
@@ -56,11 +64,10 @@ private:
         std::int64_t jobId = 0;
         std::vector<std::string> wanted;
         std::chrono::steady_clock::duration interval{};
-        EventSink sink;
-        std::uint64_t seq = 0;
+        StreamSink sink;
         std::chrono::steady_clock::time_point lastFrame{};
-        bool resolved = false;
-        std::vector<std::string> names;   // the variables it streams, resolved at its first frame
+        // The variables it streams, resolved at its first frame; shared with its frames.
+        std::shared_ptr<const std::vector<std::string>> names;
         std::vector<std::size_t> sent;    // samples sent per variable
         std::size_t timeSent = 0;
     };

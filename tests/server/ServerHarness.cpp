@@ -141,8 +141,11 @@ std::string HttpClient::login(const std::string& user, const std::string& passwo
     return mToken;
 }
 
-WsClient::WsClient(unsigned short port, const std::string& token) : mWs(mIoc)
+WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes) : mWs(mIoc)
 {
+    mWs.next_layer().open(tcp::v4());
+    if (receiveBufferBytes > 0)   // before connecting: the window is agreed at the handshake
+        mWs.next_layer().set_option(net::socket_base::receive_buffer_size(receiveBufferBytes));
     mWs.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
     mWs.handshake("127.0.0.1", "/api/v1/ws?token=" + token);
     hello = receive();

@@ -69,7 +69,9 @@ private:
 
 class WsClient {
 public:
-    WsClient(unsigned short port, const std::string& token);
+    // `receiveBufferBytes` > 0 fixes the socket's receive buffer (no autotuning up to
+    // megabytes), so a client that stops reading soon leaves the server's frames waiting.
+    WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0);
     void sendText(const std::string& text);
     // Next message, or a null json after `timeoutMs` (the connection is of no further use
     // after a timeout) or when the connection ended.

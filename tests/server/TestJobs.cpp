@@ -66,17 +66,25 @@ ResultTable directRun(const std::string& hmf, const std::map<std::string, std::s
     return ResultTable::fromView(sim->results());
 }
 
-// Every event a subscription received, thread-safe.
+// Every event a subscription received, thread-safe; frames numbered as a connection that
+// keeps up writes them.
 struct EventLog {
     std::mutex mutex;
     std::vector<nlohmann::json> events;
+    std::uint64_t frames = 0;
 
-    EventSink sink()
+    StreamSink sink()
     {
-        return [this](nlohmann::json e) {
+        StreamSink sink;
+        sink.event = [this](nlohmann::json e) {
             std::lock_guard lock(mutex);
             events.push_back(std::move(e));
         };
+        sink.frame = [this](StreamFrame frame) {
+            std::lock_guard lock(mutex);
+            events.push_back(frame.toJson(frames++));
+        };
+        return sink;
     }
     std::vector<nlohmann::json> snapshot()
     {
@@ -244,11 +252,14 @@ TEST_F(Jobs, WorkersServeUsersRoundRobin)
     std::vector<std::int64_t> finishedOrder;
     std::vector<std::int64_t> ids;
     auto record = [&](std::int64_t id) {
-        return [&, id](nlohmann::json e) {
+        StreamSink sink;
+        sink.event = [&, id](nlohmann::json e) {
             if (e.at("type") != "event.done") return;
             std::lock_guard lock(mutex);
             finishedOrder.push_back(id);
         };
+        sink.frame = [](StreamFrame) {};
+        return sink;
     };
     for (int i = 0; i < 6; ++i) ids.push_back(*queue.submit(request(kExample, 1)).id);
     const std::int64_t userB = *queue.submit(request(kExample, 2)).id;

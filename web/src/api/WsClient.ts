@@ -66,7 +66,7 @@ export class WsClient {
         });
     }
 
-    /** Listens to events (event.progress, event.frame, event.done); returns the unsubscriber. */
+    /** Listens to events (event.progress, event.frame, event.done, event.resync); returns the unsubscriber. */
     onEvent(listener: EventListener): () => void {
         this.listeners.add(listener);
         return () => this.listeners.delete(listener);

@@ -92,7 +92,7 @@ export type ClientMessage =
 /**
  * Any message the server sends.
  */
-export type ServerMessage = Hello | Reply | ErrorReply | ProgressEvent | FrameEvent | DoneEvent;
+export type ServerMessage = Hello | Reply | ErrorReply | ProgressEvent | FrameEvent | DoneEvent | ResyncEvent;
 
 /**
  * Index of every definition in protocol/messages.schema.json.
@@ -182,6 +182,7 @@ export interface ProtocolDefinitions {
     ProgressEvent?: ProgressEvent;
     FrameEvent?: FrameEvent;
     DoneEvent?: DoneEvent;
+    ResyncEvent?: ResyncEvent;
     ServerMessage?: ServerMessage;
     SysParamRemoveRequest?: SysParamRemoveRequest;
     ModelGroupRequest?: ModelGroupRequest;
@@ -813,7 +814,7 @@ export interface FrameEvent {
         [k: string]: number[];
     };
     /**
-     * Frames merged or dropped before this one because the socket was slow.
+     * Frames merged into this one because the socket was slow; their samples are included.
      */
     dropped: number;
 }
@@ -822,6 +823,13 @@ export interface DoneEvent {
     job_id: number;
     state: JobState;
     error?: string;
+}
+/**
+ * The job's streamed samples would have passed the socket's byte limit: no more frames of the job follow on this subscription (event.done still does); read the stored result instead.
+ */
+export interface ResyncEvent {
+    type: 'event.resync';
+    job_id: number;
 }
 export interface ModelSettingsData {
     simulation: SimulationSettings;

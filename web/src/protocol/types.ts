@@ -1,10 +1,10 @@
 // The protocol shapes the app uses, re-exported from the generated types
 // (src/protocol/generated.ts, from protocol/*.schema.json) under the names the app reads best.
-import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Reply } from './generated';
+import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Reply, ResyncEvent } from './generated';
 
 export type {
     CatalogueEntry, Component, Connection, DoneEvent, FrameEvent, JobInfo, JobState, Model,
-    ModelSummary, Param, Port, PortRef, Pose, ProgressEvent, ResultsJson, SimulationSettings,
+    ModelSummary, Param, Port, PortRef, Pose, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
     SysParam, System, SystemPort, User,
 } from './generated';
 
@@ -13,6 +13,6 @@ export type ErrorMessage = ErrorReply;
 /** A reply; data's shape depends on the request. */
 export type ReplyMessage = Omit<Reply, 'data'> & { data: Record<string, unknown> };
 export type PortKind = Port['kind'];
-export type ServerEvent = ProgressEvent | FrameEvent | DoneEvent;
+export type ServerEvent = ProgressEvent | FrameEvent | DoneEvent | ResyncEvent;
 export type ServerMessage = HelloMessage | ReplyMessage | ErrorMessage | ServerEvent;
 

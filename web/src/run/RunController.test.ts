@@ -66,6 +66,34 @@ describe('RunController', () => {
         expect(runs.current?.columns.get('B#p#Pressure')).toEqual([42, 43]);
     });
 
+    it('after event.resync it ignores frames and replaces the streamed samples with the stored result at the end', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        const run = await runs.start({}, ['A#out#Value']);
+        f.emit({ type: 'event.frame', job_id: 10, seq: 0, time: [0], variables: { 'A#out#Value': [1] }, dropped: 3 });
+        expect(run.gap).toBe(false);   // merged frames keep their samples
+        f.emit({ type: 'event.resync', job_id: 10 });
+        f.emit({ type: 'event.frame', job_id: 10, seq: 1, time: [0.5], variables: { 'A#out#Value': [9] }, dropped: 0 });
+        expect(run.columns.get('A#out#Value')).toEqual([1]);
+        expect(f.results).not.toHaveBeenCalled();   // the stored result exists once the job ends
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        await vi.waitFor(() => expect(run.columns.get('A#out#Value')).toEqual([42, 43]));
+        expect(f.results).toHaveBeenCalledWith(10, ['A#out#Value']);
+        expect(run.time).toEqual([0, 1]);
+        expect(run.gap).toBe(false);
+    });
+
+    it('a resync before any frame of an all-variables run leaves the loading to ensure()', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        f.emit({ type: 'event.resync', job_id: 10 });
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        expect(f.results).not.toHaveBeenCalled();
+        await runs.ensure(['B#p#Pressure']);
+        expect(runs.current?.columns.get('B#p#Pressure')).toEqual([42, 43]);
+    });
+
     it('cancel sends simulate.stop for the running job', async () => {
         const f = fakeTransport();
         const runs = new RunController(f.transport);

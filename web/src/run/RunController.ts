@@ -1,5 +1,6 @@
 // Runs of the open model: simulate.start over the socket, events into RunData, cancel, and
-// the stored results for variables that were not streamed. Keeps the previous run to compare.
+// the stored results for variables that were not streamed or whose stream the server cut
+// short (event.resync). Keeps the previous run to compare.
 import { RunData } from './RunData';
 import type { RestClient } from '../api/RestClient';
 import type { WsClient } from '../api/WsClient';
@@ -90,16 +91,27 @@ export class RunController {
             run.progress = event.progress;
         } else if (event.type === 'event.frame') {
             run.addFrame(event);
+        } else if (event.type === 'event.resync') {
+            run.resync();
         } else if (event.type === 'event.done') {
             run.state = event.state;
             run.error = event.error ?? '';
-            if (event.state === 'done') {
-                run.progress = 1;
-                // frames were lost: take the stored result so the plot is exact
-                if (run.gap && run.variables.length > 0) {
-                    void this.transport.resultsJson(run.jobId, run.variables).then((r) => { run.setResults(r); this.emit(); });
-                }
-            }
+            if (event.state === 'done') run.progress = 1;
+            // The stream is incomplete (event.resync, or a frame went missing): take the stored
+            // result, which exists once the job has ended (a stopped run keeps what it logged).
+            if (run.gap) void this.loadStored(run);
+        }
+    }
+
+    /** Replaces what was streamed for `run` with its stored result; no result leaves it as it is. */
+    private async loadStored(run: RunData): Promise<void> {
+        const names = run.variables.length > 0 ? run.variables : [...run.columns.keys()];
+        if (names.length === 0) return;   // nothing streamed yet; ensure() loads what plots need
+        try {
+            run.setResults(await this.transport.resultsJson(run.jobId, names));
+            this.emit();
+        } catch {
+            // a failed run may have stored nothing
         }
     }
 

@@ -22,14 +22,24 @@ describe('RunData', () => {
         expect(run.time).toEqual([]);
     });
 
-    it('notes a gap when frames were dropped or skipped', () => {
+    it('notes a gap when a frame is skipped, not when frames were merged', () => {
         const a = new RunData(1, []);
         a.addFrame(frame(0, [0], [1], 2));
-        expect(a.gap).toBe(true);
+        expect(a.gap).toBe(false);
+        expect(a.columns.get('A#out#Value')).toEqual([1]);
         const b = new RunData(1, []);
         b.addFrame(frame(0, [0], [1]));
         b.addFrame(frame(2, [1], [1]));
         expect(b.gap).toBe(true);
+    });
+
+    it('after a resync frames are ignored until the stored result replaces the columns', () => {
+        const run = new RunData(1, []);
+        run.addFrame(frame(0, [0], [1]));
+        run.resync();
+        run.addFrame(frame(1, [1], [2]));
+        expect(run.columns.get('A#out#Value')).toEqual([1]);
+        expect(run.gap).toBe(true);
     });
 
     it('stored results replace the streamed columns', () => {

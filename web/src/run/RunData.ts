@@ -9,18 +9,23 @@ export class RunData {
     progress = 0;
     error = '';
     lastSeq = -1;
-    /** A frame went missing or the server dropped some: the streamed data is incomplete. */
+    /** A frame went missing or the server sent event.resync: the streamed data is incomplete. */
     gap = false;
+    /** The server stopped streaming this run (event.resync): its stored result replaces it. */
+    resynced = false;
 
     /** Time span the run covers, when known: plots show all of it while the run fills it. */
     span: [number, number] | null = null;
 
     constructor(readonly jobId: number, readonly variables: string[], readonly label = `run ${jobId}`) {}
 
-    /** Appends a frame's samples; frames of another job are ignored. */
+    /**
+     * Appends a frame's samples; frames of another job, or after event.resync, are ignored.
+     * A frame with `dropped` > 0 holds the samples of the frames merged into it: no gap.
+     */
     addFrame(frame: FrameEvent): void {
-        if (frame.job_id !== this.jobId) return;
-        if (frame.dropped > 0 || frame.seq !== this.lastSeq + 1) this.gap = true;
+        if (frame.job_id !== this.jobId || this.resynced) return;
+        if (frame.seq !== this.lastSeq + 1) this.gap = true;
         this.lastSeq = frame.seq;
         for (const t of frame.time) this.time.push(t);
         for (const [name, values] of Object.entries(frame.variables)) {
@@ -31,6 +36,12 @@ export class RunData {
             }
             for (const x of values) column.push(x);
         }
+    }
+
+    /** event.resync: no more frames come; what was streamed stays until the stored result replaces it. */
+    resync(): void {
+        this.resynced = true;
+        this.gap = true;
     }
 
     /** Replaces the streamed columns with the stored result (exact). */

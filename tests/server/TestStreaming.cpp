@@ -1,0 +1,202 @@
+// Live streaming to a WebSocket client that cannot keep up (issue 15): waiting frames of a job
+// are merged, so the frames still hold every sample, and when a job's waiting samples would
+// pass the socket's byte limit the client gets event.resync instead and reads the stored result.
+#include "ServerHarness.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <thread>
+
+using namespace tlmhub::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// 3 million steps (about a second in Release, 15 s under the sanitizers) logging 50000
+// samples of the first 16 variables: about 17 MB of frames at up to 120 frames a second, far
+// more than the socket buffers hold (up to 4 MB on the server's side here).
+nlohmann::json longRun()
+{
+    return {{"stop", 300.0}, {"log_samples", 50000}, {"rate", 120}};
+}
+
+std::int64_t exampleId(HttpClient& c, const std::string& name)
+{
+    for (const auto& m : c.get("/api/v1/models").json())
+        if (m["name"] == name) return m["id"];
+    ADD_FAILURE() << "no example " << name;
+    return 0;
+}
+
+// Polls the job over REST (not the socket, which the client is leaving unread) until it has
+// gone `fraction` of the way or ended.
+nlohmann::json waitForProgress(HttpClient& c, std::int64_t job, double fraction, int seconds = 120)
+{
+    nlohmann::json info;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        info = c.get("/api/v1/jobs/" + std::to_string(job)).json();
+        const std::string state = info.value("state", "");
+        if ((state != "queued" && state != "running") || info.value("progress", 0.0) >= fraction) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return info;
+}
+
+// The job's stored columns by name ("time" too; all when `names` is empty), read from the
+// CSV: its "%.17g" numbers give back the stored doubles exactly.
+std::map<std::string, std::vector<double>> storedColumns(HttpClient& c, std::int64_t job,
+                                                         const std::vector<std::string>& names = {})
+{
+    std::string list;
+    for (const auto& name : names) {
+        if (!list.empty()) list += ',';
+        for (char ch : name) list += ch == '#' ? std::string("%23") : std::string(1, ch);
+    }
+    const auto r = c.get("/api/v1/jobs/" + std::to_string(job) + "/results?format=csv&variables=" + list);
+    EXPECT_EQ(r.status, 200) << r.body.substr(0, 300);
+    std::istringstream in(r.body);
+    std::string line, cell;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    for (std::istringstream fields(line); std::getline(fields, cell, ',');) header.push_back(cell);
+    std::map<std::string, std::vector<double>> columns;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        for (std::size_t i = 0; i < header.size() && std::getline(row, cell, ','); ++i)
+            columns[header[i]].push_back(std::strtod(cell.c_str(), nullptr));
+    }
+    return columns;
+}
+
+bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// The events of `job` on the socket (those `call` kept first), up to and including event.done.
+std::vector<nlohmann::json> eventsUntilDone(WsClient& ws, std::int64_t job)
+{
+    std::vector<nlohmann::json> out;
+    auto keep = [&](nlohmann::json e) {
+        if (e.value("job_id", std::int64_t{0}) == job) out.push_back(std::move(e));
+        return !out.empty() && out.back()["type"] == "event.done";
+    };
+    for (auto& e : ws.events)
+        if (keep(std::move(e))) return out;
+    ws.events.clear();
+    for (;;) {
+        nlohmann::json e = ws.receive(60000);
+        if (e.is_null()) {
+            ADD_FAILURE() << "no event.done for job " << job;
+            return out;
+        }
+        if (keep(std::move(e))) return out;
+    }
+}
+
+struct ServerWithServo {
+    explicit ServerWithServo(const std::string& name, std::vector<std::string> flags)
+        : dir(freshTempDir(name)), server(dir, withExamples(std::move(flags))), admin(server.port())
+    {
+        token = admin.login("admin", kAdminPassword);
+        servo = exampleId(admin, "Position Servo");
+    }
+    ~ServerWithServo() { fs::remove_all(dir); }
+    static std::vector<std::string> withExamples(std::vector<std::string> flags)
+    {
+        flags.insert(flags.end(), {"--examples-dir", kExampleModels.string()});
+        return flags;
+    }
+    fs::path dir;
+    ServerProcess server;
+    HttpClient admin;
+    std::string token;
+    std::int64_t servo = 0;
+};
+
+} // namespace
+
+// The client stops reading for most of a long run and then reads on: with a queue limit of
+// 2 messages its frames merge, and concatenated they equal the stored result bit for bit
+// (the old queue dropped the oldest frames instead: thousands of samples were missing). The
+// byte limit is raised so that the merged frame never gives way to event.resync.
+TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
+{
+    ServerWithServo s("stream-lossless", {"--max-ws-queue-messages", "2", "--max-ws-queue-bytes", "268435456"});
+    WsClient ws(s.server.port(), s.token, 16384);
+    ASSERT_EQ(ws.call("model.open", {{"model_id", s.servo}})["type"], "reply");
+    const auto started = ws.call("simulate.start", longRun());
+    ASSERT_EQ(started["type"], "reply") << started.dump();
+    const std::int64_t job = started["data"]["job_id"];
+    waitForProgress(s.admin, job, 0.8);   // meanwhile the socket is not read
+    const auto events = eventsUntilDone(ws, job);
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back()["state"], "done") << events.back().dump();
+
+    std::map<std::string, std::vector<double>> streamed;
+    std::uint64_t seq = 0, frames = 0, merged = 0;
+    for (const auto& e : events) {
+        ASSERT_NE(e["type"], "event.resync") << "the byte limit is far above the stream";
+        if (e["type"] != "event.frame") continue;
+        ++frames;
+        EXPECT_EQ(e["seq"].get<std::uint64_t>(), seq++) << "seq counts the frames sent";
+        merged += e["dropped"].get<std::uint64_t>();
+        for (double t : e["time"]) streamed["time"].push_back(t);
+        ASSERT_EQ(e["variables"].size(), 16u) << e["variables"].dump().substr(0, 300);
+        for (const auto& [name, values] : e["variables"].items())
+            for (double v : values) streamed[name].push_back(v);
+    }
+    EXPECT_GT(merged, 0u) << "the client was slow, so frames were merged";
+    std::vector<std::string> names;
+    for (const auto& [name, values] : streamed)
+        if (name != "time") names.push_back(name);
+    const auto stored = storedColumns(s.admin, job, names);
+    ASSERT_EQ(stored.size(), 17u);
+    for (const auto& [name, values] : stored) {
+        EXPECT_EQ(streamed[name].size(), values.size()) << name << " in " << frames << " frames";
+        EXPECT_TRUE(bitwiseEqual(streamed[name], values)) << name;
+    }
+}
+
+// Past the byte limit the waiting samples go, the client gets event.resync (and no more
+// frames) for the job, then event.done; the queue never holds more than the limit, the
+// connection stays open and the stored result is there to read instead.
+TEST(Streaming, PastTheByteLimitTheClientIsToldToReadTheStoredResult)
+{
+    constexpr std::int64_t kByteLimit = 300000;
+    ServerWithServo s("stream-resync", {"--max-ws-queue-bytes", std::to_string(kByteLimit)});
+    WsClient ws(s.server.port(), s.token, 16384);
+    ASSERT_EQ(ws.call("model.open", {{"model_id", s.servo}})["type"], "reply");
+    const auto started = ws.call("simulate.start", longRun());
+    ASSERT_EQ(started["type"], "reply") << started.dump();
+    const std::int64_t job = started["data"]["job_id"];
+    // The socket is not read while the job runs; the queue's size is sampled meanwhile.
+    std::int64_t mostQueued = 0;
+    for (int i = 0; i < 6000; ++i) {
+        mostQueued = std::max(mostQueued, s.admin.get("/api/v1/stats").json()["websocket_queued_bytes"].get<std::int64_t>());
+        const std::string state = s.admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"];
+        if (state != "queued" && state != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    EXPECT_LE(mostQueued, kByteLimit) << "the queue stays within its byte limit";
+    const auto events = eventsUntilDone(ws, job);
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back()["type"], "event.done");
+    EXPECT_EQ(events.back()["state"], "done") << events.back().dump();
+    std::size_t resync = events.size();
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (events[i]["type"] == "event.resync") {
+            resync = i;
+            break;
+        }
+    ASSERT_LT(resync, events.size()) << "event.resync for the job";
+    for (std::size_t i = resync + 1; i < events.size(); ++i)
+        EXPECT_NE(events[i]["type"], "event.frame") << "no frames after event.resync";
+    EXPECT_EQ(ws.call("ping")["type"], "reply") << "the connection stays open";
+    EXPECT_EQ(storedColumns(s.admin, job, {"Mass#P1#Position"}).at("time").size(), 50000u);
+}
