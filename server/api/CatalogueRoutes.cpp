@@ -1,6 +1,7 @@
 // GET /health, GET /openapi.json (no login needed), GET /components (the core's catalogue),
 // GET /stats (administrators: transport gauges).
 #include "server/api/ApiSupport.h"
+#include "server/auth/AccessPolicy.h"
 
 #include "server/http/TransportStats.h"
 #include "server/protocol/EmbeddedProtocol.h"
@@ -33,7 +34,7 @@ Response components(Services&, Call&)
 
 Response stats(Services&, Call& call)
 {
-    if (call.who().role != kRoleAdmin)
+    if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators read the server's stats");
     const TransportStats& t = TransportStats::instance();
     return jsonResponse(http::status::ok, {{"websockets", t.webSockets.load()},

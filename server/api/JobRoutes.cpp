@@ -77,7 +77,7 @@ Response cancelOrDeleteJob(Services& s, Call& call)
 {
     const auto job = visibleJob(s, call.who(), call.params.path["id"]);
     if (!job) return apiError(http::status::not_found, "not_found", "no such job");
-    if (job->ownerId != call.who().id && call.who().role != "admin")
+    if (!canControlJob(call.who(), job->ownerId))
         return apiError(http::status::forbidden, "forbidden", "only the owner cancels or deletes a job");
     // A waiting or running job is cancelled (and kept); a finished one is deleted with its
     // results, which frees the owner's storage quota.
@@ -92,7 +92,7 @@ Response cancelOrDeleteJob(Services& s, Call& call)
 Response rerunJob(Services& s, Call& call)
 {
     const auto job = visibleJob(s, call.who(), call.params.path["id"]);
-    if (!job || job->ownerId != call.who().id)
+    if (!job || !canRerunJob(call.who(), job->ownerId))
         return apiError(http::status::not_found, "not_found", "no such job of yours");
     const auto request = s.queue.store().request(job->id);
     if (!request) return apiError(http::status::not_found, "not_found", "the job's input is gone");

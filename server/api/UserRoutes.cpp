@@ -1,5 +1,6 @@
 // GET /users, POST /users, PATCH /users/{id}: accounts, administrators only.
 #include "server/api/ApiSupport.h"
+#include "server/auth/AccessPolicy.h"
 
 namespace tlmhub::server {
 
@@ -7,7 +8,7 @@ namespace {
 
 Response listUsers(Services& s, Call& call)
 {
-    if (call.who().role != "admin")
+    if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators list users");
     nlohmann::json out = nlohmann::json::array();
     for (const User& u : s.users.list()) out.push_back(userJson(u));
@@ -16,7 +17,7 @@ Response listUsers(Services& s, Call& call)
 
 Response createUser(Services& s, Call& call)
 {
-    if (call.who().role != "admin")
+    if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators create users");
     nlohmann::json body;
     Response error;
@@ -33,7 +34,7 @@ Response createUser(Services& s, Call& call)
 // WebSockets closed); a changed role applies to REST calls at once and WebSockets reconnect.
 Response updateUser(Services& s, Call& call)
 {
-    if (call.who().role != "admin")
+    if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators change users");
     const auto id = parseId(call.params.path["id"]);
     if (!id) return apiError(http::status::not_found, "not_found", "no such user");

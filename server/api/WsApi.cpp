@@ -194,14 +194,22 @@ WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)
 bool WsApi::ownsJob(std::int64_t jobId) const
 {
     const auto job = mServices.queue.store().info(jobId);
-    return job && (job->ownerId == mUser.id || mUser.role == "admin");
+    return job && canControlJob(mUser, job->ownerId);
 }
 
 WsApi::Reply WsApi::stopSimulation(const nlohmann::json& msg)
 {
     const std::int64_t jobId = msg["job_id"];
     if (!ownsJob(jobId)) return failure("not_found", "no such job");
-    mServices.queue.cancel(jobId);
+    // The reply never waits for the job: event.done (cancelled) follows once it has stopped.
+    switch (mServices.queue.requestCancel(jobId)) {
+    case JobQueue::CancelRequest::Cancelling:
+        return success({{"state", "cancelling"}});
+    case JobQueue::CancelRequest::Cancelled:
+        return success({{"state", jobStateName(JobState::Cancelled)}});
+    case JobQueue::CancelRequest::NotActive:
+        break;
+    }
     return success({{"state", jobStateName(mServices.queue.store().info(jobId)->state)}});
 }
 

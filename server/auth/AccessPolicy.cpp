@@ -17,4 +17,20 @@ bool canWrite(const User& who, std::int64_t ownerId, bool isExample)
     return who.id == ownerId;
 }
 
+bool canControlJob(const User& who, std::int64_t ownerId)
+{
+    return who.role == kRoleAdmin || who.id == ownerId;
+}
+
+// The new job belongs to whoever submits it: only the owner re-runs their own input.
+bool canRerunJob(const User& who, std::int64_t ownerId)
+{
+    return who.id == ownerId;
+}
+
+bool isAdministrator(const User& who)
+{
+    return who.role == kRoleAdmin;
+}
+
 } // namespace tlmhub::server

@@ -5,6 +5,8 @@
 //   owner:   own objects
 //   example: readable by everyone, changed by admin only
 //   teacher: may also read (not change) objects owned by role "user" (lab supervision)
+//   jobs:    cancelled, stopped and deleted by their owner or an admin; re-run by the owner
+//   accounts and server stats: admin only
 #include "server/auth/User.h"
 
 #include <cstdint>
@@ -14,5 +16,8 @@ namespace tlmhub::server {
 
 bool canRead(const User& who, std::int64_t ownerId, const std::string& ownerRole, bool isExample);
 bool canWrite(const User& who, std::int64_t ownerId, bool isExample);
+bool canControlJob(const User& who, std::int64_t ownerId);
+bool canRerunJob(const User& who, std::int64_t ownerId);
+bool isAdministrator(const User& who);
 
 } // namespace tlmhub::server

@@ -78,7 +78,7 @@ JobQueue::Submitted JobQueue::submit(const JobRequest& request)
     return {id, {}, {}};
 }
 
-bool JobQueue::cancel(std::int64_t jobId)
+JobQueue::CancelRequest JobQueue::requestCancel(std::int64_t jobId)
 {
     std::unique_lock lock(mMutex);
     if (removeQueued(jobId)) {
@@ -86,14 +86,12 @@ bool JobQueue::cancel(std::int64_t jobId)
         mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr);
         lock.unlock();
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
-        return true;
+        return CancelRequest::Cancelled;
     }
     auto active = mActive.find(jobId);
     if (active != mActive.end()) {
         active->second->requestStop(JobControl::Stop::Cancel);
-        // The loop checks for a stop every step; initialize() is the longest wait.
-        mJobEnded.wait_for(lock, std::chrono::seconds(10), [&] { return mActive.count(jobId) == 0; });
-        return true;
+        return CancelRequest::Cancelling;
     }
     // Queued in the store but not (yet) here: the queue has not been started.
     const auto info = mStore.info(jobId);
@@ -101,9 +99,20 @@ bool JobQueue::cancel(std::int64_t jobId)
         mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr)) {
         lock.unlock();
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
-        return true;
+        return CancelRequest::Cancelled;
     }
-    return false;
+    return CancelRequest::NotActive;
+}
+
+bool JobQueue::cancel(std::int64_t jobId)
+{
+    const CancelRequest request = requestCancel(jobId);
+    if (request == CancelRequest::Cancelling) {
+        // The loop checks for a stop every step; initialize() is the longest wait.
+        std::unique_lock lock(mMutex);
+        mJobEnded.wait_for(lock, std::chrono::seconds(10), [&] { return mActive.count(jobId) == 0; });
+    }
+    return request != CancelRequest::NotActive;
 }
 
 std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,

@@ -48,8 +48,12 @@ public:
     // Beyond this many, a queued job keeps only its stored request: memory stays bounded.
     static constexpr std::size_t kMaxCompiledQueued = 256;
 
-    // Queued: cancelled at once. Running: stopped, and the call waits (a few seconds at most)
-    // until the job has reached its final state. False if the job is not queued or running.
+    // Never waits: a queued job is cancelled at once; a running one is asked to stop, and its
+    // event.done (cancelled) follows when it has. NotActive: neither queued nor running.
+    enum class CancelRequest { NotActive, Cancelled, Cancelling };
+    CancelRequest requestCancel(std::int64_t jobId);
+    // The same, and for a running job the call waits (a few seconds at most) until the job
+    // has reached its final state. False if the job is not queued or running.
     bool cancel(std::int64_t jobId);
 
     // Subscribe to a job's events (see StreamHub). A job that has already finished gets one

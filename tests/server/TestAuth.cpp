@@ -278,3 +278,23 @@ TEST(AccessPolicy, ReadAndWriteTable)
             << r.who.username << " writes owner " << r.ownerId << " example " << r.isExample;
     }
 }
+
+TEST(AccessPolicy, JobsAndAdministration)
+{
+    const User admin{1, "admin", "admin"};
+    const User teacher{2, "t", "teacher"};
+    const User alice{3, "alice", "user"};
+
+    EXPECT_TRUE(canControlJob(alice, 3));
+    EXPECT_FALSE(canControlJob(alice, 4));
+    EXPECT_FALSE(canControlJob(teacher, 3));   // a teacher reads a student's job, not stops it
+    EXPECT_TRUE(canControlJob(admin, 3));
+
+    EXPECT_TRUE(canRerunJob(alice, 3));
+    EXPECT_FALSE(canRerunJob(admin, 3));       // the new job would be the admin's
+    EXPECT_FALSE(canRerunJob(teacher, 3));
+
+    EXPECT_TRUE(isAdministrator(admin));
+    EXPECT_FALSE(isAdministrator(teacher));
+    EXPECT_FALSE(isAdministrator(alice));
+}

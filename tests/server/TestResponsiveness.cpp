@@ -74,5 +74,44 @@ TEST(Responsiveness, HealthAnswersWhileFortyLogInAndJobsAreCancelled)
         EXPECT_EQ(admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"], "cancelled");
 }
 
+// simulate.stop answers without waiting for the job (the socket's strand would otherwise
+// stand still until the job has stopped); event.done says when it has.
+TEST(Responsiveness, StoppingARunningJobRepliesAtOnceAndEventDoneFollows)
+{
+    ServerProcess server(freshTempDir("stop-reply"));
+    HttpClient admin(server.port());
+    const std::string token = admin.login("admin", kAdminPassword);
+    const auto model = admin.request(http::verb::post, "/api/v1/models?name=servo", readFile(kPositionServo),
+                                     "application/xml");
+    ASSERT_EQ(model.status, 201) << model.body;
+    WsClient ws(server.port(), token);
+    ASSERT_EQ(ws.call("model.open", {{"model_id", model.json()["id"]}})["type"], "reply");
+    const auto started = ws.call("simulate.start", {{"stop", 500.0}, {"variables", {"Position_Sensor#out#Value"}}});
+    ASSERT_EQ(started["type"], "reply") << started.dump();
+    const std::int64_t job = started["data"]["job_id"];
+    auto nextEventOfJob = [&]() {
+        for (;;) {
+            nlohmann::json e;
+            if (!ws.events.empty()) {
+                e = ws.events.front();
+                ws.events.erase(ws.events.begin());
+            } else {
+                e = ws.receive(60000);
+            }
+            if (e.is_null() || e.value("job_id", std::int64_t{-1}) == job) return e;
+        }
+    };
+    for (nlohmann::json e = nextEventOfJob(); e.is_null() || e["type"] != "event.progress"; e = nextEventOfJob())
+        ASSERT_FALSE(e.is_null()) << "the job never reported progress";
+
+    const auto stopped = ws.call("simulate.stop", {{"job_id", job}});
+    ASSERT_EQ(stopped["type"], "reply") << stopped.dump();
+    EXPECT_EQ(stopped["data"]["state"], "cancelling");
+    nlohmann::json e = nextEventOfJob();
+    while (!e.is_null() && e["type"] != "event.done") e = nextEventOfJob();
+    ASSERT_FALSE(e.is_null()) << "no event.done after the stop";
+    EXPECT_EQ(e["state"], "cancelled");
+}
+
 } // namespace
 } // namespace tlmhub::test

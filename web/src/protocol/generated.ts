@@ -770,7 +770,10 @@ export interface SimulateStartedData {
     job_id: number;
 }
 export interface SimulateStoppedData {
-    state: JobState;
+    /**
+     * cancelling: the job was running and has been asked to stop; its event.done (cancelled) follows. Otherwise the job's state.
+     */
+    state: 'cancelling' | 'cancelled' | 'done' | 'failed' | 'interrupted';
 }
 /**
  * First message on every socket.
