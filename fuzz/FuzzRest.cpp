@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     request.body() = body;
     request.prepare_payload();
 
-    const tlmhub::server::Response response = server.app().handle({request, "127.0.0.1"});
+    const tlmhub::server::Response response = server.handle(request);
     if (std::string(response[http::field::content_type]).rfind("application/json", 0) == 0 &&
         nlohmann::json::parse(response.body(), nullptr, false).is_discarded())
         tlmhub::fuzz::fail("JSON response that is not JSON: " + response.body());

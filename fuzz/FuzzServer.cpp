@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <future>
 #include <iostream>
 
 namespace tlmhub::fuzz {
@@ -63,6 +64,14 @@ FuzzServer::FuzzServer()
     if (!admin) fail("no admin user after bootstrap");
     mAdmin = *admin;
     mToken = mTokens->issue(mAdmin).token;
+}
+
+server::Response FuzzServer::handle(const server::Request& request)
+{
+    std::promise<server::Response> answered;
+    std::future<server::Response> response = answered.get_future();
+    mApp->handle({request, "127.0.0.1"}, [&answered](server::Response r) { answered.set_value(std::move(r)); });
+    return response.get();
 }
 
 const std::string& FuzzServer::token()

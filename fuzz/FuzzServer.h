@@ -32,6 +32,8 @@ public:
     static FuzzServer& instance();
 
     server::TlmhubApp& app() { return *mApp; }
+    // The app's answer to `request` (handlers run on its pools: this waits for the reply).
+    server::Response handle(const server::Request& request);
     // A bearer token of the admin; a new one if an input logged the last one out.
     const std::string& token();
 
