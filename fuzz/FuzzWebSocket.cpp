@@ -8,7 +8,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <mutex>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -23,6 +26,26 @@ public:
     }
     void sendFrame(std::unique_ptr<server::MergeableFrame> frame) override { send(frame->text()); }
     void close(std::string) override {}
+    // The connection's strand is the fuzz loop: tasks (a submitted job's reply) run between
+    // messages; those that come after the input ended are dropped, as on a closed socket.
+    void runOnConnection(std::function<void()> task) override
+    {
+        std::lock_guard lock(mMutex);
+        mTasks.push_back(std::move(task));
+    }
+    void runPending()
+    {
+        std::vector<std::function<void()>> tasks;
+        {
+            std::lock_guard lock(mMutex);
+            tasks.swap(mTasks);
+        }
+        for (auto& task : tasks) task();
+    }
+
+private:
+    std::mutex mMutex;
+    std::vector<std::function<void()>> mTasks;
 };
 
 } // namespace
@@ -33,16 +56,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     server::Request upgrade{server::http::verb::get, "/api/v1/ws", 11};
     upgrade.set(server::http::field::authorization, "Bearer " + server.token());
     server::Response refusal;
-    auto handler = server.app().acceptWebSocket({upgrade, "127.0.0.1"}, std::make_shared<CheckingSender>(), refusal);
+    auto sender = std::make_shared<CheckingSender>();
+    auto handler = server.app().acceptWebSocket({upgrade, "127.0.0.1"}, sender, refusal);
     if (!handler) fuzz::fail("WebSocket refused: " + refusal.body());
 
     std::string_view rest(reinterpret_cast<const char*>(data), size);
     while (true) {
         const std::size_t end = rest.find('\x1e');
         handler->onMessage(std::string(rest.substr(0, end)));
+        sender->runPending();
         if (end == std::string_view::npos) break;
         rest.remove_prefix(end + 1);
     }
+    sender->runPending();
     handler->onClose();
     return 0;
 }

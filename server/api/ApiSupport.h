@@ -21,6 +21,7 @@
 namespace tlmhub::server {
 
 struct ServerOptions;
+class HandlerPools;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -34,6 +35,7 @@ struct Services {
     StreamHub& streams;
     LiveSessions& liveSessions;         // open WebSockets, ended with their login
     const DownloadLinks& downloadLinks;
+    HandlerPools& pools;                // where slow work goes instead of an I/O thread
 };
 
 struct Call {

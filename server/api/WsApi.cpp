@@ -1,6 +1,7 @@
 #include "server/api/WsApi.h"
 
 #include "server/api/QueuedFrame.h"
+#include "server/app/HandlerPools.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/http/JsonText.h"
 #include "server/protocol/SchemaValidator.h"
@@ -53,6 +54,7 @@ WsApi::~WsApi() = default;
 
 void WsApi::onClose()
 {
+    mClosed = true;
     mServices.liveSessions.remove(mLiveSession);
     for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
     mSubscriptions.clear();
@@ -77,6 +79,7 @@ void WsApi::onMessage(const std::string& text)
     } catch (const std::exception& e) {
         reply = failure("internal", e.what());
     }
+    if (std::exchange(mReplyDeferred, false) && reply.ok) return;
     if (!reply.ok) {
         mAfterReply = nullptr;
         return sendError(id, reply.code, reply.message);
@@ -184,11 +187,25 @@ WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)
     if (msg.contains("step")) request.settings.step = msg["step"].get<double>();
     if (msg.contains("stop")) request.settings.stop = msg["stop"].get<double>();
     if (msg.contains("log_samples")) request.settings.logSamples = msg["log_samples"].get<std::size_t>();
-    const auto submitted = mServices.queue.submit(request);
-    if (!submitted.id) return failure(submitted.code, submitted.message);
-    const std::int64_t jobId = *submitted.id;
-    mAfterReply = [this, jobId, msg] { subscribeToJob(jobId, msg); };
-    return success({{"job_id", jobId}});
+    // Compiling a large model takes a while: it happens on the request pool, and the reply
+    // comes back through the connection's strand. Other messages are answered meanwhile.
+    mReplyDeferred = true;
+    mServices.pools.runRequest([weak = weak_from_this(), sender = mSender, &queue = mServices.queue,
+                                request = std::move(request), id = echoableId(msg), msg] {
+        JobQueue::Submitted submitted = queue.submit(request);
+        sender->runOnConnection([weak, submitted = std::move(submitted), id, msg] {
+            if (auto self = weak.lock()) self->finishStart(id, submitted, msg);
+        });
+    });
+    return success();
+}
+
+void WsApi::finishStart(const nlohmann::json& id, const JobQueue::Submitted& submitted, const nlohmann::json& msg)
+{
+    if (mClosed) return;   // the job runs on; nobody is here to stream it to
+    if (!submitted.id) return sendError(id, submitted.code, submitted.message);
+    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", {{"job_id", *submitted.id}}}}));
+    subscribeToJob(*submitted.id, msg);
 }
 
 bool WsApi::ownsJob(std::int64_t jobId) const

@@ -7,10 +7,11 @@
 #include "server/http/HttpApplication.h"
 
 #include <functional>
+#include <memory>
 
 namespace tlmhub::server {
 
-class WsApi : public WebSocketHandler {
+class WsApi : public WebSocketHandler, public std::enable_shared_from_this<WsApi> {
 public:
     // `token`: the login the connection was opened with; the connection ends with it.
     WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender);
@@ -30,6 +31,8 @@ private:
     Reply stopSimulation(const nlohmann::json& msg);
     Reply subscribe(const nlohmann::json& msg);
     void subscribeToJob(std::int64_t jobId, const nlohmann::json& msg);
+    // On the strand, once a simulate.start's job is compiled and queued (or refused).
+    void finishStart(const nlohmann::json& id, const JobQueue::Submitted& submitted, const nlohmann::json& msg);
     bool ownsJob(std::int64_t jobId) const;
     void sendError(const nlohmann::json& id, const std::string& code, const std::string& message);
 
@@ -43,6 +46,8 @@ private:
     std::vector<std::uint64_t> mSubscriptions;
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;
+    bool mReplyDeferred = false;   // the message being handled is answered later
+    bool mClosed = false;
 };
 
 } // namespace tlmhub::server

@@ -1,7 +1,8 @@
 #pragma once
-// The threads REST handlers run on, so no I/O thread waits for storage or a password hash:
-// a request pool for handlers that touch the database, and a smaller pool for password
-// hashing (argon2id at its interactive limits takes tens of milliseconds of CPU per call).
+// The threads slow work runs on, so no I/O thread waits for storage, a password hash or a
+// model's compile: a request pool for REST handlers that touch the database (and jobs
+// submitted over WebSocket, compiled there), and a smaller pool for password hashing
+// (argon2id at its interactive limits takes tens of milliseconds of CPU per call).
 // The hashing pool is bounded: forty students logging in at once queue there, while other
 // requests and health probes go on.
 #include <boost/asio/thread_pool.hpp>

@@ -42,8 +42,11 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(*mJobStore, mOptions.resultTtl);
     mLiveSessions = std::make_unique<LiveSessions>(*mTokens, kLoginCheckPeriod);
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
+                                            kHashingQueueLimit);
     mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter,
-                                 *mQueue, *mStreams, *mLiveSessions, *mDownloadLinks});
+                                 *mQueue, *mStreams, *mLiveSessions, *mDownloadLinks, *mPools});
 
     std::vector<RouteSpec> routes;
     addCatalogueRoutes(routes);
@@ -53,9 +56,6 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     addJobRoutes(routes);
     for (RouteSpec& r : routes)
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
-                                            kHashingQueueLimit);
 }
 
 TlmhubApp::~TlmhubApp()

@@ -22,6 +22,9 @@ public:
     virtual void sendFrame(std::unique_ptr<MergeableFrame> frame) = 0;
     // Ends the connection with a close frame giving `reason`; nothing queued is sent after.
     virtual void close(std::string reason) = 0;
+    // Runs `task` on the connection's strand (where its handler runs), unless the connection
+    // has ended by then.
+    virtual void runOnConnection(std::function<void()> task) = 0;
 };
 
 // Receiving side: one per connection, called on the connection's strand (one at a time).

@@ -36,6 +36,12 @@ public:
             if (auto session = weak.lock()) session->closeWithReason(reason);
         });
     }
+    void runOnConnection(std::function<void()> task) override
+    {
+        net::post(mExecutor, [weak = mSession, task = std::move(task)] {
+            if (weak.lock()) task();
+        });
+    }
 
 private:
     std::weak_ptr<WebSocketSession> mSession;

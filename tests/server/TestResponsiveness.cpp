@@ -113,5 +113,29 @@ TEST(Responsiveness, StoppingARunningJobRepliesAtOnceAndEventDoneFollows)
     EXPECT_EQ(e["state"], "cancelled");
 }
 
+// simulate.start compiles the model off the connection's strand: a ping sent right after the
+// start of a large model (4000 components) is answered first.
+TEST(Responsiveness, AJobBeingCompiledDoesNotHoldUpItsConnection)
+{
+    ServerProcess server(freshTempDir("compile-off-strand"));
+    HttpClient admin(server.port());
+    const std::string token = admin.login("admin", kAdminPassword);
+    const auto model = admin.request(http::verb::post, "/api/v1/models?name=x200",
+                                     readFile(kSharedDir / "bench-models" / "position-servo-x200.hmf"),
+                                     "application/xml");
+    ASSERT_EQ(model.status, 201) << model.body;
+    WsClient ws(server.port(), token);
+    ASSERT_EQ(ws.call("model.open", {{"model_id", model.json()["id"]}})["type"], "reply");
+    ws.sendText(R"({"id": 100, "type": "simulate.start"})");
+    ws.sendText(R"({"id": 101, "type": "ping"})");
+    std::vector<int> replyOrder;
+    while (replyOrder.size() < 2) {
+        const nlohmann::json m = ws.receive(60000);
+        ASSERT_FALSE(m.is_null()) << "no reply within 60 s";
+        if (m.value("type", "") == "reply" || m.value("type", "") == "error") replyOrder.push_back(m["id"].get<int>());
+    }
+    EXPECT_EQ(replyOrder, (std::vector<int>{101, 100}));
+}
+
 } // namespace
 } // namespace tlmhub::test
