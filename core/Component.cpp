@@ -8,6 +8,14 @@
 
 namespace tlmhub {
 
+void stepVirtually(Component* const* components, std::size_t count, double time)
+{
+    for (std::size_t i = 0; i < count; ++i) {
+        components[i]->mTime = time;
+        components[i]->simulateOneTimestep();
+    }
+}
+
 const char* cqsKindName(CqsKind kind)
 {
     switch (kind) {

@@ -27,6 +27,8 @@ class Component;
 
 // Steps `count` components of one type at `time`: one batch of a run list (core/StepBatches.h).
 using BatchStepper = void (*)(Component* const* components, std::size_t count, double time);
+// The batch step of a type without its own: one virtual call per component.
+void stepVirtually(Component* const* components, std::size_t count, double time);
 
 enum class CqsKind { C, Q, S, Undefined };
 const char* cqsKindName(CqsKind kind);
@@ -56,8 +58,8 @@ public:
     virtual void finalize() {}
     // Not virtual: the step loop asks this of every component every step.
     bool isSystem() const { return mIsSystem; }
-    // The batch step of this component's type; null runs it by its virtual call. The
-    // factory sets it (TLMHUB_REGISTER_COMPONENT).
+    // The batch step of this component's type: TLMHUB_REGISTER_COMPONENT sets a direct one,
+    // a subsystem its own; anything else steps by its virtual call.
     BatchStepper batchStepper() const { return mBatchStepper; }
     void setBatchStepper(BatchStepper step) { mBatchStepper = step; }
 
@@ -128,7 +130,7 @@ public:
 
 protected:
     bool mIsSystem = false;   // set by System's constructor
-    BatchStepper mBatchStepper = nullptr;
+    BatchStepper mBatchStepper = &stepVirtually;
 
     // --- port registration ---
     Port* addPowerPort(const std::string& name, NodeType type, bool required = true);

@@ -7,25 +7,6 @@
 
 namespace tlmhub {
 
-namespace {
-
-// Components without a batch step of their own (made outside the factory): one virtual
-// call each, as System::runComponent does.
-void stepOneByOne(Component* const* components, std::size_t count, double time)
-{
-    for (std::size_t i = 0; i < count; ++i) {
-        components[i]->mTime = time;
-        components[i]->simulateOneTimestep();
-    }
-}
-
-BatchStepper stepperOf(const Component* c)
-{
-    return c->batchStepper() ? c->batchStepper() : &stepOneByOne;
-}
-
-} // namespace
-
 // Regroup: a component's rank is its place among the members of its cluster (0 for a
 // component linked to no other). Sorting stably by rank, then by type, keeps every
 // cluster in list order (its members have rising ranks) and puts independent components
@@ -38,19 +19,19 @@ StepBatches::StepBatches(const std::vector<Component*>& list, Order order)
         const std::vector<std::size_t> cluster = linkedClusters(list);
         std::map<std::size_t, std::size_t> membersSoFar;
         for (std::size_t i = 0; i < list.size(); ++i) rank[i] = membersSoFar[cluster[i]]++;
-        for (const Component* c : list) typeOrder.emplace(stepperOf(c), typeOrder.size());
+        for (const Component* c : list) typeOrder.emplace(c->batchStepper(), typeOrder.size());
     }
     std::vector<std::size_t> runOrder(list.size());
     for (std::size_t i = 0; i < list.size(); ++i) runOrder[i] = i;
     if (order == Order::Regroup) {
         std::stable_sort(runOrder.begin(), runOrder.end(), [&](std::size_t a, std::size_t b) {
             if (rank[a] != rank[b]) return rank[a] < rank[b];
-            return typeOrder[stepperOf(list[a])] < typeOrder[stepperOf(list[b])];
+            return typeOrder[list[a]->batchStepper()] < typeOrder[list[b]->batchStepper()];
         });
     }
     for (std::size_t i : runOrder) {
         Component* c = list[i];
-        const BatchStepper step = stepperOf(c);
+        const BatchStepper step = c->batchStepper();
         if (mBatches.empty() || mBatches.back().step != step)
             mBatches.push_back({step, static_cast<std::uint32_t>(mComponents.size()), 0});
         ++mBatches.back().count;

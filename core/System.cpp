@@ -1099,15 +1099,6 @@ Status System::initFailure(const Component& c) const
 
 
 
-void System::runComponent(Component* c, double time)
-{
-    if (c->isSystem()) {
-        static_cast<System*>(c)->simulateTo(time);
-    } else {
-        c->mTime = time;
-        c->simulateOneTimestep();
-    }
-}
 
 void System::stepOnce()
 {

@@ -182,11 +182,6 @@ private:
     void stepOnce();
     void packNodeData();
 
-public:
-    // One step of one component at `time` (a subsystem runs its own steps up to it).
-    static void runComponent(Component* c, double time);
-
-private:
     struct ThreadTrial {
         double singleThreadedStepSeconds;
         std::size_t window;   // steps per timed window
