@@ -189,6 +189,7 @@ export interface ProtocolDefinitions {
     ModelUngroupRequest?: ModelUngroupRequest;
     ModelSettingsRequest?: ModelSettingsRequest;
     ModelSettingsData?: ModelSettingsData;
+    BinaryFrameHeader?: BinaryFrameHeader;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -654,6 +655,10 @@ export interface SimulateStartRequest {
      * Highest frames per second (default 30).
      */
     rate?: number;
+    /**
+     * How event.frame is sent: a JSON text message (default), or a binary message (a JSON header, BinaryFrameHeader, and little-endian float64 columns).
+     */
+    frames?: 'json' | 'binary';
 }
 export interface SimulateStopRequest {
     id: RequestId;
@@ -675,6 +680,10 @@ export interface LogSubscribeRequest {
      * Highest frames per second (default 30).
      */
     rate?: number;
+    /**
+     * How event.frame is sent: a JSON text message (default), or a binary message (a JSON header, BinaryFrameHeader, and little-endian float64 columns).
+     */
+    frames?: 'json' | 'binary';
 }
 export interface PingRequest {
     id: RequestId;
@@ -836,4 +845,21 @@ export interface ResyncEvent {
 }
 export interface ModelSettingsData {
     simulation: SimulationSettings;
+}
+/**
+ * The JSON header of an event.frame sent as a binary message: the message is a 4-byte little-endian header length, the header's UTF-8 text, zero bytes up to a multiple of 8, then float64 little-endian samples: time_samples of time, then each variable's samples in order.
+ */
+export interface BinaryFrameHeader {
+    type: 'event.frame';
+    job_id: number;
+    seq: number;
+    time_samples: number;
+    variables: {
+        name: string;
+        samples: number;
+    }[];
+    /**
+     * Frames merged into this one because the socket was slow; their samples are included.
+     */
+    dropped: number;
 }
