@@ -322,6 +322,14 @@ def read_stored(port, runs, tokens, requested):
                       {v["name"]: array.array("d", v["data"]) for v in stored["variables"]})
 
 
+def start_profiler(output, pid):
+    """perf record attached to the server; it needs a moment to attach before the lab starts."""
+    profiler = subprocess.Popen(["perf", "record", "-q", "-F", "1000", "--call-graph", "dwarf,16384",
+                                 "-o", output, "-p", str(pid)], stdout=subprocess.DEVNULL)
+    time.sleep(0.5)
+    return profiler
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--server", default=os.path.join(ROOT, "build/bin/tlmhub-server"))
@@ -338,6 +346,7 @@ def main():
     ap.add_argument("--port-file", help="write the server's port here once it listens")
     ap.add_argument("--server-arg", action="append", default=[], help="one more server argument (repeatable)")
     ap.add_argument("--label", default="", help="a name for this run in the output")
+    ap.add_argument("--perf", help="record the server's lab phase with perf (call graphs) into this file")
     ap.add_argument("--json", help="append the figures as one JSON line to this file")
     a = ap.parse_args()
     clis = a.cli or [os.path.join(ROOT, "build/bin/tlmhub-cli")]
@@ -375,12 +384,16 @@ def main():
             for t in threads:
                 t.start()
             ready.wait()  # every student is connected and has the model open
+            profiler = start_profiler(a.perf, server.proc.pid) if a.perf else None
             cpu0, client0, wall0 = server.cpu_seconds(), os.times(), time.perf_counter()
             go.wait()
             for t in threads:
                 t.join(max(0.0, deadline - time.monotonic()) + 5)
             wall = time.perf_counter() - wall0
             cpu1, client1 = server.cpu_seconds(), os.times()
+            if profiler:
+                profiler.send_signal(signal.SIGINT)
+                profiler.wait()
             server_cpu = cpu1 - cpu0
             client_cpu = (client1.user - client0.user) + (client1.system - client0.system)
 

@@ -10,9 +10,11 @@ void QueuedFrame::merge(MergeableFrame& later)
     mFrame.append(std::move(static_cast<QueuedFrame&>(later).mFrame));
 }
 
-std::string QueuedFrame::text()
+OutgoingMessage QueuedFrame::message()
 {
-    return toJsonText(mFrame.toJson(mStream->nextSeq++));
+    const std::uint64_t seq = mStream->nextSeq++;
+    if (mStream->encoding == FrameEncoding::Binary) return {mFrame.binaryMessage(seq), true};
+    return {mFrame.jsonText(seq)};
 }
 
 std::string QueuedFrame::giveUp()

@@ -14,6 +14,7 @@ namespace tlmhub::server {
 // What the frames of one subscription share on their connection.
 struct FrameStream {
     std::uint64_t id = 0;              // unique on the connection
+    FrameEncoding encoding = FrameEncoding::Json;
     std::uint64_t nextSeq = 0;         // only on the connection's strand
     std::atomic<bool> givenUp{false};  // set on the strand; the job's thread reads it to stop early
 };
@@ -25,8 +26,8 @@ public:
 
     std::uint64_t stream() const override { return mStream->id; }
     void merge(MergeableFrame& later) override;
-    std::size_t bytes() const override { return mFrame.textBytesBound(); }
-    std::string text() override;
+    std::size_t bytes() const override { return mFrame.encodedBytesBound(mStream->encoding); }
+    OutgoingMessage message() override;
     std::string giveUp() override;
     bool streamGivenUp() const override { return mStream->givenUp.load(); }
 

@@ -163,6 +163,7 @@ void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
     std::weak_ptr<WebSocketSender> weakSender = mSender;
     auto stream = std::make_shared<FrameStream>();
     stream->id = ++mStreams;
+    if (msg.value("frames", std::string("json")) == "binary") stream->encoding = FrameEncoding::Binary;
     StreamSink sink;
     sink.event = [weakSender](nlohmann::json event) {
         if (auto sender = weakSender.lock()) sender->send(toJsonText(event));

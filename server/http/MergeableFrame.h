@@ -4,6 +4,8 @@
 // it (nothing is lost); when a stream's waiting data would pass the socket's byte limit, the
 // stream gives way to a short notice. The transport knows nothing of what the data is: the
 // application's frame type (server/api/QueuedFrame) merges and writes it.
+#include "server/http/OutgoingMessage.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -17,10 +19,10 @@ public:
     virtual std::uint64_t stream() const = 0;
     // Appends `later`, the next frame of the same stream, to this one.
     virtual void merge(MergeableFrame& later) = 0;
-    // At least the size of text(): what the frame counts against the byte limit.
+    // At least the size of message(): what the frame counts against the byte limit.
     virtual std::size_t bytes() const = 0;
     // The message to write; called once, when the frame's turn comes.
-    virtual std::string text() = 0;
+    virtual OutgoingMessage message() = 0;
     // The stream gives up: this frame's data goes and the returned notice is sent in its
     // place; from then on streamGivenUp() is true for every frame of the stream.
     virtual std::string giveUp() = 0;

@@ -76,14 +76,14 @@ void OutgoingQueue::giveUp(std::uint64_t stream)
     }
 }
 
-std::string OutgoingQueue::takeNext()
+OutgoingMessage OutgoingQueue::takeNext()
 {
     Item item = std::move(mItems.front());
     mItems.pop_front();
-    std::string text = item.frame ? item.frame->text() : std::move(item.text);
-    mBytes = mBytes - item.bytes + text.size();
-    mInFlight = text.size();
-    return text;
+    OutgoingMessage message = item.frame ? item.frame->message() : OutgoingMessage{std::move(item.text)};
+    mBytes = mBytes - item.bytes + message.data.size();
+    mInFlight = message.data.size();
+    return message;
 }
 
 void OutgoingQueue::written()

@@ -34,9 +34,9 @@ public:
     std::size_t size() const { return mItems.size(); }
     std::size_t bytes() const { return mBytes; }
     bool overflowing() const { return mBytes > mByteLimit; }
-    // Removes the first message and returns its text (a waiting frame is written out now);
-    // its bytes count until written().
-    std::string takeNext();
+    // Removes the first message and returns it (a waiting frame is encoded now); its bytes
+    // count until written().
+    OutgoingMessage takeNext();
     void written();
     void clear();
 

@@ -143,12 +143,12 @@ void WebSocketSession::writeNext()
     mWriting = true;
     mWritten = mQueue.takeNext();
     trackQueuedBytes();
-    mWs.text(true);
-    mWs.async_write(net::buffer(mWritten),
+    mWs.binary(mWritten.binary);
+    mWs.async_write(net::buffer(mWritten.data),
                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
                         self->mWriting = false;
                         self->mQueue.written();
-                        std::string().swap(self->mWritten);   // a merged frame can be megabytes
+                        std::string().swap(self->mWritten.data);   // a merged frame can be megabytes
                         if (ec) return self->closed();
                         if (self->mClosing) return self->sendClose();
                         self->trackQueuedBytes();
@@ -194,8 +194,7 @@ void WebSocketSession::closed()
 void WebSocketSession::freeQueue()
 {
     mQueue.clear();
-    mWritten.clear();
-    mWritten.shrink_to_fit();
+    std::string().swap(mWritten.data);
     trackQueuedBytes();
 }
 

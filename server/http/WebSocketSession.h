@@ -45,7 +45,7 @@ private:
     TransportLimits mLimits;
     std::shared_ptr<WebSocketHandler> mHandler;
     OutgoingQueue mQueue;
-    std::string mWritten;   // the message being written, out of the queue
+    OutgoingMessage mWritten;   // the message being written, out of the queue
     std::string mCloseReason;
     std::size_t mCountedBytes = 0;   // this queue's share of TransportStats' gauge
     bool mWriting = false;

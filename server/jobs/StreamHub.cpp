@@ -61,24 +61,26 @@ void StreamHub::publishFrames(std::int64_t jobId, const FrameSource& source)
 {
     const auto now = std::chrono::steady_clock::now();
     std::lock_guard lock(mMutex);
+    Publication publication;
     auto [first, last] = mByJob.equal_range(jobId);
     for (auto j = first; j != last; ++j) {
         Subscription& s = mSubscriptions.at(j->second);
         if (now - s.lastFrame < s.interval) continue;
-        sendFrame(s, source);
+        sendFrame(s, source, publication);
     }
 }
 
 void StreamHub::finish(std::int64_t jobId, const FrameSource* source, JobState state, const std::string& error)
 {
     std::lock_guard lock(mMutex);
+    Publication publication;
     auto [first, last] = mByJob.equal_range(jobId);
     for (auto j = first; j != last; ++j) {
         Subscription& s = mSubscriptions.at(j->second);
-        if (source) sendFrame(s, *source);
+        if (source) sendFrame(s, *source, publication);
         sendDone(s, state, error);
-        mSubscriptions.erase(j->second);
     }
+    for (auto j = first; j != last; ++j) mSubscriptions.erase(j->second);
     mByJob.erase(first, last);
 }
 
@@ -89,7 +91,8 @@ void StreamHub::finishSubscription(std::uint64_t subscription, const FrameSource
     auto it = mSubscriptions.find(subscription);
     if (it == mSubscriptions.end()) return;
     Subscription& s = it->second;
-    if (source) sendFrame(s, *source);
+    Publication publication;
+    if (source) sendFrame(s, *source, publication);
     sendDone(s, state, error);
     auto [first, last] = mByJob.equal_range(s.jobId);
     for (auto j = first; j != last; ++j) {
@@ -101,44 +104,72 @@ void StreamHub::finishSubscription(std::uint64_t subscription, const FrameSource
     mSubscriptions.erase(it);
 }
 
-// New samples since the subscription's previous frame; nothing when there are none.
-void StreamHub::sendFrame(Subscription& s, const FrameSource& source)
+// The variables a subscription streams; a layout another subscription of the job already
+// has is shared, so that their frames can share samples.
+void StreamHub::resolveLayout(Subscription& s, const FrameSource& source)
 {
-    if (!s.names) {
-        std::vector<std::string> names;
-        if (s.wanted.empty()) {
-            const auto& all = source.names();
-            names.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(
-                                                        std::min(all.size(), kMaxFrameVariables)));
-        } else {
-            for (const auto& name : s.wanted) {
-                if (names.size() == kMaxFrameVariables) break;
-                if (source.find(name) && std::find(names.begin(), names.end(), name) == names.end())
-                    names.push_back(name);
+    std::vector<std::string> names;
+    if (s.wanted.empty()) {
+        const auto& all = source.names();
+        names.assign(all.begin(),
+                     all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), kMaxFrameVariables)));
+    } else {
+        for (const auto& name : s.wanted) {
+            if (names.size() == kMaxFrameVariables) break;
+            if (source.find(name) && std::find(names.begin(), names.end(), name) == names.end())
+                names.push_back(name);
+        }
+    }
+    s.sent.assign(names.size(), 0);
+    auto [first, last] = mByJob.equal_range(s.jobId);
+    for (auto j = first; j != last; ++j) {
+        const Subscription& other = mSubscriptions.at(j->second);
+        if (other.layout && other.layout->names == names) {
+            s.layout = other.layout;
+            return;
+        }
+    }
+    s.layout = std::make_shared<const FrameLayout>(std::move(names));
+}
+
+// New samples since the subscription's previous frame; nothing when there are none. A
+// subscription that is where an earlier one of this publication was gets the same samples.
+void StreamHub::sendFrame(Subscription& s, const FrameSource& source, Publication& publication)
+{
+    if (!s.layout) resolveLayout(s, source);
+    const Published* same = nullptr;
+    for (const Published& p : publication)
+        if (p.layout == s.layout.get() && p.sentBefore == s.sent && p.timeSentBefore == s.timeSent) same = &p;
+    if (!same) {
+        Published p;
+        p.layout = s.layout.get();
+        p.sentBefore = s.sent;
+        p.timeSentBefore = s.timeSent;
+        auto samples = std::make_shared<FrameSamples>();
+        const std::size_t timeTo = source.timeCount();
+        source.appendTime(s.timeSent, timeTo, samples->time);
+        const auto& names = s.layout->names;
+        samples->columns.resize(names.size());
+        p.sentAfter = s.sent;
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (auto column = source.find(names[i])) {
+                p.sentAfter[i] = std::max(s.sent[i], source.count(*column));
+                source.appendData(*column, s.sent[i], p.sentAfter[i], samples->columns[i]);
             }
         }
-        s.sent.assign(names.size(), 0);
-        s.names = std::make_shared<const std::vector<std::string>>(std::move(names));
+        p.timeSentAfter = std::max(s.timeSent, timeTo);
+        if (!samples->empty()) p.samples = std::move(samples);
+        publication.push_back(std::move(p));
+        same = &publication.back();
     }
-    const std::size_t timeTo = source.timeCount();
-    bool anything = timeTo > s.timeSent;
+    if (!same->samples) return;
+    s.sent = same->sentAfter;
+    s.timeSent = same->timeSentAfter;
+    s.lastFrame = std::chrono::steady_clock::now();
     StreamFrame frame;
     frame.jobId = s.jobId;
-    frame.names = s.names;
-    source.appendTime(s.timeSent, timeTo, frame.time);
-    frame.columns.resize(s.names->size());
-    for (std::size_t i = 0; i < s.names->size(); ++i) {
-        std::size_t to = s.sent[i];
-        if (auto column = source.find((*s.names)[i])) {
-            to = std::max(to, source.count(*column));
-            source.appendData(*column, s.sent[i], to, frame.columns[i]);
-        }
-        anything = anything || !frame.columns[i].empty();
-        s.sent[i] = to;
-    }
-    if (!anything) return;
-    s.timeSent = std::max(s.timeSent, timeTo);
-    s.lastFrame = std::chrono::steady_clock::now();
+    frame.layout = s.layout;
+    frame.parts.push_back(same->samples);
     s.sink.frame(std::move(frame));
 }
 

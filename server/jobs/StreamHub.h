@@ -9,7 +9,8 @@
 // subscription remembers how many samples of each of its variables it has sent, and the final
 // frames (from the stored ResultTable) send the rest before event.done. Frames go out as
 // numbers (StreamFrame), numbered by whoever writes them, so that a slow connection can merge
-// them without losing samples or leaving gaps in `seq`.
+// them without losing samples or leaving gaps in `seq`. Subscriptions of a job that stream the
+// same variables and have sent as much share each publication's samples (and so its encoding).
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/StreamFrame.h"
@@ -66,13 +67,25 @@ private:
         std::chrono::steady_clock::duration interval{};
         StreamSink sink;
         std::chrono::steady_clock::time_point lastFrame{};
-        // The variables it streams, resolved at its first frame; shared with its frames.
-        std::shared_ptr<const std::vector<std::string>> names;
+        // The variables it streams, resolved at its first frame; shared with its frames and
+        // with the job's other subscriptions of the same variables.
+        std::shared_ptr<const FrameLayout> layout;
         std::vector<std::size_t> sent;    // samples sent per variable
         std::size_t timeSent = 0;
     };
+    // What one publication made, for the next subscription that is where this one was.
+    struct Published {
+        const FrameLayout* layout = nullptr;
+        std::vector<std::size_t> sentBefore;
+        std::size_t timeSentBefore = 0;
+        std::shared_ptr<const FrameSamples> samples;   // null when there was nothing new
+        std::vector<std::size_t> sentAfter;
+        std::size_t timeSentAfter = 0;
+    };
+    using Publication = std::vector<Published>;
 
-    static void sendFrame(Subscription& s, const FrameSource& source);
+    void resolveLayout(Subscription& s, const FrameSource& source);
+    void sendFrame(Subscription& s, const FrameSource& source, Publication& publication);
     static void sendDone(Subscription& s, JobState state, const std::string& error);
 
     mutable std::mutex mMutex;

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstring>
 #include <fstream>
 #include <poll.h>
 #include <sstream>
@@ -177,7 +178,46 @@ nlohmann::json WsClient::receive(int timeoutMs)
         mLastError = net::error::timed_out;
     }
     if (mLastError) return nlohmann::json();
-    return nlohmann::json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
+    const std::string message = beast::buffers_to_string(buffer.data());
+    if (!mWs.got_text()) {
+        binaryHeaders.push_back(binaryFrameHeader(message));
+        return binaryFrameAsJson(message);
+    }
+    return nlohmann::json::parse(message, nullptr, false);
+}
+
+nlohmann::json binaryFrameHeader(const std::string& message)
+{
+    std::uint32_t headerBytes = 0;
+    if (message.size() < 4) throw std::runtime_error("binary frame shorter than its header length");
+    std::memcpy(&headerBytes, message.data(), 4);   // little-endian, as this machine
+    if (4 + std::size_t{headerBytes} > message.size()) throw std::runtime_error("binary frame header past the end");
+    return nlohmann::json::parse(message.substr(4, headerBytes));
+}
+
+nlohmann::json binaryFrameAsJson(const std::string& message)
+{
+    const nlohmann::json header = binaryFrameHeader(message);
+    std::uint32_t headerBytes = 0;
+    std::memcpy(&headerBytes, message.data(), 4);
+    std::size_t at = (4 + std::size_t{headerBytes} + 7) / 8 * 8;
+    for (std::size_t i = 4 + headerBytes; i < at; ++i)
+        if (message[i] != '\0') throw std::runtime_error("binary frame padding is not zero");
+    auto take = [&](std::size_t n) {
+        if (at + n * 8 > message.size()) throw std::runtime_error("binary frame samples past the end");
+        std::vector<double> values(n);
+        std::memcpy(values.data(), message.data() + at, n * 8);
+        at += n * 8;
+        return values;
+    };
+    nlohmann::json event = {{"type", header.at("type")}, {"job_id", header.at("job_id")},
+                            {"seq", header.at("seq")}, {"dropped", header.at("dropped")}};
+    event["time"] = take(header.at("time_samples").get<std::size_t>());
+    event["variables"] = nlohmann::json::object();
+    for (const auto& v : header.at("variables"))
+        event["variables"][v.at("name").get<std::string>()] = take(v.at("samples").get<std::size_t>());
+    if (at != message.size()) throw std::runtime_error("binary frame has bytes after its samples");
+    return event;
 }
 
 bool WsClient::closedByServer() const

@@ -74,7 +74,8 @@ public:
     WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0);
     void sendText(const std::string& text);
     // Next message, or a null json after `timeoutMs` (the connection is of no further use
-    // after a timeout) or when the connection ended.
+    // after a timeout) or when the connection ended. A binary frame comes as the JSON
+    // event.frame it stands for; its header is kept in `binaryHeaders`.
     nlohmann::json receive(int timeoutMs = 10000);
     // After receive() returned null: whether the server closed the connection (not a timeout).
     bool closedByServer() const;
@@ -82,6 +83,7 @@ public:
     // that arrive in between are kept in `events`.
     nlohmann::json call(const std::string& type, nlohmann::json fields = nlohmann::json::object());
     std::vector<nlohmann::json> events;
+    std::vector<nlohmann::json> binaryHeaders;
     nlohmann::json hello;
 
 private:
@@ -90,6 +92,11 @@ private:
     int mNextId = 1;
     boost::beast::error_code mLastError;
 };
+
+// A binary event.frame (protocol/README.md): its JSON header, and the whole frame as the JSON
+// event.frame with the same samples. Both throw on a malformed message.
+nlohmann::json binaryFrameHeader(const std::string& message);
+nlohmann::json binaryFrameAsJson(const std::string& message);
 
 // Sends `bytes` as they are on a new connection and returns everything read until the server
 // closes or `timeoutMs` passes without data (for requests a client library would refuse).

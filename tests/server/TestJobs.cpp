@@ -82,7 +82,7 @@ struct EventLog {
         };
         sink.frame = [this](StreamFrame frame) {
             std::lock_guard lock(mutex);
-            events.push_back(frame.toJson(frames++));
+            events.push_back(nlohmann::json::parse(frame.jsonText(frames++)));
         };
         return sink;
     }

@@ -7,6 +7,7 @@
 #include <memory>
 
 using tlmhub::server::MergeableFrame;
+using tlmhub::server::OutgoingMessage;
 using tlmhub::server::OutgoingQueue;
 
 namespace {
@@ -26,14 +27,14 @@ public:
     }
     std::size_t bytes() const override { return mSamples.size(); }
     // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "s" + std::to_string(...).
-    std::string text() override
+    OutgoingMessage message() override
     {
         std::string out = "s";
         out += std::to_string(mStream);
         out += ':';
         out += mSamples;
         if (mMerged) out += '+' + std::to_string(mMerged);
-        return out;
+        return {out};
     }
     std::string giveUp() override
     {
@@ -65,7 +66,7 @@ std::vector<std::string> drain(OutgoingQueue& q)
 {
     std::vector<std::string> out;
     while (!q.empty()) {
-        out.push_back(q.takeNext());
+        out.push_back(q.takeNext().data);
         q.written();
     }
     EXPECT_EQ(q.bytes(), 0u);
@@ -116,7 +117,7 @@ TEST(OutgoingQueue, TheMessageTakenForWritingIsNoLongerMergedInto)
     OutgoingQueue q(1);
     const Stream a{1};
     q.push(a.frame("a1"));
-    EXPECT_EQ(q.takeNext(), "s1:a1");   // being written
+    EXPECT_EQ(q.takeNext().data, "s1:a1");   // being written
     q.push(a.frame("a2"));
     q.push(a.frame("a3"));
     q.written();
@@ -176,7 +177,7 @@ TEST(OutgoingQueue, TheMessageBeingWrittenCountsUntilWritten)
     const Stream a{1};
     q.push("abc");
     q.push(a.frame("de"));
-    EXPECT_EQ(q.takeNext(), "abc");
+    EXPECT_EQ(q.takeNext().data, "abc");
     EXPECT_EQ(q.bytes(), 5u);
     q.push(a.frame("fgh"));    // 8 bytes
     q.push("ijk");             // 11: the frames give way, the message being written stays

@@ -2,6 +2,7 @@
 // are merged, so the frames still hold every sample, and when a job's waiting samples would
 // pass the socket's byte limit the client gets event.resync instead and reads the stored result.
 #include "ServerHarness.h"
+#include "server/protocol/SchemaValidator.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <thread>
 
 using namespace tlmhub::test;
+using tlmhub::server::SchemaValidator;
 namespace fs = std::filesystem;
 
 namespace {
@@ -199,4 +201,59 @@ TEST(Streaming, PastTheByteLimitTheClientIsToldToReadTheStoredResult)
         EXPECT_NE(events[i]["type"], "event.frame") << "no frames after event.resync";
     EXPECT_EQ(ws.call("ping")["type"], "reply") << "the connection stays open";
     EXPECT_EQ(storedColumns(s.admin, job, {"Mass#P1#Position"}).at("time").size(), 50000u);
+}
+
+// A client that asks for binary frames gets every frame as a binary message (a JSON header
+// the schema describes, then float64 columns) carrying exactly the stored samples; a second
+// socket streaming the same job as JSON gets the same samples.
+TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
+{
+    ServerWithServo s("stream-binary", {});
+    WsClient binary(s.server.port(), s.token);
+    ASSERT_EQ(binary.call("model.open", {{"model_id", s.servo}})["type"], "reply");
+    const auto started = binary.call("simulate.start", {{"stop", 20.0}, {"log_samples", 20000}, {"frames", "binary"}});
+    ASSERT_EQ(started["type"], "reply") << started.dump();
+    const std::int64_t job = started["data"]["job_id"];
+    WsClient json(s.server.port(), s.token);
+    ASSERT_EQ(json.call("log.subscribe", {{"job_id", job}})["type"], "reply");
+
+    auto concatenate = [](const std::vector<nlohmann::json>& events) {
+        std::map<std::string, std::vector<double>> streamed;
+        for (const auto& e : events) {
+            if (e["type"] != "event.frame") continue;
+            for (double t : e["time"]) streamed["time"].push_back(t);
+            for (const auto& [name, values] : e["variables"].items())
+                for (double v : values) streamed[name].push_back(v);
+        }
+        return streamed;
+    };
+    const auto binaryEvents = eventsUntilDone(binary, job);
+    ASSERT_FALSE(binaryEvents.empty());
+    EXPECT_EQ(binaryEvents.back()["state"], "done") << binaryEvents.back().dump();
+    const auto frames = std::count_if(binaryEvents.begin(), binaryEvents.end(),
+                                      [](const nlohmann::json& e) { return e["type"] == "event.frame"; });
+    EXPECT_GT(frames, 0);
+    EXPECT_EQ(binary.binaryHeaders.size(), static_cast<std::size_t>(frames)) << "every frame was binary";
+    for (const auto& header : binary.binaryHeaders) {
+        std::string why;
+        EXPECT_TRUE(SchemaValidator::protocol().validate("BinaryFrameHeader", header, why)) << why;
+    }
+
+    const auto streamed = concatenate(binaryEvents);
+    ASSERT_EQ(streamed.size(), 17u) << "time and the first 16 variables";
+    std::vector<std::string> names;
+    for (const auto& [name, values] : streamed)
+        if (name != "time") names.push_back(name);
+    const auto stored = storedColumns(s.admin, job, names);
+    ASSERT_EQ(stored.size(), 17u);
+    for (const auto& [name, values] : stored) {
+        EXPECT_EQ(streamed.at(name).size(), values.size()) << name;
+        EXPECT_TRUE(bitwiseEqual(streamed.at(name), values)) << name;
+    }
+
+    // The JSON subscriber came a little later: its first frame may hold more, but all in all
+    // it has the same samples, and no binary message.
+    const auto jsonStreamed = concatenate(eventsUntilDone(json, job));
+    EXPECT_TRUE(json.binaryHeaders.empty());
+    for (const auto& [name, values] : stored) EXPECT_TRUE(bitwiseEqual(jsonStreamed.at(name), values)) << name;
 }
