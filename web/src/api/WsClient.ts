@@ -1,5 +1,6 @@
 // WebSocket client for tlmhub.v1: numbered requests answered by promises, events to listeners.
 import { ApiError } from './ApiError';
+import { decodeBinaryFrame } from './binaryFrame';
 import type { HelloMessage, ServerEvent, ServerMessage } from '../protocol/types';
 
 /** The part of the browser WebSocket the client uses (a fake one in tests). */
@@ -110,6 +111,7 @@ export class WsClient {
 }
 
 function parse(data: unknown): ServerMessage | null {
+    if (data instanceof ArrayBuffer) return decodeBinaryFrame(data);
     if (typeof data !== 'string') return null;
     try {
         const msg: unknown = JSON.parse(data);

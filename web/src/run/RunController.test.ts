@@ -29,7 +29,7 @@ describe('RunController', () => {
         const f = fakeTransport();
         const runs = new RunController(f.transport);
         const run = await runs.start({ stop: 2 }, ['A#out#Value']);
-        expect(f.sent[0]).toEqual({ type: 'simulate.start', fields: { stop: 2, rate: 30, variables: ['A#out#Value'] } });
+        expect(f.sent[0]).toEqual({ type: 'simulate.start', fields: { frames: 'binary', stop: 2, rate: 30, variables: ['A#out#Value'] } });
         f.emit({ type: 'event.progress', job_id: 10, progress: 0.5 });
         f.emit({ type: 'event.frame', job_id: 10, seq: 0, time: [0, 1], variables: { 'A#out#Value': [1, 2] }, dropped: 0 });
         expect(runs.running).toBe(true);

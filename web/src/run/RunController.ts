@@ -40,7 +40,8 @@ export class RunController {
     /** Starts a run of the socket's open model, streaming `variables` (at most 16). */
     async start(settings: Partial<RunSettings>, variables: string[], span: [number, number] | null = null): Promise<RunData> {
         const streamed = variables.slice(0, MAX_STREAMED);
-        const fields: Record<string, unknown> = { ...settings, rate: 30 };
+        // Binary frames: float64 columns, no number formatting on the server or parsing here.
+        const fields: Record<string, unknown> = { ...settings, rate: 30, frames: 'binary' };
         if (streamed.length > 0) fields.variables = streamed;
         const reply = await this.transport.request<{ job_id: number }>('simulate.start', fields);
         if (this.current?.finished) this.previous = this.current;

@@ -26,7 +26,11 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const rest = session.rest;
     // the summary, the catalogue and the model are asked for at once: one after the other
     // they took most of the time to open a big model
-    const ws = new WsClient(() => new WebSocket(socketUrl(session.token!, location)) as unknown as import('../api/WsClient').SocketLike);
+    const ws = new WsClient(() => {
+        const socket = new WebSocket(socketUrl(session.token!, location));
+        socket.binaryType = 'arraybuffer';   // run frames come as binary messages (RunController)
+        return socket as unknown as import('../api/WsClient').SocketLike;
+    });
     const opening = Promise.all([
         rest.components(),
         ws.connect().then(() => ws.request<{ model_id: number; model: Model }>('model.open', { model_id: modelId })),
