@@ -41,6 +41,7 @@ import os
 import resource
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -163,7 +164,7 @@ class Run:
         self.stored = None       # (time, {name: data}) of the stored result, read after the lab
 
 
-def student_main(i, port, token, model_id, runs, variables, rate, ready, go, deadline, out, connect_times):
+def student_main(i, port, token, model_id, runs, variables, rate, frames, ready, go, deadline, out, connect_times):
     my_runs = [Run(i, r) for r in range(runs)]
     out[i] = my_runs
     ws = None
@@ -201,6 +202,8 @@ def student_main(i, port, token, model_id, runs, variables, rate, ready, go, dea
             request = {"id": next_id, "type": "simulate.start", "rate": rate}
             if variables:
                 request["variables"] = variables
+            if frames != "json":
+                request["frames"] = frames
             reply_id = next_id
             next_id += 1
             sent = time.perf_counter()
@@ -212,7 +215,7 @@ def student_main(i, port, token, model_id, runs, variables, rate, ready, go, dea
                 ws.settimeout(remaining)
                 text = ws.recv()
                 now = time.perf_counter()
-                if '"event.frame"' in text:
+                if isinstance(text, bytes) or '"event.frame"' in text:
                     # Parsed after the lab (matched by job_id there).
                     run.raw.append((now - sent, text))
                     continue
@@ -251,10 +254,27 @@ def student_main(i, port, token, model_id, runs, variables, rate, ready, go, dea
             pass
 
 
+def decode_binary_frame(data):
+    """A binary event.frame (protocol/README.md) as the JSON frame it stands for."""
+    (header_bytes,) = struct.unpack_from("<I", data, 0)
+    header = json.loads(data[4:4 + header_bytes])
+    at = (4 + header_bytes + 7) // 8 * 8
+
+    def take(n):
+        nonlocal at
+        values = array.array("d", data[at:at + 8 * n])  # little-endian, as this machine
+        at += 8 * n
+        return values
+    frame = dict(header)
+    frame["time"] = take(header["time_samples"])
+    frame["variables"] = {v["name"]: take(v["samples"]) for v in header["variables"]}
+    return frame
+
+
 def take_frames(run):
     """Parses the run's frames of its job, in the order received."""
     for elapsed, text in run.raw:
-        m = json.loads(text)
+        m = decode_binary_frame(text) if isinstance(text, bytes) else json.loads(text)
         if m.get("job_id") != run.job_id:
             continue
         if run.t_first is None:
@@ -341,6 +361,8 @@ def main():
     ap.add_argument("--variables", type=int, default=16,
                     help="variables streamed: the first K logged ones (0: none asked, the server's default)")
     ap.add_argument("--rate", type=float, default=30.0, help="frame rate asked for (default 30/s)")
+    ap.add_argument("--frames", choices=["json", "binary"], default="json",
+                    help="how frames come (binary: what the web app asks for)")
     ap.add_argument("--workers", type=int, default=0, help="server --workers (default: the server's own)")
     ap.add_argument("--timeout", type=float, default=300.0, help="bound on the lab phase in seconds")
     ap.add_argument("--port-file", help="write the server's port here once it listens")
@@ -379,7 +401,7 @@ def main():
             go = threading.Barrier(n + 1, timeout=a.timeout)
             deadline = time.monotonic() + a.timeout
             threads = [threading.Thread(target=student_main, daemon=True,
-                                        args=(i, port, tokens[i], models[i], r, requested, a.rate, ready, go,
+                                        args=(i, port, tokens[i], models[i], r, requested, a.rate, a.frames, ready, go,
                                               deadline, out, connect_times)) for i in range(n)]
             for t in threads:
                 t.start()
@@ -445,7 +467,7 @@ def main():
 
     label = f" [{a.label}]" if a.label else ""
     print(f"lab bench{label}: {n} students x {r} runs, {len(requested) or 'default'} variables at "
-          f"{a.rate:g}/s, server {a.server}")
+          f"{a.rate:g}/s, {a.frames} frames, server {a.server}")
     rows = [
         ("jobs done / lost", f"{len(done)} / {len(lost)}  (of {len(runs)})"),
         ("frames equal stored result", f"{equal} jobs; {differ} differ; {resyncs} resync"),

@@ -117,10 +117,10 @@ Response jobResults(Services& s, Call& call)
     if (job->state != JobState::Done)
         return apiError(http::status::conflict, "conflict",
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
-    const auto table = s.queue.store().result(job->id);
-    if (!table) return apiError(http::status::not_found, "not_found", "the job's results are gone");
     const auto& q = call.params.query;
     const std::vector<std::string> variables = q.count("variables") ? splitList(q.at("variables")) : std::vector<std::string>{};
+    const auto table = s.queue.store().result(job->id, variables);
+    if (!table) return apiError(http::status::not_found, "not_found", "the job's results are gone");
     for (const std::string& v : variables)
         if (!table->hasColumn(v))
             return apiError(http::status::bad_request, "bad_request", "no logged variable '" + v + "'");

@@ -120,10 +120,11 @@ std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> v
 {
     // Subscribe first, then look at the state: the runner stores the final state before it
     // ends the job's subscriptions, so either it serves this subscription or we do, once.
+    const std::vector<std::string> wanted = variables;
     const std::uint64_t subscription = mHub.subscribe(jobId, std::move(variables), rate, std::move(sink));
     const auto info = mStore.info(jobId);
     if (info && isFinished(info->state)) {
-        const auto table = mStore.result(jobId);
+        const auto table = mStore.result(jobId, wanted);
         if (table) {
             TableFrameSource source(*table);
             mHub.finishSubscription(subscription, &source, info->state, info->error);

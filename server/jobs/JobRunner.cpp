@@ -1,8 +1,8 @@
 #include "server/jobs/JobRunner.h"
 
-#include "core/ResultTable.h"
 #include "core/Simulation.h"
 #include "server/jobs/FrameSource.h"
+#include "server/store/ResultBlob.h"
 
 #include <sstream>
 
@@ -95,15 +95,10 @@ void JobRunner::onProgress(void* user, std::size_t stepsTaken, std::size_t steps
 }
 
 JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
-                           const ResultTable* result)
+                           const Result* result)
 {
-    mStore.finish(jobId, state, error, steps, result);
-    if (result) {
-        TableFrameSource source(*result);
-        mHub.finish(jobId, &source, state, error);
-    } else {
-        mHub.finish(jobId, nullptr, state, error);
-    }
+    mStore.finish(jobId, state, error, steps, result ? &result->blob : nullptr);
+    mHub.finish(jobId, result ? &result->samples : nullptr, state, error);
     return state;
 }
 
@@ -201,16 +196,19 @@ JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& contro
             }
         }
         if (!tooLarge.empty()) return finish(jobId, finalState, error, steps, nullptr);
-        // Whatever was logged is kept, also for stopped runs, as long as it fits.
-        ResultTable table = ResultTable::fromView(sim.results());
-        if (table.byteSize() > mLimits.maxResultBytes) {
+        // Whatever was logged is kept, also for stopped runs, as long as it fits. It is
+        // stored and its last frames sent straight from the log: no copy as a ResultTable.
+        const ResultView logged = sim.results();
+        const std::size_t bytes = uncompressedResultBytes(logged);
+        if (bytes > mLimits.maxResultBytes) {
             if (finalState == JobState::Done) {
                 finalState = JobState::Failed;
-                error = resultTooLargeMessage(table.byteSize(), mLimits.maxResultBytes);
+                error = resultTooLargeMessage(bytes, mLimits.maxResultBytes);
             }
             return finish(jobId, finalState, error, steps, nullptr);
         }
-        return finish(jobId, finalState, error, steps, &table);
+        const Result result{encodeResult(logged), LiveFrameSource(root)};
+        return finish(jobId, finalState, error, steps, &result);
     } catch (const std::exception& e) {
         return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }

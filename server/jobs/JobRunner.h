@@ -54,8 +54,13 @@ public:
 private:
     struct RunState;
     static void onProgress(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
+    // A finished run's result: what is stored, and where its last frames come from.
+    struct Result {
+        std::string blob;
+        LiveFrameSource samples;
+    };
     JobState finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
-                    const ResultTable* result);
+                    const Result* result);
 
     JobStore& mStore;
     StreamHub& mHub;

@@ -1,5 +1,7 @@
 #include "server/jobs/JobStore.h"
 
+#include "server/store/ResultBlob.h"
+
 #include <SQLiteCpp/Statement.h>
 #include <SQLiteCpp/Transaction.h>
 
@@ -158,9 +160,8 @@ void JobStore::setProgress(std::int64_t id, double progress)
 }
 
 bool JobStore::finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
-                      const ResultTable* result)
+                      const std::string* resultBlob)
 {
-    const std::string blob = result ? result->serialize() : std::string();
     const auto now = static_cast<std::int64_t>(unixNow());
     std::lock_guard lock(mDb.mutex());
     SQLite::Transaction transaction(mDb.sql());
@@ -175,10 +176,10 @@ bool JobStore::finish(std::int64_t id, JobState state, const std::string& error,
     q.bind(5, state == JobState::Done ? 1 : 0);
     q.bind(6, id);
     if (q.exec() != 1) return false;
-    if (result) {
+    if (resultBlob) {
         SQLite::Statement insert(mDb.sql(), "INSERT OR REPLACE INTO job_results(job_id, data) VALUES(?, ?)");
         insert.bind(1, id);
-        insert.bind(2, blob.data(), static_cast<int>(blob.size()));
+        insert.bindNoCopy(2, resultBlob->data(), static_cast<int>(resultBlob->size()));
         insert.exec();
     }
     transaction.commit();
@@ -197,7 +198,7 @@ int JobStore::markRunningInterrupted()
     return q.exec();
 }
 
-std::optional<ResultTable> JobStore::result(std::int64_t id)
+std::optional<ResultTable> JobStore::result(std::int64_t id, const std::vector<std::string>& variables)
 {
     std::string blob;
     {
@@ -207,9 +208,7 @@ std::optional<ResultTable> JobStore::result(std::int64_t id)
         if (!q.executeStep()) return std::nullopt;
         blob = q.getColumn(0).getString();
     }
-    ResultTable table;
-    if (!ResultTable::deserialize(blob, table)) return std::nullopt;
-    return table;
+    return decodeResult(blob, variables);
 }
 
 bool JobStore::hasResult(std::int64_t id)

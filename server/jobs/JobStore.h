@@ -1,6 +1,6 @@
 #pragma once
 // Persistence of jobs: table `jobs` (state, timing, resolved settings and the request JSON, so
-// a job can be run again) and table `job_results` (ResultTable::serialize blobs).
+// a job can be run again) and table `job_results` (blobs of server/store/ResultBlob).
 #include "core/ResultTable.h"
 #include "server/jobs/Job.h"
 #include "server/store/Database.h"
@@ -30,13 +30,15 @@ public:
     bool markRunning(std::int64_t id);
     void setProgress(std::int64_t id, double progress);
     // Final state in one transaction: state, error, taken steps, finished_at and, when given,
-    // the result. Refuses (false) a job that is already finished.
+    // the result (encodeResult's blob). Refuses (false) a job that is already finished.
     bool finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
-                const ResultTable* result);
+                const std::string* resultBlob);
     // Start-up after a crash: every job left running becomes interrupted. Returns how many.
     int markRunningInterrupted();
 
-    std::optional<ResultTable> result(std::int64_t id);
+    // The stored result with the columns `variables` names (empty: all); only those are
+    // decompressed.
+    std::optional<ResultTable> result(std::int64_t id, const std::vector<std::string>& variables = {});
     bool hasResult(std::int64_t id);
     bool remove(std::int64_t id);
     // Deletes finished jobs (and their results) that finished before `unixSeconds`;

@@ -407,8 +407,9 @@ TEST_F(ServerApi, ChangingThePasswordEndsSessions)
 TEST(ServerQuota, StoredResultsAreLimitedPerUserAndDeletingJobsFreesThem)
 {
     const fs::path dir = freshTempDir("quota");
-    // A Position Servo result is about 2 MB: one fits, a second does not.
-    ServerProcess server(dir, {"--max-stored-bytes-per-user", "1500000"});
+    // A Position Servo result is stored in about 0.5 MB (2 MB uncompressed): after one the
+    // quota is used up.
+    ServerProcess server(dir, {"--max-stored-bytes-per-user", "400000"});
     HttpClient admin(server.port());
     admin.login("admin", kAdminPassword);
     const std::string hmf = readFile(kPositionServo);
