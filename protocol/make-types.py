@@ -24,6 +24,9 @@ from_json trusts the shapes):
   oneOf of inline objects -> one struct with every branch's properties (ModelCreate,
                              JobRequest); a property not required by all branches is
                              optional, and which branch matched is for the handler to see
+  a request's envelope id -> nlohmann::json, read when present: the id is the client's and
+                             only echoed; WsApi checks it against the schema, and the model
+                             editor (EditSession) also takes requests without one
   anything else           -> nlohmann::json: type unions such as RequestId (integer or
                              string) and ParameterValue (string or number), whose users
                              branch on the JSON type anyway; objects without properties
@@ -68,8 +71,9 @@ def ref_name(ref):
 
 
 class Field:
-    def __init__(self, prop, cpp_type, required, const=None, nullable=False):
+    def __init__(self, prop, cpp_type, required, const=None, nullable=False, envelope=False):
         self.prop = prop
+        self.envelope = envelope
         self.name = member_name(prop)
         self.type = cpp_type
         self.required = required
@@ -77,7 +81,7 @@ class Field:
         self.nullable = nullable
 
     def declaration(self):
-        if self.nullable or not self.required:
+        if (self.nullable or not self.required) and not self.envelope:
             return f"std::optional<{self.type}> {self.name};"
         return f"{self.type} {self.name}{{}};"
 
@@ -92,6 +96,7 @@ class Struct:
 
 
 structs = {}
+REQUEST_DEFS = {ref_name(r) for r in SCHEMA["x-requests"].values()}
 
 
 def is_struct_schema(s):
@@ -166,6 +171,8 @@ def build_struct(name, s):
             field = Field(prop, None, is_required, const=ps["const"])
             if not is_required:
                 field = Field(prop, JSON, False)
+        elif prop == "id" and name in REQUEST_DEFS:
+            field = Field(prop, cpp_type(ps, name + "Id", uses), True, envelope=True)
         elif is_required and nullable_type(ps):
             field = Field(prop, cpp_type(nullable_type(ps), name + pascal(prop), uses), True, nullable=True)
         else:
@@ -274,7 +281,9 @@ def source_text():
         out.append(f"void from_json(const nlohmann::json& {'j' if used else ''}, {s.name}& {'v' if used else ''})")
         out.append("{")
         for f in used:
-            if f.nullable:
+            if f.envelope:
+                out.append(f"    if (const auto x = j.find(\"{f.prop}\"); x != j.end()) v.{f.name} = *x;")
+            elif f.nullable:
                 out.append(f"    if (const nlohmann::json& x = j.at(\"{f.prop}\"); !x.is_null()) v.{f.name} = x.get<{f.type}>();")
             elif f.required:
                 out.append(f"    j.at(\"{f.prop}\").get_to(v.{f.name});")

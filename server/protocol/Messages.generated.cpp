@@ -621,7 +621,7 @@ void to_json(nlohmann::json& j, const ResultsJson& v)
 
 void from_json(const nlohmann::json& j, ModelOpenRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("model_id").get_to(v.modelId);
 }
 
@@ -635,7 +635,7 @@ void to_json(nlohmann::json& j, const ModelOpenRequest& v)
 
 void from_json(const nlohmann::json& j, ModelCreateRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
 }
 
@@ -649,7 +649,7 @@ void to_json(nlohmann::json& j, const ModelCreateRequest& v)
 
 void from_json(const nlohmann::json& j, ModelSaveRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     if (const auto x = j.find("name"); x != j.end()) v.name = x->get<std::string>();
     if (const auto x = j.find("as_copy"); x != j.end()) v.asCopy = x->get<bool>();
 }
@@ -665,7 +665,7 @@ void to_json(nlohmann::json& j, const ModelSaveRequest& v)
 
 void from_json(const nlohmann::json& j, ModelGetRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
 }
 
 void to_json(nlohmann::json& j, const ModelGetRequest& v)
@@ -677,7 +677,7 @@ void to_json(nlohmann::json& j, const ModelGetRequest& v)
 
 void from_json(const nlohmann::json& j, ComponentAddRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("component_type").get_to(v.componentType);
     if (const auto x = j.find("name"); x != j.end()) v.name = x->get<std::string>();
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -697,7 +697,7 @@ void to_json(nlohmann::json& j, const ComponentAddRequest& v)
 
 void from_json(const nlohmann::json& j, ComponentRemoveRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
 }
@@ -713,7 +713,7 @@ void to_json(nlohmann::json& j, const ComponentRemoveRequest& v)
 
 void from_json(const nlohmann::json& j, ComponentRenameRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     j.at("new_name").get_to(v.newName);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -731,7 +731,7 @@ void to_json(nlohmann::json& j, const ComponentRenameRequest& v)
 
 void from_json(const nlohmann::json& j, ComponentMoveRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     j.at("pose").get_to(v.pose);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -749,7 +749,7 @@ void to_json(nlohmann::json& j, const ComponentMoveRequest& v)
 
 void from_json(const nlohmann::json& j, ConnectRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("from").get_to(v.from);
     j.at("to").get_to(v.to);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -769,7 +769,7 @@ void to_json(nlohmann::json& j, const ConnectRequest& v)
 
 void from_json(const nlohmann::json& j, DisconnectRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("from").get_to(v.from);
     j.at("to").get_to(v.to);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -787,7 +787,7 @@ void to_json(nlohmann::json& j, const DisconnectRequest& v)
 
 void from_json(const nlohmann::json& j, ParameterGetRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("component").get_to(v.component);
     j.at("parameter").get_to(v.parameter);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
@@ -805,7 +805,7 @@ void to_json(nlohmann::json& j, const ParameterGetRequest& v)
 
 void from_json(const nlohmann::json& j, ParameterSetRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("component").get_to(v.component);
     j.at("parameter").get_to(v.parameter);
     j.at("value").get_to(v.value);
@@ -825,7 +825,7 @@ void to_json(nlohmann::json& j, const ParameterSetRequest& v)
 
 void from_json(const nlohmann::json& j, SysParamSetRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     j.at("value").get_to(v.value);
     if (const auto x = j.find("param_type"); x != j.end()) v.paramType = x->get<std::string>();
@@ -849,7 +849,7 @@ void to_json(nlohmann::json& j, const SysParamSetRequest& v)
 
 void from_json(const nlohmann::json& j, SimulateStartRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     if (const auto x = j.find("start"); x != j.end()) v.start = x->get<double>();
     if (const auto x = j.find("step"); x != j.end()) v.step = x->get<double>();
     if (const auto x = j.find("stop"); x != j.end()) v.stop = x->get<double>();
@@ -875,7 +875,7 @@ void to_json(nlohmann::json& j, const SimulateStartRequest& v)
 
 void from_json(const nlohmann::json& j, SimulateStopRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("job_id").get_to(v.jobId);
 }
 
@@ -889,7 +889,7 @@ void to_json(nlohmann::json& j, const SimulateStopRequest& v)
 
 void from_json(const nlohmann::json& j, LogSubscribeRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("job_id").get_to(v.jobId);
     if (const auto x = j.find("variables"); x != j.end()) v.variables = x->get<std::vector<std::string>>();
     if (const auto x = j.find("rate"); x != j.end()) v.rate = x->get<double>();
@@ -909,7 +909,7 @@ void to_json(nlohmann::json& j, const LogSubscribeRequest& v)
 
 void from_json(const nlohmann::json& j, PingRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
 }
 
 void to_json(nlohmann::json& j, const PingRequest& v)
@@ -1176,7 +1176,7 @@ void to_json(nlohmann::json& j, const ResyncEvent& v)
 
 void from_json(const nlohmann::json& j, SysParamRemoveRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
 }
@@ -1192,7 +1192,7 @@ void to_json(nlohmann::json& j, const SysParamRemoveRequest& v)
 
 void from_json(const nlohmann::json& j, ModelGroupRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("names").get_to(v.names);
     j.at("name").get_to(v.name);
     if (const auto x = j.find("pose"); x != j.end()) v.pose = x->get<Pose>();
@@ -1212,7 +1212,7 @@ void to_json(nlohmann::json& j, const ModelGroupRequest& v)
 
 void from_json(const nlohmann::json& j, ModelUngroupRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     j.at("name").get_to(v.name);
     if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
 }
@@ -1228,7 +1228,7 @@ void to_json(nlohmann::json& j, const ModelUngroupRequest& v)
 
 void from_json(const nlohmann::json& j, ModelSettingsRequest& v)
 {
-    j.at("id").get_to(v.id);
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
     if (const auto x = j.find("start"); x != j.end()) v.start = x->get<double>();
     if (const auto x = j.find("step"); x != j.end()) v.step = x->get<double>();
     if (const auto x = j.find("stop"); x != j.end()) v.stop = x->get<double>();
