@@ -15,7 +15,8 @@ Check that the files are current: python3 protocol/make-types.py --check   (a ct
 Mapping (the server validates every message against the schema before decoding, so
 from_json trusts the shapes):
   object with properties  -> struct; an optional property -> std::optional<T>
-  const property          -> no member: to_json writes the constant, from_json skips it
+  required const property -> no member: to_json writes the constant, from_json skips it
+                             (an optional one would be an nlohmann::json member)
   [T, "null"], required   -> std::optional<T>, written as null when empty
   integer / number / bool -> std::int64_t / double / bool
   string (also enums)     -> std::string
@@ -91,8 +92,9 @@ class Struct:
         self.name = name
         self.description = description
         self.fields = []
-        self.strong = set()   # structs that must be complete before this one (held by value)
-        self.weak = set()     # structs held in containers (a forward declaration is enough)
+        # Structs held by value, which must be complete before this one; one held in a
+        # container needs only the forward declaration.
+        self.strong = set()
 
 
 structs = {}
@@ -167,18 +169,17 @@ def build_struct(name, s):
     for prop, ps in properties.items():
         is_required = prop in required
         uses = []
-        if "const" in ps:
-            field = Field(prop, None, is_required, const=ps["const"])
-            if not is_required:
-                field = Field(prop, JSON, False)
+        if "const" in ps and is_required:
+            field = Field(prop, None, True, const=ps["const"])
+        elif "const" in ps:
+            field = Field(prop, JSON, False)
         elif prop == "id" and name in REQUEST_DEFS:
             field = Field(prop, cpp_type(ps, name + "Id", uses), True, envelope=True)
         elif is_required and nullable_type(ps):
             field = Field(prop, cpp_type(nullable_type(ps), name + pascal(prop), uses), True, nullable=True)
         else:
             field = Field(prop, cpp_type(ps, name + pascal(prop), uses), is_required)
-        for used, by_value in uses:
-            (struct.strong if by_value else struct.weak).add(used)
+        struct.strong.update(used for used, by_value in uses if by_value)
         struct.fields.append(field)
 
 
