@@ -32,7 +32,7 @@ Response noContent()
 
 Response apiError(http::status status, const std::string& code, const std::string& message)
 {
-    return jsonResponse(status, {{"error", {{"code", code}, {"message", message}}}});
+    return jsonResponse(status, protocol::ErrorBody{.error = {.code = code, .message = message}});
 }
 
 bool readJsonBody(const Call& call, const std::string& definition, nlohmann::json& body,
@@ -74,19 +74,19 @@ bool wantsXml(const Call& call)
     return accept.find("application/xml") != std::string::npos;
 }
 
-nlohmann::json userJson(const User& user)
+protocol::User publicUser(const User& user)
 {
-    return {{"id", user.id}, {"username", user.username}, {"role", user.role}, {"disabled", user.disabled}};
+    return {.id = user.id, .username = user.username, .role = user.role, .disabled = user.disabled};
 }
 
 nlohmann::json modelSummaryJson(const ModelSummary& m)
 {
-    return {{"id", m.id},
-            {"name", m.name},
-            {"owner", {{"id", m.ownerId}, {"username", m.ownerName}}},
-            {"is_example", m.isExample},
-            {"created_at", m.createdAt},
-            {"updated_at", m.updatedAt}};
+    return protocol::ModelSummary{.id = m.id,
+                                  .name = m.name,
+                                  .owner = {.id = m.ownerId, .username = m.ownerName},
+                                  .isExample = m.isExample,
+                                  .createdAt = m.createdAt,
+                                  .updatedAt = m.updatedAt};
 }
 
 std::optional<ModelSummary> readableModel(Services& s, const User& who, std::int64_t id)

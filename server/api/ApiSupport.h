@@ -9,6 +9,7 @@
 #include "server/http/Router.h"
 #include "server/jobs/JobQueue.h"
 #include "server/jobs/StreamHub.h"
+#include "server/protocol/Messages.generated.h"
 #include "server/store/ModelStore.h"
 #include "server/store/UserStore.h"
 
@@ -71,6 +72,15 @@ Response apiError(http::status status, const std::string& code, const std::strin
 // (empty: no schema check). On failure returns false with the error response in `error`.
 bool readJsonBody(const Call& call, const std::string& definition, nlohmann::json& body,
                   Response& error);
+// Same, decoded into the definition's generated struct (e.g. protocol::LoginRequest).
+template <typename Body>
+bool readBody(const Call& call, const std::string& definition, Body& body, Response& error)
+{
+    nlohmann::json json;
+    if (!readJsonBody(call, definition, json, error)) return false;
+    body = json.get<Body>();
+    return true;
+}
 std::optional<std::int64_t> parseId(const std::string& text);
 bool isXmlRequest(const Request& request);
 bool wantsXml(const Call& call);
@@ -83,7 +93,7 @@ void addJobRoutes(std::vector<RouteSpec>& routes);
 void addCatalogueRoutes(std::vector<RouteSpec>& routes);
 
 // Summaries as the API shows them.
-nlohmann::json userJson(const User& user);
+protocol::User publicUser(const User& user);
 nlohmann::json modelSummaryJson(const ModelSummary& summary);
 // A model the caller may read, or nullopt (also when it does not exist: 404 either way).
 std::optional<ModelSummary> readableModel(Services& s, const User& who, std::int64_t id);

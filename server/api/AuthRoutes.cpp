@@ -7,10 +7,10 @@ namespace {
 
 Response login(Services& s, Call& call)
 {
-    nlohmann::json body;
+    protocol::LoginRequest body;
     Response error;
-    if (!readJsonBody(call, "LoginRequest", body, error)) return error;
-    const std::string username = body["username"];
+    if (!readBody(call, "LoginRequest", body, error)) return error;
+    const std::string& username = body.username;
     // Failures are counted per user name and per address, so guessing one account's
     // password and spraying one password over many accounts are both slowed down.
     const std::string userKey = "user:" + username;
@@ -18,7 +18,7 @@ Response login(Services& s, Call& call)
     if (!s.loginLimiter.allowed(userKey) || !s.addressLimiter.allowed(addressKey))
         return apiError(http::status::too_many_requests, "rate_limited",
                         "too many failed logins; try again later");
-    const auto user = s.users.authenticate(username, body["password"]);
+    const auto user = s.users.authenticate(username, body.password);
     if (!user) {
         s.loginLimiter.recordFailure(userKey);
         s.addressLimiter.recordFailure(addressKey);
@@ -29,9 +29,8 @@ Response login(Services& s, Call& call)
         return apiError(http::status::forbidden, "account_disabled",
                         "this account is disabled; ask an administrator");
     const auto issued = s.tokens.issue(*user);
-    return jsonResponse(http::status::ok, {{"token", issued.token},
-                                           {"expires_at", issued.expiresAt},
-                                           {"user", userJson(*user)}});
+    return jsonResponse(http::status::ok, protocol::LoginResponse{
+                                              .token = issued.token, .expiresAt = issued.expiresAt, .user = publicUser(*user)});
 }
 
 Response logout(Services& s, Call& call)
@@ -43,16 +42,16 @@ Response logout(Services& s, Call& call)
 
 Response me(Services&, Call& call)
 {
-    return jsonResponse(http::status::ok, userJson(call.who()));
+    return jsonResponse(http::status::ok, publicUser(call.who()));
 }
 
 Response changePassword(Services& s, Call& call)
 {
-    nlohmann::json body;
+    protocol::PasswordChange body;
     Response error;
-    if (!readJsonBody(call, "PasswordChange", body, error)) return error;
+    if (!readBody(call, "PasswordChange", body, error)) return error;
     std::string why;
-    if (!s.users.changePassword(call.who().id, body["old_password"], body["new_password"], why))
+    if (!s.users.changePassword(call.who().id, body.oldPassword, body.newPassword, why))
         return apiError(http::status::bad_request, "bad_request", why);
     // Every session opened with the old password ends, this one too: log in again.
     s.tokens.revokeAllFor(call.who().id);
@@ -62,14 +61,14 @@ Response changePassword(Services& s, Call& call)
 
 Response downloadLink(Services& s, Call& call)
 {
-    nlohmann::json body;
+    protocol::DownloadLinkRequest body;
     Response error;
-    if (!readJsonBody(call, "DownloadLinkRequest", body, error)) return error;
-    const std::string target = body["target"];
+    if (!readBody(call, "DownloadLinkRequest", body, error)) return error;
+    const std::string& target = body.target;
     if (target.find(std::string(DownloadLinks::kParameter) + "=") != std::string::npos)
         return apiError(http::status::bad_request, "bad_request", "the target already holds a download link");
     const auto link = s.downloadLinks.sign(target, call.who().id);
-    return jsonResponse(http::status::ok, {{"url", link.url}, {"expires_at", link.expiresAt}});
+    return jsonResponse(http::status::ok, protocol::DownloadLink{.url = link.url, .expiresAt = link.expiresAt});
 }
 
 } // namespace

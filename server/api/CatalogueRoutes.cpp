@@ -14,7 +14,7 @@ namespace {
 
 Response health(Services&, Call&)
 {
-    return jsonResponse(http::status::ok, {{"status", "ok"}});
+    return jsonResponse(http::status::ok, protocol::HealthResponse{});
 }
 
 Response openapi(Services&, Call&)
@@ -37,9 +37,11 @@ Response stats(Services&, Call& call)
     if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators read the server's stats");
     const TransportStats& t = TransportStats::instance();
-    return jsonResponse(http::status::ok, {{"websockets", t.webSockets.load()},
-                                           {"websocket_queued_bytes", t.webSocketQueuedBytes.load()},
-                                           {"websockets_closed_for_backlog", t.webSocketsClosedForBacklog.load()}});
+    return jsonResponse(http::status::ok,
+                        protocol::ServerStats{
+                            .websockets = t.webSockets.load(),
+                            .websocketQueuedBytes = t.webSocketQueuedBytes.load(),
+                            .websocketsClosedForBacklog = static_cast<std::int64_t>(t.webSocketsClosedForBacklog.load())});
 }
 
 } // namespace

@@ -31,29 +31,27 @@ std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::strin
 
 Response submitJob(Services& s, Call& call)
 {
-    nlohmann::json body;
+    protocol::JobRequest body;
     Response error;
-    if (!readJsonBody(call, "JobRequest", body, error)) return error;
+    if (!readBody(call, "JobRequest", body, error)) return error;
     JobRequest request;
     request.ownerId = call.who().id;
-    if (body.contains("model_id")) {
-        const auto model = readableModel(s, call.who(), body["model_id"].get<std::int64_t>());
+    if (body.modelId) {
+        const auto model = readableModel(s, call.who(), *body.modelId);
         if (!model) return apiError(http::status::not_found, "not_found", "no such model");
         request.modelId = model->id;
         request.hmf = s.models.hmf(model->id).value_or("");
-    } else if (body.contains("hmf")) {
-        request.hmf = body["hmf"];
+    } else if (body.hmf) {
+        request.hmf = *body.hmf;
     } else {
         return apiError(http::status::bad_request, "bad_request", "give model_id or hmf");
     }
-    if (body.contains("parameters")) {
-        for (const auto& [name, value] : body["parameters"].items())
-            request.parameters[name] = value.is_string() ? value.get<std::string>() : value.dump();
-    }
-    if (body.contains("start")) request.settings.start = body["start"].get<double>();
-    if (body.contains("step")) request.settings.step = body["step"].get<double>();
-    if (body.contains("stop")) request.settings.stop = body["stop"].get<double>();
-    if (body.contains("log_samples")) request.settings.logSamples = body["log_samples"].get<std::size_t>();
+    for (const auto& [name, value] : body.parameters.value_or(std::map<std::string, nlohmann::json>{}))
+        request.parameters[name] = value.is_string() ? value.get<std::string>() : value.dump();
+    if (body.start) request.settings.start = *body.start;
+    if (body.step) request.settings.step = *body.step;
+    if (body.stop) request.settings.stop = *body.stop;
+    if (body.logSamples) request.settings.logSamples = static_cast<std::size_t>(*body.logSamples);
     const auto submitted = s.queue.submit(request);
     if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());

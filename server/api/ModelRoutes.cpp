@@ -78,19 +78,18 @@ Response createModel(Services& s, Call& call)
         if (!acceptableName(name, error)) return error;
         return created(s, s.models.create(call.who().id, name, hmf, false));
     }
-    nlohmann::json body;
-    if (!readJsonBody(call, "ModelCreate", body, error)) return error;
-    const std::string name = body["name"];
+    protocol::ModelCreate body;
+    if (!readBody(call, "ModelCreate", body, error)) return error;
+    const std::string& name = body.name;
     if (!acceptableName(name, error)) return error;
-    if (body.contains("copy_of")) {
-        const auto source = readableModel(s, call.who(), body["copy_of"].get<std::int64_t>());
+    if (body.copyOf) {
+        const auto source = readableModel(s, call.who(), *body.copyOf);
         if (!source) return apiError(http::status::not_found, "not_found", "no such model to copy");
         return created(s, s.models.create(call.who().id, name, *s.models.hmf(source->id), false));
     }
-    if (body.contains("hmf")) {
-        const std::string hmf = body["hmf"];
-        if (!checkedModel(s, hmf, error)) return error;
-        return created(s, s.models.create(call.who().id, name, hmf, false));
+    if (body.hmf) {
+        if (!checkedModel(s, *body.hmf, error)) return error;
+        return created(s, s.models.create(call.who().id, name, *body.hmf, false));
     }
     return created(s, s.models.create(call.who().id, name, emptyModelHmf(name), false));
 }
@@ -127,10 +126,10 @@ Response updateModel(Services& s, Call& call)
     if (isXmlRequest(call.request)) {
         hmf = call.request.body();
     } else {
-        nlohmann::json body;
-        if (!readJsonBody(call, "ModelUpdate", body, error)) return error;
-        if (body.contains("name")) name = body["name"].get<std::string>();
-        if (body.contains("hmf")) hmf = body["hmf"].get<std::string>();
+        protocol::ModelUpdate body;
+        if (!readBody(call, "ModelUpdate", body, error)) return error;
+        name = body.name;
+        hmf = body.hmf;
     }
     if (name && !acceptableName(*name, error)) return error;
     if (hmf && !checkedModel(s, *hmf, error)) return error;

@@ -11,7 +11,7 @@ Response listUsers(Services& s, Call& call)
     if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators list users");
     nlohmann::json out = nlohmann::json::array();
-    for (const User& u : s.users.list()) out.push_back(userJson(u));
+    for (const User& u : s.users.list()) out.push_back(publicUser(u));
     return jsonResponse(http::status::ok, out);
 }
 
@@ -19,15 +19,15 @@ Response createUser(Services& s, Call& call)
 {
     if (!isAdministrator(call.who()))
         return apiError(http::status::forbidden, "forbidden", "only administrators create users");
-    nlohmann::json body;
+    protocol::UserCreate body;
     Response error;
-    if (!readJsonBody(call, "UserCreate", body, error)) return error;
+    if (!readBody(call, "UserCreate", body, error)) return error;
     std::string why;
-    const auto user = s.users.create(body["username"], body["password"], body.value("role", "user"), why);
+    const auto user = s.users.create(body.username, body.password, body.role, why);
     if (!user)
         return why == kUsernameTaken ? apiError(http::status::conflict, "conflict", why)
                                      : apiError(http::status::bad_request, "bad_request", why);
-    return jsonResponse(http::status::created, userJson(*user));
+    return jsonResponse(http::status::created, publicUser(*user));
 }
 
 // Role and enabled state. A disabled account's logins end at once (tokens revoked, open
@@ -38,17 +38,13 @@ Response updateUser(Services& s, Call& call)
         return apiError(http::status::forbidden, "forbidden", "only administrators change users");
     const auto id = parseId(call.params.path["id"]);
     if (!id) return apiError(http::status::not_found, "not_found", "no such user");
-    nlohmann::json body;
+    protocol::UserUpdate body;
     Response error;
-    if (!readJsonBody(call, "UserUpdate", body, error)) return error;
+    if (!readBody(call, "UserUpdate", body, error)) return error;
     const auto before = s.users.find(*id);
     if (!before) return apiError(http::status::not_found, "not_found", "no such user");
-    std::optional<std::string> role;
-    std::optional<bool> disabled;
-    if (body.contains("role")) role = body["role"].get<std::string>();
-    if (body.contains("disabled")) disabled = body["disabled"].get<bool>();
     std::string why;
-    const auto user = s.users.update(*id, role, disabled, why);
+    const auto user = s.users.update(*id, body.role, body.disabled, why);
     if (!user)
         return why == kLastAdmin ? apiError(http::status::conflict, "conflict", why)
                                  : apiError(http::status::bad_request, "bad_request", why);
@@ -58,7 +54,7 @@ Response updateUser(Services& s, Call& call)
     } else if (user->role != before->role) {
         s.liveSessions.closeAllOf(user->id, "your role changed: reconnect");
     }
-    return jsonResponse(http::status::ok, userJson(*user));
+    return jsonResponse(http::status::ok, publicUser(*user));
 }
 
 } // namespace

@@ -4,6 +4,8 @@
 #include "server/app/HandlerPools.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/http/JsonText.h"
+#include "server/protocol/Messages.generated.h"
+#include "server/protocol/ProtocolConstants.generated.h"
 #include "server/protocol/SchemaValidator.h"
 #include "server/protocol/UntrustedJson.h"
 #include "server/store/ModelName.h"
@@ -28,8 +30,6 @@ WsApi::Reply success(nlohmann::json data = nlohmann::json::object())
     return r;
 }
 
-constexpr std::size_t kMaxStreamedVariables = 16;
-
 // The message's id when it is one the protocol allows, else null: an error about a bad
 // message must not echo an arbitrarily large or deep value back.
 nlohmann::json echoableId(const nlohmann::json& msg)
@@ -41,13 +41,18 @@ nlohmann::json echoableId(const nlohmann::json& msg)
     return *id;
 }
 
+FrameEncoding frameEncoding(const std::optional<std::string>& frames)
+{
+    return frames == "binary" ? FrameEncoding::Binary : FrameEncoding::Json;
+}
+
 } // namespace
 
 WsApi::WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender)
     : mServices(services), mUser(std::move(user)), mSender(std::move(sender)),
       mLiveSession(services.liveSessions.add(token, mUser.id, mSender))
 {
-    mSender->send(toJsonText({{"type", "hello"}, {"protocol", "tlmhub.v1"}, {"user", userJson(mUser)}}));
+    mSender->send(toJsonText(protocol::Hello{.user = publicUser(mUser)}));
 }
 
 WsApi::~WsApi() = default;
@@ -62,7 +67,7 @@ void WsApi::onClose()
 
 void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
 {
-    mSender->send(toJsonText({{"id", id}, {"type", "error"}, {"error", {{"code", code}, {"message", message}}}}));
+    mSender->send(toJsonText(protocol::ErrorReply{.id = id, .error = {.code = code, .message = message}}));
 }
 
 void WsApi::onMessage(const std::string& text)
@@ -84,7 +89,7 @@ void WsApi::onMessage(const std::string& text)
         mAfterReply = nullptr;
         return sendError(id, reply.code, reply.message);
     }
-    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", reply.data}}));
+    mSender->send(toJsonText(protocol::Reply{.id = id, .data = reply.data}));
     // Stream events start after the reply, so a client always knows the job id first.
     if (mAfterReply) std::exchange(mAfterReply, nullptr)();
 }
@@ -92,19 +97,19 @@ void WsApi::onMessage(const std::string& text)
 WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
 {
     if (type == "ping") return success();
-    if (type == "model.open") return openModel(msg);
-    if (type == "model.create") return createModel(msg);
-    if (type == "model.save") return saveModel(msg);
-    if (type == "simulate.start") return startSimulation(msg);
-    if (type == "simulate.stop") return stopSimulation(msg);
-    if (type == "log.subscribe") return subscribe(msg);
+    if (type == "model.open") return openModel(msg.get<protocol::ModelOpenRequest>());
+    if (type == "model.create") return createModel(msg.get<protocol::ModelCreateRequest>());
+    if (type == "model.save") return saveModel(msg.get<protocol::ModelSaveRequest>());
+    if (type == "simulate.start") return startSimulation(msg.get<protocol::SimulateStartRequest>());
+    if (type == "simulate.stop") return stopSimulation(msg.get<protocol::SimulateStopRequest>());
+    if (type == "log.subscribe") return subscribe(msg.get<protocol::LogSubscribeRequest>());
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     return mSession.handle(msg);
 }
 
-WsApi::Reply WsApi::openModel(const nlohmann::json& msg)
+WsApi::Reply WsApi::openModel(const protocol::ModelOpenRequest& request)
 {
-    const auto model = readableModel(mServices, mUser, msg["model_id"].get<std::int64_t>());
+    const auto model = readableModel(mServices, mUser, request.modelId);
     if (!model) return failure("not_found", "no such model");
     std::string error;
     if (!mSession.openHmf(mServices.models.hmf(model->id).value_or(""), model->name, error))
@@ -117,9 +122,9 @@ WsApi::Reply WsApi::openModel(const nlohmann::json& msg)
     return success(data);
 }
 
-WsApi::Reply WsApi::createModel(const nlohmann::json& msg)
+WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
 {
-    const std::string name = msg["name"];
+    const std::string& name = request.name;
     if (const std::string problem = modelNameProblem(name); !problem.empty())
         return failure("bad_request", "model name: " + problem);
     mSession.createEmpty(name);
@@ -131,13 +136,13 @@ WsApi::Reply WsApi::createModel(const nlohmann::json& msg)
     return success(data);
 }
 
-WsApi::Reply WsApi::saveModel(const nlohmann::json& msg)
+WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
 {
     if (!mSession.isOpen() || !mModelId) return failure("not_open", "open or create a model first");
     const auto model = mServices.models.summary(*mModelId);
-    const bool asCopy = msg.value("as_copy", false) || !model ||
+    const bool asCopy = request.asCopy.value_or(false) || !model ||
                         !canWrite(mUser, model->ownerId, model->isExample);
-    const std::string name = msg.value("name", mModelName);
+    const std::string name = request.name.value_or(mModelName);
     if (const std::string problem = modelNameProblem(name); !problem.empty())
         return failure("bad_request", "model name: " + problem);
     if (asCopy) {
@@ -147,23 +152,19 @@ WsApi::Reply WsApi::saveModel(const nlohmann::json& msg)
     }
     mModelName = name;
     const auto saved = mServices.models.summary(*mModelId);
-    return success({{"model_id", *mModelId}, {"name", name}, {"updated_at", saved ? saved->updatedAt : 0},
-                    {"copied", asCopy}});
+    return success(protocol::ModelSavedData{
+        .modelId = *mModelId, .name = name, .updatedAt = saved ? saved->updatedAt : 0, .copied = asCopy});
 }
 
-void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
+void WsApi::subscribeToJob(std::int64_t jobId, std::vector<std::string> variables, double rate, FrameEncoding encoding)
 {
-    std::vector<std::string> variables;
-    if (msg.contains("variables"))
-        for (const auto& v : msg["variables"]) variables.push_back(v.get<std::string>());
-    if (variables.size() > kMaxStreamedVariables) variables.resize(kMaxStreamedVariables);
-    const double rate = msg.value("rate", 30.0);
+    if (variables.size() > protocol::kMaxStreamVariables) variables.resize(protocol::kMaxStreamVariables);
     // The sink runs on the job's thread: it only queues, never waits. Frames stay numbers
     // until written, so the socket's queue can merge them (QueuedFrame).
     std::weak_ptr<WebSocketSender> weakSender = mSender;
     auto stream = std::make_shared<FrameStream>();
     stream->id = ++mStreams;
-    if (msg.value("frames", std::string("json")) == "binary") stream->encoding = FrameEncoding::Binary;
+    stream->encoding = encoding;
     StreamSink sink;
     sink.event = [weakSender](nlohmann::json event) {
         if (auto sender = weakSender.lock()) sender->send(toJsonText(event));
@@ -174,39 +175,52 @@ void WsApi::subscribeToJob(std::int64_t jobId, const nlohmann::json& msg)
         if (!sender || stream->givenUp.load()) return;
         sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
     };
-    mSubscriptions.push_back(mServices.queue.subscribe(jobId, variables, rate, std::move(sink)));
+    // Subscribing reads the job's state from storage, and a finished job's stored result:
+    // on the request pool. The subscription is recorded on the connection's strand, or ended
+    // at once if the connection is gone by then.
+    mServices.pools.runRequest([weak = weak_from_this(), sender = mSender, &services = mServices, jobId,
+                                variables = std::move(variables), rate, sink = std::move(sink)] {
+        const std::uint64_t id = services.queue.subscribe(jobId, variables, rate, sink);
+        if (weak.expired()) return services.streams.unsubscribe(id);
+        sender->runOnConnection([weak, &services, id] {
+            auto self = weak.lock();
+            if (!self || self->mClosed) return services.streams.unsubscribe(id);
+            self->mSubscriptions.push_back(id);
+        });
+    });
 }
 
-WsApi::Reply WsApi::startSimulation(const nlohmann::json& msg)
+WsApi::Reply WsApi::startSimulation(const protocol::SimulateStartRequest& start)
 {
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     JobRequest request;
     request.ownerId = mUser.id;
     request.modelId = mModelId;
     request.hmf = mSession.saveHmf();
-    if (msg.contains("start")) request.settings.start = msg["start"].get<double>();
-    if (msg.contains("step")) request.settings.step = msg["step"].get<double>();
-    if (msg.contains("stop")) request.settings.stop = msg["stop"].get<double>();
-    if (msg.contains("log_samples")) request.settings.logSamples = msg["log_samples"].get<std::size_t>();
+    if (start.start) request.settings.start = *start.start;
+    if (start.step) request.settings.step = *start.step;
+    if (start.stop) request.settings.stop = *start.stop;
+    if (start.logSamples) request.settings.logSamples = static_cast<std::size_t>(*start.logSamples);
     // Compiling a large model takes a while: it happens on the request pool, and the reply
     // comes back through the connection's strand. Other messages are answered meanwhile.
     mReplyDeferred = true;
     mServices.pools.runRequest([weak = weak_from_this(), sender = mSender, &queue = mServices.queue,
-                                request = std::move(request), id = echoableId(msg), msg] {
+                                request = std::move(request), start] {
         JobQueue::Submitted submitted = queue.submit(request);
-        sender->runOnConnection([weak, submitted = std::move(submitted), id, msg] {
-            if (auto self = weak.lock()) self->finishStart(id, submitted, msg);
+        sender->runOnConnection([weak, submitted = std::move(submitted), start] {
+            if (auto self = weak.lock()) self->finishStart(start, submitted);
         });
     });
     return success();
 }
 
-void WsApi::finishStart(const nlohmann::json& id, const JobQueue::Submitted& submitted, const nlohmann::json& msg)
+void WsApi::finishStart(const protocol::SimulateStartRequest& start, const JobQueue::Submitted& submitted)
 {
     if (mClosed) return;   // the job runs on; nobody is here to stream it to
-    if (!submitted.id) return sendError(id, submitted.code, submitted.message);
-    mSender->send(toJsonText({{"id", id}, {"type", "reply"}, {"ok", true}, {"data", {{"job_id", *submitted.id}}}}));
-    subscribeToJob(*submitted.id, msg);
+    if (!submitted.id) return sendError(start.id, submitted.code, submitted.message);
+    mSender->send(toJsonText(protocol::Reply{.id = start.id, .data = protocol::SimulateStartedData{.jobId = *submitted.id}}));
+    subscribeToJob(*submitted.id, start.variables.value_or(std::vector<std::string>{}),
+                   start.rate.value_or(protocol::kDefaultFrameRate), frameEncoding(start.frames));
 }
 
 bool WsApi::ownsJob(std::int64_t jobId) const
@@ -215,27 +229,30 @@ bool WsApi::ownsJob(std::int64_t jobId) const
     return job && canControlJob(mUser, job->ownerId);
 }
 
-WsApi::Reply WsApi::stopSimulation(const nlohmann::json& msg)
+WsApi::Reply WsApi::stopSimulation(const protocol::SimulateStopRequest& request)
 {
-    const std::int64_t jobId = msg["job_id"];
+    const std::int64_t jobId = request.jobId;
     if (!ownsJob(jobId)) return failure("not_found", "no such job");
     // The reply never waits for the job: event.done (cancelled) follows once it has stopped.
     switch (mServices.queue.requestCancel(jobId)) {
     case JobQueue::CancelRequest::Cancelling:
-        return success({{"state", "cancelling"}});
+        return success(protocol::SimulateStoppedData{.state = "cancelling"});
     case JobQueue::CancelRequest::Cancelled:
-        return success({{"state", jobStateName(JobState::Cancelled)}});
+        return success(protocol::SimulateStoppedData{.state = jobStateName(JobState::Cancelled)});
     case JobQueue::CancelRequest::NotActive:
         break;
     }
-    return success({{"state", jobStateName(mServices.queue.store().info(jobId)->state)}});
+    return success(protocol::SimulateStoppedData{.state = jobStateName(mServices.queue.store().info(jobId)->state)});
 }
 
-WsApi::Reply WsApi::subscribe(const nlohmann::json& msg)
+WsApi::Reply WsApi::subscribe(const protocol::LogSubscribeRequest& request)
 {
-    const std::int64_t jobId = msg["job_id"];
+    const std::int64_t jobId = request.jobId;
     if (!ownsJob(jobId)) return failure("not_found", "no such job");
-    mAfterReply = [this, jobId, msg] { subscribeToJob(jobId, msg); };
+    mAfterReply = [this, jobId, variables = request.variables.value_or(std::vector<std::string>{}),
+                   rate = request.rate.value_or(protocol::kDefaultFrameRate), encoding = frameEncoding(request.frames)] {
+        subscribeToJob(jobId, variables, rate, encoding);
+    };
     return success();
 }
 

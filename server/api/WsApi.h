@@ -5,6 +5,8 @@
 #include "server/api/ApiSupport.h"
 #include "server/edit/EditSession.h"
 #include "server/http/HttpApplication.h"
+#include "server/jobs/StreamFrame.h"
+#include "server/protocol/Messages.generated.h"
 
 #include <functional>
 #include <memory>
@@ -24,15 +26,16 @@ public:
 
 private:
     Reply dispatch(const std::string& type, const nlohmann::json& msg);
-    Reply openModel(const nlohmann::json& msg);
-    Reply createModel(const nlohmann::json& msg);
-    Reply saveModel(const nlohmann::json& msg);
-    Reply startSimulation(const nlohmann::json& msg);
-    Reply stopSimulation(const nlohmann::json& msg);
-    Reply subscribe(const nlohmann::json& msg);
-    void subscribeToJob(std::int64_t jobId, const nlohmann::json& msg);
+    Reply openModel(const protocol::ModelOpenRequest& request);
+    Reply createModel(const protocol::ModelCreateRequest& request);
+    Reply saveModel(const protocol::ModelSaveRequest& request);
+    Reply startSimulation(const protocol::SimulateStartRequest& start);
+    Reply stopSimulation(const protocol::SimulateStopRequest& request);
+    Reply subscribe(const protocol::LogSubscribeRequest& request);
+    // `variables`: at most max_stream_variables are streamed; `rate` in frames per second.
+    void subscribeToJob(std::int64_t jobId, std::vector<std::string> variables, double rate, FrameEncoding encoding);
     // On the strand, once a simulate.start's job is compiled and queued (or refused).
-    void finishStart(const nlohmann::json& id, const JobQueue::Submitted& submitted, const nlohmann::json& msg);
+    void finishStart(const protocol::SimulateStartRequest& start, const JobQueue::Submitted& submitted);
     bool ownsJob(std::int64_t jobId) const;
     void sendError(const nlohmann::json& id, const std::string& code, const std::string& message);
 

@@ -2,12 +2,14 @@
 
 #include <charconv>
 #include <filesystem>
+#include <string>
 
 namespace tlmhub::server {
 
 namespace {
 
-const char* kHelp =
+// The body limit's default is the protocol's (x-constants of protocol/messages.schema.json).
+const std::string kHelp = std::string(
     "usage: tlmhub-server [options]\n"
     "  --listen HOST:PORT       address to listen on (default 127.0.0.1:8080; port 0 = any free)\n"
     "  --data-dir DIR           SQLite database directory (default ./data)\n"
@@ -22,8 +24,8 @@ const char* kHelp =
     "  --max-wall-seconds S     wall time per job (default 300)\n"
     "  --max-running-per-user N jobs running at once per user (default 2)\n"
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
-    "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
-    "  --max-body-bytes N       request body limit (default 25165824)\n"
+    "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n") +
+    "  --max-body-bytes N       request body limit (default " + std::to_string(protocol::kMaxBodyBytes) + ")\n" +
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
     "  --max-model-components N components and subsystems in a model (default 20000)\n"
     "  --max-model-depth N      subsystems nested in subsystems (default 16)\n"

@@ -1,6 +1,7 @@
 #pragma once
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
 #include "server/jobs/Job.h"
+#include "server/protocol/ProtocolConstants.generated.h"
 
 #include <chrono>
 #include <string>
@@ -19,7 +20,7 @@ struct ServerOptions {
     unsigned ioThreads = 4;                     // HTTP/WebSocket threads
     std::chrono::seconds tokenTtl{12 * 3600};
     std::chrono::seconds resultTtl{0};          // finished jobs kept this long; 0 = for ever
-    std::size_t maxBodyBytes = 24u << 20;       // above limits.model.maxBytes: a JSON-wrapped model
+    std::size_t maxBodyBytes = protocol::kMaxBodyBytes;   // above limits.model.maxBytes: a JSON-wrapped model
     std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before frames merge
     std::size_t wsQueueBytes = 16u << 20;       // bytes per WebSocket: frames resync, then it closes
     std::size_t diskReserveBytes = 8u << 20;    // given back when the disk is full (deleting works)

@@ -33,4 +33,9 @@ bool isAdministrator(const User& who)
     return who.role == kRoleAdmin;
 }
 
+bool administersServer(const User& account)
+{
+    return account.role == kRoleAdmin && !account.disabled;
+}
+
 } // namespace tlmhub::server

@@ -7,6 +7,7 @@
 //   teacher: may also read (not change) objects owned by role "user" (lab supervision)
 //   jobs:    cancelled, stopped and deleted by their owner or an admin; re-run by the owner
 //   accounts and server stats: admin only
+//   the last enabled admin account may be neither demoted nor disabled
 #include "server/auth/User.h"
 
 #include <cstdint>
@@ -19,5 +20,8 @@ bool canWrite(const User& who, std::int64_t ownerId, bool isExample);
 bool canControlJob(const User& who, std::int64_t ownerId);
 bool canRerunJob(const User& who, std::int64_t ownerId);
 bool isAdministrator(const User& who);
+// Whether `account` (as it is, or would be after a change) administers the server: the
+// user store refuses a change that would leave no such account.
+bool administersServer(const User& account);
 
 } // namespace tlmhub::server

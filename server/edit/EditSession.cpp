@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -59,12 +60,23 @@ bool portExists(const System& system, const std::string& comp, const std::string
     return comp == port && system.systemPort(comp) != nullptr;
 }
 
-ConnectionEnds endsOf(const json& request)
+ConnectionEnds endsOf(const protocol::PortRef& from, const protocol::PortRef& to)
 {
-    const json& from = request.at("from");
-    const json& to = request.at("to");
-    return {from.at("component").get<std::string>(), from.at("port").get<std::string>(),
-            to.at("component").get<std::string>(), to.at("port").get<std::string>()};
+    return {from.component, from.port, to.component, to.port};
+}
+
+Pose guiPose(const protocol::Pose& pose)
+{
+    return {.x = pose.x, .y = pose.y, .angle = pose.angle, .flipped = pose.flipped};
+}
+
+// A handler of the request type Request; the JSON is decoded once it is known to be one.
+template <typename Request>
+auto decoding(Result (EditSession::*handler)(System&, const Request&))
+{
+    return [handler](EditSession& session, System& system, const json& request) {
+        return (session.*handler)(system, request.get<Request>());
+    };
 }
 
 void eraseConnectionExtras(System& system, const ConnectionEnds& e)
@@ -126,21 +138,21 @@ json EditSession::modelJson() const
 
 Result EditSession::handle(const json& request)
 {
-    using Handler = Result (EditSession::*)(System&, const json&);
+    using Handler = std::function<Result(EditSession&, System&, const json&)>;
     static const std::map<std::string, Handler> handlers = {
-        {"component.add", &EditSession::componentAdd},
-        {"component.remove", &EditSession::componentRemove},
-        {"component.rename", &EditSession::componentRename},
-        {"component.move", &EditSession::componentMove},
-        {"connect", &EditSession::connect},
-        {"disconnect", &EditSession::disconnect},
-        {"parameter.get", &EditSession::parameterGet},
-        {"parameter.set", &EditSession::parameterSet},
-        {"sysparam.set", &EditSession::sysparamSet},
-        {"sysparam.remove", &EditSession::sysparamRemove},
-        {"model.settings", &EditSession::modelSettings},
-        {"model.group", &EditSession::modelGroup},
-        {"model.ungroup", &EditSession::modelUngroup},
+        {"component.add", decoding(&EditSession::componentAdd)},
+        {"component.remove", decoding(&EditSession::componentRemove)},
+        {"component.rename", decoding(&EditSession::componentRename)},
+        {"component.move", decoding(&EditSession::componentMove)},
+        {"connect", decoding(&EditSession::connect)},
+        {"disconnect", decoding(&EditSession::disconnect)},
+        {"parameter.get", decoding(&EditSession::parameterGet)},
+        {"parameter.set", decoding(&EditSession::parameterSet)},
+        {"sysparam.set", decoding(&EditSession::sysparamSet)},
+        {"sysparam.remove", decoding(&EditSession::sysparamRemove)},
+        {"model.settings", decoding(&EditSession::modelSettings)},
+        {"model.group", decoding(&EditSession::modelGroup)},
+        {"model.ungroup", decoding(&EditSession::modelUngroup)},
     };
     try {
         if (!request.is_object()) return fail("bad_request", "a request must be a JSON object");
@@ -153,7 +165,7 @@ Result EditSession::handle(const json& request)
         Result failure;
         System* system = targetSystem(request, failure);
         if (!system) return failure;
-        return (this->*(handler->second))(*system, request);
+        return handler->second(*this, *system, request);
     } catch (const json::exception& e) {
         return fail("bad_request", std::string("malformed request: ") + e.what());
     } catch (const std::invalid_argument& e) {
@@ -191,9 +203,9 @@ Result EditSession::modelGet()
 
 // ---------------------------------------------------------------- components
 
-Result EditSession::componentAdd(System& system, const json& request)
+Result EditSession::componentAdd(System& system, const protocol::ComponentAddRequest& request)
 {
-    const std::string type = request.at("component_type").get<std::string>();
+    const std::string& type = request.componentType;
     std::unique_ptr<Component> component;
     if (type == "Subsystem" || type == "ConditionalSubsystem") {
         auto sub = std::make_unique<System>();
@@ -204,18 +216,18 @@ Result EditSession::componentAdd(System& system, const json& request)
         component = ComponentFactory::instance().create(type);
     }
     if (!component) return fail("unknown_component_type", "unknown component type '" + type + "'");
-    if (request.contains("name")) component->setNameRaw(request.at("name").get<std::string>());
+    if (request.name) component->setNameRaw(*request.name);
     // The pose goes where the loader keeps <hopsangui>, so saving writes it to the .hmf.
-    const Pose pose = request.contains("pose") ? request.at("pose").get<Pose>() : Pose{};
+    const Pose pose = request.pose ? guiPose(*request.pose) : Pose{};
     writePose(component->preservedXml, pose);
     Component* added = component.get();
     system.addComponent(std::move(component));
     return success({{"component", componentToJson(*added)}});
 }
 
-Result EditSession::componentRemove(System& system, const json& request)
+Result EditSession::componentRemove(System& system, const protocol::ComponentRemoveRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
+    const std::string& name = request.name;
     if (const Status removed = system.removeComponent(name); !removed) return fail(removed);
     // Drop what was kept for its connections and aliases, so a later component of the same
     // name does not inherit them.
@@ -228,11 +240,10 @@ Result EditSession::componentRemove(System& system, const json& request)
     return success();
 }
 
-Result EditSession::componentRename(System& system, const json& request)
+Result EditSession::componentRename(System& system, const protocol::ComponentRenameRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
-    const std::string newName = request.at("new_name").get<std::string>();
-    const auto renamed = system.renameComponent(name, newName);
+    const std::string& name = request.name;
+    const auto renamed = system.renameComponent(name, request.newName);
     if (!renamed) return fail(renamed.status());
     const std::string& actual = *renamed;
     if (actual != name) {
@@ -247,13 +258,13 @@ Result EditSession::componentRename(System& system, const json& request)
         for (auto& [alias, full] : system.aliases)
             if (full.rfind(name + "#", 0) == 0) full = actual + full.substr(name.size());
     }
-    return success({{"name", actual}});
+    return success(protocol::ComponentRenamedData{.name = actual});
 }
 
-Result EditSession::componentMove(System& system, const json& request)
+Result EditSession::componentMove(System& system, const protocol::ComponentMoveRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
-    const Pose pose = request.at("pose").get<Pose>();
+    const std::string& name = request.name;
+    const Pose pose = guiPose(request.pose);
     if (Component* c = system.component(name)) {
         writePose(c->preservedXml, pose);
         return success();
@@ -267,18 +278,18 @@ Result EditSession::componentMove(System& system, const json& request)
 
 // ---------------------------------------------------------------- connections
 
-Result EditSession::connect(System& system, const json& request)
+Result EditSession::connect(System& system, const protocol::ConnectRequest& request)
 {
-    const ConnectionEnds e = endsOf(request);
+    const ConnectionEnds e = endsOf(request.from, request.to);
     for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
         if (!portExists(system, comp, port))
             return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
     if (const Status connected = system.connect(e.fromComponent, e.fromPort, e.toComponent, e.toPort); !connected)
         return fail(connected);
     eraseConnectionExtras(system, e);
-    if (request.contains("points")) {
+    if (request.points) {
         std::vector<LinePoint> points;
-        for (const json& p : request.at("points")) points.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+        for (const std::vector<double>& p : *request.points) points.push_back({p.at(0), p.at(1)});
         if (!points.empty())
             writeLinePoints(system.preservedConnectionXml[preserved::connectionKey(
                                 e.fromComponent, e.fromPort, e.toComponent, e.toPort)],
@@ -287,9 +298,9 @@ Result EditSession::connect(System& system, const json& request)
     return success({{"connection", connectionToJson(system, e)}});
 }
 
-Result EditSession::disconnect(System& system, const json& request)
+Result EditSession::disconnect(System& system, const protocol::DisconnectRequest& request)
 {
-    const ConnectionEnds e = endsOf(request);
+    const ConnectionEnds e = endsOf(request.from, request.to);
     for (const auto& [comp, port] : {std::pair{e.fromComponent, e.fromPort}, std::pair{e.toComponent, e.toPort}})
         if (!portExists(system, comp, port))
             return fail("not_found", "no port '" + comp + "." + port + "' in system '" + system.name() + "'");
@@ -303,10 +314,10 @@ Result EditSession::disconnect(System& system, const json& request)
 
 // ---------------------------------------------------------------- parameters
 
-Result EditSession::parameterGet(System& system, const json& request)
+Result EditSession::parameterGet(System& system, const protocol::ParameterGetRequest& request)
 {
-    const std::string compName = request.at("component").get<std::string>();
-    const std::string paramName = request.at("parameter").get<std::string>();
+    const std::string& compName = request.component;
+    const std::string& paramName = request.parameter;
     Component* c = system.component(compName);
     if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
     const Parameter* p = c->parameters().find(paramName);
@@ -314,11 +325,11 @@ Result EditSession::parameterGet(System& system, const json& request)
     return success({{"parameter", parameterToJson(*p)}});
 }
 
-Result EditSession::parameterSet(System& system, const json& request)
+Result EditSession::parameterSet(System& system, const protocol::ParameterSetRequest& request)
 {
-    const std::string compName = request.at("component").get<std::string>();
-    const std::string paramName = request.at("parameter").get<std::string>();
-    const std::string value = valueString(request.at("value"));
+    const std::string& compName = request.component;
+    const std::string& paramName = request.parameter;
+    const std::string value = valueString(request.value);
     Component* c = system.component(compName);
     if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
     Parameter* p = c->parameters().find(paramName);
@@ -328,19 +339,16 @@ Result EditSession::parameterSet(System& system, const json& request)
     return success({{"parameter", parameterToJson(*p)}});
 }
 
-Result EditSession::sysparamSet(System& system, const json& request)
+Result EditSession::sysparamSet(System& system, const protocol::SysParamSetRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
-    const std::string value = valueString(request.at("value"));
+    const std::string& name = request.name;
+    const std::string value = valueString(request.value);
     const Parameter* existing = system.parameters().find(name);
     const std::optional<Parameter> before =
         existing ? std::optional<Parameter>(*existing) : std::optional<Parameter>();
-    auto field = [&](const char* key, const std::string& current) {
-        return request.contains(key) ? request.at(key).get<std::string>() : current;
-    };
-    const std::string type = field("param_type", existing ? parameterTypeName(existing->type) : "double");
-    const std::string unit = field("unit", existing ? existing->unit : std::string());
-    const std::string description = field("description", existing ? existing->description : std::string());
+    const std::string type = request.paramType.value_or(existing ? parameterTypeName(existing->type) : "double");
+    const std::string unit = request.unit.value_or(existing ? existing->unit : std::string());
+    const std::string description = request.description.value_or(existing ? existing->description : std::string());
     const bool internal = existing && existing->internal;
 
     if (const Status set = system.setSystemParameter(name, value, type, description, unit, internal); !set)
@@ -360,9 +368,9 @@ Result EditSession::sysparamSet(System& system, const json& request)
     return success({{"parameter", systemParameterToJson(*p)}});
 }
 
-Result EditSession::sysparamRemove(System& system, const json& request)
+Result EditSession::sysparamRemove(System& system, const protocol::SysParamRemoveRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
+    const std::string& name = request.name;
     if (!system.removeSystemParameter(name))
         return fail("not_found", "no system parameter '" + name + "' in system '" + system.name() + "'");
     return success();
@@ -370,31 +378,30 @@ Result EditSession::sysparamRemove(System& system, const json& request)
 
 // The root's own simulation settings (a subsystem path, if given, is ignored: subsystems
 // share the root's times).
-Result EditSession::modelSettings(System&, const json& request)
+Result EditSession::modelSettings(System&, const protocol::ModelSettingsRequest& request)
 {
     System& root = *mRoot;
-    const double start = request.value("start", root.startTime);
-    const double step = request.value("step", root.desiredTimestep);
-    const double stop = request.value("stop", root.stopTime);
+    const double start = request.start.value_or(root.startTime);
+    const double step = request.step.value_or(root.desiredTimestep);
+    const double stop = request.stop.value_or(root.stopTime);
     if (!(std::isfinite(start) && std::isfinite(stop) && std::isfinite(step)) || step <= 0 || stop < start)
         return fail("bad_request", "simulation settings need finite times, step > 0 and stop >= start");
     root.startTime = start;
     root.desiredTimestep = step;
     root.stopTime = stop;
-    if (request.contains("log_samples")) root.requestedLogSamples = request.at("log_samples").get<std::size_t>();
+    if (request.logSamples) root.requestedLogSamples = static_cast<std::size_t>(*request.logSamples);
     return success({{"simulation", simulationSettingsToJson(root)}});
 }
 
 // ---------------------------------------------------------------- grouping
 
-Result EditSession::modelGroup(System& system, const json& request)
+Result EditSession::modelGroup(System& system, const protocol::ModelGroupRequest& request)
 {
-    const std::vector<std::string> names = request.at("names").get<std::vector<std::string>>();
-    const std::string name = request.at("name").get<std::string>();
+    const std::vector<std::string>& names = request.names;
     // The subsystem goes where the grouped components were, unless the request places it.
     Pose pose;
-    if (request.contains("pose")) {
-        pose = request.at("pose").get<Pose>();
+    if (request.pose) {
+        pose = guiPose(*request.pose);
     } else {
         std::size_t found = 0;
         for (const std::string& n : names)
@@ -409,18 +416,17 @@ Result EditSession::modelGroup(System& system, const json& request)
             pose.y /= static_cast<double>(found);
         }
     }
-    const auto grouped = system.group(names, name);
+    const auto grouped = system.group(names, request.name);
     if (!grouped) return fail(grouped.status());
     writePose(system.component(*grouped)->preservedXml, pose);
-    return success({{"name", *grouped}});
+    return success(protocol::ModelGroupedData{.name = *grouped});
 }
 
-Result EditSession::modelUngroup(System& system, const json& request)
+Result EditSession::modelUngroup(System& system, const protocol::ModelUngroupRequest& request)
 {
-    const std::string name = request.at("name").get<std::string>();
-    const auto moved = system.ungroup(name);
+    const auto moved = system.ungroup(request.name);
     if (!moved) return fail(moved.status());
-    return success({{"names", *moved}});
+    return success(protocol::ModelUngroupedData{.names = *moved});
 }
 
 } // namespace tlmhub::server

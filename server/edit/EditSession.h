@@ -7,6 +7,7 @@
 // Requests arrive schema-validated, but handle() still checks every field it reads and
 // never throws: a bad request becomes a Result with a stable error code.
 #include "core/System.h"
+#include "server/protocol/Messages.generated.h"
 
 #include <nlohmann/json.hpp>
 
@@ -43,19 +44,19 @@ public:
 
 private:
     Result modelGet();
-    Result componentAdd(System& system, const nlohmann::json& request);
-    Result componentRemove(System& system, const nlohmann::json& request);
-    Result componentRename(System& system, const nlohmann::json& request);
-    Result componentMove(System& system, const nlohmann::json& request);
-    Result connect(System& system, const nlohmann::json& request);
-    Result disconnect(System& system, const nlohmann::json& request);
-    Result parameterGet(System& system, const nlohmann::json& request);
-    Result parameterSet(System& system, const nlohmann::json& request);
-    Result sysparamSet(System& system, const nlohmann::json& request);
-    Result sysparamRemove(System& system, const nlohmann::json& request);
-    Result modelSettings(System& system, const nlohmann::json& request);
-    Result modelGroup(System& system, const nlohmann::json& request);
-    Result modelUngroup(System& system, const nlohmann::json& request);
+    Result componentAdd(System& system, const protocol::ComponentAddRequest& request);
+    Result componentRemove(System& system, const protocol::ComponentRemoveRequest& request);
+    Result componentRename(System& system, const protocol::ComponentRenameRequest& request);
+    Result componentMove(System& system, const protocol::ComponentMoveRequest& request);
+    Result connect(System& system, const protocol::ConnectRequest& request);
+    Result disconnect(System& system, const protocol::DisconnectRequest& request);
+    Result parameterGet(System& system, const protocol::ParameterGetRequest& request);
+    Result parameterSet(System& system, const protocol::ParameterSetRequest& request);
+    Result sysparamSet(System& system, const protocol::SysParamSetRequest& request);
+    Result sysparamRemove(System& system, const protocol::SysParamRemoveRequest& request);
+    Result modelSettings(System& system, const protocol::ModelSettingsRequest& request);
+    Result modelGroup(System& system, const protocol::ModelGroupRequest& request);
+    Result modelUngroup(System& system, const protocol::ModelUngroupRequest& request);
 
     // The subsystem named by request["system"] (absent or [] = root), or null with `failure`.
     System* targetSystem(const nlohmann::json& request, Result& failure);

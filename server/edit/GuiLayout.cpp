@@ -64,14 +64,6 @@ void to_json(nlohmann::json& j, const Pose& pose)
     j = {{"x", pose.x}, {"y", pose.y}, {"angle", pose.angle}, {"flipped", pose.flipped}};
 }
 
-void from_json(const nlohmann::json& j, Pose& pose)
-{
-    pose.x = j.at("x").get<double>();
-    pose.y = j.at("y").get<double>();
-    pose.angle = j.value("angle", 0.0);
-    pose.flipped = j.value("flipped", false);
-}
-
 Pose readPose(const std::string& preservedXml)
 {
     Pose pose;

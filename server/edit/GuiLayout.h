@@ -20,8 +20,6 @@ struct Pose {
 };
 
 void to_json(nlohmann::json& j, const Pose& pose);
-// Reads x and y (required, via at()) and angle/flipped (optional, default 0/false).
-void from_json(const nlohmann::json& j, Pose& pose);
 
 using LinePoint = std::array<double, 2>;
 

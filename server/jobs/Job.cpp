@@ -1,5 +1,7 @@
 #include "server/jobs/Job.h"
 
+#include "server/protocol/Messages.generated.h"
+
 namespace tlmhub::server {
 
 namespace {
@@ -10,7 +12,8 @@ constexpr std::pair<JobState, const char*> kStateNames[] = {
     {JobState::Cancelled, "cancelled"}, {JobState::Interrupted, "interrupted"},
 };
 
-nlohmann::json timeOrNull(std::int64_t t) { return t ? nlohmann::json(t) : nlohmann::json(nullptr); }
+// A time of a job, none while it has not happened (0).
+std::optional<std::int64_t> timeIfSet(std::int64_t t) { return t ? std::optional<std::int64_t>(t) : std::nullopt; }
 
 } // namespace
 
@@ -75,16 +78,18 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
 
 nlohmann::json JobInfo::toJson() const
 {
-    return {{"id", id},
-            {"model_id", modelId ? nlohmann::json(*modelId) : nlohmann::json(nullptr)},
-            {"state", jobStateName(state)},
-            {"progress", progress},
-            {"error", error},
-            {"created_at", createdAt},
-            {"started_at", timeOrNull(startedAt)},
-            {"finished_at", timeOrNull(finishedAt)},
-            {"steps", steps},
-            {"settings", {{"start", start}, {"step", step}, {"stop", stop}, {"log_samples", logSamples}}}};
+    return protocol::JobInfo{
+        .id = id,
+        .ownerId = std::nullopt,   // the API does not show it
+        .modelId = modelId,
+        .state = jobStateName(state),
+        .progress = progress,
+        .error = error,
+        .createdAt = createdAt,
+        .startedAt = timeIfSet(startedAt),
+        .finishedAt = timeIfSet(finishedAt),
+        .steps = static_cast<std::int64_t>(steps),
+        .settings = {.start = start, .step = step, .stop = stop, .logSamples = static_cast<std::int64_t>(logSamples)}};
 }
 
 } // namespace tlmhub::server

@@ -14,6 +14,7 @@
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/StreamFrame.h"
+#include "server/protocol/ProtocolConstants.generated.h"
 
 #include <nlohmann/json.hpp>
 
@@ -36,12 +37,13 @@ struct StreamSink {
 
 class StreamHub {
 public:
-    static constexpr std::size_t kMaxFrameVariables = 16;
-    static constexpr double kDefaultRate = 30.0;   // frames per second
-    static constexpr double kMaxRate = 120.0;
+    static constexpr std::size_t kMaxFrameVariables = protocol::kMaxStreamVariables;
+    static constexpr double kDefaultRate = protocol::kDefaultFrameRate;   // frames per second
+    static constexpr double kMaxRate = protocol::kMaxFrameRate;
 
-    // `variables`: ResultTable column names (unknown ones are ignored, at most 16 kept);
-    // empty = the first 16 logged variables. `rate` <= 0 means the default.
+    // `variables`: ResultTable column names (unknown ones are ignored, at most
+    // kMaxFrameVariables kept); empty = the first kMaxFrameVariables logged variables. `rate`
+    // <= 0 means the default.
     std::uint64_t subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
                             StreamSink sink);
     void unsubscribe(std::uint64_t subscription);

@@ -1,5 +1,6 @@
 #include "server/store/UserStore.h"
 
+#include "server/auth/AccessPolicy.h"
 #include "server/auth/PasswordHasher.h"
 
 #include <SQLiteCpp/Statement.h>
@@ -197,13 +198,13 @@ std::optional<User> UserStore::update(std::int64_t id, const std::optional<std::
     if (!q.executeStep()) { error = kNoSuchUser; return std::nullopt; }
     User user = readUser(q);
     q.reset();
+    const bool administeredBefore = administersServer(user);
     if (role) user.role = *role;
     if (disabled) user.disabled = *disabled;
     // Someone must be left who can administer the server.
-    if ((user.role != kRoleAdmin || user.disabled) && enabledAdminsOtherThan(id) == 0) {
-        SQLite::Statement wasAdmin(mDb.sql(), "SELECT 1 FROM users WHERE id = ? AND role = 'admin' AND disabled = 0");
-        wasAdmin.bind(1, id);
-        if (wasAdmin.executeStep()) { error = kLastAdmin; return std::nullopt; }
+    if (administeredBefore && !administersServer(user) && enabledAdminsOtherThan(id) == 0) {
+        error = kLastAdmin;
+        return std::nullopt;
     }
     SQLite::Statement write(mDb.sql(), "UPDATE users SET role = ?, disabled = ? WHERE id = ?");
     write.bind(1, user.role);

@@ -138,7 +138,7 @@ std::string HttpClient::login(const std::string& user, const std::string& passwo
 {
     const HttpReply r = post("/api/v1/auth/login", {{"username", user}, {"password", password}});
     if (r.status != 200) throw std::runtime_error("login failed: " + r.body);
-    mToken = r.json()["token"];
+    mToken = r.json()["token"].get<std::string>();
     return mToken;
 }
 

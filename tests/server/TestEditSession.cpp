@@ -179,7 +179,7 @@ TEST(EditSession, RenameIsMadeUniqueAndConnectionsFollow)
     EditSession session = openServo();
     const auto r = session.handle({{"id", 1}, {"type", "component.rename"}, {"name", "Mass"}, {"new_name", "Sink"}});
     expectReplyShape("component.rename", r);
-    const std::string actual = r.data.at("name");
+    const std::string actual = r.data.at("name").get<std::string>();
     EXPECT_NE(actual, "Sink");
     EXPECT_EQ(actual.rfind("Sink_", 0), 0u) << actual;
     const json system = rootSystem(session);
@@ -371,7 +371,7 @@ TEST(EditSession, SaveAndReloadKeepsNewComponentPoseAndParameter)
     const auto added = session.handle({{"id", 1}, {"type", "component.add"}, {"component_type", "SignalGain"},
                                        {"name", "Extra gain"}, {"pose", {{"x", 111}, {"y", 222}, {"angle", 180}, {"flipped", false}}}});
     ASSERT_TRUE(added.ok) << added.message;
-    const std::string name = added.data["component"]["name"];
+    const std::string name = added.data["component"]["name"].get<std::string>();
     EXPECT_EQ(name, "Extra_gain");
     ASSERT_TRUE(session.handle({{"id", 2}, {"type", "parameter.set"}, {"component", name}, {"parameter", "k#Value"},
                                 {"value", 3.5}}).ok);
@@ -516,7 +516,7 @@ TEST(EditSession, GroupAndItsUndoUngroupGiveTheModelBack)
     const json names = {"Pressure_Relief_Valve", "Step", "Q_type_Fixed_Displacement_Pump_1"};
     const auto grouped = session.handle({{"id", 1}, {"type", "model.group"}, {"names", names}, {"name", "Pump side"}});
     expectReplyShape("model.group", grouped);
-    const std::string sub = grouped.data.at("name");
+    const std::string sub = grouped.data.at("name").get<std::string>();
     EXPECT_EQ(sub, "Pump_side");
     const json system = rootSystem(session);
     const json* subsystem = findByName(system.at("components"), sub);

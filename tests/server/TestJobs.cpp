@@ -510,10 +510,10 @@ TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
             if (e.at("type") != "event.frame") continue;
             EXPECT_EQ(e.at("seq").get<std::uint64_t>(), seq++);
             ++frames;
-            for (double t : e.at("time")) time.push_back(t);
+            for (const auto& t : e.at("time")) time.push_back(t.get<double>());
             EXPECT_EQ(e.at("variables").size(), expectVariables);
             for (const auto& [name, values] : e.at("variables").items())
-                for (double v : values) data[name].push_back(v);
+                for (const auto& v : values) data[name].push_back(v.get<double>());
         }
         EXPECT_GE(frames, 2);
         EXPECT_GE(progress, 1);

@@ -88,7 +88,7 @@ TEST(Responsiveness, StoppingARunningJobRepliesAtOnceAndEventDoneFollows)
     ASSERT_EQ(ws.call("model.open", {{"model_id", model.json()["id"]}})["type"], "reply");
     const auto started = ws.call("simulate.start", {{"stop", 500.0}, {"variables", {"Position_Sensor#out#Value"}}});
     ASSERT_EQ(started["type"], "reply") << started.dump();
-    const std::int64_t job = started["data"]["job_id"];
+    const std::int64_t job = started["data"]["job_id"].get<std::int64_t>();
     auto nextEventOfJob = [&]() {
         for (;;) {
             nlohmann::json e;

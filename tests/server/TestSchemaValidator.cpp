@@ -1,3 +1,4 @@
+#include "ReadmeExamples.h"
 #include "TestFiles.h"
 
 #include "server/protocol/SchemaValidator.h"
@@ -10,10 +11,11 @@
 #include <functional>
 #include <regex>
 #include <set>
-#include <sstream>
 
 using namespace tlmhub::server;
 using tlmhub::test::readFile;
+using tlmhub::test::ReadmeExample;
+using tlmhub::test::readmeExamples;
 using nlohmann::json;
 
 namespace {
@@ -43,38 +45,6 @@ std::string rejection(const SchemaValidator& v, const std::string& def, const js
 json protocolFile(const std::string& name)
 {
     return json::parse(readFile(TLMHUB_SOURCE_DIR "/protocol/" + name));
-}
-
-// A ```json block of protocol/README.md preceded by a marker line:
-// <!-- message -->, <!-- message reply:TYPE --> or <!-- rest: Definition -->.
-struct ReadmeExample {
-    std::string kind;       // "message" or "rest"
-    std::string argument;   // "reply:TYPE", a definition name, or empty
-    std::size_t line = 0;
-    json value;
-};
-
-std::vector<ReadmeExample> readmeExamples()
-{
-    std::istringstream in(readFile(TLMHUB_SOURCE_DIR "/protocol/README.md"));
-    std::vector<std::string> lines;
-    for (std::string l; std::getline(in, l);) lines.push_back(l);
-    const std::regex marker(R"(^<!-- (message|rest)(?:[: ]\s*(\S+))? -->$)");
-    std::vector<ReadmeExample> out;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        std::smatch m;
-        if (!std::regex_match(lines[i], m, marker)) continue;
-        ReadmeExample e{m[1], m[2], i + 1, {}};
-        EXPECT_TRUE(i + 1 < lines.size() && lines[i + 1] == "```json") << "README line " << e.line;
-        std::string text;
-        std::size_t j = i + 2;
-        for (; j < lines.size() && lines[j] != "```"; ++j) text += lines[j] + "\n";
-        e.value = json::parse(text, nullptr, false);
-        EXPECT_FALSE(e.value.is_discarded()) << "README line " << e.line << ": not JSON";
-        out.push_back(std::move(e));
-        i = j;
-    }
-    return out;
 }
 
 } // namespace

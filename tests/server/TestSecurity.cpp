@@ -59,7 +59,7 @@ HttpReply uploadXml(HttpClient& c, const std::string& hmf, const std::string& na
 std::int64_t exampleId(HttpClient& c, const std::string& name)
 {
     for (const auto& m : c.get("/api/v1/models").json())
-        if (m["name"] == name) return m["id"];
+        if (m["name"] == name) return m["id"].get<std::int64_t>();
     ADD_FAILURE() << "no example " << name;
     return 0;
 }
@@ -96,7 +96,7 @@ protected:
     std::int64_t userId(const std::string& name)
     {
         for (const auto& u : as("admin").get("/api/v1/users").json())
-            if (u["username"] == name) return u["id"];
+            if (u["username"] == name) return u["id"].get<std::int64_t>();
         return 0;
     }
     static constexpr const char* kSentinelFile = "secret.txt";
@@ -432,7 +432,7 @@ TEST_F(Security, TokensOnlyInHeadersAndDownloadsThroughSignedLinks)
     const std::string target = "/api/v1/models/" + id + "?format=hmf";
     const auto link = alice.post("/api/v1/auth/download-link", {{"target", target}});
     ASSERT_EQ(link.status, 200) << link.body;
-    const std::string url = link.json()["url"];
+    const std::string url = link.json()["url"].get<std::string>();
     EXPECT_EQ(url.rfind(target + "&download=", 0), 0u) << url;
     const auto download = anonymous.get(url);
     EXPECT_EQ(download.status, 200);
@@ -468,7 +468,7 @@ TEST(SecurityFullDisk, DeletingWorksWhenTheDiskIsFull)
     for (int i = 0; i < 60; ++i) {
         full = uploadXml(admin, filler, "filler" + std::to_string(i));
         if (full.status != 201) break;
-        stored.push_back(full.json()["id"]);
+        stored.push_back(full.json()["id"].get<std::int64_t>());
     }
     ASSERT_EQ(full.status, 507) << "the disk never filled: " << full.body;
     EXPECT_EQ(full.json()["error"]["code"], "storage_full");

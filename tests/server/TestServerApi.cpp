@@ -33,7 +33,7 @@ protected:
     {
         const auto r = c.request(http::verb::post, "/api/v1/models?name=" + name, readFile(file), "application/xml");
         EXPECT_EQ(r.status, 201) << r.body;
-        return r.json()["id"];
+        return r.json()["id"].get<std::int64_t>();
     }
     nlohmann::json waitForJob(HttpClient& c, std::int64_t id, int seconds = 120)
     {
@@ -138,7 +138,7 @@ TEST_F(ServerApi, UploadDownloadAndOwnership)
     // Examples are everyone's to read and no one's but the admin's to change.
     const auto list = bob.get("/api/v1/models").json();
     std::int64_t example = 0;
-    for (const auto& m : list) if (m["is_example"]) example = m["id"];
+    for (const auto& m : list) if (m["is_example"].get<bool>()) example = m["id"].get<std::int64_t>();
     ASSERT_NE(example, 0) << list.dump();
     EXPECT_EQ(bob.get("/api/v1/models/" + std::to_string(example)).status, 200);
     EXPECT_EQ(bob.request(http::verb::delete_, "/api/v1/models/" + std::to_string(example)).status, 403);
@@ -172,7 +172,7 @@ TEST_F(ServerApi, RestJobGivesTheSameCsvAsTheCli)
     const auto id = uploadModel(alice, kPositionServo, "servo-job");
     const auto submitted = alice.post("/api/v1/jobs", {{"model_id", id}});
     ASSERT_EQ(submitted.status, 201) << submitted.body;
-    const std::int64_t job = submitted.json()["id"];
+    const std::int64_t job = submitted.json()["id"].get<std::int64_t>();
     const auto done = waitForJob(alice, job);
     ASSERT_EQ(done["state"], "done") << done.dump();
     EXPECT_DOUBLE_EQ(done["progress"].get<double>(), 1.0);
@@ -223,7 +223,7 @@ TEST_F(ServerApi, WebSocketErrorsKeepTheConnectionWorking)
     m = ws.call("connect", {{"from", {{"component", "Mass"}, {"port", "P1"}}},
                             {"to", {{"component", "Tank_C"}, {"port", "P1"}}}});
     EXPECT_EQ(m["error"]["code"], "illegal_connection") << m.dump();
-    const std::string reason = m["error"]["message"];
+    const std::string reason = m["error"]["message"].get<std::string>();
     EXPECT_NE(reason.find("Mass"), std::string::npos) << reason;
     EXPECT_NE(reason.find("Tank_C"), std::string::npos) << reason;
 
@@ -252,7 +252,7 @@ TEST_F(ServerApi, StreamingFramesConcatenateToTheStoredResult)
     // A long enough run that frames arrive while it goes on.
     auto m = ws.call("simulate.start", {{"stop", 200.0}, {"log_samples", 20000}, {"variables", {variable}}, {"rate", 30}});
     ASSERT_EQ(m["type"], "reply") << m.dump();
-    const std::int64_t job = m["data"]["job_id"];
+    const std::int64_t job = m["data"]["job_id"].get<std::int64_t>();
     std::vector<double> streamedTime, streamedValue;
     int framesBeforeDone = 0;
     bool sawProgress = false;
@@ -267,10 +267,10 @@ TEST_F(ServerApi, StreamingFramesConcatenateToTheStoredResult)
         if (e["type"] == "event.progress") sawProgress = true;
         if (e["type"] == "event.frame") {
             ++framesBeforeDone;
-            for (double t : e["time"]) streamedTime.push_back(t);
-            for (double v : e["variables"][variable]) streamedValue.push_back(v);
+            for (const auto& t : e["time"]) streamedTime.push_back(t.get<double>());
+            for (const auto& v : e["variables"][variable]) streamedValue.push_back(v.get<double>());
         }
-        if (e["type"] == "event.done") finalState = e["state"];
+        if (e["type"] == "event.done") finalState = e["state"].get<std::string>();
     }
     EXPECT_EQ(finalState, "done");
     EXPECT_TRUE(sawProgress);
@@ -295,10 +295,10 @@ TEST(ServerRestart, KillDuringAJobKeepsModelsAndMarksTheJobInterrupted)
         stored = readFile(kPositionServo);
         auto r = admin.request(http::verb::post, "/api/v1/models?name=kept", stored, "application/xml");
         ASSERT_EQ(r.status, 201);
-        model = r.json()["id"];
+        model = r.json()["id"].get<std::int64_t>();
         r = admin.post("/api/v1/jobs", {{"model_id", model}, {"stop", 3000.0}});
         ASSERT_EQ(r.status, 201) << r.body;
-        job = r.json()["id"];
+        job = r.json()["id"].get<std::int64_t>();
         for (int i = 0; i < 100 && admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"] != "running"; ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         server.kill9();
@@ -325,7 +325,7 @@ TEST(ServerRestart, SigtermStopsRunningJobsAsInterrupted)
         admin.login("admin", kAdminPassword);
         auto r = admin.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 3000.0}});
         ASSERT_EQ(r.status, 201) << r.body;
-        job = r.json()["id"];
+        job = r.json()["id"].get<std::int64_t>();
         for (int i = 0; i < 100 && admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"] != "running"; ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         const int status = server.terminate();
@@ -369,7 +369,7 @@ TEST_F(ServerApi, ASlowClientDoesNotHoldUpTheJobOrOthers)
     // Many frames per second, and this client reads none of them while the job runs.
     const auto started = slow.call("simulate.start", {{"stop", 300.0}, {"log_samples", 50000}, {"rate", 120}});
     ASSERT_EQ(started["type"], "reply") << started.dump();
-    const std::int64_t job = started["data"]["job_id"];
+    const std::int64_t job = started["data"]["job_id"].get<std::int64_t>();
     HttpClient other = as("bob");
     // 3 million steps and about 17 MB of frames, far more than the socket buffers hold:
     // under a second in Release, about 15 s under the sanitizers.
@@ -381,7 +381,7 @@ TEST_F(ServerApi, ASlowClientDoesNotHoldUpTheJobOrOthers)
     for (int i = 0; i < 100000 && finalState.empty(); ++i) {
         const auto e = slow.receive(20000);
         ASSERT_FALSE(e.is_null());
-        if (e["type"] == "event.done") finalState = e["state"];
+        if (e["type"] == "event.done") finalState = e["state"].get<std::string>();
     }
     EXPECT_EQ(finalState, "done");
 }
@@ -415,7 +415,7 @@ TEST(ServerQuota, StoredResultsAreLimitedPerUserAndDeletingJobsFreesThem)
     const std::string hmf = readFile(kPositionServo);
     auto r = admin.post("/api/v1/jobs", {{"hmf", hmf}});
     ASSERT_EQ(r.status, 201) << r.body;
-    const std::int64_t first = r.json()["id"];
+    const std::int64_t first = r.json()["id"].get<std::int64_t>();
     for (int i = 0; i < 600 && admin.get("/api/v1/jobs/" + std::to_string(first)).json()["state"] != "done"; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     r = admin.post("/api/v1/jobs", {{"hmf", hmf}});

@@ -29,7 +29,7 @@ nlohmann::json longRun()
 std::int64_t exampleId(HttpClient& c, const std::string& name)
 {
     for (const auto& m : c.get("/api/v1/models").json())
-        if (m["name"] == name) return m["id"];
+        if (m["name"] == name) return m["id"].get<std::int64_t>();
     ADD_FAILURE() << "no example " << name;
     return 0;
 }
@@ -134,7 +134,7 @@ TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
     ASSERT_EQ(ws.call("model.open", {{"model_id", s.servo}})["type"], "reply");
     const auto started = ws.call("simulate.start", longRun());
     ASSERT_EQ(started["type"], "reply") << started.dump();
-    const std::int64_t job = started["data"]["job_id"];
+    const std::int64_t job = started["data"]["job_id"].get<std::int64_t>();
     waitForProgress(s.admin, job, 0.8);   // meanwhile the socket is not read
     const auto events = eventsUntilDone(ws, job);
     ASSERT_FALSE(events.empty());
@@ -148,10 +148,10 @@ TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
         ++frames;
         EXPECT_EQ(e["seq"].get<std::uint64_t>(), seq++) << "seq counts the frames sent";
         merged += e["dropped"].get<std::uint64_t>();
-        for (double t : e["time"]) streamed["time"].push_back(t);
+        for (const auto& t : e["time"]) streamed["time"].push_back(t.get<double>());
         ASSERT_EQ(e["variables"].size(), 16u) << e["variables"].dump().substr(0, 300);
         for (const auto& [name, values] : e["variables"].items())
-            for (double v : values) streamed[name].push_back(v);
+            for (const auto& v : values) streamed[name].push_back(v.get<double>());
     }
     EXPECT_GT(merged, 0u) << "the client was slow, so frames were merged";
     std::vector<std::string> names;
@@ -176,12 +176,12 @@ TEST(Streaming, PastTheByteLimitTheClientIsToldToReadTheStoredResult)
     ASSERT_EQ(ws.call("model.open", {{"model_id", s.servo}})["type"], "reply");
     const auto started = ws.call("simulate.start", longRun());
     ASSERT_EQ(started["type"], "reply") << started.dump();
-    const std::int64_t job = started["data"]["job_id"];
+    const std::int64_t job = started["data"]["job_id"].get<std::int64_t>();
     // The socket is not read while the job runs; the queue's size is sampled meanwhile.
     std::int64_t mostQueued = 0;
     for (int i = 0; i < 6000; ++i) {
         mostQueued = std::max(mostQueued, s.admin.get("/api/v1/stats").json()["websocket_queued_bytes"].get<std::int64_t>());
-        const std::string state = s.admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"];
+        const std::string state = s.admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"].get<std::string>();
         if (state != "queued" && state != "running") break;
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -213,7 +213,7 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
     ASSERT_EQ(binary.call("model.open", {{"model_id", s.servo}})["type"], "reply");
     const auto started = binary.call("simulate.start", {{"stop", 20.0}, {"log_samples", 20000}, {"frames", "binary"}});
     ASSERT_EQ(started["type"], "reply") << started.dump();
-    const std::int64_t job = started["data"]["job_id"];
+    const auto job = started["data"]["job_id"].get<std::int64_t>();
     WsClient json(s.server.port(), s.token);
     ASSERT_EQ(json.call("log.subscribe", {{"job_id", job}})["type"], "reply");
 
@@ -221,9 +221,9 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
         std::map<std::string, std::vector<double>> streamed;
         for (const auto& e : events) {
             if (e["type"] != "event.frame") continue;
-            for (double t : e["time"]) streamed["time"].push_back(t);
+            for (const auto& t : e["time"]) streamed["time"].push_back(t.get<double>());
             for (const auto& [name, values] : e["variables"].items())
-                for (double v : values) streamed[name].push_back(v);
+                for (const auto& v : values) streamed[name].push_back(v.get<double>());
         }
         return streamed;
     };

@@ -2,6 +2,7 @@
 import { ApiError } from './ApiError';
 import { decodeBinaryFrame } from './binaryFrame';
 import type { HelloMessage, ServerEvent, ServerMessage } from '../protocol/types';
+import type { ReplyData, RequestFields, RequestType } from '../protocol/requests.generated';
 
 /** The part of the browser WebSocket the client uses (a fake one in tests). */
 export interface SocketLike {
@@ -15,7 +16,10 @@ export interface SocketLike {
 
 type EventListener = (event: ServerEvent) => void;
 
-interface Pending { resolve: (data: Record<string, unknown>) => void; reject: (e: Error) => void }
+interface Pending { resolve: (data: unknown) => void; reject: (e: Error) => void }
+
+/** A request's fields, which may be left out when the request has none that are required. */
+type FieldsArgument<T extends RequestType> = {} extends RequestFields<T> ? [fields?: RequestFields<T>] : [fields: RequestFields<T>];
 
 export class WsClient {
     private socket: SocketLike | null = null;
@@ -57,12 +61,13 @@ export class WsClient {
     get connected(): boolean { return this.socket !== null && this.hello !== null; }
 
     /** Sends one request; resolves with the reply's data or rejects with the error reply. */
-    request<T = Record<string, unknown>>(type: string, fields: object = {}): Promise<T> {
+    request<T extends RequestType>(type: T, ...[fields]: FieldsArgument<T>): Promise<ReplyData<T>> {
         if (!this.socket) return Promise.reject(new ApiError('not_connected', 'not connected to the server'));
         const id = this.nextId++;
         const message = { ...fields, id, type };
-        return new Promise<T>((resolve, reject) => {
-            this.pending.set(id, { resolve: resolve as Pending['resolve'], reject });
+        return new Promise<ReplyData<T>>((resolve, reject) => {
+            // The server sends the data x-replies defines for the request's type (its tests check it).
+            this.pending.set(id, { resolve: (data) => resolve(data as ReplyData<T>), reject });
             this.socket!.send(JSON.stringify(message));
         });
     }

@@ -2,11 +2,12 @@
 // the selection and the history. Every change goes through a command, one at a time.
 import { History } from './History';
 import type { Command, EditContext } from './commands';
-import { applyEdit, systemAt, type EditRequest, type SystemPath } from '../model/modelState';
+import { applyEdit, systemAt, type EditRequestOf, type EditType, type SystemPath } from '../model/modelState';
 import type { Model, System } from '../protocol/types';
+import type { ReplyData } from '../protocol/requests.generated';
 
 /** Sends an edit request to the server and resolves with the reply's data. */
-export type Transport = (request: EditRequest) => Promise<Record<string, unknown>>;
+export type Transport = <T extends EditType>(request: EditRequestOf<T>) => Promise<ReplyData<T>>;
 
 export class EditorStore {
     readonly history = new History();
@@ -20,7 +21,7 @@ export class EditorStore {
 
     constructor(private current: Model, private readonly transport: Transport) {
         this.context = {
-            send: async (request) => {
+            send: async <T extends EditType>(request: EditRequestOf<T>) => {
                 const data = await this.transport(request);
                 this.current = applyEdit(this.current, request, data);
                 this.emit();

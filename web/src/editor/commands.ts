@@ -2,13 +2,14 @@
 // and knows how to take it back (undo = the inverse requests).
 import {
     connectionsOf, findComponent, sameRef, systemAt, uniqueName,
-    type EditRequest, type SystemPath,
+    type EditRequestOf, type EditType, type SystemPath,
 } from '../model/modelState';
+import type { ReplyData } from '../protocol/requests.generated';
 import type { Component, Connection, Model, Param, PortRef, Pose, SimulationSettings, SysParam } from '../protocol/types';
 
 export interface EditContext {
     /** Sends one edit request; the reply is applied to the local model before this resolves. */
-    send(request: EditRequest): Promise<Record<string, unknown>>;
+    send<T extends EditType>(request: EditRequestOf<T>): Promise<ReplyData<T>>;
     model(): Model;
 }
 
@@ -34,7 +35,7 @@ export class AddComponent implements Command {
 
     async do(ctx: EditContext): Promise<void> {
         const reply = await ctx.send({ type: 'component.add', system: this.path, component_type: this.type, name: this.name, pose: this.pose });
-        this.actualName = (reply.component as Component).name;
+        this.actualName = reply.component.name;
     }
 
     async undo(ctx: EditContext): Promise<void> {
@@ -52,7 +53,7 @@ function snapshot(c: Component): ComponentSnapshot {
 // Adds a component as in a snapshot: add, then set the parameters whose value differs.
 async function restoreComponent(ctx: EditContext, path: SystemPath, snap: ComponentSnapshot, name: string): Promise<string> {
     const reply = await ctx.send({ type: 'component.add', system: path, component_type: snap.type, name, pose: snap.pose });
-    const added = reply.component as Component;
+    const added = reply.component;
     for (const p of snap.parameters) {
         const fresh = added.parameters.find((q) => q.name === p.name);
         if (fresh && fresh.value !== p.value) {
@@ -111,7 +112,7 @@ export class RenameComponent implements Command {
 
     async do(ctx: EditContext): Promise<void> {
         const reply = await ctx.send({ type: 'component.rename', system: this.path, name: this.from, new_name: this.to });
-        this.actual = (reply.name as string | undefined) ?? this.to;
+        this.actual = reply.name;
     }
 
     async undo(ctx: EditContext): Promise<void> {
@@ -189,7 +190,7 @@ export class SetParameter implements Command {
 }
 
 // The request's "type" is the message type; the parameter's own type travels as param_type.
-function sysParamRequest(path: SystemPath, p: SysParam): EditRequest {
+function sysParamRequest(path: SystemPath, p: SysParam): EditRequestOf<'sysparam.set'> {
     return { type: 'sysparam.set', system: path, name: p.name, value: p.value, param_type: p.type, unit: p.unit, description: p.description };
 }
 
@@ -282,6 +283,13 @@ export class SetSimulationSettings implements Command {
     }
 }
 
+// model.group names at least one component; the editor offers grouping only for a selection.
+function nonEmpty(names: string[]): [string, ...string[]] {
+    const [first, ...rest] = names;
+    if (first === undefined) throw new Error('no components to group');
+    return [first, ...rest];
+}
+
 /** Moves components into a new subsystem on the server; undo ungroups it again. */
 export class GroupComponents implements Command {
     readonly label: string;
@@ -295,8 +303,8 @@ export class GroupComponents implements Command {
     get subsystemName(): string { return this.actual; }
 
     async do(ctx: EditContext): Promise<void> {
-        const reply = await ctx.send({ type: 'model.group', system: this.path, names: this.names, name: this.name });
-        this.actual = reply.name as string;
+        const reply = await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.names), name: this.name });
+        this.actual = reply.name;
         await ctx.send({ type: 'model.get' });   // the system changed in more places than one reply says
     }
 
@@ -320,12 +328,12 @@ export class UngroupSubsystem implements Command {
 
     async do(ctx: EditContext): Promise<void> {
         const reply = await ctx.send({ type: 'model.ungroup', system: this.path, name: this.name });
-        this.moved = reply.names as string[];
+        this.moved = reply.names;
         await ctx.send({ type: 'model.get' });
     }
 
     async undo(ctx: EditContext): Promise<void> {
-        await ctx.send({ type: 'model.group', system: this.path, names: this.moved, name: this.name });
+        await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.moved), name: this.name });
         await ctx.send({ type: 'model.get' });
     }
 }

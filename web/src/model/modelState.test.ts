@@ -14,8 +14,8 @@ function gain(name: string): Component {
 
 function withTwoGains(): Model {
     let m = emptyModel();
-    m = applyEdit(m, { type: 'component.add' }, { component: gain('A') });
-    m = applyEdit(m, { type: 'component.add' }, { component: gain('B') });
+    m = applyEdit(m, { type: 'component.add', component_type: 'SignalGain' }, { component: gain('A') });
+    m = applyEdit(m, { type: 'component.add', component_type: 'SignalGain' }, { component: gain('B') });
     return m;
 }
 
@@ -71,15 +71,15 @@ describe('applyEdit', () => {
 
     it('sysparam.set adds then replaces', () => {
         const p = { name: 'x', value: '3', type: 'double' as const, unit: 'm', description: '' };
-        let m = applyEdit(emptyModel(), { type: 'sysparam.set' }, { parameter: p });
-        m = applyEdit(m, { type: 'sysparam.set' }, { parameter: { ...p, value: '4' } });
+        let m = applyEdit(emptyModel(), { type: 'sysparam.set', name: p.name, value: p.value }, { parameter: p });
+        m = applyEdit(m, { type: 'sysparam.set', name: p.name, value: '4' }, { parameter: { ...p, value: '4' } });
         expect(m.system.parameters).toEqual([{ ...p, value: '4' }]);
     });
 
     it('edits inside a subsystem reach only that subsystem', () => {
         const sub: Component = { ...gain('Sub'), type: 'Subsystem', kind: 'system', ports: [], parameters: [], system: { ...emptyModel('Sub').system, simulation: undefined } };
-        let m = applyEdit(emptyModel(), { type: 'component.add' }, { component: sub });
-        m = applyEdit(m, { type: 'component.add', system: ['Sub'] }, { component: gain('Inner') });
+        let m = applyEdit(emptyModel(), { type: 'component.add', component_type: 'Subsystem' }, { component: sub });
+        m = applyEdit(m, { type: 'component.add', system: ['Sub'], component_type: 'SignalGain' }, { component: gain('Inner') });
         expect(m.system.components.map((c) => c.name)).toEqual(['Sub']);
         expect(systemAt(m, ['Sub'])!.components.map((c) => c.name)).toEqual(['Inner']);
         m = applyEdit(m, { type: 'component.move', system: ['Sub'], name: 'Inner', pose: { x: 5, y: 6, angle: 90, flipped: true } }, {});

@@ -1,6 +1,7 @@
 // Pure functions over ModelJson: find a (sub)system by path and apply the server's replies to
 // edit requests, so the local model always equals what the server holds.
-import type { Component, Connection, Model, Param, PortRef, Pose, SysParam, System } from '../protocol/types';
+import type { Component, Connection, Model, PortRef, System } from '../protocol/types';
+import type { ReplyData, RequestFields } from '../protocol/requests.generated';
 
 export type SystemPath = string[];
 
@@ -85,85 +86,78 @@ function mapComponent(system: System, name: string, change: (c: Component) => Co
     return { ...system, components: system.components.map((c) => (c.name === name ? change(c) : c)) };
 }
 
-export interface EditRequest { type: string; system?: SystemPath; [field: string]: unknown }
+/** The request types that read or change the open model. */
+export type EditType = 'model.get' | 'model.settings' | 'component.add' | 'component.remove' | 'component.rename'
+    | 'component.move' | 'connect' | 'disconnect' | 'parameter.get' | 'parameter.set' | 'sysparam.set'
+    | 'sysparam.remove' | 'model.group' | 'model.ungroup';
+/** An edit request as the editor sends it: the message type and the request's fields. */
+export type EditRequestOf<T extends EditType> = { type: T } & RequestFields<T>;
+export type EditRequest = { [T in EditType]: EditRequestOf<T> }[EditType];
 
-/**
- * The model after the server accepted `request` and answered with `reply` (the reply's data).
- * Unknown request types leave the model unchanged.
- */
-export function applyEdit(model: Model, request: EditRequest, reply: Record<string, unknown>): Model {
-    const path = request.system ?? [];
-    switch (request.type) {
-    case 'model.get':
-        return reply.model as Model;
-    case 'component.add': {
-        const component = reply.component as Component;
-        return updateSystem(model, path, (s) => ({ ...s, components: [...s.components, component] }));
-    }
-    case 'component.remove': {
-        const name = request.name as string;
-        return updateSystem(model, path, (s) => refreshConnected({
-            ...s,
-            components: s.components.filter((c) => c.name !== name),
-            connections: s.connections.filter((c) => !connectionTouches(c, name)),
-        }));
-    }
-    case 'component.rename': {
-        const from = request.name as string;
-        const to = (reply.name as string | undefined) ?? (request.new_name as string);
+type Apply<T extends EditType> = (model: Model, request: EditRequestOf<T>, reply: ReplyData<T>) => Model;
+const unchanged = (model: Model): Model => model;
+
+// One entry per request type: the model after the server accepted the request and answered.
+const appliers: { [T in EditType]: Apply<T> } = {
+    'model.get': (_model, _request, reply) => reply.model,
+    'model.settings': (model, _request, reply) => ({ ...model, system: { ...model.system, simulation: reply.simulation } }),
+    'component.add': (model, request, reply) =>
+        updateSystem(model, request.system ?? [], (s) => ({ ...s, components: [...s.components, reply.component] })),
+    'component.remove': (model, request) => updateSystem(model, request.system ?? [], (s) => refreshConnected({
+        ...s,
+        components: s.components.filter((c) => c.name !== request.name),
+        connections: s.connections.filter((c) => !connectionTouches(c, request.name)),
+    })),
+    'component.rename': (model, request, reply) => {
+        const from = request.name;
+        const to = reply.name;
         const rename = (ref: PortRef): PortRef => (ref.component === from ? { ...ref, component: to } : ref);
-        return updateSystem(model, path, (s) => ({
+        return updateSystem(model, request.system ?? [], (s) => ({
             ...s,
             components: s.components.map((c) => (c.name === from ? { ...c, name: to } : c)),
             connections: s.connections.map((c) => ({ ...c, from: rename(c.from), to: rename(c.to) })),
         }));
-    }
-    case 'component.move': {
-        const pose = request.pose as Pose;
-        return updateSystem(model, path, (s) => mapComponent(s, request.name as string, (c) => ({ ...c, pose })));
-    }
-    case 'connect': {
-        const connection = (reply.connection as Connection | undefined) ?? {
-            from: request.from as PortRef, to: request.to as PortRef, points: [],
-        };
-        return updateSystem(model, path, (s) => refreshConnected({ ...s, connections: [...s.connections, connection] }));
-    }
-    case 'disconnect': {
-        const a = request.from as PortRef;
-        const b = request.to as PortRef;
-        return updateSystem(model, path, (s) => refreshConnected({
+    },
+    'component.move': (model, request) =>
+        updateSystem(model, request.system ?? [], (s) => mapComponent(s, request.name, (c) => ({ ...c, pose: request.pose }))),
+    'connect': (model, request, reply) =>
+        updateSystem(model, request.system ?? [], (s) => refreshConnected({ ...s, connections: [...s.connections, reply.connection] })),
+    'disconnect': (model, request) => {
+        const a = request.from;
+        const b = request.to;
+        return updateSystem(model, request.system ?? [], (s) => refreshConnected({
             ...s,
             connections: s.connections.filter((c) =>
                 !((sameRef(c.from, a) && sameRef(c.to, b)) || (sameRef(c.from, b) && sameRef(c.to, a)))),
         }));
-    }
-    case 'parameter.set': {
-        const parameter = reply.parameter as Param;
-        return updateSystem(model, path, (s) => mapComponent(s, request.component as string, (c) => ({
+    },
+    'parameter.get': unchanged,
+    'parameter.set': (model, request, reply) =>
+        updateSystem(model, request.system ?? [], (s) => mapComponent(s, request.component, (c) => ({
             ...c,
-            parameters: c.parameters.map((p) => (p.name === parameter.name ? parameter : p)),
-        })));
-    }
-    case 'sysparam.set': {
-        const parameter = reply.parameter as SysParam;
-        return updateSystem(model, path, (s) => {
-            const exists = s.parameters.some((p) => p.name === parameter.name);
-            return {
-                ...s,
-                parameters: exists
-                    ? s.parameters.map((p) => (p.name === parameter.name ? parameter : p))
-                    : [...s.parameters, parameter],
-            };
-        });
-    }
-    case 'model.settings':
-        return { ...model, system: { ...model.system, simulation: reply.simulation as Model['system']['simulation'] } };
-    case 'sysparam.remove':
-        return updateSystem(model, path, (s) => ({
+            parameters: c.parameters.map((p) => (p.name === reply.parameter.name ? reply.parameter : p)),
+        }))),
+    'sysparam.set': (model, request, reply) => updateSystem(model, request.system ?? [], (s) => {
+        const parameter = reply.parameter;
+        const exists = s.parameters.some((p) => p.name === parameter.name);
+        return {
             ...s,
-            parameters: s.parameters.filter((p) => p.name !== request.name),
-        }));
-    default:
-        return model;
-    }
+            parameters: exists
+                ? s.parameters.map((p) => (p.name === parameter.name ? parameter : p))
+                : [...s.parameters, parameter],
+        };
+    }),
+    'sysparam.remove': (model, request) => updateSystem(model, request.system ?? [], (s) => ({
+        ...s,
+        parameters: s.parameters.filter((p) => p.name !== request.name),
+    })),
+    // grouping changes the system in more places than its reply says: the editor reloads the model
+    'model.group': unchanged,
+    'model.ungroup': unchanged,
+};
+
+/** The model after the server accepted `request` and answered with `reply` (the reply's data). */
+export function applyEdit<T extends EditType>(model: Model, request: EditRequestOf<T>, reply: ReplyData<T>): Model {
+    const apply: Apply<T> = appliers[request.type];
+    return apply(model, request, reply);
 }

@@ -652,7 +652,7 @@ export interface SimulateStartRequest {
      */
     variables?: string[];
     /**
-     * Highest frames per second (default 30).
+     * Highest frames per second (default 30; a rate above 120 is served at 120).
      */
     rate?: number;
     /**
@@ -677,7 +677,7 @@ export interface LogSubscribeRequest {
      */
     variables?: string[];
     /**
-     * Highest frames per second (default 30).
+     * Highest frames per second (default 30; a rate above 120 is served at 120).
      */
     rate?: number;
     /**

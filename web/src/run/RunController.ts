@@ -5,6 +5,8 @@ import { RunData } from './RunData';
 import type { RestClient } from '../api/RestClient';
 import type { WsClient } from '../api/WsClient';
 import type { ServerEvent } from '../protocol/types';
+import { DEFAULT_FRAME_RATE, MAX_STREAM_VARIABLES } from '../protocol/constants.generated';
+import type { RequestFields } from '../protocol/requests.generated';
 
 export interface RunSettings { start: number; step: number; stop: number; log_samples: number }
 
@@ -14,8 +16,6 @@ export interface RunTransport {
     onEvent: WsClient['onEvent'];
     resultsJson: RestClient['resultsJson'];
 }
-
-export const MAX_STREAMED = 16;
 
 export class RunController {
     current: RunData | null = null;
@@ -37,13 +37,13 @@ export class RunController {
 
     get running(): boolean { return this.current !== null && !this.current.finished; }
 
-    /** Starts a run of the socket's open model, streaming `variables` (at most 16). */
+    /** Starts a run of the socket's open model, streaming `variables` (at most MAX_STREAM_VARIABLES). */
     async start(settings: Partial<RunSettings>, variables: string[], span: [number, number] | null = null): Promise<RunData> {
-        const streamed = variables.slice(0, MAX_STREAMED);
+        const streamed = variables.slice(0, MAX_STREAM_VARIABLES);
         // Binary frames: float64 columns, no number formatting on the server or parsing here.
-        const fields: Record<string, unknown> = { ...settings, rate: 30, frames: 'binary' };
+        const fields: RequestFields<'simulate.start'> = { ...settings, rate: DEFAULT_FRAME_RATE, frames: 'binary' };
         if (streamed.length > 0) fields.variables = streamed;
-        const reply = await this.transport.request<{ job_id: number }>('simulate.start', fields);
+        const reply = await this.transport.request('simulate.start', fields);
         if (this.current?.finished) this.previous = this.current;
         const run = new RunData(reply.job_id, streamed);
         run.state = 'running';

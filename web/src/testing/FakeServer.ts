@@ -1,7 +1,8 @@
 // An in-memory stand-in for the server's edit session, for unit tests: it answers edit
 // requests the way the protocol describes (replies and refusals) on its own copy of a model.
 import { ApiError } from '../api/ApiError';
-import { systemAt, type EditRequest } from '../model/modelState';
+import { systemAt, type SystemPath } from '../model/modelState';
+import type { Transport } from '../editor/EditorStore';
 import type { Component, Model, Param, PortRef, System } from '../protocol/types';
 
 interface TypeInfo { kind: Component['kind']; ports: [string, 'power' | 'read' | 'write', string][]; params: [string, string][] }
@@ -24,15 +25,18 @@ export function emptyModel(name = 'Test'): Model {
     };
 }
 
+/** A request as it arrives on the wire: the fake checks its fields as the server does, at run time. */
+type WireRequest = { type: string; system?: SystemPath; [field: string]: unknown };
+
 export class FakeServer {
     model: Model;
-    readonly log: EditRequest[] = [];
+    readonly log: WireRequest[] = [];
 
     constructor(model: Model = emptyModel()) {
         this.model = structuredClone(model);
     }
 
-    private system(request: EditRequest): System {
+    private system(request: WireRequest): System {
         const s = systemAt(this.model, request.system ?? []);
         if (!s) throw new ApiError('not_found', 'no such system');
         return s;
@@ -44,8 +48,10 @@ export class FakeServer {
         return c;
     }
 
-    /** Handles one request; the transport of an EditorStore in tests. */
-    handle = async (request: EditRequest): Promise<Record<string, unknown>> => {
+    /** The transport of an EditorStore in tests; it answers in the protocol's reply shapes. */
+    handle: Transport = (request) => this.answer(request as WireRequest) as never;
+
+    private answer = async (request: WireRequest): Promise<Record<string, unknown>> => {
         this.log.push(structuredClone(request));
         const system = this.system(request);
         switch (request.type) {

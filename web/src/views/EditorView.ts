@@ -14,7 +14,7 @@ import { portVariables, sinkVariables } from '../model/variables';
 import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
 import type { Session } from '../app/Session';
-import type { CatalogueEntry, Model, ModelSummary, PortRef } from '../protocol/types';
+import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
 
 let clipboard: Clipboard | null = null;
 
@@ -33,7 +33,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     });
     const opening = Promise.all([
         rest.components(),
-        ws.connect().then(() => ws.request<{ model_id: number; model: Model }>('model.open', { model_id: modelId })),
+        ws.connect().then(() => ws.request('model.open', { model_id: modelId })),
     ]);
     opening.catch(() => undefined);   // a failure is shown below, once the summary is in
     let summary: ModelSummary;
@@ -47,7 +47,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         return { dispose: () => undefined, dirty: () => false };
     }
     let catalogue: CatalogueEntry[];
-    let opened: { model_id: number; model: Model };
+    let opened: ModelOpenedData;
     try {
         [catalogue, opened] = await opening;
     } catch (e) {
@@ -57,7 +57,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         return { dispose: () => undefined, dirty: () => false };
     }
 
-    const store = new EditorStore(opened.model, (request) => ws.request(request.type, stripType(request)));
+    // An edit request carries its fields beside its type; the client sets the type itself.
+    const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
     const plots = new PlotArea(runs);
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
@@ -156,7 +157,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         try {
             await store.idle();
             const asCopy = !isOwner();
-            const reply = await ws.request<{ model_id: number; name: string; updated_at: number }>('model.save', asCopy ? { as_copy: true, name: summary.name } : {});
+            const reply = await ws.request('model.save', asCopy ? { as_copy: true, name: summary.name } : {});
             store.markSaved();
             if (reply.model_id !== summary.id) {
                 writable = true;
@@ -289,10 +290,4 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             ws.close();
         },
     };
-}
-
-// The socket client adds the message type itself.
-function stripType(request: { type: string }): object {
-    const { type: _type, ...fields } = request;
-    return fields;
 }
