@@ -29,6 +29,9 @@ public:
     std::size_t samples() const { return mSamples; }
     double* sample(std::size_t slot) { return mData + slot * mStride; }
     double value(std::size_t slot, std::size_t variable) const { return mData[slot * mStride + variable]; }
+    // Sample 0 of `variable`; sample i is `stride()` values further.
+    const double* first(std::size_t variable) const { return mData + variable; }
+    std::size_t stride() const { return mStride; }
 
 private:
     double* mData = nullptr;

@@ -128,8 +128,15 @@ ResultTable ResultTable::fromView(const ResultView& view)
     const auto time = view.time();
     table.time.assign(time.begin(), time.end());
     table.columns.reserve(view.numVariables());
-    for (std::size_t i = 0; i < view.numVariables(); ++i)
-        table.columns.push_back({view.variable(i).fullName, view.variable(i).unit, view.data(i)});
+    std::vector<std::size_t> indices;
+    std::vector<double*> out;
+    for (std::size_t i = 0; i < view.numVariables(); ++i) {
+        table.columns.push_back({view.variable(i).fullName, view.variable(i).unit,
+                                 std::vector<double>(view.count(i))});
+        indices.push_back(i);
+    }
+    for (auto& c : table.columns) out.push_back(c.data.data());
+    view.copyData(indices, out);
     return table;
 }
 

@@ -31,6 +31,12 @@ public:
     // fewer than numSamples()).
     std::vector<double> data(std::size_t index) const;
     std::optional<std::vector<double>> data(std::string_view name) const;
+    // Samples logged so far (as data() gives them) of the variables `indices` into out[k],
+    // which has room for them. The log keeps a row per sample, so one column strides across
+    // every row; many columns are copied a block of rows at a time, so each row is fetched
+    // from memory once, not once per column.
+    std::size_t count(std::size_t index) const;
+    void copyData(std::span<const std::size_t> indices, std::span<double* const> out) const;
 
 private:
     const System* mRoot;

@@ -137,6 +137,9 @@ JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& contro
         state.jobId = jobId;
         state.root = &root;
         state.deadline = deadline;
+        // markRunning stored progress 0 just now; the next store is due a period later (a
+        // short job's only progress write would be a wasted transaction).
+        state.lastProgressStore = started;
         if (ok && Clock::now() > deadline) {
             state.wallTimeExceeded = true;
             ok = false;
