@@ -6,11 +6,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <mutex>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -23,8 +27,20 @@ public:
     {
         const nlohmann::json frame = nlohmann::json::parse(text, nullptr, false);
         if (!frame.is_object() || !frame.contains("type")) fuzz::fail("server sent a frame that is not a message: " + text);
+        if (frame["type"] == "reply" || frame["type"] == "error") ++mAnswers;
     }
-    void sendFrame(std::unique_ptr<server::MergeableFrame> frame) override { send(frame->text()); }
+    void sendFrame(std::unique_ptr<server::MergeableFrame> frame) override
+    {
+        const server::OutgoingMessage message = frame->message();
+        if (!message.binary) return send(message.data);
+        std::uint32_t headerBytes = 0;
+        if (message.data.size() >= 4) std::memcpy(&headerBytes, message.data.data(), 4);
+        if (message.data.size() < 4 + std::size_t{headerBytes} ||
+            !nlohmann::json::accept(message.data.substr(4, headerBytes)))
+            fuzz::fail("server sent a binary frame without a JSON header");
+    }
+    // Replies and errors sent: every message gets exactly one.
+    std::size_t answers() const { return mAnswers; }
     void close(std::string) override {}
     // The connection's strand is the fuzz loop: tasks (a submitted job's reply) run between
     // messages; those that come after the input ended are dropped, as on a closed socket.
@@ -46,6 +62,7 @@ public:
 private:
     std::mutex mMutex;
     std::vector<std::function<void()>> mTasks;
+    std::atomic<std::size_t> mAnswers{0};
 };
 
 } // namespace
@@ -60,11 +77,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto handler = server.app().acceptWebSocket({upgrade, "127.0.0.1"}, sender, refusal);
     if (!handler) fuzz::fail("WebSocket refused: " + refusal.body());
 
+    // Some requests are handled on the app's request pool and answered through
+    // runOnConnection: each message's answer is awaited before the next is sent.
     std::string_view rest(reinterpret_cast<const char*>(data), size);
-    while (true) {
+    for (std::size_t sent = 1;; ++sent) {
         const std::size_t end = rest.find('\x1e');
         handler->onMessage(std::string(rest.substr(0, end)));
-        sender->runPending();
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        for (sender->runPending(); sender->answers() < sent; sender->runPending()) {
+            if (std::chrono::steady_clock::now() > deadline) fuzz::fail("a message got no answer within 60 s");
+            std::this_thread::sleep_for(std::chrono::microseconds(100));
+        }
+        if (sender->answers() > sent) fuzz::fail("a message got more than one answer");
         if (end == std::string_view::npos) break;
         rest.remove_prefix(end + 1);
     }

@@ -41,6 +41,13 @@ nlohmann::json echoableId(const nlohmann::json& msg)
     return *id;
 }
 
+// Requests that read or write storage (models, jobs), and parse or write whole models.
+bool touchesStorage(const std::string& type)
+{
+    return type == "model.open" || type == "model.create" || type == "model.save" || type == "simulate.stop" ||
+           type == "log.subscribe";
+}
+
 FrameEncoding frameEncoding(const std::optional<std::string>& frames)
 {
     return frames == "binary" ? FrameEncoding::Binary : FrameEncoding::Json;
@@ -72,26 +79,66 @@ void WsApi::sendError(const nlohmann::json& id, const std::string& code, const s
 
 void WsApi::onMessage(const std::string& text)
 {
+    if (!mBusy) return handle(text);
+    if (mWaiting.size() >= kMaxWaitingMessages)
+        return sendError(nullptr, "busy", "too many messages waiting for the previous request's reply");
+    mWaiting.push_back(text);
+}
+
+void WsApi::handle(const std::string& text)
+{
     UntrustedJson parsed = parseUntrustedJson(text);
     if (!parsed.ok()) return sendError(nullptr, "bad_json", "message: " + parsed.error);
     const nlohmann::json& msg = parsed.value;
     const nlohmann::json id = echoableId(msg);
     std::string code, why;
     if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
-    Reply reply;
-    try {
-        reply = dispatch(msg["type"].get<std::string>(), msg);
-    } catch (const std::exception& e) {
-        reply = failure("internal", e.what());
+    const std::string type = msg["type"].get<std::string>();
+    if (touchesStorage(type)) {
+        // On the request pool; this connection's later messages wait for its reply, so the
+        // open model is only ever touched by one thread and replies keep their order.
+        mBusy = true;
+        mServices.pools.runRequest([self = shared_from_this(), type, msg = parsed.value, id] {
+            const Reply reply = self->dispatchSafely(type, msg);
+            // A large model's reply is megabytes of JSON: it is written here too.
+            self->mSender->runOnConnection([self, ok = reply.ok, text = answerText(id, reply)]() mutable {
+                if (self->mClosed) return;
+                self->sendAnswer(ok, std::move(text));
+                self->mBusy = false;
+                while (!self->mBusy && !self->mWaiting.empty()) {
+                    const std::string next = std::move(self->mWaiting.front());
+                    self->mWaiting.pop_front();
+                    self->handle(next);
+                }
+            });
+        });
+        return;
     }
+    Reply reply = dispatchSafely(type, msg);
     if (std::exchange(mReplyDeferred, false) && reply.ok) return;
-    if (!reply.ok) {
-        mAfterReply = nullptr;
-        return sendError(id, reply.code, reply.message);
+    sendAnswer(reply.ok, answerText(id, reply));
+}
+
+WsApi::Reply WsApi::dispatchSafely(const std::string& type, const nlohmann::json& msg)
+{
+    try {
+        return dispatch(type, msg);
+    } catch (const std::exception& e) {
+        return failure("internal", e.what());
     }
-    mSender->send(toJsonText(protocol::Reply{.id = id, .data = reply.data}));
+}
+
+std::string WsApi::answerText(const nlohmann::json& id, const Reply& reply)
+{
+    if (!reply.ok) return toJsonText(protocol::ErrorReply{.id = id, .error = {.code = reply.code, .message = reply.message}});
+    return toJsonText(protocol::Reply{.id = id, .data = reply.data});
+}
+
+void WsApi::sendAnswer(bool ok, std::string text)
+{
+    mSender->send(std::move(text));
     // Stream events start after the reply, so a client always knows the job id first.
-    if (mAfterReply) std::exchange(mAfterReply, nullptr)();
+    if (auto after = std::exchange(mAfterReply, nullptr); ok && after) after();
 }
 
 WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)

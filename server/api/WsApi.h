@@ -8,6 +8,7 @@
 #include "server/jobs/StreamFrame.h"
 #include "server/protocol/Messages.generated.h"
 
+#include <deque>
 #include <functional>
 #include <memory>
 
@@ -25,7 +26,16 @@ public:
     using Reply = EditSession::Result;
 
 private:
+    // A client may send this many messages while a request runs on the request pool.
+    static constexpr std::size_t kMaxWaitingMessages = 256;
+
+    void handle(const std::string& text);
     Reply dispatch(const std::string& type, const nlohmann::json& msg);
+    Reply dispatchSafely(const std::string& type, const nlohmann::json& msg);
+    // The reply or error message for `reply` (no state touched: any thread).
+    static std::string answerText(const nlohmann::json& id, const Reply& reply);
+    // Sends an answer; after a reply, runs what was to follow it (mAfterReply).
+    void sendAnswer(bool ok, std::string text);
     Reply openModel(const protocol::ModelOpenRequest& request);
     Reply createModel(const protocol::ModelCreateRequest& request);
     Reply saveModel(const protocol::ModelSaveRequest& request);
@@ -50,6 +60,10 @@ private:
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;
     bool mReplyDeferred = false;   // the message being handled is answered later
+    // A request runs on the request pool: later messages wait in mWaiting (the pool thread
+    // owns the session's state meanwhile).
+    bool mBusy = false;
+    std::deque<std::string> mWaiting;
     bool mClosed = false;
 };
 

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -135,6 +136,72 @@ TEST(Responsiveness, AJobBeingCompiledDoesNotHoldUpItsConnection)
         if (m.value("type", "") == "reply" || m.value("type", "") == "error") replyOrder.push_back(m["id"].get<int>());
     }
     EXPECT_EQ(replyOrder, (std::vector<int>{101, 100}));
+}
+
+} // namespace
+} // namespace tlmhub::test
+
+namespace tlmhub::test {
+namespace {
+
+// model.open parses the stored model on the request pool, not on an I/O thread: while more
+// connections than the server has I/O threads (4) open a large model (4000 components,
+// 10 MB), health probes still answer fast;
+// and a connection's next messages wait for the open, so an edit sent right behind it
+// applies to the model it opened and the replies come in order.
+TEST(Responsiveness, OpeningLargeModelsHoldsUpNeitherTheServerNorTheOrderOfMessages)
+{
+    constexpr int kOtherOpeners = 4;
+    ServerProcess server(freshTempDir("open-off-strand"));
+    HttpClient admin(server.port());
+    const std::string token = admin.login("admin", kAdminPassword);
+    const auto model = admin.request(http::verb::post, "/api/v1/models?name=x200",
+                                     readFile(kSharedDir / "bench-models" / "position-servo-x200.hmf"),
+                                     "application/xml");
+    ASSERT_EQ(model.status, 201) << model.body;
+    const std::int64_t id = model.json()["id"].get<std::int64_t>();
+
+    std::atomic<bool> opened{false};
+    std::vector<int> replyOrder;
+    std::string editReply;
+    std::thread opener([&] {
+        std::vector<std::unique_ptr<WsClient>> others;
+        for (int i = 0; i < kOtherOpeners; ++i) {
+            others.push_back(std::make_unique<WsClient>(server.port(), token));
+            others.back()->sendText(R"({"id": 1, "type": "model.open", "model_id": )" + std::to_string(id) + "}");
+        }
+        WsClient a(server.port(), token);
+        a.sendText(R"({"id": 1, "type": "model.open", "model_id": )" + std::to_string(id) + "}");
+        a.sendText(R"({"id": 2, "type": "model.settings", "stop": 7})");
+        a.sendText(R"({"id": 3, "type": "ping"})");
+        while (replyOrder.size() < 3) {
+            const nlohmann::json m = a.receive(120000);
+            if (m.is_null()) break;
+            const std::string type = m.value("type", "");
+            if (type != "reply" && type != "error") continue;
+            replyOrder.push_back(m["id"].get<int>());
+            if (m["id"] == 2) editReply = m.dump();
+        }
+        for (auto& other : others) other->receive(120000);
+        opened = true;
+    });
+    HttpClient probe(server.port());
+    int probes = 0, slow = 0;
+    Clock::duration slowest{};
+    while (!opened.load()) {
+        const auto sent = Clock::now();
+        EXPECT_EQ(probe.get("/api/v1/health").status, 200);
+        const auto took = Clock::now() - sent;
+        ++probes;
+        if (took > kProbeBound) ++slow;
+        slowest = std::max(slowest, took);
+    }
+    opener.join();
+    EXPECT_EQ(replyOrder, (std::vector<int>{1, 2, 3}));
+    EXPECT_NE(editReply.find("\"reply\""), std::string::npos) << "the edit applied to the opened model: " << editReply;
+    EXPECT_GT(probes, 0);
+    EXPECT_EQ(slow, 0) << "slowest probe of " << probes << ": "
+                       << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count() << " ms";
 }
 
 } // namespace
