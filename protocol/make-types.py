@@ -84,6 +84,11 @@ class Field:
     def declaration(self):
         if (self.nullable or not self.required) and not self.envelope:
             return f"std::optional<{self.type}> {self.name};"
+        # Containers start empty without an initializer, and must not have one: a container
+        # of a struct that is still incomplete here (System and Component hold each other)
+        # compiles with GCC but not with clang and libstdc++.
+        if self.type.startswith(("std::vector<", "std::map<")):
+            return f"{self.type} {self.name};"
         return f"{self.type} {self.name}{{}};"
 
 

@@ -187,7 +187,7 @@ void to_json(nlohmann::json& j, const PortRef& v);
 struct Connection {
     PortRef from{};
     PortRef to{};
-    std::vector<std::vector<double>> points{};
+    std::vector<std::vector<double>> points;
 };
 void from_json(const nlohmann::json& j, Connection& v);
 void to_json(nlohmann::json& j, const Connection& v);
@@ -209,10 +209,10 @@ struct System {
     double timestep{};
     bool inheritTimestep{};
     std::optional<SimulationSettings> simulation;
-    std::vector<SysParam> parameters{};
-    std::vector<SystemPort> ports{};
-    std::vector<Component> components{};
-    std::vector<Connection> connections{};
+    std::vector<SysParam> parameters;
+    std::vector<SystemPort> ports;
+    std::vector<Component> components;
+    std::vector<Connection> connections;
 };
 void from_json(const nlohmann::json& j, System& v);
 void to_json(nlohmann::json& j, const System& v);
@@ -223,8 +223,8 @@ struct Component {
     std::string type{};
     std::string kind{};
     Pose pose{};
-    std::vector<Port> ports{};
-    std::vector<Param> parameters{};
+    std::vector<Port> ports;
+    std::vector<Param> parameters;
     std::optional<System> system;
 };
 void from_json(const nlohmann::json& j, Component& v);
@@ -243,8 +243,8 @@ struct CatalogueEntry {
     std::string type{};
     std::string kind{};
     std::string domain{};
-    std::vector<CataloguePort> ports{};
-    std::vector<CatalogueParameter> parameters{};
+    std::vector<CataloguePort> ports;
+    std::vector<CatalogueParameter> parameters;
 };
 void from_json(const nlohmann::json& j, CatalogueEntry& v);
 void to_json(nlohmann::json& j, const CatalogueEntry& v);
@@ -437,15 +437,15 @@ void to_json(nlohmann::json& j, const JobInfo& v);
 struct ResultVariable {
     std::string name{};
     std::string unit{};
-    std::vector<double> data{};
+    std::vector<double> data;
 };
 void from_json(const nlohmann::json& j, ResultVariable& v);
 void to_json(nlohmann::json& j, const ResultVariable& v);
 
 // GET /jobs/{id}/results?format=json.
 struct ResultsJson {
-    std::vector<double> time{};
-    std::vector<ResultVariable> variables{};
+    std::vector<double> time;
+    std::vector<ResultVariable> variables;
 };
 void from_json(const nlohmann::json& j, ResultsJson& v);
 void to_json(nlohmann::json& j, const ResultsJson& v);
@@ -679,7 +679,7 @@ void from_json(const nlohmann::json& j, ModelGroupedData& v);
 void to_json(nlohmann::json& j, const ModelGroupedData& v);
 
 struct ModelUngroupedData {
-    std::vector<std::string> names{};
+    std::vector<std::string> names;
 };
 void from_json(const nlohmann::json& j, ModelUngroupedData& v);
 void to_json(nlohmann::json& j, const ModelUngroupedData& v);
@@ -755,8 +755,8 @@ struct FrameEvent {
     // "type": always "event.frame"
     std::int64_t jobId{};
     std::int64_t seq{};
-    std::vector<double> time{};
-    std::map<std::string, std::vector<double>> variables{};
+    std::vector<double> time;
+    std::map<std::string, std::vector<double>> variables;
     std::int64_t dropped{};
 };
 void from_json(const nlohmann::json& j, FrameEvent& v);
@@ -798,7 +798,7 @@ void to_json(nlohmann::json& j, const SysParamRemoveRequest& v);
 struct ModelGroupRequest {
     nlohmann::json id{};
     // "type": always "model.group"
-    std::vector<std::string> names{};
+    std::vector<std::string> names;
     std::string name{};
     std::optional<Pose> pose;
     std::optional<std::vector<std::string>> system;
@@ -845,7 +845,7 @@ struct BinaryFrameHeader {
     std::int64_t jobId{};
     std::int64_t seq{};
     std::int64_t timeSamples{};
-    std::vector<BinaryFrameHeaderVariablesItem> variables{};
+    std::vector<BinaryFrameHeaderVariablesItem> variables;
     std::int64_t dropped{};
 };
 void from_json(const nlohmann::json& j, BinaryFrameHeader& v);
