@@ -52,6 +52,12 @@ test('opens Position Servo and draws every component and connection', async ({ p
 });
 
 test('runs Position Servo: the plot fills while running and ends on the stored result', async ({ page, request }) => {
+    // The app asks for binary frames: no event.frame comes as JSON text.
+    let binaryFrames = 0, textFrames = 0;
+    page.on('websocket', (ws) => ws.on('framereceived', ({ payload }) => {
+        if (typeof payload !== 'string') binaryFrames++;
+        else if (payload.includes('"event.frame"')) textFrames++;
+    }));
     await login(page, 'alice');
     await openExample(page, SERVO);
     const variable = await plotVariable(page, 'Position_Sensor', 'out', 'Value');
@@ -88,6 +94,8 @@ test('runs Position Servo: the plot fills while running and ends on the stored r
     const shown = await plotted(page, variable);
     expect(shown[shown.length - 1]).toBe(stored[stored.length - 1]);
     expect(shown).toEqual(stored);
+    expect(binaryFrames).toBeGreaterThan(0);
+    expect(textFrames).toBe(0);
 
     // export: CSV of the plotted data, PNG of the plot
     const [csv] = await Promise.all([page.waitForEvent('download'), plot.getByRole('button', { name: 'CSV' }).click()]);
