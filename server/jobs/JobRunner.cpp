@@ -210,8 +210,15 @@ JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& contro
             }
             return finish(jobId, finalState, error, steps, nullptr);
         }
-        const Result result{encodeResult(logged), LiveFrameSource(root)};
-        return finish(jobId, finalState, error, steps, &result);
+        // Each worker thread keeps its buffer: no fresh pages for every result. A rare large
+        // result's memory goes back once it is stored.
+        constexpr std::size_t kKeptBufferBytes = 16u << 20;
+        thread_local std::string blob;
+        encodeResult(logged, blob);
+        const Result result{blob, LiveFrameSource(root)};
+        const JobState finished = finish(jobId, finalState, error, steps, &result);
+        if (blob.capacity() > kKeptBufferBytes) std::string().swap(blob);
+        return finished;
     } catch (const std::exception& e) {
         return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }

@@ -56,7 +56,7 @@ private:
     static void onProgress(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
     // A finished run's result: what is stored, and where its last frames come from.
     struct Result {
-        std::string blob;
+        const std::string& blob;
         LiveFrameSource samples;
     };
     JobState finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,

@@ -65,10 +65,11 @@ std::size_t appendCompressed(std::string& out, const double* values, std::size_t
     ZstdContexts& z = contexts();
     const std::size_t bytes = n * sizeof(double);
     z.shuffled.resize(bytes);
-    const auto* raw = reinterpret_cast<const unsigned char*>(values);
-    for (std::size_t b = 0; b < sizeof(double); ++b) {
-        unsigned char* plane = z.shuffled.data() + b * n;
-        for (std::size_t i = 0; i < n; ++i) plane[i] = raw[i * sizeof(double) + b];
+    unsigned char* planes = z.shuffled.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint64_t bits;
+        std::memcpy(&bits, values + i, sizeof bits);
+        for (std::size_t b = 0; b < sizeof(double); ++b) planes[b * n + i] = static_cast<unsigned char>(bits >> (8 * b));
     }
     const std::size_t at = out.size();
     out.resize(at + ZSTD_compressBound(bytes));
@@ -162,8 +163,15 @@ std::size_t uncompressedResultBytes(const ResultView& view)
 
 std::string encodeResult(const ResultView& view)
 {
-    // The index first, with each compressed size patched in once its column is written.
     std::string out;
+    encodeResult(view, out);
+    return out;
+}
+
+void encodeResult(const ResultView& view, std::string& out)
+{
+    // The index first, with each compressed size patched in once its column is written.
+    out.clear();
     out.append(kMagic, sizeof kMagic);
     put(out, kVersion);
     put<std::uint32_t>(out, static_cast<std::uint32_t>(view.numVariables() + 1));
@@ -189,29 +197,32 @@ std::string encodeResult(const ResultView& view)
         dataOf.push_back(firstOfSamples.try_emplace({v.port->node(), v.slot, samples}, own).first->second);
         addEntry(v.fullName, v.unit, samples, dataOf.back());
     }
-    auto patchSize = [&](std::size_t column, std::uint64_t bytes) {
-        std::memcpy(out.data() + sizeAt[column], &bytes, sizeof bytes);
-    };
-    patchSize(0, appendCompressed(out, time.data(), time.size()));
     // The stored columns are copied out of the log together (ResultView::copyData), into
     // scratch this thread keeps.
     std::vector<std::size_t> stored;
     std::vector<std::size_t> offsets;
     std::size_t values = 0;
+    std::size_t bound = out.size() + ZSTD_compressBound(time.size() * sizeof(double));
     for (std::size_t i = 0; i < view.numVariables(); ++i) {
         if (dataOf[i] != i + 1) continue;
         stored.push_back(i);
         offsets.push_back(values);
         values += view.count(i);
+        bound += ZSTD_compressBound(view.count(i) * sizeof(double));
     }
+    out.reserve(bound);   // one allocation: each column's resize in appendCompressed fits
     thread_local std::vector<double> samples;
     samples.resize(values);
     std::vector<double*> into;
     for (std::size_t offset : offsets) into.push_back(samples.data() + offset);
     view.copyData(stored, into);
+
+    auto patchSize = [&](std::size_t column, std::uint64_t bytes) {
+        std::memcpy(out.data() + sizeAt[column], &bytes, sizeof bytes);
+    };
+    patchSize(0, appendCompressed(out, time.data(), time.size()));
     for (std::size_t k = 0; k < stored.size(); ++k)
         patchSize(stored[k] + 1, appendCompressed(out, into[k], view.count(stored[k])));
-    return out;
 }
 
 std::optional<ResultTable> decodeResult(std::string_view blob, const std::vector<std::string>& variables)

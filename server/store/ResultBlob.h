@@ -25,6 +25,8 @@ namespace tlmhub::server {
 
 // The run's logged samples, in the view's order and names.
 std::string encodeResult(const ResultView& view);
+// The same into `out`, whose capacity is reused (a worker stores result after result).
+void encodeResult(const ResultView& view, std::string& out);
 // What the result weighs as float64 columns (ResultTable::byteSize of it), the size the
 // result limit applies to.
 std::size_t uncompressedResultBytes(const ResultView& view);
