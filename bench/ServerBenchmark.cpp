@@ -95,15 +95,20 @@ StreamFrame servoFrame(std::size_t variables)
     return frame;
 }
 
+// A new publication with the frame's samples: its JSON text is not cached yet.
+void republish(StreamFrame& frame)
+{
+    auto copy = std::make_shared<FrameSamples>();
+    copy->time = frame.parts[0]->time;
+    copy->columns = frame.parts[0]->columns;
+    frame.parts[0] = std::move(copy);
+}
+
 void BM_FrameJson(benchmark::State& state)
 {
     StreamFrame frame = servoFrame(static_cast<std::size_t>(state.range(0)));
     for (auto _ : state) {
-        // A new publication each time: the cached text is not reused.
-        auto copy = std::make_shared<FrameSamples>();
-        copy->time = frame.parts[0]->time;
-        copy->columns = frame.parts[0]->columns;
-        frame.parts[0] = copy;
+        republish(frame);
         benchmark::DoNotOptimize(frame.jsonText(0));
     }
 }
@@ -112,10 +117,7 @@ void BM_FrameBinary(benchmark::State& state)
 {
     StreamFrame frame = servoFrame(static_cast<std::size_t>(state.range(0)));
     for (auto _ : state) {
-        auto copy = std::make_shared<FrameSamples>();
-        copy->time = frame.parts[0]->time;
-        copy->columns = frame.parts[0]->columns;
-        frame.parts[0] = copy;
+        republish(frame);
         benchmark::DoNotOptimize(frame.binaryMessage(0));
     }
 }

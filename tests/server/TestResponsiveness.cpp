@@ -18,6 +18,16 @@ namespace http = boost::beast::http;
 using Clock = std::chrono::steady_clock;
 
 constexpr int kStudents = 40;
+
+// Stores the 4000-component bench model (10 MB) and returns its id.
+std::int64_t uploadX200(HttpClient& admin)
+{
+    const auto model = admin.request(http::verb::post, "/api/v1/models?name=x200",
+                                     readFile(kSharedDir / "bench-models" / "position-servo-x200.hmf"),
+                                     "application/xml");
+    EXPECT_EQ(model.status, 201) << model.body;
+    return model.status == 201 ? model.json()["id"].get<std::int64_t>() : 0;
+}
 constexpr int kMinProbes = 200;
 constexpr auto kProbeBound = std::chrono::milliseconds(500);
 
@@ -121,12 +131,9 @@ TEST(Responsiveness, AJobBeingCompiledDoesNotHoldUpItsConnection)
     ServerProcess server(freshTempDir("compile-off-strand"));
     HttpClient admin(server.port());
     const std::string token = admin.login("admin", kAdminPassword);
-    const auto model = admin.request(http::verb::post, "/api/v1/models?name=x200",
-                                     readFile(kSharedDir / "bench-models" / "position-servo-x200.hmf"),
-                                     "application/xml");
-    ASSERT_EQ(model.status, 201) << model.body;
+    const std::int64_t model = uploadX200(admin);
     WsClient ws(server.port(), token);
-    ASSERT_EQ(ws.call("model.open", {{"model_id", model.json()["id"]}})["type"], "reply");
+    ASSERT_EQ(ws.call("model.open", {{"model_id", model}})["type"], "reply");
     ws.sendText(R"({"id": 100, "type": "simulate.start"})");
     ws.sendText(R"({"id": 101, "type": "ping"})");
     std::vector<int> replyOrder;
@@ -137,12 +144,6 @@ TEST(Responsiveness, AJobBeingCompiledDoesNotHoldUpItsConnection)
     }
     EXPECT_EQ(replyOrder, (std::vector<int>{101, 100}));
 }
-
-} // namespace
-} // namespace tlmhub::test
-
-namespace tlmhub::test {
-namespace {
 
 // model.open parses the stored model on the request pool, not on an I/O thread: while more
 // connections than the server has I/O threads (4) open a large model (4000 components,
@@ -155,11 +156,7 @@ TEST(Responsiveness, OpeningLargeModelsHoldsUpNeitherTheServerNorTheOrderOfMessa
     ServerProcess server(freshTempDir("open-off-strand"));
     HttpClient admin(server.port());
     const std::string token = admin.login("admin", kAdminPassword);
-    const auto model = admin.request(http::verb::post, "/api/v1/models?name=x200",
-                                     readFile(kSharedDir / "bench-models" / "position-servo-x200.hmf"),
-                                     "application/xml");
-    ASSERT_EQ(model.status, 201) << model.body;
-    const std::int64_t id = model.json()["id"].get<std::int64_t>();
+    const std::int64_t id = uploadX200(admin);
 
     std::atomic<bool> opened{false};
     std::vector<int> replyOrder;

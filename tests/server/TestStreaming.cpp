@@ -101,6 +101,19 @@ std::vector<nlohmann::json> eventsUntilDone(WsClient& ws, std::int64_t job)
     }
 }
 
+// The samples of the events' frames, concatenated per variable ("time" too).
+std::map<std::string, std::vector<double>> concatenatedFrames(const std::vector<nlohmann::json>& events)
+{
+    std::map<std::string, std::vector<double>> streamed;
+    for (const auto& e : events) {
+        if (e["type"] != "event.frame") continue;
+        for (const auto& t : e["time"]) streamed["time"].push_back(t.get<double>());
+        for (const auto& [name, values] : e["variables"].items())
+            for (const auto& v : values) streamed[name].push_back(v.get<double>());
+    }
+    return streamed;
+}
+
 struct ServerWithServo {
     explicit ServerWithServo(const std::string& name, std::vector<std::string> flags)
         : dir(freshTempDir(name)), server(dir, withExamples(std::move(flags))), admin(server.port())
@@ -140,7 +153,6 @@ TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
     ASSERT_FALSE(events.empty());
     EXPECT_EQ(events.back()["state"], "done") << events.back().dump();
 
-    std::map<std::string, std::vector<double>> streamed;
     std::uint64_t seq = 0, frames = 0, merged = 0;
     for (const auto& e : events) {
         ASSERT_NE(e["type"], "event.resync") << "the byte limit is far above the stream";
@@ -148,11 +160,9 @@ TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
         ++frames;
         EXPECT_EQ(e["seq"].get<std::uint64_t>(), seq++) << "seq counts the frames sent";
         merged += e["dropped"].get<std::uint64_t>();
-        for (const auto& t : e["time"]) streamed["time"].push_back(t.get<double>());
         ASSERT_EQ(e["variables"].size(), 16u) << e["variables"].dump().substr(0, 300);
-        for (const auto& [name, values] : e["variables"].items())
-            for (const auto& v : values) streamed[name].push_back(v.get<double>());
     }
+    auto streamed = concatenatedFrames(events);
     EXPECT_GT(merged, 0u) << "the client was slow, so frames were merged";
     std::vector<std::string> names;
     for (const auto& [name, values] : streamed)
@@ -217,16 +227,6 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
     WsClient json(s.server.port(), s.token);
     ASSERT_EQ(json.call("log.subscribe", {{"job_id", job}})["type"], "reply");
 
-    auto concatenate = [](const std::vector<nlohmann::json>& events) {
-        std::map<std::string, std::vector<double>> streamed;
-        for (const auto& e : events) {
-            if (e["type"] != "event.frame") continue;
-            for (const auto& t : e["time"]) streamed["time"].push_back(t.get<double>());
-            for (const auto& [name, values] : e["variables"].items())
-                for (const auto& v : values) streamed[name].push_back(v.get<double>());
-        }
-        return streamed;
-    };
     const auto binaryEvents = eventsUntilDone(binary, job);
     ASSERT_FALSE(binaryEvents.empty());
     EXPECT_EQ(binaryEvents.back()["state"], "done") << binaryEvents.back().dump();
@@ -239,7 +239,7 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
         EXPECT_TRUE(SchemaValidator::protocol().validate("BinaryFrameHeader", header, why)) << why;
     }
 
-    const auto streamed = concatenate(binaryEvents);
+    const auto streamed = concatenatedFrames(binaryEvents);
     ASSERT_EQ(streamed.size(), 17u) << "time and the first 16 variables";
     std::vector<std::string> names;
     for (const auto& [name, values] : streamed)
@@ -253,7 +253,7 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
 
     // The JSON subscriber came a little later: its first frame may hold more, but all in all
     // it has the same samples, and no binary message.
-    const auto jsonStreamed = concatenate(eventsUntilDone(json, job));
+    const auto jsonStreamed = concatenatedFrames(eventsUntilDone(json, job));
     EXPECT_TRUE(json.binaryHeaders.empty());
     for (const auto& [name, values] : stored) EXPECT_TRUE(bitwiseEqual(jsonStreamed.at(name), values)) << name;
 }
