@@ -114,6 +114,23 @@ std::map<std::string, std::vector<double>> concatenatedFrames(const std::vector<
     return streamed;
 }
 
+// Time and the 16 streamed variables, concatenated, equal the job's stored columns bit for bit.
+void expectStreamedEqualsStored(HttpClient& admin, std::int64_t job,
+                                const std::map<std::string, std::vector<double>>& streamed)
+{
+    std::vector<std::string> names;
+    for (const auto& [name, values] : streamed)
+        if (name != "time") names.push_back(name);
+    ASSERT_EQ(names.size(), 16u);
+    const auto stored = storedColumns(admin, job, names);
+    ASSERT_EQ(stored.size(), 17u);
+    for (const auto& [name, values] : stored) {
+        ASSERT_EQ(streamed.count(name), 1u) << name;
+        EXPECT_EQ(streamed.at(name).size(), values.size()) << name;
+        EXPECT_TRUE(bitwiseEqual(streamed.at(name), values)) << name;
+    }
+}
+
 struct ServerWithServo {
     explicit ServerWithServo(const std::string& name, std::vector<std::string> flags)
         : dir(freshTempDir(name)), server(dir, withExamples(std::move(flags))), admin(server.port())
@@ -153,26 +170,16 @@ TEST(Streaming, ASlowReaderGetsEverySampleInMergedFrames)
     ASSERT_FALSE(events.empty());
     EXPECT_EQ(events.back()["state"], "done") << events.back().dump();
 
-    std::uint64_t seq = 0, frames = 0, merged = 0;
+    std::uint64_t seq = 0, merged = 0;
     for (const auto& e : events) {
         ASSERT_NE(e["type"], "event.resync") << "the byte limit is far above the stream";
         if (e["type"] != "event.frame") continue;
-        ++frames;
         EXPECT_EQ(e["seq"].get<std::uint64_t>(), seq++) << "seq counts the frames sent";
         merged += e["dropped"].get<std::uint64_t>();
         ASSERT_EQ(e["variables"].size(), 16u) << e["variables"].dump().substr(0, 300);
     }
-    auto streamed = concatenatedFrames(events);
     EXPECT_GT(merged, 0u) << "the client was slow, so frames were merged";
-    std::vector<std::string> names;
-    for (const auto& [name, values] : streamed)
-        if (name != "time") names.push_back(name);
-    const auto stored = storedColumns(s.admin, job, names);
-    ASSERT_EQ(stored.size(), 17u);
-    for (const auto& [name, values] : stored) {
-        EXPECT_EQ(streamed[name].size(), values.size()) << name << " in " << frames << " frames";
-        EXPECT_TRUE(bitwiseEqual(streamed[name], values)) << name;
-    }
+    expectStreamedEqualsStored(s.admin, job, concatenatedFrames(events));
 }
 
 // Past the byte limit the waiting samples go, the client gets event.resync (and no more
@@ -239,21 +246,10 @@ TEST(Streaming, BinaryFramesCarryExactlyTheStoredSamples)
         EXPECT_TRUE(SchemaValidator::protocol().validate("BinaryFrameHeader", header, why)) << why;
     }
 
-    const auto streamed = concatenatedFrames(binaryEvents);
-    ASSERT_EQ(streamed.size(), 17u) << "time and the first 16 variables";
-    std::vector<std::string> names;
-    for (const auto& [name, values] : streamed)
-        if (name != "time") names.push_back(name);
-    const auto stored = storedColumns(s.admin, job, names);
-    ASSERT_EQ(stored.size(), 17u);
-    for (const auto& [name, values] : stored) {
-        EXPECT_EQ(streamed.at(name).size(), values.size()) << name;
-        EXPECT_TRUE(bitwiseEqual(streamed.at(name), values)) << name;
-    }
+    expectStreamedEqualsStored(s.admin, job, concatenatedFrames(binaryEvents));
 
     // The JSON subscriber came a little later: its first frame may hold more, but all in all
     // it has the same samples, and no binary message.
-    const auto jsonStreamed = concatenatedFrames(eventsUntilDone(json, job));
+    expectStreamedEqualsStored(s.admin, job, concatenatedFrames(eventsUntilDone(json, job)));
     EXPECT_TRUE(json.binaryHeaders.empty());
-    for (const auto& [name, values] : stored) EXPECT_TRUE(bitwiseEqual(jsonStreamed.at(name), values)) << name;
 }
