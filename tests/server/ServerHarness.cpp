@@ -255,14 +255,14 @@ std::string rawExchange(unsigned short port, const std::string& bytes, int timeo
     return received;
 }
 
-nlohmann::json WsClient::call(const std::string& type, nlohmann::json fields)
+nlohmann::json WsClient::call(const std::string& type, nlohmann::json fields, int timeoutMs)
 {
     const int id = mNextId++;
     fields["id"] = id;
     fields["type"] = type;
     sendText(fields.dump());
     for (int i = 0; i < 100000; ++i) {
-        nlohmann::json m = receive();
+        nlohmann::json m = receive(timeoutMs);
         if (m.is_null()) return m;
         if (m.contains("id") && m["id"] == id) return m;
         events.push_back(std::move(m));

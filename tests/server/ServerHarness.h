@@ -79,9 +79,10 @@ public:
     nlohmann::json receive(int timeoutMs = 10000);
     // After receive() returned null: whether the server closed the connection (not a timeout).
     bool closedByServer() const;
-    // Sends {"id", "type", ...fields} and returns the reply or error with that id; events
-    // that arrive in between are kept in `events`.
-    nlohmann::json call(const std::string& type, nlohmann::json fields = nlohmann::json::object());
+    // Sends {"id", "type", ...fields} and returns the reply or error with that id (null when
+    // no message comes for `timeoutMs`); events that arrive in between are kept in `events`.
+    nlohmann::json call(const std::string& type, nlohmann::json fields = nlohmann::json::object(),
+                        int timeoutMs = 10000);
     std::vector<nlohmann::json> events;
     std::vector<nlohmann::json> binaryHeaders;
     nlohmann::json hello;
