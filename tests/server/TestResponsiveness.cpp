@@ -148,7 +148,7 @@ TEST(Responsiveness, AJobBeingCompiledDoesNotHoldUpItsConnection)
 
 // model.open parses the stored model on the request pool, not on an I/O thread: while more
 // connections than the server has I/O threads (4) open a large model (4000 components,
-// 10 MB), health probes still answer fast;
+// 10 MB), no health probe waits for an open;
 // and a connection's next messages wait for the open, so an edit sent right behind it
 // applies to the model it opened and the replies come in order.
 TEST(Responsiveness, OpeningLargeModelsHoldsUpNeitherTheServerNorTheOrderOfMessages)
@@ -159,6 +159,7 @@ TEST(Responsiveness, OpeningLargeModelsHoldsUpNeitherTheServerNorTheOrderOfMessa
     const std::string token = admin.login("admin", kAdminPassword);
     const std::int64_t id = uploadX200(admin);
 
+    const auto began = Clock::now();
     std::atomic<bool> opened{false};
     std::vector<int> replyOrder;
     std::string editReply;
@@ -184,22 +185,27 @@ TEST(Responsiveness, OpeningLargeModelsHoldsUpNeitherTheServerNorTheOrderOfMessa
         opened = true;
     });
     HttpClient probe(server.port());
-    int probes = 0, slow = 0;
+    int probes = 0;
     Clock::duration slowest{};
     while (!opened.load()) {
         const auto sent = Clock::now();
         EXPECT_EQ(probe.get("/api/v1/health").status, 200);
         const auto took = Clock::now() - sent;
         ++probes;
-        if (took > kProbeBound) ++slow;
         slowest = std::max(slowest, took);
     }
     opener.join();
     EXPECT_EQ(replyOrder, (std::vector<int>{1, 2, 3}));
     EXPECT_NE(editReply.find("\"reply\""), std::string::npos) << "the edit applied to the opened model: " << editReply;
     EXPECT_GT(probes, 0);
-    EXPECT_EQ(slow, 0) << "slowest probe of " << probes << ": "
-                       << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count() << " ms";
+    // An open on an I/O thread holds its probes for most of the time the opens take (1.4 s
+    // of about 3 s in Release); off them, a probe waits only for a share of the CPU. Relative,
+    // because the opens take a minute under the sanitizers.
+    const auto opening = Clock::now() - began;
+    EXPECT_LT(slowest * 4, opening) << "slowest probe of " << probes << ": "
+                                    << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count()
+                                    << " ms while the opens took "
+                                    << std::chrono::duration_cast<std::chrono::milliseconds>(opening).count() << " ms";
 }
 
 } // namespace
