@@ -1,5 +1,6 @@
 #include "core/ResultTable.h"
 
+#include "core/LittleEndian.h"
 #include "core/ResultView.h"
 #include "core/System.h"
 
@@ -18,86 +19,40 @@ namespace {
 constexpr char kMagic[4] = {'T', 'L', 'R', 'T'};
 constexpr std::uint32_t kVersion = 1;
 
-template <typename T>
-void putLittleEndian(std::string& out, T value)
-{
-    for (std::size_t i = 0; i < sizeof(T); ++i)
-        out.push_back(static_cast<char>((value >> (8 * i)) & 0xFF));
-}
-
 void putDoubles(std::string& out, const std::vector<double>& values)
 {
-    putLittleEndian<std::uint64_t>(out, values.size());
+    littleEndian::put<std::uint64_t>(out, values.size());
     if constexpr (std::endian::native == std::endian::little) {
         out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
     } else {
-        for (double v : values) putLittleEndian(out, std::bit_cast<std::uint64_t>(v));
+        for (double v : values) littleEndian::put(out, std::bit_cast<std::uint64_t>(v));
     }
 }
 
-void putString(std::string& out, const std::string& s)
+bool getDoubles(littleEndian::Reader& in, std::vector<double>& values)
 {
-    putLittleEndian<std::uint32_t>(out, static_cast<std::uint32_t>(s.size()));
-    out += s;
+    std::uint64_t n = 0;
+    if (!in.get(n) || n > in.remaining() / sizeof(double)) return false;
+    values.resize(n);
+    if constexpr (std::endian::native == std::endian::little) {
+        std::string_view bytes;
+        in.take(n * sizeof(double), bytes);
+        std::memcpy(values.data(), bytes.data(), bytes.size());
+    } else {
+        for (auto& v : values) {
+            std::uint64_t raw = 0;
+            in.get(raw);
+            v = std::bit_cast<double>(raw);
+        }
+    }
+    return true;
 }
 
-class Reader {
-public:
-    explicit Reader(const std::string& bytes) : mBytes(bytes) {}
-
-    template <typename T>
-    bool get(T& value)
-    {
-        if (mBytes.size() - mPos < sizeof(T)) return false;
-        T v = 0;
-        for (std::size_t i = 0; i < sizeof(T); ++i)
-            v |= static_cast<T>(static_cast<unsigned char>(mBytes[mPos + i])) << (8 * i);
-        mPos += sizeof(T);
-        value = v;
-        return true;
-    }
-
-    bool getDoubles(std::vector<double>& values)
-    {
-        std::uint64_t n = 0;
-        if (!get(n) || n > (mBytes.size() - mPos) / sizeof(double)) return false;
-        values.resize(n);
-        if constexpr (std::endian::native == std::endian::little) {
-            std::memcpy(values.data(), mBytes.data() + mPos, n * sizeof(double));
-            mPos += n * sizeof(double);
-        } else {
-            for (auto& v : values) {
-                std::uint64_t raw = 0;
-                get(raw);
-                v = std::bit_cast<double>(raw);
-            }
-        }
-        return true;
-    }
-
-    bool getString(std::string& s)
-    {
-        std::uint32_t n = 0;
-        if (!get(n) || n > mBytes.size() - mPos) return false;
-        s.assign(mBytes, mPos, n);
-        mPos += n;
-        return true;
-    }
-
-    bool getMagic()
-    {
-        if (mBytes.size() < sizeof kMagic || std::memcmp(mBytes.data(), kMagic, sizeof kMagic) != 0)
-            return false;
-        mPos = sizeof kMagic;
-        return true;
-    }
-
-    bool atEnd() const { return mPos == mBytes.size(); }
-
-private:
-    const std::string& mBytes;
-    std::size_t mPos = 0;
-};
+bool getMagic(littleEndian::Reader& in)
+{
+    std::string_view magic;
+    return in.take(sizeof kMagic, magic) && std::memcmp(magic.data(), kMagic, sizeof kMagic) == 0;
+}
 
 // "%.17g" (std::to_chars with general format and a precision is specified as printf's %g).
 void appendNumber(std::string& out, double v)
@@ -189,12 +144,12 @@ std::string ResultTable::serialize() const
     std::string out;
     out.reserve(byteSize());
     out.append(kMagic, sizeof kMagic);
-    putLittleEndian(out, kVersion);
+    littleEndian::put(out, kVersion);
     putDoubles(out, time);
-    putLittleEndian<std::uint32_t>(out, static_cast<std::uint32_t>(columns.size()));
+    littleEndian::put(out, static_cast<std::uint32_t>(columns.size()));
     for (const auto& c : columns) {
-        putString(out, c.name);
-        putString(out, c.unit);
+        littleEndian::putString(out, c.name);
+        littleEndian::putString(out, c.unit);
         putDoubles(out, c.data);
     }
     return out;
@@ -202,14 +157,14 @@ std::string ResultTable::serialize() const
 
 bool ResultTable::deserialize(const std::string& bytes, ResultTable& out)
 {
-    Reader in(bytes);
+    littleEndian::Reader in(bytes);
     std::uint32_t version = 0, ncols = 0;
     ResultTable table;
-    if (!in.getMagic() || !in.get(version) || version != kVersion) return false;
-    if (!in.getDoubles(table.time) || !in.get(ncols)) return false;
+    if (!getMagic(in) || !in.get(version) || version != kVersion) return false;
+    if (!getDoubles(in, table.time) || !in.get(ncols)) return false;
     for (std::uint32_t i = 0; i < ncols; ++i) {
         ResultColumn c;
-        if (!in.getString(c.name) || !in.getString(c.unit) || !in.getDoubles(c.data)) return false;
+        if (!in.getString(c.name) || !in.getString(c.unit) || !getDoubles(in, c.data)) return false;
         table.columns.push_back(std::move(c));
     }
     if (!in.atEnd()) return false;

@@ -1,5 +1,7 @@
 #include "server/store/ResultBlob.h"
 
+#include "core/LittleEndian.h"
+
 #include <zstd.h>
 
 #include <bit>
@@ -45,20 +47,6 @@ ZstdContexts& contexts()
     return c;
 }
 
-template <typename T>
-void put(std::string& out, T value)
-{
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    out.append(bytes, sizeof(T));
-}
-
-void putString(std::string& out, const std::string& s)
-{
-    put<std::uint32_t>(out, static_cast<std::uint32_t>(s.size()));
-    out += s;
-}
-
 // Appends the column, shuffled and compressed; returns its compressed size.
 std::size_t appendCompressed(std::string& out, const double* values, std::size_t n)
 {
@@ -96,39 +84,6 @@ bool decompress(std::string_view compressed, std::uint64_t samples, std::vector<
     }
     return true;
 }
-
-class Reader {
-public:
-    explicit Reader(std::string_view bytes) : mBytes(bytes) {}
-    template <typename T>
-    bool get(T& value)
-    {
-        if (mBytes.size() - mPos < sizeof(T)) return false;
-        std::memcpy(&value, mBytes.data() + mPos, sizeof(T));
-        mPos += sizeof(T);
-        return true;
-    }
-    bool getString(std::string& s)
-    {
-        std::uint32_t n = 0;
-        if (!get(n) || mBytes.size() - mPos < n) return false;
-        s.assign(mBytes.substr(mPos, n));
-        mPos += n;
-        return true;
-    }
-    bool skip(std::size_t n, std::string_view& skipped)
-    {
-        if (mBytes.size() - mPos < n) return false;
-        skipped = mBytes.substr(mPos, n);
-        mPos += n;
-        return true;
-    }
-    bool atEnd() const { return mPos == mBytes.size(); }
-
-private:
-    std::string_view mBytes;
-    std::size_t mPos = 0;
-};
 
 struct IndexEntry {
     std::string name, unit;
@@ -173,16 +128,16 @@ void encodeResult(const ResultView& view, std::string& out)
     // The index first, with each compressed size patched in once its column is written.
     out.clear();
     out.append(kMagic, sizeof kMagic);
-    put(out, kVersion);
-    put<std::uint32_t>(out, static_cast<std::uint32_t>(view.numVariables() + 1));
+    littleEndian::put(out, kVersion);
+    littleEndian::put(out, static_cast<std::uint32_t>(view.numVariables() + 1));
     std::vector<std::size_t> sizeAt;
     auto addEntry = [&](const std::string& name, const std::string& unit, std::uint64_t samples, std::uint32_t dataOf) {
-        putString(out, name);
-        putString(out, unit);
-        put(out, samples);
-        put(out, dataOf);
+        littleEndian::putString(out, name);
+        littleEndian::putString(out, unit);
+        littleEndian::put(out, samples);
+        littleEndian::put(out, dataOf);
         sizeAt.push_back(out.size());
-        put<std::uint64_t>(out, 0);
+        littleEndian::put<std::uint64_t>(out, 0);
     };
     const auto time = view.time();
     addEntry("", "s", time.size(), 0);
@@ -227,10 +182,11 @@ void encodeResult(const ResultView& view, std::string& out)
 
 std::optional<ResultTable> decodeResult(std::string_view blob, const std::vector<std::string>& variables)
 {
-    Reader in(blob);
-    char magic[4];
+    littleEndian::Reader in(blob);
+    std::string_view magic;
     std::uint32_t version = 0, columns = 0;
-    if (!in.get(magic) || std::memcmp(magic, kMagic, sizeof kMagic) != 0 || !in.get(version)) return std::nullopt;
+    if (!in.take(sizeof kMagic, magic) || std::memcmp(magic.data(), kMagic, sizeof kMagic) != 0 || !in.get(version))
+        return std::nullopt;
     if (version == 1) return decodeVersion1(blob, variables);
     if (version != kVersion || !in.get(columns) || columns == 0) return std::nullopt;
     std::vector<IndexEntry> index(columns);
@@ -245,7 +201,7 @@ std::optional<ResultTable> decodeResult(std::string_view blob, const std::vector
             return std::nullopt;
     }
     for (IndexEntry& e : index)
-        if (!in.skip(e.compressedBytes, e.compressed)) return std::nullopt;
+        if (!in.take(e.compressedBytes, e.compressed)) return std::nullopt;
     if (!in.atEnd()) return std::nullopt;
 
     // Each stored column is decompressed at most once, however many variables share it.
