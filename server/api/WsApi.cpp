@@ -74,7 +74,7 @@ void WsApi::onClose()
 
 void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
 {
-    mSender->send(toJsonText(protocol::ErrorReply{.id = id, .error = {.code = code, .message = message}}));
+    mSender->send(answerText(id, failure(code, message)));
 }
 
 void WsApi::onMessage(const std::string& text)
