@@ -1,11 +1,11 @@
 #include "core/hmf/HmfSaver.h"
 
+#include "core/SystemConnections.h"
 #include "core/hmf/PreservedXml.h"
 
 #include <pugixml.hpp>
 
 #include <fstream>
-#include <set>
 #include <sstream>
 
 namespace tlmhub {
@@ -103,47 +103,15 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
     }
     for (const std::string& other : s.preservedObjectsXml) preserved::appendFragment(objects, other);
 
-    // Each connection once: walk ports of sub-components and own system ports.
     pugi::xml_node conns = e.append_child("connections");
-    std::set<std::pair<const Port*, const Port*>> written;
-    auto nameOf = [&s](const Port* p) { return p->component() == &s ? p->name() : p->component()->name(); };
-    auto emit = [&](const Port* a, const Port* b) {
-        const Port* pa = a->parentMultiport ? a->parentMultiport : a;
-        const Port* pb = b->parentMultiport ? b->parentMultiport : b;
-        if (written.count({b, a}) || written.count({a, b})) return;
-        // Only connections made in this system (both ends visible from here).
-        auto visible = [&s](const Port* p) {
-            return p->component() == &s || p->component()->parentSystem() == &s;
-        };
-        if (!visible(pa) || !visible(pb)) return;
-        written.insert({a, b});
-        // GUI extras (the line's points) were stored in the direction the file listed the
-        // connection; write it in that direction so the points still run start to end.
-        auto it = s.preservedConnectionXml.find(
-            preserved::connectionKey(nameOf(pa), pa->name(), nameOf(pb), pb->name()));
-        if (it == s.preservedConnectionXml.end()) {
-            it = s.preservedConnectionXml.find(
-                preserved::connectionKey(nameOf(pb), pb->name(), nameOf(pa), pa->name()));
-            if (it != s.preservedConnectionXml.end()) std::swap(pa, pb);
-        }
+    forEachConnection(s, [&conns](const SystemConnection& connection) {
         pugi::xml_node c = conns.append_child("connect");
-        c.append_attribute("startcomponent") = nameOf(pa).c_str();
-        c.append_attribute("startport") = pa->name().c_str();
-        c.append_attribute("endcomponent") = nameOf(pb).c_str();
-        c.append_attribute("endport") = pb->name().c_str();
-        if (it != s.preservedConnectionXml.end()) preserved::appendFragment(c, it->second);
-    };
-    // Connections in a stable order: by connection order of the ports.
-    std::vector<const Port*> ports;
-    for (Component* c : s.componentsInOrder())
-        for (Port* p : c->ports()) {
-            if (p->isMultiport()) for (const auto& sub : p->subPorts) ports.push_back(sub.get());
-            else ports.push_back(p);
-        }
-    for (Port* p : s.ports())
-        if (p->kind() == PortKind::System) ports.push_back(p);
-    for (const Port* p : ports)
-        for (const Port* q : p->connectedPorts) emit(p, q);
+        c.append_attribute("startcomponent") = connection.startComponent.c_str();
+        c.append_attribute("startport") = connection.startPort.c_str();
+        c.append_attribute("endcomponent") = connection.endComponent.c_str();
+        c.append_attribute("endport") = connection.endPort.c_str();
+        if (connection.preservedXml) preserved::appendFragment(c, *connection.preservedXml);
+    });
 }
 
 } // namespace
