@@ -50,12 +50,13 @@ int runCommand(const std::vector<std::string>& args)
         return 2;
     }
     const std::string& path = opt.positional[0];
-    LoadedModel model = loadHmfFile(path);
-    if (model.hasErrors()) {
-        std::cerr << "error: " << model.firstError() << "\n";
+    LoadedModel loaded = loadHmfFile(path);
+    if (loaded.hasErrors()) {
+        std::cerr << "error: " << loaded.firstError() << "\n";
         return 1;
     }
-    System& root = *model.root;
+    Model model(std::move(loaded.root));
+    const System& root = model.root();
     double start = root.startTime, stop = root.stopTime, step = root.desiredTimestep;
     double samples = static_cast<double>(root.requestedLogSamples);
     std::string err;
@@ -75,13 +76,14 @@ int runCommand(const std::vector<std::string>& args)
     }
     const std::string csv = opt.value("csv");
     const bool wantsHash = opt.has("sha256");
-    // Continue a run from half time and compare with the whole run (needs --sha256).
+    // The run is of a copy of the model (compile(const Model&)). With --sha256, also reset and
+    // continue a run from half time, and run the loaded model itself: the same results.
     const bool checkRerun = opt.has("check-rerun");
     SimulationSettings settings{start, stop, step, static_cast<std::size_t>(samples)};
     if ((!csv.empty() || wantsHash) && *settings.logSamples == 0) settings.logSamples = 1024;
 
     const auto t0 = std::chrono::steady_clock::now();
-    Result<Simulation> compiled = compile(root, settings);
+    Result<Simulation> compiled = compile(model, settings);
     if (!compiled) {
         std::cerr << "error: " << path << ": " << compiled.status().message() << "\n";
         return 1;
@@ -104,7 +106,7 @@ int runCommand(const std::vector<std::string>& args)
         return 1;
     }
     std::string where;
-    if (opt.has("check-finite") && findNonFinite(root, where)) {
+    if (opt.has("check-finite") && findNonFinite(sim.system(), where)) {
         std::cerr << "error: " << path << ": non-finite value: " << where << "\n";
         return 1;
     }
@@ -130,6 +132,17 @@ int runCommand(const std::vector<std::string>& args)
                                  "one fresh run %s (%s)\n",
                                  path.c_str(), half, rerunHash.c_str(), hash.c_str(),
                                  again ? "results differ" : again.message().c_str());
+                    return 1;
+                }
+                Result<Simulation> original = compile(std::move(model), settings);
+                Status ran = original ? original->run(runOptions) : original.status();
+                const std::string originalHash =
+                    ran ? csvSha256(ResultTable::fromView(original->results())) : std::string();
+                if (originalHash != hash) {
+                    std::fprintf(stderr,
+                                 "error: %s: the loaded model gives csv sha256 %s, its copy %s (%s)\n",
+                                 path.c_str(), originalHash.c_str(), hash.c_str(),
+                                 ran ? "results differ" : ran.message().c_str());
                     return 1;
                 }
             }

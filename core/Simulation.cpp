@@ -1,6 +1,7 @@
 #include "core/Simulation.h"
 
 #include "core/ParameterPath.h"
+#include "core/SystemCopy.h"
 #include "core/numerics/StepCount.h"
 
 #include <cmath>
@@ -59,6 +60,18 @@ Result<Simulation> compile(std::unique_ptr<System> root, const SimulationSetting
     Result<Simulation> compiled = compile(*root, settings);
     if (compiled) compiled->mOwnedRoot = std::move(root);
     return compiled;
+}
+
+Result<Simulation> compile(const Model& model, const SimulationSettings& settings)
+{
+    Result<std::unique_ptr<System>> copy = copySystem(model.root());
+    if (!copy) return copy.status();
+    return compile(std::move(*copy), settings);
+}
+
+Result<Simulation> compile(Model&& model, const SimulationSettings& settings)
+{
+    return compile(model.releaseRoot(), settings);
 }
 
 Simulation::Simulation(System& root, double start, double stop, double timestep)

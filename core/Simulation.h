@@ -16,10 +16,12 @@
 // reset() returns to compiled from any state but running. Log storage is allocated when a
 // run starts from compiled, not at compile.
 //
-// The System is the edit graph and holds what the step loop walks (run lists, node block,
-// log schedule and storage). compile(System&) borrows it: it must outlive the Simulation and
-// not be edited while one exists. compile(std::unique_ptr<System>) hands it over: the
-// Simulation then stands alone (a server holds queued jobs this way).
+// compile(const Model&) runs a copy of the model: the Model stays editable and may be
+// compiled again, also on other threads at once. compile(Model&&) and
+// compile(std::unique_ptr<System>) hand the model over instead (no copy): the Simulation then
+// stands alone (a server holds queued jobs this way). compile(System&) borrows the system: it
+// must outlive the Simulation and not be edited while one exists.
+#include "core/Model.h"
 #include "core/ResultView.h"
 #include "core/Status.h"
 #include "core/System.h"
@@ -126,5 +128,8 @@ private:
 Result<Simulation> compile(System& root, const SimulationSettings& settings = {});
 // The same, and the Simulation owns the System from then on.
 Result<Simulation> compile(std::unique_ptr<System> root, const SimulationSettings& settings = {});
+// The same for a model: a copy of it (the Model stays as it is), or the model itself.
+Result<Simulation> compile(const Model& model, const SimulationSettings& settings = {});
+Result<Simulation> compile(Model&& model, const SimulationSettings& settings = {});
 
 } // namespace tlmhub
