@@ -1,5 +1,6 @@
 #include "server/api/WsApi.h"
 
+#include "server/api/CoreErrorCodes.h"
 #include "server/api/QueuedFrame.h"
 #include "server/app/HandlerPools.h"
 #include "server/auth/AccessPolicy.h"
@@ -9,6 +10,8 @@
 #include "server/protocol/SchemaValidator.h"
 #include "server/protocol/UntrustedJson.h"
 #include "server/store/ModelName.h"
+
+#include "core/SystemCopy.h"
 
 namespace tlmhub::server {
 
@@ -240,20 +243,25 @@ void WsApi::subscribeToJob(std::int64_t jobId, std::vector<std::string> variable
 WsApi::Reply WsApi::startSimulation(const protocol::SimulateStartRequest& start)
 {
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
+    // The job runs a copy of the model as it is now; later edits do not reach it.
+    Result<std::unique_ptr<System>> copy = copySystem(*mSession.root());
+    if (!copy) return failure(protocolErrorCode(copy.status().code()), copy.status().message());
     JobRequest request;
     request.ownerId = mUser.id;
     request.modelId = mModelId;
-    request.hmf = mSession.saveHmf();
     if (start.start) request.settings.start = *start.start;
     if (start.step) request.settings.step = *start.step;
     if (start.stop) request.settings.stop = *start.stop;
     if (start.logSamples) request.settings.logSamples = static_cast<std::size_t>(*start.logSamples);
-    // Compiling a large model takes a while: it happens on the request pool, and the reply
-    // comes back through the connection's strand. Other messages are answered meanwhile.
+    // Saving the model's text (the store keeps it for reruns) and compiling take a while on
+    // a large model: both happen on the request pool, and the reply comes back through the
+    // connection's strand. Other messages are answered meanwhile.
     mReplyDeferred = true;
     mServices.pools.runRequest([weak = weak_from_this(), sender = mSender, &queue = mServices.queue,
-                                request = std::move(request), start] {
-        JobQueue::Submitted submitted = queue.submit(request);
+                                request = std::move(request), start,
+                                model = std::make_shared<Model>(std::move(*copy))]() mutable {
+        request.hmf = model->toHmf();
+        JobQueue::Submitted submitted = queue.submit(request, std::move(*model));
         sender->runOnConnection([weak, submitted = std::move(submitted), start] {
             if (auto self = weak.lock()) self->finishStart(start, submitted);
         });

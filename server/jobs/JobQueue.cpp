@@ -47,6 +47,20 @@ JobQueue::Submitted JobQueue::submit(const JobRequest& request)
     auto prepared = std::make_unique<PreparedJob>();
     PrepareError error;
     if (!prepareJob(request, mLimits, *prepared, error)) return {std::nullopt, error.code, error.message};
+    return queue(request, std::move(prepared));
+}
+
+JobQueue::Submitted JobQueue::submit(const JobRequest& request, Model model)
+{
+    auto prepared = std::make_unique<PreparedJob>();
+    PrepareError error;
+    if (!prepareJob(request, std::move(model), mLimits, *prepared, error))
+        return {std::nullopt, error.code, error.message};
+    return queue(request, std::move(prepared));
+}
+
+JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<PreparedJob> prepared)
+{
     JobInfo resolved;
     resolved.start = prepared->start;
     resolved.step = prepared->step;

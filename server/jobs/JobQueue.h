@@ -43,6 +43,8 @@ public:
     // Compiles the job (loads the model, applies parameters, checks limits) before queuing;
     // the worker runs that compiled job.
     Submitted submit(const JobRequest& request);
+    // The same for a model in memory whose text request.hmf holds (see prepareJob).
+    Submitted submit(const JobRequest& request, Model model);
     // Queued jobs held compiled in memory (the others are compiled again when they run).
     std::size_t compiledQueued();
     // Beyond this many, a queued job keeps only its stored request: memory stays bounded.
@@ -72,6 +74,7 @@ private:
     void enqueue(std::int64_t ownerId, std::int64_t jobId);   // caller holds mMutex
     bool removeQueued(std::int64_t jobId);                      // caller holds mMutex
     bool isQueuedInMemory(std::int64_t jobId) const;            // caller holds mMutex
+    Submitted queue(const JobRequest& request, std::unique_ptr<PreparedJob> prepared);
 
     JobStore& mStore;
     StreamHub& mHub;

@@ -4,24 +4,61 @@
 
 namespace tlmhub::server {
 
-LoadedModel loadUntrustedModel(const std::string& hmf, const ModelLimits& limits,
-                               const std::string& modelDirectory, const std::string& sourceName)
+namespace {
+
+std::string sizeProblem(std::size_t hmfBytes, const ModelLimits& limits, const std::string& sourceName)
 {
-    if (hmf.size() > limits.maxBytes) {
-        LoadedModel refused;
-        refused.messages.push_back({MessageType::Error,
-                                    sourceName + ": the model is " + std::to_string(hmf.size()) +
-                                        " bytes; the limit here is " + std::to_string(limits.maxBytes) +
-                                        " (--max-model-bytes)",
-                                    {}});
-        return refused;
-    }
+    if (hmfBytes <= limits.maxBytes) return {};
+    return sourceName + ": the model is " + std::to_string(hmfBytes) + " bytes; the limit here is " +
+           std::to_string(limits.maxBytes) + " (--max-model-bytes)";
+}
+
+LoadLimits loadLimits(const ModelLimits& limits)
+{
     LoadLimits load;
     load.maxComponents = limits.maxComponents;
     load.componentsHint = " (--max-model-components)";
     load.maxSubsystemDepth = limits.maxDepth;
     load.depthHint = " (--max-model-depth)";
-    return loadHmfString(hmf, modelDirectory, sourceName, load);
+    return load;
+}
+
+// Counts components and subsystems below `system` into `count`; the first limit broken.
+std::string structureProblem(const System& system, std::size_t depth, const LoadLimits& limits, std::size_t& count)
+{
+    for (const Component* c : system.componentsInOrder()) {
+        if (limits.maxComponents && ++count > limits.maxComponents)
+            return "the model has more than " + std::to_string(limits.maxComponents) +
+                   " components and subsystems, the limit here" + limits.componentsHint;
+        if (!c->isSystem()) continue;
+        if (depth + 1 > limits.maxSubsystemDepth)
+            return "subsystem '" + c->name() + "' is nested " + std::to_string(depth + 1) +
+                   " levels deep; the limit is " + std::to_string(limits.maxSubsystemDepth) + limits.depthHint;
+        const std::string inner = structureProblem(static_cast<const System&>(*c), depth + 1, limits, count);
+        if (!inner.empty()) return inner;
+    }
+    return {};
+}
+
+} // namespace
+
+LoadedModel loadUntrustedModel(const std::string& hmf, const ModelLimits& limits,
+                               const std::string& modelDirectory, const std::string& sourceName)
+{
+    if (std::string tooLarge = sizeProblem(hmf.size(), limits, sourceName); !tooLarge.empty()) {
+        LoadedModel refused;
+        refused.messages.push_back({MessageType::Error, std::move(tooLarge), {}});
+        return refused;
+    }
+    return loadHmfString(hmf, modelDirectory, sourceName, loadLimits(limits));
+}
+
+std::string modelLimitProblem(const System& root, std::size_t hmfBytes, const ModelLimits& limits,
+                              const std::string& sourceName)
+{
+    if (std::string tooLarge = sizeProblem(hmfBytes, limits, sourceName); !tooLarge.empty()) return tooLarge;
+    std::size_t count = 0;
+    return structureProblem(root, 0, loadLimits(limits), count);
 }
 
 namespace {

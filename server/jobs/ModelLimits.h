@@ -19,6 +19,11 @@ struct ModelLimits {
 LoadedModel loadUntrustedModel(const std::string& hmf, const ModelLimits& limits,
                                const std::string& modelDirectory, const std::string& sourceName);
 
+// The same limits for a model already in memory (an editor's), whose .hmf text is
+// `hmfBytes` long: the first one it breaks, in the loader's words, or "".
+std::string modelLimitProblem(const System& root, std::size_t hmfBytes, const ModelLimits& limits,
+                              const std::string& sourceName);
+
 // Evaluates every system and component parameter once (expressions, system parameter
 // names), so a model that cannot run is refused when it is stored rather than at its first
 // run. Returns the first problem, naming the parameter by path ("Sub$Comp.param"), or "".

@@ -1,6 +1,7 @@
 #include "server/jobs/PreparedJob.h"
 
 #include "server/api/CoreErrorCodes.h"
+#include "server/jobs/ModelLimits.h"
 
 #include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
@@ -19,21 +20,16 @@ std::string describe(double v)
     return os.str();
 }
 
-} // namespace
-
-bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out, PrepareError& error)
+std::string sourceName(const JobRequest& request)
 {
-    if (request.hmf.empty()) {
-        error = {"invalid_model", "the job has no model"};
-        return false;
-    }
-    const std::string source = request.modelId ? "model " + std::to_string(*request.modelId) : "model";
-    LoadedModel loaded = loadUntrustedModel(request.hmf, limits.model, request.modelDirectory, source);
-    if (const Status status = loaded.status(); !status) {
-        error = {protocolErrorCode(status.code()), status.message()};
-        return false;
-    }
-    System& root = *loaded.root;
+    return request.modelId ? "model " + std::to_string(*request.modelId) : "model";
+}
+
+// Applies the request to a model that is within the limits, and compiles it.
+bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limits, PreparedJob& out,
+                   PrepareError& error)
+{
+    System& root = model.root();
 
     // System parameters first: component values may refer to them.
     for (int pass = 0; pass < 2; ++pass) {
@@ -72,13 +68,42 @@ bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob&
                                        " is above the limit of " + std::to_string(limits.maxLogSamples)};
         return false;
     }
-    Result<Simulation> compiled = compile(std::move(loaded.root), {out.start, out.stop, out.step, out.logSamples});
+    Result<Simulation> compiled = compile(std::move(model), {out.start, out.stop, out.step, out.logSamples});
     if (!compiled) {
         error = {protocolErrorCode(compiled.status().code()), compiled.status().message()};
         return false;
     }
     out.simulation.emplace(std::move(*compiled));
     return true;
+}
+
+} // namespace
+
+bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out, PrepareError& error)
+{
+    if (request.hmf.empty()) {
+        error = {"invalid_model", "the job has no model"};
+        return false;
+    }
+    LoadedModel loaded = loadUntrustedModel(request.hmf, limits.model, request.modelDirectory, sourceName(request));
+    if (const Status status = loaded.status(); !status) {
+        error = {protocolErrorCode(status.code()), status.message()};
+        return false;
+    }
+    return prepareLoaded(request, Model(std::move(loaded.root)), limits, out, error);
+}
+
+bool prepareJob(const JobRequest& request, Model model, const JobLimits& limits, PreparedJob& out,
+                PrepareError& error)
+{
+    if (std::string problem = modelLimitProblem(model.root(), request.hmf.size(), limits.model, sourceName(request));
+        !problem.empty()) {
+        error = {protocolErrorCode(StatusCode::InvalidModel), std::move(problem)};
+        return false;
+    }
+    // Relative paths resolve as they will when the stored request is compiled again.
+    model.root().modelDirectory = request.modelDirectory;
+    return prepareLoaded(request, std::move(model), limits, out, error);
 }
 
 } // namespace tlmhub::server

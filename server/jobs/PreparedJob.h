@@ -1,10 +1,11 @@
 #pragma once
-// Turning a JobRequest into a compiled simulation: load the .hmf, apply the parameter
-// overrides, resolve the settings, check the limits and compile. Done once, at submission;
-// the queue keeps the compiled job for its worker. Only a job queued before a restart (the
-// store keeps its request, not the compiled model) is prepared again by the runner.
+// Turning a JobRequest into a compiled simulation: load the .hmf (or take the model from
+// memory), apply the parameter overrides, resolve the settings, check the limits and compile.
+// Done once, at submission; the queue keeps the compiled job for its worker. Only a job
+// queued before a restart (the store keeps its request, not the compiled model) is prepared
+// again by the runner.
+#include "core/Model.h"
 #include "core/Simulation.h"
-#include "core/System.h"
 #include "server/jobs/Job.h"
 
 #include <optional>
@@ -28,6 +29,10 @@ struct PrepareError {
 constexpr std::size_t kDefaultLogSamples = 1024;
 
 bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out,
+                PrepareError& error);
+// The same for a model in memory (an editor's copy) whose text request.hmf already holds:
+// nothing is parsed.
+bool prepareJob(const JobRequest& request, Model model, const JobLimits& limits, PreparedJob& out,
                 PrepareError& error);
 
 } // namespace tlmhub::server
