@@ -31,31 +31,38 @@ int batchCommand(const std::vector<std::string>& args)
     }
     unsigned nThreads = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
 
-    std::vector<std::unique_ptr<System>> models;
-    std::vector<std::string> names;
-    for (int k = 0; k < static_cast<int>(copies); ++k) {
-        for (const std::string& path : opt.positional) {
-            LoadedModel m = loadHmfFile(path);
-            if (m.hasErrors()) {
-                std::cerr << "error: " << m.firstError() << "\n";
+    // Each file is loaded once; the copies are copies of its Model.
+    std::vector<Model> models;
+    for (const std::string& path : opt.positional) {
+        LoadedModel m = loadHmfFile(path);
+        if (m.hasErrors()) {
+            std::cerr << "error: " << m.firstError() << "\n";
+            return 1;
+        }
+        models.emplace_back(std::move(m.root));
+    }
+    const std::size_t files = models.size();
+    for (int k = 1; k < static_cast<int>(copies); ++k)
+        for (std::size_t i = 0; i < files; ++i) {
+            Result<Model> copy = models[i].copy();
+            if (!copy) {
+                std::cerr << "error: " << opt.positional[i] << ": " << copy.status().message() << "\n";
                 return 1;
             }
-            models.push_back(std::move(m.root));
-            names.push_back(path);
+            models.push_back(std::move(*copy));
         }
-    }
     std::atomic<std::size_t> next{0};
     std::atomic<std::size_t> failed{0};
     std::atomic<std::size_t> componentSteps{0};
     auto worker = [&]() {
         for (std::size_t i; (i = next.fetch_add(1)) < models.size();) {
-            System& root = *models[i];
-            Result<Simulation> sim = compile(root);
+            const std::size_t components = models[i].root().countComponents();
+            Result<Simulation> sim = compile(std::move(models[i]));
             if (!sim || !sim->run()) {
                 ++failed;
                 continue;
             }
-            componentSteps += sim->takenSteps() * root.countComponents();
+            componentSteps += sim->takenSteps() * components;
         }
     };
     const auto t0 = std::chrono::steady_clock::now();
