@@ -116,3 +116,56 @@ TEST(Subsystems, ConditionalSubsystemFreezesWhileOff)
     ASSERT_TRUE(run(root, 0, 0.1, 0.001, 11));
     EXPECT_NEAR(sub->component("Integrator")->port("out")->node()->value(0), 0.1, 1e-12);
 }
+
+namespace {
+
+// Constant C -> Sub.in -> Gain G (k = 2) -> Sub.out -> Sink.
+System& gainInSubsystem(System& root)
+{
+    add(root, "SignalConstant", "C");
+    add(root, "SignalSink", "Sink");
+    System& sub = addSubsystem(root, "Sub");
+    sub.addSystemPort("in");
+    sub.addSystemPort("out");
+    add(sub, "SignalGain", "G");
+    connectOk(sub, "in", "in", "G", "in");
+    connectOk(sub, "G", "out", "out", "out");
+    connectOk(root, "C", "y", "Sub", "in");
+    connectOk(root, "Sub", "out", "Sink", "in");
+    setParam(root, "C", "y#Value", "3");
+    sub.component("G")->parameters().find("k#Value")->value = "2";
+    return sub;
+}
+
+} // namespace
+
+// Ungrouping and the editor rename system ports: the connections on both sides stay.
+TEST(Subsystems, RenamingASystemPortKeepsItsConnectionsInsideAndOut)
+{
+    System root;
+    System& sub = gainInSubsystem(root);
+    const Result<std::string> renamed = sub.renameSystemPort("in", "input signal");
+    ASSERT_TRUE(renamed) << renamed.status().message();
+    EXPECT_EQ(*renamed, "input_signal");
+    EXPECT_EQ(sub.systemPort("in"), nullptr);
+    ASSERT_NE(sub.systemPort("input_signal"), nullptr);
+    EXPECT_EQ(root.component("C")->port("y")->node(), sub.component("G")->port("in")->node());
+    // A taken name gets a suffix; an unknown port is not_found.
+    EXPECT_EQ(*sub.renameSystemPort("input_signal", "G"), "G_1");
+    EXPECT_EQ(sub.renameSystemPort("nothing", "x").status().code(), StatusCode::NotFound);
+    ASSERT_TRUE(run(root, 0, 0.01, 0.001, 11));
+    EXPECT_DOUBLE_EQ(sub.component("G")->port("out")->node()->value(0), 6.0);
+}
+
+TEST(Subsystems, DeletingASystemPortDisconnectsItInsideAndOut)
+{
+    System root;
+    System& sub = gainInSubsystem(root);
+    ASSERT_TRUE(isOk(sub.deleteSystemPort("in")));
+    EXPECT_EQ(sub.systemPort("in"), nullptr);
+    EXPECT_FALSE(root.component("C")->port("y")->isConnected());
+    EXPECT_FALSE(sub.component("G")->port("in")->isConnected());
+    EXPECT_NE(root.component("C")->port("y")->node(), sub.component("G")->port("in")->node());
+    EXPECT_TRUE(sub.component("G")->port("out")->isConnected()) << "the other port's connections stay";
+    EXPECT_EQ(sub.deleteSystemPort("in").code(), StatusCode::NotFound);
+}
