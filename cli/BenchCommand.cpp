@@ -87,11 +87,11 @@ int benchVary(const std::string& modelPath, const std::string& vary)
     const Model model(std::move(loaded.root));
     Result<Simulation> sim = compile(model);
     if (!sim) {
-        std::cerr << "error: " << sim.status().message() << "\n";
+        std::cerr << "error: " << describe(sim.status()) << "\n";
         return 1;
     }
     auto fail = [](const Status& s) {
-        std::cerr << "error: " << s.codeName() << ": " << s.message() << "\n";
+        std::cerr << "error: " << describe(s) << "\n";
         return 1;
     };
     // The ways alternate run by run, so machine drift hits them alike.
@@ -174,7 +174,7 @@ int benchCommand(const std::vector<std::string>& args)
     System& root = *model.root;
     Result<Simulation> compiled = compile(root);
     if (!compiled) {
-        std::cerr << "error: " << compiled.status().message() << "\n";
+        std::cerr << "error: " << describe(compiled.status()) << "\n";
         return 1;
     }
     Simulation& sim = *compiled;
@@ -186,14 +186,14 @@ int benchCommand(const std::vector<std::string>& args)
             Status status = sim.reset();
             if (status) status = sim.initialise();
             if (!status) {
-                std::cerr << "error: initialisation failed: " << status.message() << "\n";
+                std::cerr << "error: initialisation failed: " << describe(status) << "\n";
                 return 1;
             }
             const auto s0 = std::chrono::steady_clock::now();
             status = sim.run({.threads = threadCounts[c]});
             const auto s1 = std::chrono::steady_clock::now();
             if (!status) {
-                std::cerr << "error: simulation failed: " << status.message() << "\n";
+                std::cerr << "error: simulation failed: " << describe(status) << "\n";
                 return 1;
             }
             times[c].push_back(std::chrono::duration<double>(s1 - s0).count());

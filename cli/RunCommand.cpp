@@ -85,7 +85,7 @@ int runCommand(const std::vector<std::string>& args)
     const auto t0 = std::chrono::steady_clock::now();
     Result<Simulation> compiled = compile(model, settings);
     if (!compiled) {
-        std::cerr << "error: " << path << ": " << compiled.status().message() << "\n";
+        std::cerr << "error: " << path << ": " << describe(compiled.status()) << "\n";
         return 1;
     }
     Simulation& sim = *compiled;
@@ -101,8 +101,7 @@ int runCommand(const std::vector<std::string>& args)
             std::fprintf(stderr, "error: %s: simulation stopped at t=%g before the stop time %g\n",
                          path.c_str(), sim.time(), stop);
         else
-            std::fprintf(stderr, "error: %s: %s: %s\n", path.c_str(), status.codeName(),
-                         status.message().c_str());
+            std::fprintf(stderr, "error: %s: %s\n", path.c_str(), describe(status).c_str());
         return 1;
     }
     std::string where;
@@ -131,7 +130,7 @@ int runCommand(const std::vector<std::string>& args)
                                  "error: %s: reset and a run continued from t=%g give csv sha256 %s, "
                                  "one fresh run %s (%s)\n",
                                  path.c_str(), half, rerunHash.c_str(), hash.c_str(),
-                                 again ? "results differ" : again.message().c_str());
+                                 again ? "results differ" : describe(again).c_str());
                     return 1;
                 }
                 Result<Simulation> original = compile(std::move(model), settings);

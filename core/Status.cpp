@@ -25,4 +25,11 @@ const char* statusCodeName(StatusCode code)
     return "unknown";
 }
 
+std::string describe(const Status& status)
+{
+    std::string text = std::string(status.codeName()) + ": " + status.message();
+    if (!status.path().empty()) text += " (at " + status.path() + ")";
+    return text;
+}
+
 } // namespace tlmhub

@@ -73,4 +73,8 @@ private:
     Status mStatus;
 };
 
+// The one text of a failure for people (CLI lines, validation reports, logs):
+// "code: message", and " (at path)" when it concerns a part of the model.
+std::string describe(const Status& status);
+
 } // namespace tlmhub

@@ -279,8 +279,14 @@ Result<Port*> System::resolvePort(const std::string& compName, const std::string
         if (Port* p = c->port(portName)) return p;
         return Status{StatusCode::NotFound, "component '" + compName + "' has no port '" + portName + "'"};
     }
-    if (Port* p = systemPort(compName)) return p;
-    if (Port* p = port(compName); p && compName == portName) return p;
+    // A system port is named twice, as component and port (as the loader reads and the
+    // saver writes it); another port name would let a typo connect it.
+    if (Port* p = systemPort(compName)) {
+        if (portName == compName) return p;
+        return Status{StatusCode::NotFound, "no port '" + compName + "." + portName +
+                                                "': a system port is named by its name twice ('" + compName +
+                                                "." + compName + "')"};
+    }
     return Status{StatusCode::NotFound,
                   "no component or system port named '" + compName + "' in system '" + name() + "'"};
 }
@@ -421,7 +427,8 @@ Status System::disconnect(const std::string& compA, const std::string& portA,
     Port* pa = nullptr;
     Port* pb = nullptr;
     if (!findPair(a, b, pa, pb))
-        return {StatusCode::NotFound, compA + "." + portA + " and " + compB + "." + portB + " are not connected"};
+        return {StatusCode::IllegalConnection,
+                "cannot disconnect " + compA + "." + portA + " from " + compB + "." + portB + ": they are not connected"};
     pa->connectedPorts.erase(std::find(pa->connectedPorts.begin(), pa->connectedPorts.end(), pb));
     pb->connectedPorts.erase(std::find(pb->connectedPorts.begin(), pb->connectedPorts.end(), pa));
     for (Port* side : {pa, pb}) {

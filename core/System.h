@@ -50,7 +50,8 @@ public:
     Port* systemPort(const std::string& name) const;
 
     // not_found for names that name no port; illegal_connection with the reason, naming both
-    // ports. A system port is named by its name as both component and port.
+    // ports (for disconnect: ports not connected to each other). A system port is named by
+    // its name as both component and port.
     Status connect(const std::string& compA, const std::string& portA, const std::string& compB,
                    const std::string& portB);
     Status disconnect(const std::string& compA, const std::string& portA, const std::string& compB,

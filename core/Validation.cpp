@@ -115,7 +115,7 @@ bool runOnce(System& root, std::optional<Simulation>& sim, std::string& error)
     if (!sim) {
         Result<Simulation> compiled = compile(root);
         if (!compiled) {
-            error = compiled.status().message();
+            error = describe(compiled.status());
             return false;
         }
         sim.emplace(std::move(*compiled));
@@ -124,7 +124,7 @@ bool runOnce(System& root, std::optional<Simulation>& sim, std::string& error)
     }
     const Status status = sim->run();
     if (!status) {
-        error = "simulation failed: " + status.message();
+        error = "simulation failed: " + describe(status);
         return false;
     }
     return true;
@@ -134,7 +134,7 @@ bool extract(System& root, const std::string& name, Extracted& out, std::string&
 {
     const Result<VariableRef> variable = resolveVariable(root, name);
     if (!variable) {
-        error = variable.status().message();
+        error = describe(variable.status());
         return false;
     }
     const Port* port = variable->port;

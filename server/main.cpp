@@ -36,7 +36,7 @@ int main(int argc, char** argv)
     for (const std::string& lib : options.componentLibs) {
         const tlmhub::Result<std::vector<std::string>> added = tlmhub::loadComponentLibrary(lib);
         if (!added) {
-            std::cerr << "tlmhub-server: " << added.status().message() << "\n";
+            std::cerr << "tlmhub-server: " << tlmhub::describe(added.status()) << "\n";
             return 1;
         }
         std::cout << "loaded " << added->size() << " component types from " << lib << "\n";

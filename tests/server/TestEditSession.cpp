@@ -245,6 +245,10 @@ TEST(EditSession, ConnectAndDisconnectWithLinePoints)
                                        {"to", {{"component", "Step"}, {"port", "out"}}}});
     EXPECT_EQ(again.code, "illegal_connection");
     EXPECT_NE(again.message.find("not connected"), std::string::npos) << again.message;
+    const auto unknown = session.handle({{"id", 5}, {"type", "disconnect"},
+                                         {"from", {{"component", "Probe"}, {"port", "nope"}}},
+                                         {"to", {{"component", "Step"}, {"port", "out"}}}});
+    EXPECT_EQ(unknown.code, "not_found");
 }
 
 TEST(EditSession, RemoveDropsTheComponentAndItsConnections)

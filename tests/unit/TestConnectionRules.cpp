@@ -98,6 +98,35 @@ TEST(ConnectionRules, UnknownComponentOrPortIsNamed)
     EXPECT_EQ(s.connect("V", "P1", "Nope", "P1").code(), StatusCode::NotFound);
 }
 
+TEST(ConnectionRules, SystemPortIsNamedByItsNameTwice)
+{
+    // As the loader reads and the saver writes it: component and port are both the system
+    // port's name. Any other port name names no port.
+    System s;
+    add(s, "SignalGain", "G");
+    s.addSystemPort("in");
+    const Status misnamed = s.connect("in", "y", "G", "in");
+    EXPECT_EQ(misnamed.code(), StatusCode::NotFound);
+    EXPECT_NE(misnamed.message().find("in.y"), std::string::npos) << misnamed.message();
+    EXPECT_FALSE(s.systemPort("in")->isConnected());
+
+    connectOk(s, "in", "in", "G", "in");
+    EXPECT_EQ(s.disconnect("in", "y", "G", "in").code(), StatusCode::NotFound);
+    EXPECT_TRUE(s.systemPort("in")->isConnected());
+}
+
+TEST(ConnectionRules, DisconnectOfPortsNotConnectedIsIllegal)
+{
+    System s;
+    add(s, "HydraulicVolume", "V");
+    add(s, "HydraulicLaminarOrifice", "O");
+    const Status refused = s.disconnect("V", "P1", "O", "P1");
+    EXPECT_EQ(refused.code(), StatusCode::IllegalConnection);
+    EXPECT_NE(refused.message().find("V.P1"), std::string::npos) << refused.message();
+    EXPECT_NE(refused.message().find("O.P1"), std::string::npos) << refused.message();
+    EXPECT_EQ(s.disconnect("V", "P9", "O", "P1").code(), StatusCode::NotFound);
+}
+
 TEST(ConnectionRules, ReadPortToNothingFailsTheModelCheck)
 {
     // A required read port left unconnected is reported by the model check.
@@ -118,7 +147,7 @@ TEST(ConnectionRules, DisconnectSplitsTheNode)
     connectOk(s, "V", "P1", "O", "P1");
     ASSERT_TRUE(isOk(s.disconnect("V", "P1", "O", "P1")));
     EXPECT_NE(s.component("V")->port("P1")->node(), s.component("O")->port("P1")->node());
-    EXPECT_EQ(s.disconnect("V", "P1", "O", "P1").code(), StatusCode::NotFound);
+    EXPECT_EQ(s.disconnect("V", "P1", "O", "P1").code(), StatusCode::IllegalConnection);
 }
 
 TEST(ConnectionRules, MultiportTakesManyConnectionsWithOneNodeEach)

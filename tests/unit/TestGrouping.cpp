@@ -32,7 +32,7 @@ std::unique_ptr<System> load(const std::string& path)
 std::string nameOrFailure(const Result<std::string>& grouped)
 {
     if (grouped) return *grouped;
-    ADD_FAILURE() << grouped.status().codeName() << ": " << grouped.status().message();
+    ADD_FAILURE() << describe(grouped.status());
     return {};
 }
 

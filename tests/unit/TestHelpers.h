@@ -26,7 +26,7 @@ inline std::string add(System& s, const std::string& type, const std::string& na
 inline ::testing::AssertionResult isOk(const Status& status)
 {
     if (status) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << status.codeName() << ": " << status.message();
+    return ::testing::AssertionFailure() << describe(status);
 }
 
 inline void connectOk(System& s, const std::string& a, const std::string& pa, const std::string& b,
@@ -50,7 +50,7 @@ inline bool run(System& s, double t0, double t1, double ts, std::size_t samples)
 {
     Result<Simulation> sim = compile(s, {t0, t1, ts, samples});
     if (!sim) {
-        ADD_FAILURE() << sim.status().message();
+        ADD_FAILURE() << describe(sim.status());
         return false;
     }
     return sim->run().isOk();
@@ -61,7 +61,7 @@ inline bool run(System& s, double t0, double t1, double ts, std::size_t samples)
 inline std::optional<Simulation> runToStop(Result<Simulation> compiled, const RunOptions& options = {})
 {
     if (!compiled) {
-        ADD_FAILURE() << compiled.status().codeName() << ": " << compiled.status().message();
+        ADD_FAILURE() << describe(compiled.status());
         return std::nullopt;
     }
     EXPECT_TRUE(isOk(compiled->run(options)));
