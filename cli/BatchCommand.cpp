@@ -46,7 +46,7 @@ int batchCommand(const std::vector<std::string>& args)
         for (std::size_t i = 0; i < files; ++i) {
             Result<Model> copy = models[i].copy();
             if (!copy) {
-                std::cerr << "error: " << opt.positional[i] << ": " << copy.status().message() << "\n";
+                std::cerr << "error: " << opt.positional[i] << ": " << describe(copy.status()) << "\n";
                 return 1;
             }
             models.push_back(std::move(*copy));

@@ -141,7 +141,7 @@ int runCommand(const std::vector<std::string>& args)
                     std::fprintf(stderr,
                                  "error: %s: the loaded model gives csv sha256 %s, its copy %s (%s)\n",
                                  path.c_str(), originalHash.c_str(), hash.c_str(),
-                                 ran ? "results differ" : ran.message().c_str());
+                                 ran ? "results differ" : describe(ran).c_str());
                     return 1;
                 }
             }
