@@ -17,13 +17,6 @@ public:
         copySettings(to, from);
         copySystemParameters(to, from);
         to.preservedXml = from.preservedXml;
-        if (!from.externalPath.empty()) {
-            to.externalPath = from.externalPath;
-            to.modelDirectory = from.modelDirectory;
-            to.startTime = from.startTime;
-            to.stopTime = from.stopTime;
-            to.preservedDocumentXml = from.preservedDocumentXml;
-        }
         for (const Component* c : from.componentsInOrder()) {
             const Status copied = c->isSystem() ? copySubsystem(to, static_cast<const System&>(*c))
                                                 : copyComponent(to, *c);
@@ -48,8 +41,14 @@ public:
     }
 
 private:
+    // A root's, or an external subsystem's as its own file gave them (others keep defaults).
     static void copySettings(System& to, const System& from)
     {
+        to.externalPath = from.externalPath;
+        to.modelDirectory = from.modelDirectory;
+        to.startTime = from.startTime;
+        to.stopTime = from.stopTime;
+        to.preservedDocumentXml = from.preservedDocumentXml;
         to.setSubTypeName(from.subTypeName());
         to.desiredTimestep = from.desiredTimestep;
         to.inheritTimestep = from.inheritTimestep;
@@ -116,10 +115,6 @@ Result<std::unique_ptr<System>> copySystem(const System& root)
 {
     auto copy = std::make_unique<System>();
     copy->setNameRaw(root.name());
-    copy->modelDirectory = root.modelDirectory;
-    copy->startTime = root.startTime;
-    copy->stopTime = root.stopTime;
-    copy->preservedDocumentXml = root.preservedDocumentXml;
     if (Status copied = SystemCopier().copyInto(*copy, root); !copied) return copied;
     return copy;
 }

@@ -4,10 +4,9 @@
 
 #include "core/Model.h"
 #include "core/ParameterPath.h"
-#include "core/SystemCopy.h"
 #include "core/hmf/HmfLoader.h"
-#include "core/hmf/HmfSaver.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 

@@ -19,11 +19,9 @@ System& addSubsystem(System& parent, const std::string& name)
     return *raw;
 }
 
-} // namespace
-
-TEST(Subsystems, SystemPortsPassSignalsThroughOneNode)
+// Constant C -> Sub.in -> Gain G (k = 2) -> Sub.out -> Sink.
+System& gainInSubsystem(System& root)
 {
-    System root;
     add(root, "SignalConstant", "C");
     add(root, "SignalSink", "Sink");
     System& sub = addSubsystem(root, "Sub");
@@ -36,6 +34,15 @@ TEST(Subsystems, SystemPortsPassSignalsThroughOneNode)
     connectOk(root, "Sub", "out", "Sink", "in");
     setParam(root, "C", "y#Value", "3");
     sub.component("G")->parameters().find("k#Value")->value = "2";
+    return sub;
+}
+
+} // namespace
+
+TEST(Subsystems, SystemPortsPassSignalsThroughOneNode)
+{
+    System root;
+    System& sub = gainInSubsystem(root);
     EXPECT_EQ(sub.kind(), CqsKind::S);
     // Outside and inside ports share the node: no copies.
     EXPECT_EQ(root.component("C")->port("y")->node(), sub.component("G")->port("in")->node());
@@ -116,28 +123,6 @@ TEST(Subsystems, ConditionalSubsystemFreezesWhileOff)
     ASSERT_TRUE(run(root, 0, 0.1, 0.001, 11));
     EXPECT_NEAR(sub->component("Integrator")->port("out")->node()->value(0), 0.1, 1e-12);
 }
-
-namespace {
-
-// Constant C -> Sub.in -> Gain G (k = 2) -> Sub.out -> Sink.
-System& gainInSubsystem(System& root)
-{
-    add(root, "SignalConstant", "C");
-    add(root, "SignalSink", "Sink");
-    System& sub = addSubsystem(root, "Sub");
-    sub.addSystemPort("in");
-    sub.addSystemPort("out");
-    add(sub, "SignalGain", "G");
-    connectOk(sub, "in", "in", "G", "in");
-    connectOk(sub, "G", "out", "out", "out");
-    connectOk(root, "C", "y", "Sub", "in");
-    connectOk(root, "Sub", "out", "Sink", "in");
-    setParam(root, "C", "y#Value", "3");
-    sub.component("G")->parameters().find("k#Value")->value = "2";
-    return sub;
-}
-
-} // namespace
 
 // Ungrouping and the editor rename system ports: the connections on both sides stay.
 TEST(Subsystems, RenamingASystemPortKeepsItsConnectionsInsideAndOut)
