@@ -27,15 +27,18 @@ constexpr double kMinThreadedRunSeconds = 20e-3;       // so do shorter rests of
 constexpr double kThreadedSpeedMargin = 0.93;          // threads must take < 93 % of the time
 constexpr unsigned kMaxAutoThreads = 8;
 
-// Sense-reversing barrier. With no more threads than cores it only spins: a phase lasts
-// microseconds, and a sched_yield per wait cost about 6 % of a 2-thread x200 run. With
-// more threads than cores it yields after a short spin so the others can run. The last
+// Sense-reversing barrier. A phase lasts microseconds, so a waiting thread spins (a
+// sched_yield per wait cost about 6 % of a 2-thread x200 run). A wait far longer than a
+// phase means a thread of the group is descheduled (another process took its core, or
+// there are more threads than cores): the waiting threads then sleep until the last one
+// arrives, leaving their cores to it instead of spinning away its time slices. The last
 // thread to arrive runs `onComplete` before anyone is released.
 class SpinBarrier {
 public:
     explicit SpinBarrier(unsigned count)
         : mCount(count), mWaiting(0), mGeneration(0),
-          mSpinsBeforeYield(count <= std::thread::hardware_concurrency() ? 1u << 24 : 2000u)
+          // About 50 us of spinning here; with more threads than cores a short spin.
+          mSpinsBeforeSleep(count <= std::thread::hardware_concurrency() ? 1u << 17 : 2000u)
     {
     }
 
@@ -47,10 +50,12 @@ public:
             onComplete();
             mWaiting.store(0, std::memory_order_relaxed);
             mGeneration.fetch_add(1, std::memory_order_acq_rel);
+            mGeneration.notify_all();   // a system call only when some thread sleeps
             return;
         }
-        for (unsigned spins = 0; mGeneration.load(std::memory_order_acquire) == generation; ++spins)
-            if (spins > mSpinsBeforeYield) std::this_thread::yield();
+        for (unsigned spins = 0; spins < mSpinsBeforeSleep; ++spins)
+            if (mGeneration.load(std::memory_order_acquire) != generation) return;
+        mGeneration.wait(generation, std::memory_order_acquire);
     }
     void arriveAndWait() { arriveAndWait([] {}); }
 
@@ -58,7 +63,7 @@ private:
     const unsigned mCount;
     std::atomic<unsigned> mWaiting;
     std::atomic<unsigned> mGeneration;
-    const unsigned mSpinsBeforeYield;
+    const unsigned mSpinsBeforeSleep;
 };
 
 // Threads get contiguous regions of the model (insertion order, which is also the order
