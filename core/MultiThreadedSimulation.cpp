@@ -316,7 +316,8 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* che
     // copy of the time by the same additions, so all see the same value. On steps that
     // store a log sample every thread then copies its share of the logged nodes into the
     // slot, and one more barrier keeps the next step's S phase from overwriting a node
-    // another thread is still copying. Only the master touches the time and counters.
+    // another thread is still copying. Only the master touches the time and counters, and
+    // it counts a row as logged only after that barrier: a progress callback may read it.
     std::vector<char> logsAfter(n - probeSteps, 0);
     for (std::size_t k = mLogCounter; k < mLogSteps.size(); ++k) {
         const std::size_t step = mLogSteps[k];
@@ -348,6 +349,7 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* che
             barrier.arriveAndWait([&] { endSnapshot = stopRequested() || giveUp.load(std::memory_order_relaxed); });
             if (logsAfter[step]) {
                 for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);
+                barrier.arriveAndWait();
             }
             if (id == 0) {
                 mTime = t;
@@ -359,10 +361,7 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* che
                 if (mProgress && mProgressInterval && (mTakenSteps % mProgressInterval) == 0)
                     mProgress(mProgressUser, mTakenSteps - takenBefore, n);
             }
-            if (logsAfter[step]) {
-                ++slot;
-                barrier.arriveAndWait();
-            }
+            if (logsAfter[step]) ++slot;
             if (endSnapshot) return;
         }
     };

@@ -179,3 +179,33 @@ TEST(MultiThreadingAuto, ShortRunOfASmallModelStaysOnOneThread)
     EXPECT_EQ(sim->threadsUsed(), 1u);
     EXPECT_EQ(sim->takenSteps(), 1000u);
 }
+
+// A progress callback may read the log while the threads run (a server job streams frames
+// this way): a row must count as logged only once every thread has copied its share.
+TEST(MultiThreadingLog, ProgressSeesOnlyCompleteRows)
+{
+    const std::string path = sharedDir() + "/hopsan-models/Example Models/Position Servo.hmf";
+    ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
+    LoadedModel m = loadHmfFile(path);
+    ASSERT_FALSE(m.hasErrors()) << m.firstError();
+    // A row every step, read right after every step.
+    Result<Simulation> sim = compile(*m.root, {.startTime = 0.0, .stopTime = 1.0, .timestep = 1e-4, .logSamples = 10001});
+    ASSERT_TRUE(isOk(sim.status()));
+    ASSERT_TRUE(isOk(sim->initialise()));
+    const ResultView results = sim->results();
+    std::vector<std::pair<std::size_t, std::vector<double>>> seen;   // (row, its values then)
+    const auto readLastRow = [&](std::size_t, std::size_t) {
+        const std::size_t rows = results.numSamples();
+        if (rows == 0) return;
+        std::vector<double> row;
+        for (const LoggedVariable& v : results.variables()) appendLoggedData(*v.port, v.slot, rows - 1, rows, row);
+        seen.emplace_back(rows - 1, std::move(row));
+    };
+    ASSERT_TRUE(isOk(sim->run({.threads = 2, .progress = readLastRow, .progressInterval = 1})));
+    ASSERT_EQ(sim->threadsUsed(), 2u);
+    const auto columns = loggedColumns(sim->results());
+    ASSERT_GT(seen.size(), 5000u);
+    for (const auto& [row, values] : seen)
+        for (std::size_t i = 0; i < values.size(); ++i)
+            ASSERT_EQ(values[i], columns[i + 1][row]) << results.variable(i).fullName << " in row " << row;
+}
