@@ -24,7 +24,7 @@ namespace {
 // Automatic thread count (simulateStepsAutoThreaded; judged by ThreadJudge).
 constexpr double kTimedWindowSeconds = 0.5e-3;     // a timed window lasts at least this
 constexpr double kMinThreadedStepSeconds = 250e-9;  // cheaper steps stay on one thread
-constexpr double kMinThreadedRunSeconds = 20e-3;    // so do shorter rests of a run
+constexpr double kMinThreadedRunSeconds = 0.1;      // so do rests of a run too short to judge threads
 constexpr unsigned kMaxAutoThreads = 8;
 
 // Sense-reversing barrier. A phase lasts microseconds, so a waiting thread spins (a

@@ -15,7 +15,10 @@ bool ThreadJudge::keepThreads(std::size_t takenSteps, double seconds)
     const double perStep = elapsed / static_cast<double>(takenSteps - mPeriodStartStep);
     mPeriodStart = seconds;
     mPeriodStartStep = takenSteps;
-    return perStep < kSpeedMargin * mSingleThreadedStepSeconds;
+    const bool slow = !(perStep < kSpeedMargin * mSingleThreadedStepSeconds);
+    const bool secondSlowInARow = slow && mLastPeriodSlow;
+    mLastPeriodSlow = slow;
+    return !secondSlowInARow;
 }
 
 } // namespace tlmhub
