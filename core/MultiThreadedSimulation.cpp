@@ -5,6 +5,7 @@
 // the logged nodes.
 #include "core/ComponentClusters.h"
 #include "core/System.h"
+#include "core/ThreadJudge.h"
 
 #include <algorithm>
 #include <atomic>
@@ -20,22 +21,24 @@ namespace tlmhub {
 
 namespace {
 
-// Automatic thread count (simulateStepsAutoThreaded).
-constexpr double kThreadTrialWindowSeconds = 0.5e-3;   // a timed window lasts at least this
-constexpr double kMinThreadedStepSeconds = 250e-9;     // cheaper steps stay on one thread
-constexpr double kMinThreadedRunSeconds = 20e-3;       // so do shorter rests of a run
-constexpr double kThreadedSpeedMargin = 0.93;          // threads must take < 93 % of the time
+// Automatic thread count (simulateStepsAutoThreaded; judged by ThreadJudge).
+constexpr double kTimedWindowSeconds = 0.5e-3;     // a timed window lasts at least this
+constexpr double kMinThreadedStepSeconds = 250e-9;  // cheaper steps stay on one thread
+constexpr double kMinThreadedRunSeconds = 0.1;      // so do rests of a run too short to judge threads
 constexpr unsigned kMaxAutoThreads = 8;
 
-// Sense-reversing barrier. With no more threads than cores it only spins: a phase lasts
-// microseconds, and a sched_yield per wait cost about 6 % of a 2-thread x200 run. With
-// more threads than cores it yields after a short spin so the others can run. The last
+// Sense-reversing barrier. A phase lasts microseconds, so a waiting thread spins (a
+// sched_yield per wait cost about 6 % of a 2-thread x200 run). A wait far longer than a
+// phase means a thread of the group is descheduled (another process took its core, or
+// there are more threads than cores): the waiting threads then sleep until the last one
+// arrives, leaving their cores to it instead of spinning away its time slices. The last
 // thread to arrive runs `onComplete` before anyone is released.
 class SpinBarrier {
 public:
     explicit SpinBarrier(unsigned count)
         : mCount(count), mWaiting(0), mGeneration(0),
-          mSpinsBeforeYield(count <= std::thread::hardware_concurrency() ? 1u << 24 : 2000u)
+          // About 50 us of spinning here; with more threads than cores a short spin.
+          mSpinsBeforeSleep(count <= std::thread::hardware_concurrency() ? 1u << 17 : 2000u)
     {
     }
 
@@ -47,10 +50,12 @@ public:
             onComplete();
             mWaiting.store(0, std::memory_order_relaxed);
             mGeneration.fetch_add(1, std::memory_order_acq_rel);
+            mGeneration.notify_all();   // a system call only when some thread sleeps
             return;
         }
-        for (unsigned spins = 0; mGeneration.load(std::memory_order_acquire) == generation; ++spins)
-            if (spins > mSpinsBeforeYield) std::this_thread::yield();
+        for (unsigned spins = 0; spins < mSpinsBeforeSleep; ++spins)
+            if (mGeneration.load(std::memory_order_acquire) != generation) return;
+        mGeneration.wait(generation, std::memory_order_acquire);
     }
     void arriveAndWait() { arriveAndWait([] {}); }
 
@@ -58,7 +63,7 @@ private:
     const unsigned mCount;
     std::atomic<unsigned> mWaiting;
     std::atomic<unsigned> mGeneration;
-    const unsigned mSpinsBeforeYield;
+    const unsigned mSpinsBeforeSleep;
 };
 
 // Threads get contiguous regions of the model (insertion order, which is also the order
@@ -211,12 +216,12 @@ bool System::simulateMultiThreaded(double tStop, unsigned threads)
     return simulateStepsMultiThreaded(stepsUntil(tStop), threads);
 }
 
-// Automatic thread count: more threads only where they are measured to be faster. The run
+// Automatic thread count: more threads only while they are measured to be faster. The run
 // first takes some single-threaded steps in windows of about a millisecond (the fastest
-// window is the baseline), then goes on with one thread per core and times the same windows
-// there; if that is not clearly faster, the threads stop at a step boundary and the rest of
-// the run is single-threaded. Results do not depend on the thread count, so switching in
-// the middle of a run changes nothing but the time.
+// window is the baseline), then goes on with one thread per core, timing the same windows
+// for the whole run; once the threads are not clearly faster (ThreadJudge), they stop at a
+// step boundary and the rest of the run is single-threaded. Results do not depend on the
+// thread count, so switching in the middle of a run changes nothing but the time.
 bool System::simulateStepsAutoThreaded(std::size_t n)
 {
     const unsigned cores = std::thread::hardware_concurrency();
@@ -229,7 +234,7 @@ bool System::simulateStepsAutoThreaded(std::size_t n)
         const double perStep = timeSingleThreadedSteps(window, ok);
         if (!ok) return false;
         done += window;
-        if (perStep * static_cast<double>(window) < kThreadTrialWindowSeconds) {
+        if (perStep * static_cast<double>(window) < kTimedWindowSeconds) {
             window *= 2;   // too short to time well: grow the window, this one does not count
             continue;
         }
@@ -242,15 +247,20 @@ bool System::simulateStepsAutoThreaded(std::size_t n)
     const bool measured = single < std::numeric_limits<double>::infinity();
     if (!measured || single < kMinThreadedStepSeconds || single * static_cast<double>(rest) < kMinThreadedRunSeconds)
         return simulateSteps(rest);
-    return simulateStepsThreadTrial(rest, std::min(cores, kMaxAutoThreads), single, window);
+    ThreadJudge judge(single);
+    const KeepThreads keepThreads = [&judge](std::size_t takenSteps) {
+        const auto now = std::chrono::steady_clock::now().time_since_epoch();
+        return judge.keepThreads(takenSteps, std::chrono::duration<double>(now).count());
+    };
+    return simulateStepsThreadsWhile(rest, std::min(cores, kMaxAutoThreads), window, keepThreads);
 }
 
-bool System::simulateStepsThreadTrial(std::size_t n, unsigned threads, double singleThreadedStepSeconds,
-                                      std::size_t window)
+bool System::simulateStepsThreadsWhile(std::size_t n, unsigned threads, std::size_t window,
+                                       const KeepThreads& keepThreads)
 {
-    const ThreadTrial trial{singleThreadedStepSeconds, std::max<std::size_t>(window, 1)};
+    const ThreadCheck check{std::max<std::size_t>(window, 1), keepThreads};
     std::size_t taken = 0;
-    if (!runThreaded(n, threads, &trial, taken)) return false;
+    if (!runThreaded(n, threads, &check, taken)) return false;
     if (taken == n) return true;
     mThreadsUsed = 1;
     return simulateSteps(n - taken);
@@ -267,11 +277,10 @@ bool System::simulateStepsMultiThreaded(std::size_t n, unsigned threads)
     return runThreaded(n, threads, nullptr, taken);
 }
 
-// Runs up to `n` steps on `threads` threads (all of them unless a trial gives up early);
-// `taken` gets the steps actually taken. With a trial, thread 0 times windows of steps
-// after a short warm-up and ends the threaded run when it is not faster than the trial's
-// single-threaded time per step by a margin.
-bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* trial, std::size_t& taken)
+// Runs up to `n` steps on `threads` threads (all of them unless a check ends them early);
+// `taken` gets the steps actually taken. With a check, thread 0 asks it after a short
+// warm-up and then every check->window steps whether the threads go on.
+bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* check, std::size_t& taken)
 {
     const std::size_t takenBefore = mTakenSteps;
     if (n == 0) return !stopRequested();
@@ -307,7 +316,8 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
     // copy of the time by the same additions, so all see the same value. On steps that
     // store a log sample every thread then copies its share of the logged nodes into the
     // slot, and one more barrier keeps the next step's S phase from overwriting a node
-    // another thread is still copying. Only the master touches the time and counters.
+    // another thread is still copying. Only the master touches the time and counters, and
+    // it counts a row as logged only after that barrier: a progress callback may read it.
     std::vector<char> logsAfter(n - probeSteps, 0);
     for (std::size_t k = mLogCounter; k < mLogSteps.size(); ++k) {
         const std::size_t step = mLogSteps[k];
@@ -319,33 +329,17 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
     std::atomic<bool> giveUp{false};
     const double startTime = mTime;
     const std::size_t firstSlot = mLogCounter;
-    // Thread 0's trial: windows of trial->window steps after a warm-up.
+    // Thread 0 asks the check at window boundaries after a warm-up (thread start, caches).
     constexpr std::size_t warmUpSteps = 16;
-    bool timing = trial != nullptr;
-    int windowsTimed = 0;
-    double fastest = std::numeric_limits<double>::infinity();
-    Clock::time_point windowStart;
-    auto timeTrial = [&](std::size_t step) {
-        if (step < warmUpSteps || (step - warmUpSteps) % trial->window != 0) return;
-        const auto now = Clock::now();
-        if (step > warmUpSteps) {
-            const double perStep = std::chrono::duration<double>(now - windowStart).count() /
-                                   static_cast<double>(trial->window);
-            fastest = std::min(fastest, perStep);
-            if (++windowsTimed == 3) {
-                timing = false;
-                if (!(fastest < kThreadedSpeedMargin * trial->singleThreadedStepSeconds))
-                    giveUp.store(true, std::memory_order_relaxed);
-                return;
-            }
-        }
-        windowStart = now;
+    auto askCheck = [&](std::size_t step) {
+        if (step < warmUpSteps || (step - warmUpSteps) % check->window != 0) return;
+        if (!check->keepThreads(mTakenSteps)) giveUp.store(true, std::memory_order_relaxed);
     };
     auto run = [&](unsigned id) {
         double t = startTime;
         std::size_t slot = firstSlot;
         for (std::size_t step = 0; step < logsAfter.size(); ++step) {
-            if (id == 0 && timing) timeTrial(step);
+            if (id == 0 && check) askCheck(step);
             t += mTimestep;
             partS[id].step(t);
             if (barrierAfterS) barrier.arriveAndWait();
@@ -355,6 +349,7 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
             barrier.arriveAndWait([&] { endSnapshot = stopRequested() || giveUp.load(std::memory_order_relaxed); });
             if (logsAfter[step]) {
                 for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);
+                barrier.arriveAndWait();
             }
             if (id == 0) {
                 mTime = t;
@@ -366,10 +361,7 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadTrial* tri
                 if (mProgress && mProgressInterval && (mTakenSteps % mProgressInterval) == 0)
                     mProgress(mProgressUser, mTakenSteps - takenBefore, n);
             }
-            if (logsAfter[step]) {
-                ++slot;
-                barrier.arriveAndWait();
-            }
+            if (logsAfter[step]) ++slot;
             if (endSnapshot) return;
         }
     };

@@ -45,8 +45,8 @@ struct SimulationSettings {
 };
 
 struct RunOptions {
-    // Results do not depend on it. autoThreads: one per core where the run measures that to be
-    // faster than one thread (System::simulateStepsMultiThreaded), else one.
+    // Results do not depend on it. autoThreads: one per core while the run measures that to be
+    // faster than one thread (checked throughout the run, core/ThreadJudge.h), else one.
     unsigned threads = 1;
     static constexpr unsigned autoThreads = 0;
     // Called on the running thread every `progressInterval` steps with the steps taken since

@@ -7,6 +7,7 @@
 #include "core/StepBatches.h"
 
 #include <atomic>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <memory>
@@ -100,17 +101,18 @@ public:
     bool simulate(double stopTime);   // root: runs until stopTime
     // The same steps with the root's S, C and Q lists split over `threads` threads (S
     // components by signal cluster, see MultiThreadedSimulation.cpp); 0 = automatic: one per
-    // core where that is measured to be faster than one thread, else one. Results are
-    // identical to simulate().
+    // core while that is measured to be faster than one thread (re-checked throughout the
+    // run, see core/ThreadJudge.h), else one. Results are identical to simulate().
     bool simulateMultiThreaded(double stopTime, unsigned threads);
     // Root: the next `steps` steps (runs can be continued step-exactly this way).
     bool simulateSteps(std::size_t steps);
     bool simulateStepsMultiThreaded(std::size_t steps, unsigned threads);
-    // The automatic choice with a given single-threaded time per step as the baseline that
-    // `threads` threads must beat over timed windows of `window` steps (0 s: they lose and
-    // the run goes on single-threaded after the trial). For tests.
-    bool simulateStepsThreadTrial(std::size_t steps, unsigned threads, double singleThreadedStepSeconds,
-                                  std::size_t window);
+    // The threaded part of the automatic choice with its judge given, for tests: `threads`
+    // threads, and after every `window` steps on them keepThreads(steps the run has taken)
+    // says whether they go on; from the first no, the rest is single-threaded.
+    using KeepThreads = std::function<bool(std::size_t takenSteps)>;
+    bool simulateStepsThreadsWhile(std::size_t steps, unsigned threads, std::size_t window,
+                                   const KeepThreads& keepThreads);
     // Threads the latest steps ran on.
     unsigned threadsUsed() const { return mThreadsUsed; }
     // Number of root steps from the current time to `stopTime` (Hopsan's rounding).
@@ -183,13 +185,14 @@ private:
     void stepOnce();
     void packNodeData();
 
-    struct ThreadTrial {
-        double singleThreadedStepSeconds;
-        std::size_t window;   // steps per timed window
+    // How a threaded run of the automatic choice asks whether its threads go on.
+    struct ThreadCheck {
+        std::size_t window;   // steps between two questions
+        const KeepThreads& keepThreads;
     };
     bool simulateStepsAutoThreaded(std::size_t steps);
     double timeSingleThreadedSteps(std::size_t steps, bool& ok);
-    bool runThreaded(std::size_t steps, unsigned threads, const ThreadTrial* trial, std::size_t& taken);
+    bool runThreaded(std::size_t steps, unsigned threads, const ThreadCheck* check, std::size_t& taken);
     Status initializeInternal(double startTime, double stopTime, ParameterEvaluation evaluation);
     Status initFailure(const Component& c) const;
     void propagateTimestep();

@@ -3,9 +3,16 @@
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/PreparedJob.h"
 
+#include "core/Simulation.h"
+
 #include <algorithm>
 
 namespace tlmhub::server {
+
+unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning)
+{
+    return otherJobsQueued || otherJobsRunning ? 1 : RunOptions::autoThreads;
+}
 
 JobQueue::JobQueue(JobStore& store, StreamHub& hub, JobLimits limits, unsigned workers)
     : mStore(store), mHub(hub), mLimits(limits), mRunner(store, hub, limits),
@@ -156,6 +163,7 @@ void JobQueue::workerLoop()
         std::int64_t jobId = 0, ownerId = 0;
         mWake.wait(lock, [&] { return mStopping || pickNext(jobId, ownerId); });
         if (mStopping) return;
+        const unsigned threads = jobThreads(!mQueued.empty(), !mActive.empty());
         auto control = std::make_shared<JobControl>();
         std::unique_ptr<PreparedJob> compiled;
         if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
@@ -169,9 +177,9 @@ void JobQueue::workerLoop()
         if (marked) {
             const auto request = compiled ? std::nullopt : mStore.request(jobId);
             if (compiled) {
-                mRunner.run(jobId, *compiled, *control);
+                mRunner.run(jobId, *compiled, *control, threads);
             } else if (request) {
-                mRunner.run(jobId, *request, *control);
+                mRunner.run(jobId, *request, *control, threads);
             } else {
                 mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
                 mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");

@@ -1,6 +1,6 @@
 #pragma once
 // The job queue: compiles and stores submitted jobs, and runs them on a pool of worker
-// threads (one thread per job, see JobRunner::run).
+// threads (one worker per job; only a job alone on the server may use more, see jobThreads).
 //
 // Fairness: each user has a FIFO of queued jobs, and the workers serve users round robin,
 // skipping users who already run JobLimits::maxRunningPerUser jobs. A user with many queued
@@ -21,6 +21,11 @@
 #include <vector>
 
 namespace tlmhub::server {
+
+// RunOptions::threads for a job that starts now: automatic (one per core while that is
+// faster) only when no other job is queued or running; otherwise the workers already use the
+// cores, and a job's second thread would wait at every phase barrier for a core.
+unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning);
 
 class JobQueue {
 public:

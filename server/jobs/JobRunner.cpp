@@ -102,20 +102,20 @@ JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string
     return state;
 }
 
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control)
+JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads)
 {
     try {
         PreparedJob job;
         PrepareError prepareError;
         if (!prepareJob(request, mLimits, job, prepareError))
             return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
-        return run(jobId, job, control);
+        return run(jobId, job, control, threads);
     } catch (const std::exception& e) {
         return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }
 }
 
-JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control)
+JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control, unsigned threads)
 {
     const auto started = Clock::now();
     const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
@@ -154,11 +154,10 @@ JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& contro
                 ok = false;
             } else {
                 state.live = &live;
-                // One thread per job, also for a job alone on the server: on a machine whose
-                // cores other processes share, a thread of the pair gets descheduled and the
-                // other waits at every phase barrier (a 15-million-step job under ASan ran
-                // past its 300 s limit that way, twice, with and without re-timed slices).
+                // Automatic threads (a job alone on the server) end by themselves when other
+                // processes take a core later and the threads stop paying off.
                 RunOptions options;
+                options.threads = threads;
                 options.progressInterval = kProgressInterval;
                 options.progress = [&state](std::size_t taken, std::size_t total) {
                     onProgress(&state, taken, total);

@@ -40,9 +40,10 @@ public:
     JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
 
     // The job must already be marked running in the store. Returns its final state.
-    JobState run(std::int64_t jobId, PreparedJob& job, JobControl& control);
+    // `threads` as RunOptions::threads (see jobThreads).
+    JobState run(std::int64_t jobId, PreparedJob& job, JobControl& control, unsigned threads);
     // A job whose compiled form was not kept (queued before a restart): prepared from its request.
-    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control);
+    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads);
 
     // Steps between two progress callbacks: a clock read per 256 steps costs well under 1%
     // even for the smallest models, and bounds how late a wall-time limit is noticed.

@@ -566,6 +566,16 @@ TEST_F(Jobs, UnsubscribedSinkHearsNothing)
     EXPECT_TRUE(gone.snapshot().empty());
 }
 
+// A job may use the cores only when it has them to itself: with another job queued or
+// running, the workers already use them.
+TEST(JobThreads, AutomaticOnlyForAJobAloneOnTheServer)
+{
+    EXPECT_EQ(jobThreads(false, false), RunOptions::autoThreads);
+    EXPECT_EQ(jobThreads(true, false), 1u);
+    EXPECT_EQ(jobThreads(false, true), 1u);
+    EXPECT_EQ(jobThreads(true, true), 1u);
+}
+
 TEST(JobInfo, JsonHasTheApiFields)
 {
     JobInfo info;

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <functional>
-#include <limits>
 
 using namespace tlmhub;
 using namespace tlmhub::test;
@@ -50,33 +49,50 @@ TEST_P(MultiThreading, LogsAreBitwiseEqualToSingleThreaded)
     }
 }
 
-// The automatic thread count switches to one thread in the middle of a run when the threads
-// lose their trial; the logs must not show where. Both outcomes of the trial are forced.
-TEST_P(MultiThreading, ThreadTrialEitherWayGivesTheSingleThreadedLogs)
+// The automatic thread count ends its threads wherever they stop paying off, also in the
+// middle of a run; the logs must not show where. The end is forced: at the first question,
+// midway, or never.
+TEST_P(MultiThreading, ThreadsEndingAtAnyStepGiveTheSingleThreadedLogs)
 {
     const std::string path = sharedDir() + "/hopsan-models/" + GetParam();
     ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
     const auto single = simulateWith(path, 1);
     ASSERT_GT(single.size(), 1u);
-    for (const double baseline : {0.0, std::numeric_limits<double>::infinity()}) {
-        const bool threadsWin = baseline > 0.0;
-        unsigned used = 0;
+    constexpr std::size_t window = 8;
+    enum class End { AtOnce, Midway, Never };
+    for (const End end : {End::AtOnce, End::Midway, End::Never}) {
+        const char* endName = end == End::AtOnce ? "at once" : end == End::Midway ? "midway" : "never";
         std::size_t totalSteps = 0;
-        const auto trial = simulateWith(path, [&](Simulation& sim) {
+        std::vector<std::size_t> asked;   // the run's steps taken at each question
+        unsigned used = 0;
+        const auto logs = simulateWith(path, [&](Simulation& sim) {
             if (Status started = sim.initialise(); !started) return started;
             totalSteps = sim.totalSteps();
-            // RunOptions cannot force the trial's outcome, so the initialised System runs it.
-            const bool finished = sim.system().simulateStepsThreadTrial(totalSteps, 2, baseline, 8);
+            const std::size_t endStep = end == End::AtOnce   ? 0
+                                        : end == End::Midway ? totalSteps / 2
+                                                             : totalSteps + 1;
+            const System::KeepThreads keep = [&](std::size_t taken) {
+                asked.push_back(taken);
+                return taken < endStep;
+            };
+            // RunOptions cannot force where the threads end, so the initialised System runs.
+            const bool finished = sim.system().simulateStepsThreadsWhile(totalSteps, 2, window, keep);
             used = sim.threadsUsed();
-            return finished ? Status::ok() : Status{StatusCode::SimulationStopped, "the thread trial stopped early"};
+            return finished ? Status::ok() : Status{StatusCode::SimulationStopped, "the threaded run stopped early"};
         });
-        ASSERT_EQ(single.size(), trial.size());
+        ASSERT_EQ(single.size(), logs.size());
         for (std::size_t i = 0; i < single.size(); ++i)
-            ASSERT_EQ(single[i], trial[i]) << "column " << i << (threadsWin ? ", threads kept" : ", threads gave up");
-        // Long enough runs finish where the trial said (a run shorter than its probe and
-        // trial windows ends on the threads whatever the outcome).
+            ASSERT_EQ(single[i], logs[i]) << "column " << i << ", threads ending " << endName;
+        // Long enough runs end on the thread count forced (a run shorter than its probe and
+        // warm-up ends on the threads whatever the check says).
         if (totalSteps > 1000) {
-            EXPECT_EQ(used, threadsWin ? 2u : 1u);
+            EXPECT_EQ(used, end == End::Never ? 2u : 1u) << "threads ending " << endName;
+            if (end == End::Midway) {
+                ASSERT_FALSE(asked.empty());
+                EXPECT_LT(asked.front(), totalSteps / 2) << "the threads ran before the middle";
+                EXPECT_GE(asked.back(), totalSteps / 2);
+                EXPECT_LT(asked.back(), totalSteps / 2 + window) << "they ended at the first question past it";
+            }
         }
     }
     // Automatic: whatever it picks on this machine, the logs are the same.
@@ -162,4 +178,34 @@ TEST(MultiThreadingAuto, ShortRunOfASmallModelStaysOnOneThread)
     ASSERT_TRUE(isOk(sim->run({.threads = RunOptions::autoThreads})));
     EXPECT_EQ(sim->threadsUsed(), 1u);
     EXPECT_EQ(sim->takenSteps(), 1000u);
+}
+
+// A progress callback may read the log while the threads run (a server job streams frames
+// this way): a row must count as logged only once every thread has copied its share.
+TEST(MultiThreadingLog, ProgressSeesOnlyCompleteRows)
+{
+    const std::string path = sharedDir() + "/hopsan-models/Example Models/Position Servo.hmf";
+    ASSERT_TRUE(std::filesystem::exists(path)) << "shared model missing: " << path;
+    LoadedModel m = loadHmfFile(path);
+    ASSERT_FALSE(m.hasErrors()) << m.firstError();
+    // A row every step, read right after every step.
+    Result<Simulation> sim = compile(*m.root, {.startTime = 0.0, .stopTime = 1.0, .timestep = 1e-4, .logSamples = 10001});
+    ASSERT_TRUE(isOk(sim.status()));
+    ASSERT_TRUE(isOk(sim->initialise()));
+    const ResultView results = sim->results();
+    std::vector<std::pair<std::size_t, std::vector<double>>> seen;   // (row, its values then)
+    const auto readLastRow = [&](std::size_t, std::size_t) {
+        const std::size_t rows = results.numSamples();
+        if (rows == 0) return;
+        std::vector<double> row;
+        for (const LoggedVariable& v : results.variables()) appendLoggedData(*v.port, v.slot, rows - 1, rows, row);
+        seen.emplace_back(rows - 1, std::move(row));
+    };
+    ASSERT_TRUE(isOk(sim->run({.threads = 2, .progress = readLastRow, .progressInterval = 1})));
+    ASSERT_EQ(sim->threadsUsed(), 2u);
+    const auto columns = loggedColumns(sim->results());
+    ASSERT_GT(seen.size(), 5000u);
+    for (const auto& [row, values] : seen)
+        for (std::size_t i = 0; i < values.size(); ++i)
+            ASSERT_EQ(values[i], columns[i + 1][row]) << results.variable(i).fullName << " in row " << row;
 }
