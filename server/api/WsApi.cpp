@@ -213,7 +213,11 @@ void WsApi::subscribeToJob(std::int64_t jobId, std::vector<std::string> variable
     stream->id = ++mStreams;
     stream->encoding = encoding;
     StreamSink sink;
-    sink.event = [weakSender](nlohmann::json event) {
+    // A newer progress of the job replaces one still waiting for a slow socket.
+    sink.progress = [weakSender, key = "event.progress " + std::to_string(jobId)](nlohmann::json event) {
+        if (auto sender = weakSender.lock()) sender->sendReplaceable(key, toJsonText(event));
+    };
+    sink.done = [weakSender](nlohmann::json event) {
         if (auto sender = weakSender.lock()) sender->send(toJsonText(event));
     };
     sink.frame = [weakSender, stream](StreamFrame frame) {
