@@ -163,10 +163,8 @@ WsApi::Reply WsApi::openModel(const protocol::ModelOpenRequest& request)
         return failure("invalid_model", error);
     mModelId = model->id;
     mModelName = model->name;
-    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
-    data["model_id"] = model->id;
-    data["writable"] = canWrite(mUser, model->ownerId, model->isExample);
-    return success(data);
+    return success(protocol::ModelOpenedData{
+        .modelId = model->id, .model = mSession.model(), .writable = canWrite(mUser, model->ownerId, model->isExample)});
 }
 
 WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
@@ -177,10 +175,7 @@ WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
     mSession.createEmpty(name);
     mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
     mModelName = name;
-    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
-    data["model_id"] = *mModelId;
-    data["writable"] = true;
-    return success(data);
+    return success(protocol::ModelOpenedData{.modelId = *mModelId, .model = mSession.model(), .writable = true});
 }
 
 WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
