@@ -108,7 +108,7 @@ Response getModel(Services& s, Call& call)
     nlohmann::json out = modelSummaryJson(*summary);
     out["writable"] = canWrite(call.who(), summary->ownerId, summary->isExample);
     LoadedModel loaded = loadHmfString(hmf, "", summary->name);
-    if (loaded.root) out["model"] = modelToJson(*loaded.root, summary->name);
+    if (loaded.root) out["model"] = describeModel(*loaded.root, summary->name);
     else out["load_error"] = loaded.firstError();
     return jsonResponse(http::status::ok, out);
 }

@@ -166,10 +166,8 @@ WsApi::Reply WsApi::openModel(const protocol::ModelOpenRequest& request)
         return failure("invalid_model", error);
     mModelId = model->id;
     mModelName = model->name;
-    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
-    data["model_id"] = model->id;
-    data["writable"] = canWrite(mUser, model->ownerId, model->isExample);
-    return success(data);
+    return success(protocol::ModelOpenedData{
+        .modelId = model->id, .model = mSession.model(), .writable = canWrite(mUser, model->ownerId, model->isExample)});
 }
 
 WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
@@ -180,10 +178,7 @@ WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
     mSession.createEmpty(name);
     mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
     mModelName = name;
-    nlohmann::json data = mSession.handle({{"type", "model.get"}}).data;
-    data["model_id"] = *mModelId;
-    data["writable"] = true;
-    return success(data);
+    return success(protocol::ModelOpenedData{.modelId = *mModelId, .model = mSession.model(), .writable = true});
 }
 
 WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
@@ -216,7 +211,11 @@ void WsApi::subscribeToJob(std::int64_t jobId, std::vector<std::string> variable
     stream->id = ++mStreams;
     stream->encoding = encoding;
     StreamSink sink;
-    sink.event = [weakSender](nlohmann::json event) {
+    // A newer progress of the job replaces one still waiting for a slow socket.
+    sink.progress = [weakSender, key = "event.progress " + std::to_string(jobId)](nlohmann::json event) {
+        if (auto sender = weakSender.lock()) sender->sendReplaceable(key, toJsonText(event));
+    };
+    sink.done = [weakSender](nlohmann::json event) {
         if (auto sender = weakSender.lock()) sender->send(toJsonText(event));
     };
     sink.frame = [weakSender, stream](StreamFrame frame) {

@@ -122,9 +122,9 @@ std::string EditSession::saveHmf() const
     return mRoot ? saveHmfString(*mRoot) : std::string();
 }
 
-json EditSession::modelJson() const
+protocol::Model EditSession::model() const
 {
-    return mRoot ? modelToJson(*mRoot, mName) : json();
+    return describeModel(*mRoot, mName);
 }
 
 // ---------------------------------------------------------------- dispatch
@@ -191,7 +191,7 @@ System* EditSession::targetSystem(const json& request, Result& failure)
 
 Result EditSession::modelGet()
 {
-    return success({{"model", modelJson()}});
+    return success(protocol::ModelGetData{.model = model()});
 }
 
 // ---------------------------------------------------------------- components
@@ -215,7 +215,7 @@ Result EditSession::componentAdd(System& system, const protocol::ComponentAddReq
     writePose(component->preservedXml, pose);
     Component* added = component.get();
     system.addComponent(std::move(component));
-    return success({{"component", componentToJson(*added)}});
+    return success(protocol::ComponentAddedData{.component = describeComponent(*added)});
 }
 
 Result EditSession::componentRemove(System& system, const protocol::ComponentRemoveRequest& request)
@@ -285,7 +285,7 @@ Result EditSession::connect(System& system, const protocol::ConnectRequest& requ
                                 e.fromComponent, e.fromPort, e.toComponent, e.toPort)],
                             points);
     }
-    return success({{"connection", connectionToJson(system, e)}});
+    return success(protocol::ConnectedData{.connection = describeConnection(system, e)});
 }
 
 Result EditSession::disconnect(System& system, const protocol::DisconnectRequest& request)
@@ -308,7 +308,7 @@ Result EditSession::parameterGet(System& system, const protocol::ParameterGetReq
     if (!c) return fail("not_found", "no component named '" + compName + "' in system '" + system.name() + "'");
     const Parameter* p = c->parameters().find(paramName);
     if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
-    return success({{"parameter", parameterToJson(*p)}});
+    return success(protocol::ParameterData{.parameter = describeParameter(*p)});
 }
 
 Result EditSession::parameterSet(System& system, const protocol::ParameterSetRequest& request)
@@ -322,7 +322,7 @@ Result EditSession::parameterSet(System& system, const protocol::ParameterSetReq
     if (!p) return fail("not_found", "component '" + compName + "' has no parameter '" + paramName + "'");
     if (const Status assigned = assignParameter(*c, *p, value); !assigned)
         return fail(assigned.code(), compName + "." + paramName + ": " + assigned.message());
-    return success({{"parameter", parameterToJson(*p)}});
+    return success(protocol::ParameterData{.parameter = describeParameter(*p)});
 }
 
 Result EditSession::sysparamSet(System& system, const protocol::SysParamSetRequest& request)
@@ -351,7 +351,7 @@ Result EditSession::sysparamSet(System& system, const protocol::SysParamSetReque
         }
         return fail(evaluated.code(), name + ": " + evaluated.message());
     }
-    return success({{"parameter", systemParameterToJson(*p)}});
+    return success(protocol::SysParamData{.parameter = describeSystemParameter(*p)});
 }
 
 Result EditSession::sysparamRemove(System& system, const protocol::SysParamRemoveRequest& request)
@@ -376,7 +376,7 @@ Result EditSession::modelSettings(System&, const protocol::ModelSettingsRequest&
     root.desiredTimestep = step;
     root.stopTime = stop;
     if (request.logSamples) root.requestedLogSamples = static_cast<std::size_t>(*request.logSamples);
-    return success({{"simulation", simulationSettingsToJson(root)}});
+    return success(protocol::ModelSettingsData{.simulation = describeSimulationSettings(root)});
 }
 
 // ---------------------------------------------------------------- grouping

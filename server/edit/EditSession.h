@@ -37,7 +37,7 @@ public:
 
     const std::string& name() const { return mName; }
     void setName(const std::string& name) { mName = name; }
-    nlohmann::json modelJson() const;   // ModelJson; null if nothing is open
+    protocol::Model model() const;   // the open model as the protocol shows it; isOpen() first
     // The open model, e.g. for starting a simulation of its current state.
     const System* root() const { return mRoot.get(); }
     const std::vector<Message>& loadMessages() const { return mLoadMessages; }

@@ -59,11 +59,6 @@ void editFragment(std::string& xml, Edit edit)
 
 } // namespace
 
-void to_json(nlohmann::json& j, const Pose& pose)
-{
-    j = {{"x", pose.x}, {"y", pose.y}, {"angle", pose.angle}, {"flipped", pose.flipped}};
-}
-
 Pose readPose(const std::string& preservedXml)
 {
     Pose pose;

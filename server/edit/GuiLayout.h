@@ -3,8 +3,6 @@
 // does not interpret): a component's or system port's pose, and a connection's line points.
 // Reading never fails (missing data gives defaults); writing changes only the element it
 // is about and keeps every other preserved child as it was, so Hopsan still reads the file.
-#include <nlohmann/json.hpp>
-
 #include <array>
 #include <string>
 #include <vector>
@@ -18,8 +16,6 @@ struct Pose {
     double angle = 0.0;
     bool flipped = false;
 };
-
-void to_json(nlohmann::json& j, const Pose& pose);
 
 using LinePoint = std::array<double, 2>;
 

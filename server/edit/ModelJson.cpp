@@ -4,14 +4,13 @@
 #include "server/edit/GuiLayout.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <utility>
 
 namespace tlmhub::server {
 
 namespace {
-
-using nlohmann::json;
 
 // The protocol's four port kinds; multiports report their base kind and multiport = true.
 const char* portKindForJson(PortKind kind)
@@ -27,42 +26,48 @@ const char* portKindForJson(PortKind kind)
 
 std::string nodeTypeName(NodeType type) { return std::string(nodeTypeInfo(type).typeName); }
 
-json portToJson(const Port& port)
+protocol::Pose describePose(const Pose& pose)
 {
-    return {{"name", port.name()},
-            {"node_type", nodeTypeName(port.nodeType())},
-            {"kind", portKindForJson(port.kind())},
-            {"multiport", port.isMultiport()},
-            {"connected", port.isConnected()}};
+    return {.x = pose.x, .y = pose.y, .angle = pose.angle, .flipped = pose.flipped};
 }
 
-json systemPortToJson(const System& system, const Port& port)
+protocol::Port describePort(const Port& port)
+{
+    return {.name = port.name(),
+            .nodeType = nodeTypeName(port.nodeType()),
+            .kind = portKindForJson(port.kind()),
+            .multiport = port.isMultiport(),
+            .connected = port.isConnected()};
+}
+
+protocol::SystemPort describeSystemPort(const System& system, const Port& port)
 {
     auto extras = system.preservedSystemPortXml.find(port.name());
     const Pose pose = extras == system.preservedSystemPortXml.end() ? Pose{} : readPose(extras->second);
-    return {{"name", port.name()},
-            {"node_type", port.nodeType() == NodeType::Empty ? json(nullptr) : json(nodeTypeName(port.nodeType()))},
-            {"pose", pose}};
+    return {.name = port.name(),
+            .nodeType = port.nodeType() == NodeType::Empty ? std::nullopt
+                                                            : std::optional(nodeTypeName(port.nodeType())),
+            .pose = describePose(pose)};
 }
 
 } // namespace
 
-json parameterToJson(const Parameter& p)
+protocol::Param describeParameter(const Parameter& p)
 {
-    return {{"name", p.name},
-            {"value", p.value},
-            {"unit", p.unit},
-            {"description", p.description},
-            {"type", parameterTypeName(p.type)}};
+    return {.name = p.name,
+            .value = p.value,
+            .unit = p.unit,
+            .description = p.description,
+            .type = parameterTypeName(p.type)};
 }
 
-json systemParameterToJson(const Parameter& p)
+protocol::SysParam describeSystemParameter(const Parameter& p)
 {
-    return {{"name", p.name},
-            {"value", p.value},
-            {"type", parameterTypeName(p.type)},
-            {"unit", p.unit},
-            {"description", p.description}};
+    return {.name = p.name,
+            .value = p.value,
+            .type = parameterTypeName(p.type),
+            .unit = p.unit,
+            .description = p.description};
 }
 
 std::vector<ConnectionEnds> connectionsOf(const System& system)
@@ -113,72 +118,69 @@ const std::string* preservedConnectionXml(const System& system, const Connection
     return it == extras.end() ? nullptr : &it->second;
 }
 
-json connectionToJson(const System& system, const ConnectionEnds& e)
+protocol::Connection describeConnection(const System& system, const ConnectionEnds& e)
 {
-    json points = json::array();
+    std::vector<std::vector<double>> points;
     bool reversed = false;
     if (const std::string* xml = preservedConnectionXml(system, e, reversed)) {
         std::vector<LinePoint> line = readLinePoints(*xml);
         if (reversed) std::reverse(line.begin(), line.end());
         for (const LinePoint& p : line) points.push_back({p[0], p[1]});
     }
-    return {{"from", {{"component", e.fromComponent}, {"port", e.fromPort}}},
-            {"to", {{"component", e.toComponent}, {"port", e.toPort}}},
-            {"points", points}};
+    return {.from = {.component = e.fromComponent, .port = e.fromPort},
+            .to = {.component = e.toComponent, .port = e.toPort},
+            .points = std::move(points)};
 }
 
-json componentToJson(const Component& c)
+protocol::Component describeComponent(const Component& c)
 {
-    json ports = json::array();
-    for (const Port* p : c.ports()) ports.push_back(portToJson(*p));
-    json parameters = json::array();
-    for (const auto& p : c.parameters().all()) parameters.push_back(parameterToJson(*p));
-    json out = {{"name", c.name()},
-                {"type", c.typeName()},
-                {"kind", c.isSystem() ? "system" : cqsKindName(c.kind())},
-                {"pose", readPose(c.preservedXml)},
-                {"ports", ports},
-                {"parameters", parameters}};
-    if (c.isSystem()) out["system"] = systemToJson(static_cast<const System&>(c));
-    return out;
+    std::vector<protocol::Port> ports;
+    for (const Port* p : c.ports()) ports.push_back(describePort(*p));
+    std::vector<protocol::Param> parameters;
+    for (const auto& p : c.parameters().all()) parameters.push_back(describeParameter(*p));
+    return {.name = c.name(),
+            .type = c.typeName(),
+            .kind = c.isSystem() ? "system" : cqsKindName(c.kind()),
+            .pose = describePose(readPose(c.preservedXml)),
+            .ports = std::move(ports),
+            .parameters = std::move(parameters),
+            .system = c.isSystem() ? std::optional(describeSystem(static_cast<const System&>(c))) : std::nullopt};
 }
 
-json systemToJson(const System& s)
+protocol::System describeSystem(const System& s)
 {
-    json parameters = json::array();
+    std::vector<protocol::SysParam> parameters;
     for (const auto& p : s.parameters().all())
-        if (!p->isStartValue) parameters.push_back(systemParameterToJson(*p));
-    json ports = json::array();
+        if (!p->isStartValue) parameters.push_back(describeSystemParameter(*p));
+    std::vector<protocol::SystemPort> ports;
     for (const Port* p : s.ports())
-        if (p->kind() == PortKind::System) ports.push_back(systemPortToJson(s, *p));
-    json components = json::array();
-    for (const Component* c : s.componentsInOrder()) components.push_back(componentToJson(*c));
-    json connections = json::array();
-    for (const ConnectionEnds& e : connectionsOf(s)) connections.push_back(connectionToJson(s, e));
-
-    json out = {{"name", s.name()},
-                {"type", s.isConditional() ? "ConditionalSubsystem" : "Subsystem"},
-                {"timestep", s.desiredTimestep},
-                {"inherit_timestep", s.inheritTimestep},
-                {"parameters", parameters},
-                {"ports", ports},
-                {"components", components},
-                {"connections", connections}};
-    if (s.isRoot()) out["simulation"] = simulationSettingsToJson(s);
-    return out;
+        if (p->kind() == PortKind::System) ports.push_back(describeSystemPort(s, *p));
+    std::vector<protocol::Component> components;
+    for (const Component* c : s.componentsInOrder()) components.push_back(describeComponent(*c));
+    std::vector<protocol::Connection> connections;
+    for (const ConnectionEnds& e : connectionsOf(s)) connections.push_back(describeConnection(s, e));
+    return {.name = s.name(),
+            .type = s.isConditional() ? "ConditionalSubsystem" : "Subsystem",
+            .timestep = s.desiredTimestep,
+            .inheritTimestep = s.inheritTimestep,
+            .simulation = s.isRoot() ? std::optional(describeSimulationSettings(s)) : std::nullopt,
+            .parameters = std::move(parameters),
+            .ports = std::move(ports),
+            .components = std::move(components),
+            .connections = std::move(connections)};
 }
 
-json simulationSettingsToJson(const System& root)
+protocol::SimulationSettings describeSimulationSettings(const System& root)
 {
-    return {{"start", root.startTime},
-            {"step", root.desiredTimestep},
-            {"stop", root.stopTime},
-            {"log_samples", root.requestedLogSamples}};
+    return {.start = root.startTime,
+            .step = root.desiredTimestep,
+            .stop = root.stopTime,
+            .logSamples = static_cast<std::int64_t>(root.requestedLogSamples)};
 }
 
-json modelToJson(const System& root, const std::string& modelName)
+protocol::Model describeModel(const System& root, const std::string& modelName)
 {
-    return {{"name", modelName}, {"system", systemToJson(root)}};
+    return {.name = modelName, .system = describeSystem(root)};
 }
 
 } // namespace tlmhub::server

@@ -1,23 +1,24 @@
 #pragma once
-// The editable JSON view of a model (ModelJson in protocol/messages.schema.json): systems,
+// The editable view of a model (Model in protocol/messages.schema.json): systems,
 // components with ports, parameters and GUI poses, and connections with their line points.
-// Names and kinds are the ones the catalogue (core/Catalogue.cpp) and .hmf files use.
+// Built as the structs generated from the schema, so what the server sends cannot drift
+// from what the schema says. Names and kinds are the ones the catalogue
+// (core/Catalogue.cpp) and .hmf files use.
 #include "core/System.h"
-
-#include <nlohmann/json.hpp>
+#include "server/protocol/Messages.generated.h"
 
 #include <string>
 #include <vector>
 
 namespace tlmhub::server {
 
-nlohmann::json modelToJson(const System& root, const std::string& modelName);
-nlohmann::json componentToJson(const Component& component);
-nlohmann::json systemToJson(const System& system);
-// The root's own times and log samples (SimulationSettings).
-nlohmann::json simulationSettingsToJson(const System& root);
-nlohmann::json parameterToJson(const Parameter& parameter);      // Param
-nlohmann::json systemParameterToJson(const Parameter& parameter); // SysParam
+protocol::Model describeModel(const System& root, const std::string& modelName);
+protocol::Component describeComponent(const Component& component);
+protocol::System describeSystem(const System& system);
+// The root's own times and log samples.
+protocol::SimulationSettings describeSimulationSettings(const System& root);
+protocol::Param describeParameter(const Parameter& parameter);
+protocol::SysParam describeSystemParameter(const Parameter& parameter);
 
 // One connection made in a system, each end named as .hmf names it: a system port of the
 // system itself has its own name as component and port.
@@ -31,6 +32,6 @@ std::vector<ConnectionEnds> connectionsOf(const System& system);
 // The connection's GUI extras (line points) stored for it in either direction, or null;
 // `reversed` tells that they were stored as to -> from (their points run that way).
 const std::string* preservedConnectionXml(const System& system, const ConnectionEnds& ends, bool& reversed);
-nlohmann::json connectionToJson(const System& system, const ConnectionEnds& ends);
+protocol::Connection describeConnection(const System& system, const ConnectionEnds& ends);
 
 } // namespace tlmhub::server

@@ -17,6 +17,9 @@ public:
     virtual ~WebSocketSender() = default;
     // Queues a reply or event; these are never dropped.
     virtual void send(std::string text) = 0;
+    // Queues an event that states a level: it replaces the one with the same `key` (not
+    // empty; the application's choice) that is still waiting to be sent (OutgoingQueue).
+    virtual void sendReplaceable(std::string key, std::string text) = 0;
     // Queues a stream frame, which a slow connection merges with the next frames of its
     // stream, or gives up for the frame's notice past its byte limit (OutgoingQueue).
     virtual void sendFrame(std::unique_ptr<MergeableFrame> frame) = 0;

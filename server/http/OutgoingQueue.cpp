@@ -1,6 +1,7 @@
 #include "server/http/OutgoingQueue.h"
 
 #include <algorithm>
+#include <cassert>
 #include <map>
 
 namespace tlmhub::server {
@@ -8,7 +9,21 @@ namespace tlmhub::server {
 void OutgoingQueue::push(std::string text)
 {
     const std::size_t size = text.size();
-    add({std::move(text), nullptr, size});
+    add({std::move(text), nullptr, size, {}});
+}
+
+void OutgoingQueue::pushReplaceable(std::string key, std::string text)
+{
+    assert(!key.empty());   // an empty key would match every plain reply
+    const auto waiting = std::find_if(mItems.begin(), mItems.end(), [&key](const Item& item) { return item.key == key; });
+    if (waiting == mItems.end()) {
+        const std::size_t size = text.size();
+        return add({std::move(text), nullptr, size, std::move(key)});
+    }
+    mBytes = mBytes - waiting->bytes + text.size();
+    waiting->bytes = text.size();
+    waiting->text = std::move(text);
+    giveUpStreamsPastTheByteLimit();
 }
 
 void OutgoingQueue::push(std::unique_ptr<MergeableFrame> frame)
@@ -24,7 +39,7 @@ void OutgoingQueue::push(std::unique_ptr<MergeableFrame> frame)
         }
     }
     const std::size_t size = frame->bytes();
-    add({{}, std::move(frame), size});
+    add({{}, std::move(frame), size, {}});
 }
 
 void OutgoingQueue::add(Item item)

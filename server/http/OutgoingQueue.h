@@ -8,9 +8,12 @@
 //   (event.resync: the client reads the stored result instead), until the queue fits again.
 //   If replies and notices alone pass the limit the queue reports itself overflowing (the
 //   session then closes: a client that never reads must not hold the server's memory).
-// Replies and events other than frames are never dropped, merged or reordered. The message
-// being written has left the queue (takeNext), so nothing here can touch it, but its bytes
-// count until it is written.
+// A replaceable message states a level (only its latest value matters, like a job's
+// progress): a newer one with the same key replaces the one still waiting, in its place, so
+// a slow client gets one per key and a stream of later messages cannot keep pushing it back.
+// Other replies and events are never dropped, merged or reordered. The message being written
+// has left the queue (takeNext), so nothing here can touch it, but its bytes count until it is
+// written.
 #include "server/http/MergeableFrame.h"
 
 #include <cstddef>
@@ -28,6 +31,8 @@ public:
         : mLimit(limit), mByteLimit(byteLimit) {}
 
     void push(std::string text);   // a reply or event: always queued
+    // Replaces the waiting message with this `key` (not empty), else queues like push(text).
+    void pushReplaceable(std::string key, std::string text);
     // A frame of a stream that was given up is discarded: its client reads the stored result.
     void push(std::unique_ptr<MergeableFrame> frame);
     bool empty() const { return mItems.empty(); }
@@ -45,6 +50,7 @@ private:
         std::string text;                        // a reply, event or notice; empty for a frame
         std::unique_ptr<MergeableFrame> frame;   // a frame, still data
         std::size_t bytes = 0;
+        std::string key;                         // of a replaceable message, else empty
     };
     void add(Item item);
     // The stream's last waiting frame, or null.

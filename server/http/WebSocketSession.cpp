@@ -24,6 +24,12 @@ public:
             if (auto session = weak.lock()) session->enqueue(std::move(text));
         });
     }
+    void sendReplaceable(std::string key, std::string text) override
+    {
+        net::post(mExecutor, [weak = mSession, key = std::move(key), text = std::move(text)]() mutable {
+            if (auto session = weak.lock()) session->enqueueReplaceable(std::move(key), std::move(text));
+        });
+    }
     void sendFrame(std::unique_ptr<MergeableFrame> frame) override
     {
         net::post(mExecutor, [weak = mSession, frame = std::move(frame)]() mutable {
@@ -115,6 +121,13 @@ void WebSocketSession::enqueue(std::string text)
 {
     if (mClosing) return;
     mQueue.push(std::move(text));
+    afterEnqueue();
+}
+
+void WebSocketSession::enqueueReplaceable(std::string key, std::string text)
+{
+    if (mClosing) return;
+    mQueue.pushReplaceable(std::move(key), std::move(text));
     afterEnqueue();
 }
 

@@ -25,6 +25,7 @@ public:
 
     // Called on the strand through the sender.
     void enqueue(std::string text);
+    void enqueueReplaceable(std::string key, std::string text);
     void enqueueFrame(std::unique_ptr<MergeableFrame> frame);
     void closeWithReason(const std::string& reason);
 

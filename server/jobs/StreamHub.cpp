@@ -54,7 +54,7 @@ void StreamHub::publishProgress(std::int64_t jobId, double progress)
     std::lock_guard lock(mMutex);
     auto [first, last] = mByJob.equal_range(jobId);
     for (auto j = first; j != last; ++j)
-        mSubscriptions.at(j->second).sink.event({{"type", "event.progress"}, {"job_id", jobId}, {"progress", progress}});
+        mSubscriptions.at(j->second).sink.progress({{"type", "event.progress"}, {"job_id", jobId}, {"progress", progress}});
 }
 
 void StreamHub::publishFrames(std::int64_t jobId, const FrameSource& source)
@@ -177,7 +177,7 @@ void StreamHub::sendDone(Subscription& s, JobState state, const std::string& err
 {
     nlohmann::json done = {{"type", "event.done"}, {"job_id", s.jobId}, {"state", jobStateName(state)}};
     if (!error.empty()) done["error"] = error;
-    s.sink.event(std::move(done));
+    s.sink.done(std::move(done));
 }
 
 } // namespace tlmhub::server

@@ -29,10 +29,12 @@
 
 namespace tlmhub::server {
 
-// Where a subscription's events go; both run on the publishing thread (see above).
+// Where a subscription's events go; all run on the publishing thread (see above).
 struct StreamSink {
-    std::function<void(nlohmann::json event)> event;   // event.progress, event.done
+    // event.progress: a level, so a newer one may replace one not yet sent.
+    std::function<void(nlohmann::json event)> progress;
     std::function<void(StreamFrame frame)> frame;      // the samples of event.frame
+    std::function<void(nlohmann::json event)> done;    // event.done
 };
 
 class StreamHub {

@@ -6,6 +6,8 @@
 #include <SQLiteCpp/Statement.h>
 #include <SQLiteCpp/Transaction.h>
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 namespace {
@@ -178,13 +180,13 @@ bool UserStore::changePassword(std::int64_t id, const std::string& oldPw,
     return true;
 }
 
-std::size_t UserStore::enabledAdminsOtherThan(std::int64_t id)
+std::vector<User> UserStore::usersOtherThan(std::int64_t id)
 {
-    SQLite::Statement q(mDb.sql(),
-                        "SELECT COUNT(*) FROM users WHERE role = 'admin' AND disabled = 0 AND id != ?");
+    SQLite::Statement q(mDb.sql(), "SELECT id, username, role, disabled FROM users WHERE id != ?");
     q.bind(1, id);
-    q.executeStep();
-    return static_cast<std::size_t>(q.getColumn(0).getInt64());
+    std::vector<User> users;
+    while (q.executeStep()) users.push_back(readUser(q));
+    return users;
 }
 
 std::optional<User> UserStore::update(std::int64_t id, const std::optional<std::string>& role,
@@ -201,8 +203,9 @@ std::optional<User> UserStore::update(std::int64_t id, const std::optional<std::
     const bool administeredBefore = administersServer(user);
     if (role) user.role = *role;
     if (disabled) user.disabled = *disabled;
-    // Someone must be left who can administer the server.
-    if (administeredBefore && !administersServer(user) && enabledAdminsOtherThan(id) == 0) {
+    // Someone must be left who can administer the server; AccessPolicy says who can.
+    if (administeredBefore && !administersServer(user) &&
+        std::ranges::none_of(usersOtherThan(id), administersServer)) {
         error = kLastAdmin;
         return std::nullopt;
     }

@@ -57,7 +57,8 @@ public:
 
 private:
     std::optional<std::string> passwordHash(const std::string& username, std::int64_t& id);
-    std::size_t enabledAdminsOtherThan(std::int64_t id);
+    // Every account but `id`, with the database lock held by the caller.
+    std::vector<User> usersOtherThan(std::int64_t id);
 
     Database& mDb;
 };

@@ -48,7 +48,7 @@ const json* findConnection(const json& system, const std::string& a, const std::
     return nullptr;
 }
 
-json rootSystem(const EditSession& s) { return s.modelJson().at("system"); }
+json rootSystem(const EditSession& s) { return json(s.model()).at("system"); }
 
 // Checks the reply data of a request type against its x-replies definition.
 void expectReplyShape(const std::string& requestType, const EditSession::Result& r)
@@ -65,7 +65,7 @@ TEST(ModelJson, ListsEveryComponentWithPoseAndEveryConnectionWithPoints)
 {
     const std::string hmf = readFile(kModels + "Position Servo.hmf");
     EditSession session = openServo();
-    const json model = session.modelJson();
+    const json model = json(session.model());
     std::string error;
     EXPECT_TRUE(SchemaValidator::protocol().validate("Model", model, error)) << error;
     EXPECT_EQ(model.at("name"), "Position Servo");
@@ -122,7 +122,7 @@ TEST(ModelJson, SubsystemsNestWithTheirOwnComponentsAndSystemPorts)
     EditSession session;
     std::string error;
     ASSERT_TRUE(session.openHmf(readFile(kModels + "Sub System Example.hmf"), "Sub", error)) << error;
-    const json model = session.modelJson();
+    const json model = json(session.model());
     EXPECT_TRUE(SchemaValidator::protocol().validate("Model", model, error)) << error;
     const json* servo = findByName(model.at("system").at("components"), "Servo1");
     ASSERT_NE(servo, nullptr);
@@ -406,8 +406,8 @@ TEST(EditSession, SavingKeepsEveryConnectionLine)
         ASSERT_TRUE(session.openHmf(readFile(kModels + file), file, error)) << error;
         EditSession reloaded;
         ASSERT_TRUE(reloaded.openHmf(session.saveHmf(), file, error)) << error;
-        const json before = session.modelJson();
-        const json after = reloaded.modelJson();
+        const json before = json(session.model());
+        const json after = json(reloaded.model());
         EXPECT_EQ(before, after) << file;
         std::size_t lines = 0;
         for (const json& c : before["system"]["connections"]) lines += c["points"].empty() ? 0 : 1;

@@ -75,11 +75,13 @@ struct EventLog {
 
     StreamSink sink()
     {
-        StreamSink sink;
-        sink.event = [this](nlohmann::json e) {
+        auto record = [this](nlohmann::json e) {
             std::lock_guard lock(mutex);
             events.push_back(std::move(e));
         };
+        StreamSink sink;
+        sink.progress = record;
+        sink.done = record;
         sink.frame = [this](StreamFrame frame) {
             std::lock_guard lock(mutex);
             events.push_back(nlohmann::json::parse(frame.jsonText(frames++)));
@@ -253,11 +255,11 @@ TEST_F(Jobs, WorkersServeUsersRoundRobin)
     std::vector<std::int64_t> ids;
     auto record = [&](std::int64_t id) {
         StreamSink sink;
-        sink.event = [&, id](nlohmann::json e) {
-            if (e.at("type") != "event.done") return;
+        sink.done = [&, id](nlohmann::json) {
             std::lock_guard lock(mutex);
             finishedOrder.push_back(id);
         };
+        sink.progress = [](nlohmann::json) {};
         sink.frame = [](StreamFrame) {};
         return sink;
     };

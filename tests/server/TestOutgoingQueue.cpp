@@ -1,5 +1,6 @@
 // The WebSocket send queue: a slow reader's frames merge (no samples lost), past the byte
-// limit a stream gives way to its notice, replies are never dropped, merged or reordered.
+// limit a stream gives way to its notice, a replaceable message (a job's progress) replaces
+// its waiting predecessor, other replies are never dropped, merged or reordered.
 #include "server/http/OutgoingQueue.h"
 
 #include <gtest/gtest.h>
@@ -187,4 +188,38 @@ TEST(OutgoingQueue, TheMessageBeingWrittenCountsUntilWritten)
     EXPECT_EQ(q.bytes(), 10u);
     EXPECT_FALSE(q.overflowing());
     EXPECT_EQ(drain(q), (std::vector<std::string>{"resync1", "ijk"}));
+}
+
+// Progress is a level: a slow reader gets only the latest value per key, in the place of the
+// first waiting one, so frames queued after it cannot keep pushing it back.
+TEST(OutgoingQueue, AReplaceableMessageReplacesTheWaitingOneWithItsKey)
+{
+    OutgoingQueue q(3);
+    const Stream a{1};
+    q.push(a.frame("a1"));
+    q.pushReplaceable("job1", "p1=0.1");
+    q.push(a.frame("a2"));
+    q.pushReplaceable("job2", "p2=0.5");   // another key: queued past the limit, like a reply
+    std::string merged = "a2";
+    for (char i = '3'; i <= '9'; ++i) {
+        const std::string samples{'a', i};
+        q.push(a.frame(samples));   // full: merged into a2
+        merged += samples;
+        q.pushReplaceable("job1", std::string("p1=0.") + i);
+    }
+    q.push("done1");
+    EXPECT_EQ(q.size(), 5u);
+    EXPECT_EQ(drain(q), (std::vector<std::string>{"s1:a1", "p1=0.9", "s1:" + merged + "+7", "p2=0.5", "done1"}));
+}
+
+TEST(OutgoingQueue, AReplaceableMessageBeingWrittenIsNotReplaced)
+{
+    OutgoingQueue q(10);
+    q.pushReplaceable("job1", "p1=0.1");
+    EXPECT_EQ(q.takeNext().data, "p1=0.1");   // being written
+    q.pushReplaceable("job1", "p1=0.2");
+    q.pushReplaceable("job1", "p1=0.25");
+    EXPECT_EQ(q.bytes(), 6u + 7);
+    q.written();
+    EXPECT_EQ(drain(q), (std::vector<std::string>{"p1=0.25"}));
 }

@@ -337,6 +337,41 @@ TEST_F(Security, AdministratorsChangeRolesAndTheLastAdminStays)
     EXPECT_EQ(admin.get("/api/v1/auth/me").status, 200);
 }
 
+// Only an enabled administrator counts as one: the last of them can be neither demoted nor
+// disabled, however many disabled or demoted administrators there are beside it.
+TEST(SecurityLastAdministrator, TheLastEnabledAdministratorCanBeNeitherDemotedNorDisabled)
+{
+    const fs::path dir = freshTempDir("lastadmin");
+    ServerProcess server(dir);
+    HttpClient admin(server.port());
+    admin.login("admin", kAdminPassword);
+    const auto created = admin.post("/api/v1/users", {{"username", "deputy"}, {"password", "deputy-password"}, {"role", "admin"}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const std::string deputy = "/api/v1/users/" + std::to_string(created.json()["id"].get<std::int64_t>());
+    const std::string self = "/api/v1/users/" + std::to_string(admin.get("/api/v1/auth/me").json()["id"].get<std::int64_t>());
+    auto patch = [](HttpClient& as, const std::string& user, const std::string& body) {
+        return as.request(http::verb::patch, user, body).status;
+    };
+
+    EXPECT_EQ(patch(admin, deputy, "{\"disabled\": true}"), 200);
+    EXPECT_EQ(patch(admin, self, "{\"role\": \"user\"}"), 409) << "a disabled administrator does not count";
+    EXPECT_EQ(patch(admin, deputy, "{\"disabled\": false}"), 200);
+    EXPECT_EQ(patch(admin, deputy, "{\"role\": \"teacher\"}"), 200);
+    EXPECT_EQ(patch(admin, self, "{\"role\": \"teacher\"}"), 409) << "a demoted administrator does not count";
+    EXPECT_EQ(patch(admin, self, "{\"role\": \"admin\", \"disabled\": false}"), 200) << "no change is no demotion";
+    EXPECT_EQ(patch(admin, deputy, "{\"role\": \"admin\"}"), 200);
+
+    // With two, either may step down; then the other is the last.
+    EXPECT_EQ(patch(admin, self, "{\"role\": \"user\"}"), 200);
+    HttpClient second(server.port());
+    second.login("deputy", "deputy-password");
+    EXPECT_EQ(patch(second, deputy, "{\"role\": \"user\"}"), 409);
+    EXPECT_EQ(patch(second, deputy, "{\"disabled\": true}"), 409);
+    EXPECT_EQ(second.get("/api/v1/users").status, 200) << "still an administrator";
+    EXPECT_EQ(admin.get("/api/v1/users").status, 403) << "no longer one";
+    fs::remove_all(dir);
+}
+
 // D7: the send queue was bounded by count only; unread replies of a large model grew the
 // server's memory into gigabytes.
 TEST(SecurityBacklog, AClientThatNeverReadsIsDisconnectedAndItsQueueFreed)

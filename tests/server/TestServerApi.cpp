@@ -2,6 +2,8 @@
 // real HTTP and WebSocket clients.
 #include "ServerHarness.h"
 
+#include "server/protocol/SchemaValidator.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -235,6 +237,31 @@ TEST_F(ServerApi, WebSocketErrorsKeepTheConnectionWorking)
     HttpClient bob = as("bob");
     WsClient bobWs(server->port(), bob.login("bob", "bob-password"));
     EXPECT_EQ(bobWs.call("model.open", {{"model_id", id}})["error"]["code"], "not_found");
+}
+
+// What the server sends with a model in it has the shape the schema gives it: the WebSocket
+// replies (x-replies) and GET /models/{id} (ModelDetail), for a model with subsystems.
+TEST_F(ServerApi, RepliesCarryingAModelMatchTheSchema)
+{
+    HttpClient alice = as("alice");
+    const auto id = uploadModel(alice, kExampleModels / "Sub System Example.hmf", "subsystems");
+    WsClient ws(server->port(), alice.login("alice", testPassword("alice")));
+    const auto& schema = tlmhub::server::SchemaValidator::protocol();
+    auto expectReplyShape = [&](const std::string& type, const nlohmann::json& fields) {
+        const nlohmann::json reply = ws.call(type, fields);
+        std::string error;
+        EXPECT_EQ(reply["type"], "reply") << type << ": " << reply.dump().substr(0, 300);
+        EXPECT_TRUE(schema.validateServerMessage(reply, type, error)) << type << ": " << error;
+        return reply;
+    };
+    const auto opened = expectReplyShape("model.open", {{"model_id", id}});
+    EXPECT_FALSE(opened["data"]["model"]["system"]["components"].empty());
+    expectReplyShape("model.get", {});
+    expectReplyShape("component.add", {{"component_type", "Subsystem"}});
+    expectReplyShape("model.create", {{"name", "empty"}});
+    std::string error;
+    const auto detail = alice.get("/api/v1/models/" + std::to_string(id));
+    EXPECT_TRUE(schema.validate("ModelDetail", detail.json(), error)) << error;
 }
 
 TEST_F(ServerApi, WebSocketWithoutTokenIsRefused)

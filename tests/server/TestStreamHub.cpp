@@ -78,7 +78,8 @@ TEST(StreamHub, SubscriptionsOfTheSameVariablesShareEachPublicationsSamples)
     std::vector<StreamFrame> frames(4);
     auto sink = [&](std::size_t i) {
         StreamSink s;
-        s.event = [](nlohmann::json) {};
+        s.progress = [](nlohmann::json) {};
+        s.done = [](nlohmann::json) {};
         s.frame = [&frames, i](StreamFrame f) { frames[i] = std::move(f); };
         return s;
     };
