@@ -19,10 +19,7 @@ void HydraulicVolumeMultiPort::configure()
 void HydraulicVolumeMultiPort::initialize()
 {
     mNumPorts = getNumPorts(mpP1);
-    mvpP1_p.resize(mNumPorts);
-    mvpP1_q.resize(mNumPorts);
-    mvpP1_c.resize(mNumPorts);
-    mvpP1_Zc.resize(mNumPorts);
+    mP1.resize(mNumPorts);
 
     const double N = static_cast<double>(mNumPorts);
     const double V = *mpV;
@@ -36,19 +33,19 @@ void HydraulicVolumeMultiPort::initialize()
 
     double pTot = 0.0;
     for (std::size_t i = 0; i < mNumPorts; ++i) {
-        mvpP1_p[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Pressure);
-        mvpP1_q[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Flow);
-        mvpP1_c[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::WaveVariable);
-        mvpP1_Zc[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::CharImpedance);
+        mP1[i].p = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Pressure);
+        mP1[i].q = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Flow);
+        mP1[i].c = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::WaveVariable);
+        mP1[i].Zc = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::CharImpedance);
 
-        *mvpP1_p[i] = p0;
-        *mvpP1_q[i] = q0;
+        *mP1[i].p = p0;
+        *mP1[i].q = q0;
         pTot += p0 + Zc * q0;
-        *mvpP1_Zc[i] = Zc;
+        *mP1[i].Zc = Zc;
     }
     pTot = pTot / N;
     for (std::size_t i = 0; i < mNumPorts; ++i) {
-        *mvpP1_c[i] = 2.0 * pTot - (*mvpP1_p[i]) - Zc * (*mvpP1_q[i]);
+        *mP1[i].c = 2.0 * pTot - (*mP1[i].p) - Zc * (*mP1[i].q);
     }
 }
 
@@ -63,16 +60,16 @@ void HydraulicVolumeMultiPort::simulateOneTimestep()
 
     double cTot = 0.0;
     for (std::size_t i = 0; i < mNumPorts; ++i) {
-        cTot += (*mvpP1_c[i]) + 2.0 * Zc * (*mvpP1_q[i]);
+        cTot += (*mP1[i].c) + 2.0 * Zc * (*mP1[i].q);
     }
     const double pAvg = cTot / N;
 
     // Each new c_i depends only on its own old c_i, so updating in place is safe.
     for (std::size_t i = 0; i < mNumPorts; ++i) {
-        const double ci = *mvpP1_c[i];
-        const double c0 = 2.0 * pAvg - ci - 2.0 * Zc * (*mvpP1_q[i]);
-        *mvpP1_Zc[i] = Zc;
-        *mvpP1_c[i] = alpha * ci + (1.0 - alpha) * c0;
+        const double ci = *mP1[i].c;
+        const double c0 = 2.0 * pAvg - ci - 2.0 * Zc * (*mP1[i].q);
+        *mP1[i].Zc = Zc;
+        *mP1[i].c = alpha * ci + (1.0 - alpha) * c0;
     }
 }
 

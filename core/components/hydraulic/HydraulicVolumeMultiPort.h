@@ -1,5 +1,6 @@
 #pragma once
 #include "core/Component.h"
+#include "core/components/hydraulic/HydraulicSubPortData.h"
 
 #include <vector>
 
@@ -20,7 +21,7 @@ private:
     double* mpAlpha = nullptr;
     double mPhigh = 2e7;
     std::size_t mNumPorts = 0;
-    std::vector<double*> mvpP1_p, mvpP1_q, mvpP1_c, mvpP1_Zc;
+    std::vector<HydraulicSubPortData> mP1;
 };
 
 } // namespace tlmhub
