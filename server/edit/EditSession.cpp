@@ -4,7 +4,6 @@
 #include "core/ParameterEvaluator.h"
 #include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
-#include "core/hmf/HmfSaver.h"
 #include "core/hmf/PreservedXml.h"
 #include "server/api/CoreErrorCodes.h"
 #include "server/edit/ModelJson.h"
@@ -89,7 +88,7 @@ bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::
             error = loaded.firstError().empty() ? "the model could not be loaded" : loaded.firstError();
             return false;
         }
-        mRoot = std::move(loaded.root);
+        mModel.emplace(std::move(loaded.root));
         mLoadMessages = std::move(loaded.messages);
         mName = name;
         return true;
@@ -101,27 +100,27 @@ bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::
 
 void EditSession::createEmpty(const std::string& name)
 {
-    mRoot = std::make_unique<System>();
-    mRoot->setNameRaw(sanitizeName(name));
+    mModel.emplace();
+    mModel->root().setNameRaw(sanitizeName(name));
     mLoadMessages.clear();
     mName = name;
 }
 
 void EditSession::close()
 {
-    mRoot.reset();
+    mModel.reset();
     mLoadMessages.clear();
     mName.clear();
 }
 
 std::string EditSession::saveHmf() const
 {
-    return mRoot ? saveHmfString(*mRoot) : std::string();
+    return mModel ? mModel->toHmf() : std::string();
 }
 
 protocol::Model EditSession::model() const
 {
-    return describeModel(*mRoot, mName);
+    return describeModel(mModel->root(), mName);
 }
 
 // ---------------------------------------------------------------- dispatch
@@ -167,7 +166,7 @@ Result EditSession::handle(const json& request)
 
 System* EditSession::targetSystem(const json& request, Result& failure)
 {
-    System* system = mRoot.get();
+    System* system = &mModel->root();
     auto path = request.find("system");
     if (path == request.end() || path->is_null()) return system;
     if (!path->is_array()) {
@@ -359,7 +358,7 @@ Result EditSession::sysparamRemove(System& system, const protocol::SysParamRemov
 // share the root's times).
 Result EditSession::modelSettings(System&, const protocol::ModelSettingsRequest& request)
 {
-    System& root = *mRoot;
+    System& root = mModel->root();
     const double start = request.start.value_or(root.startTime);
     const double step = request.step.value_or(root.desiredTimestep);
     const double stop = request.stop.value_or(root.stopTime);

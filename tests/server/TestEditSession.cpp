@@ -525,7 +525,7 @@ TEST(EditSession, GroupAndItsUndoUngroupGiveTheModelBack)
     const json* subsystem = findByName(system.at("components"), sub);
     ASSERT_NE(subsystem, nullptr);
     EXPECT_EQ(subsystem->at("kind"), "system");
-    EXPECT_EQ(session.root()->component(sub)->kind(), tlmhub::CqsKind::Q);
+    EXPECT_EQ(session.openModel()->root().component(sub)->kind(), tlmhub::CqsKind::Q);
     EXPECT_EQ(findByName(system.at("components"), "Step"), nullptr);
     // Placed among the components it replaces.
     EXPECT_GT(subsystem->at("pose").at("x").get<double>(), 0.0);
