@@ -7,6 +7,7 @@
 //   simulateOneTimestep()  the equations of one step (mTime already advanced)
 //   finalize()             optional
 // and registers itself with TLMHUB_REGISTER_COMPONENT in its own .cpp file.
+#include "core/GuiLayout.h"
 #include "core/Node.h"
 #include "core/NodeTypes.h"
 #include "core/Parameter.h"
@@ -122,8 +123,11 @@ public:
     // Catalogue metadata (filled by the factory).
     std::string libraryDomain;
 
+    // Where the GUI draws it; saved into the <hopsangui> that preservedXml holds.
+    ObjectLayout layout;
     // Model-file content the core does not interpret (GUI data such as <hopsangui>),
-    // serialized XML of the element's other children, written back unchanged on save.
+    // serialized XML of the element's other children, written back on save with only the
+    // layout values that changed rewritten (core/GuiLayout.h says why).
     std::string preservedXml;
 
 protected:

@@ -1,8 +1,9 @@
 #pragma once
 // The editable model: its root system with components, connections, system parameters and
-// ports, subsystems, aliases, simulation settings and the model-file content the core keeps
-// without interpreting (GUI layout). Edits go through root() (System's editing API and its
-// rules: unique names, connection rules naming both ports).
+// ports, subsystems, aliases, simulation settings, the GUI layout as typed values
+// (core/GuiLayout.h) and the model-file content the core keeps without interpreting. Edits go
+// through root() (System's editing API and its rules: unique names, connection rules naming
+// both ports; layout fields are assigned directly).
 //
 // A run never touches a Model: compile(const Model&) builds the Simulation from a copy, so
 // one Model compiles any number of times, on any number of threads at once, and stays as it

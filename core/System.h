@@ -2,6 +2,7 @@
 // A system: components, their connections, system parameters and system ports, and the
 // simulation loop (core.md §2.5-§4). Systems nest: a subsystem is a component of its parent.
 #include "core/Component.h"
+#include "core/GuiLayout.h"
 #include "core/LogArena.h"
 #include "core/Status.h"
 #include "core/StepBatches.h"
@@ -15,6 +16,18 @@
 #include <vector>
 
 namespace tlmhub {
+
+// What a model file says of a system port or a connection beyond its names: the typed
+// layout (core/GuiLayout.h) and the other children of its element, kept as serialized XML
+// (see Component::preservedXml). One record, so renaming or moving one moves both.
+struct SystemPortExtras {
+    ObjectLayout layout;
+    std::string preservedXml;
+};
+struct ConnectionExtras {
+    ConnectionLayout layout;   // points from the key's first end to its second
+    std::string preservedXml;
+};
 
 class System : public Component {
 public:
@@ -156,11 +169,12 @@ public:
     // An external subsystem's file (relative to the parent model); empty if embedded.
     std::string externalPath;
 
-    // Preserved model-file content (see Component::preservedXml): root document extras,
-    // per system port, per connection ("a.pa|b.pb"), and unknown objects.
+    // Model-file content beyond the simulated model (see Component::preservedXml): root
+    // document extras, per system port (by name), per connection (by "a.pa|b.pb",
+    // core/hmf/PreservedXml.h's connectionKey), and unknown objects.
     std::string preservedDocumentXml;
-    std::map<std::string, std::string> preservedSystemPortXml;
-    std::map<std::string, std::string> preservedConnectionXml;
+    std::map<std::string, SystemPortExtras> systemPortExtras;
+    std::map<std::string, ConnectionExtras> connectionExtras;
     std::vector<std::string> preservedObjectsXml;
 
 private:

@@ -20,14 +20,14 @@ void forEachConnection(const System& s, const std::function<void(const SystemCon
         const Port* pb = b->parentMultiport ? b->parentMultiport : b;
         if (!visible(pa) || !visible(pb)) return;
         seen.insert({a, b});
-        const std::string* preserved = nullptr;
-        auto it = s.preservedConnectionXml.find(preserved::connectionKey(nameOf(pa), pa->name(), nameOf(pb), pb->name()));
-        if (it == s.preservedConnectionXml.end()) {
-            it = s.preservedConnectionXml.find(preserved::connectionKey(nameOf(pb), pb->name(), nameOf(pa), pa->name()));
-            if (it != s.preservedConnectionXml.end()) std::swap(pa, pb);
+        const ConnectionExtras* extras = nullptr;
+        auto it = s.connectionExtras.find(preserved::connectionKey(nameOf(pa), pa->name(), nameOf(pb), pb->name()));
+        if (it == s.connectionExtras.end()) {
+            it = s.connectionExtras.find(preserved::connectionKey(nameOf(pb), pb->name(), nameOf(pa), pa->name()));
+            if (it != s.connectionExtras.end()) std::swap(pa, pb);
         }
-        if (it != s.preservedConnectionXml.end()) preserved = &it->second;
-        visit({nameOf(pa), pa->name(), nameOf(pb), pb->name(), preserved});
+        if (it != s.connectionExtras.end()) extras = &it->second;
+        visit({nameOf(pa), pa->name(), nameOf(pb), pb->name(), extras});
     };
     // By connection order of the ports: the sub-components' in insertion order, then the
     // system's own system ports.

@@ -13,11 +13,11 @@ namespace tlmhub {
 struct SystemConnection {
     // The ends as the model names them: a multiport, not its sub-port; a system port of
     // this system by its own name as both component and port. Oriented as the model file
-    // that was loaded listed the connection, so its preserved GUI extras (the line's
-    // points) still run from start to end.
+    // that was loaded listed the connection, so its extras (the line's points) still run
+    // from start to end.
     std::string startComponent, startPort, endComponent, endPort;
-    // The connection's preserved model-file content; null if it has none.
-    const std::string* preservedXml = nullptr;
+    // The connection's layout and preserved model-file content; null if it has none.
+    const ConnectionExtras* extras = nullptr;
 };
 
 void forEachConnection(const System& system, const std::function<void(const SystemConnection&)>& visit);

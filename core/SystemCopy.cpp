@@ -16,6 +16,7 @@ public:
     {
         copySettings(to, from);
         copySystemParameters(to, from);
+        to.layout = from.layout;
         to.preservedXml = from.preservedXml;
         for (const Component* c : from.componentsInOrder()) {
             const Status copied = c->isSystem() ? copySubsystem(to, static_cast<const System&>(*c))
@@ -24,9 +25,9 @@ public:
         }
         for (const Port* p : from.ports())
             if (p->kind() == PortKind::System) to.addSystemPort(p->name());
-        to.preservedSystemPortXml = from.preservedSystemPortXml;
+        to.systemPortExtras = from.systemPortExtras;
         to.preservedObjectsXml = from.preservedObjectsXml;
-        to.preservedConnectionXml = from.preservedConnectionXml;
+        to.connectionExtras = from.connectionExtras;
 
         Status connected;
         forEachConnection(from, [&](const SystemConnection& c) {
@@ -88,6 +89,7 @@ private:
         to->setNameRaw(from.name());
         to->setSubTypeName(from.subTypeName());
         to->setDisabled(from.isDisabled());
+        to->layout = from.layout;
         to->preservedXml = from.preservedXml;
         for (const auto& p : from.parameters().all()) {
             Parameter* target = to->parameters().find(p->name);

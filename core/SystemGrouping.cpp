@@ -253,12 +253,12 @@ Result<std::string> System::group(const std::vector<std::string>& names, const s
             ++it;
         }
     }
-    for (auto it = preservedConnectionXml.begin(); it != preservedConnectionXml.end();) {
+    for (auto it = connectionExtras.begin(); it != connectionExtras.end();) {
         const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(it->first);
         const bool a = isMoved(k.a), b = isMoved(k.b);
         if (a || b) {
-            sub.preservedConnectionXml.insert(*it);
-            it = preservedConnectionXml.erase(it);
+            sub.connectionExtras.insert(*it);
+            it = connectionExtras.erase(it);
         } else {
             ++it;
         }
@@ -348,10 +348,10 @@ Result<std::vector<std::string>> System::ungroup(const std::string& subsystemNam
         auto it = renamed.find(n);
         return it == renamed.end() ? n : it->second;
     };
-    for (const auto& [key, xml] : sub->preservedConnectionXml) {
+    for (const auto& [key, extras] : sub->connectionExtras) {
         const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(key);
         if (systemPorts.count(k.a) || systemPorts.count(k.b)) continue;
-        preservedConnectionXml[preserved::connectionKey(nameHere(k.a), k.pa, nameHere(k.b), k.pb)] = xml;
+        connectionExtras[preserved::connectionKey(nameHere(k.a), k.pa, nameHere(k.b), k.pb)] = extras;
     }
     for (System* s = this; s; s = s->parentSystem()) s->determineKind();
     return moved;

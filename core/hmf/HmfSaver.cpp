@@ -1,6 +1,7 @@
 #include "core/hmf/HmfSaver.h"
 
 #include "core/SystemConnections.h"
+#include "core/hmf/GuiLayoutXml.h"
 #include "core/hmf/PreservedXml.h"
 
 #include <pugixml.hpp>
@@ -58,6 +59,7 @@ void writeComponent(pugi::xml_node objects, const Component& c)
     e.append_attribute("disabled") = c.isDisabled() ? "true" : "false";
     writeParameters(e, c, false);
     preserved::appendFragment(e, c.preservedXml);
+    guixml::writeObjectLayout(e, c.layout);
 }
 
 void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
@@ -90,6 +92,7 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
         a.append_child("fullname").text() = full.c_str();
     }
     preserved::appendFragment(e, s.preservedXml);
+    guixml::writeObjectLayout(e, s.layout);
 
     pugi::xml_node objects = e.append_child("objects");
     for (Component* c : s.componentsInOrder()) writeComponent(objects, *c);
@@ -98,8 +101,10 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
         pugi::xml_node sp = objects.append_child("systemport");
         sp.append_attribute("name") = p->name().c_str();
         sp.append_attribute("typename") = "HopsanGUIContainerPort";
-        auto it = s.preservedSystemPortXml.find(p->name());
-        if (it != s.preservedSystemPortXml.end()) preserved::appendFragment(sp, it->second);
+        auto it = s.systemPortExtras.find(p->name());
+        if (it == s.systemPortExtras.end()) continue;
+        preserved::appendFragment(sp, it->second.preservedXml);
+        guixml::writeObjectLayout(sp, it->second.layout);
     }
     for (const std::string& other : s.preservedObjectsXml) preserved::appendFragment(objects, other);
 
@@ -110,7 +115,9 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
         c.append_attribute("startport") = connection.startPort.c_str();
         c.append_attribute("endcomponent") = connection.endComponent.c_str();
         c.append_attribute("endport") = connection.endPort.c_str();
-        if (connection.preservedXml) preserved::appendFragment(c, *connection.preservedXml);
+        if (!connection.extras) return;
+        preserved::appendFragment(c, connection.extras->preservedXml);
+        guixml::writeConnectionLayout(c, connection.extras->layout);
     });
 }
 

@@ -1,6 +1,7 @@
 #include "core/hmf/PreservedXml.h"
 
 #include "core/System.h"
+#include "core/hmf/GuiLayoutXml.h"
 
 #include <set>
 #include <sstream>
@@ -23,6 +24,7 @@ std::string serializeChildrenExcept(pugi::xml_node element, const std::set<std::
 
 void storeComponentExtras(Component& component, pugi::xml_node element)
 {
+    component.layout = guixml::readObjectLayout(element);
     component.preservedXml = serializeChildrenExcept(
         element, {"parameters", "startvalues", "simulationtime", "simulationlogsettings", "objects",
                   "connections", "aliases", "numhopscript"});
@@ -30,6 +32,7 @@ void storeComponentExtras(Component& component, pugi::xml_node element)
 
 void storeSystemExtras(System& root, pugi::xml_node element)
 {
+    root.layout = guixml::readObjectLayout(element);
     root.preservedXml = serializeChildrenExcept(
         element, {"parameters", "simulationtime", "simulationlogsettings", "objects", "connections",
                   "aliases", "numhopscript"});
@@ -42,7 +45,7 @@ void storeDocumentExtras(System& root, pugi::xml_node top)
 
 void storeSystemPortExtras(System& system, const std::string& portName, pugi::xml_node element)
 {
-    system.preservedSystemPortXml[portName] = serializeChildrenExcept(element, {});
+    system.systemPortExtras[portName] = {guixml::readObjectLayout(element), serializeChildrenExcept(element, {})};
 }
 
 std::string connectionKey(const std::string& a, const std::string& pa, const std::string& b,
@@ -69,7 +72,8 @@ ConnectionKeyParts parseConnectionKey(const std::string& key)
 void storeConnectionExtras(System& system, const std::string& a, const std::string& pa,
                            const std::string& b, const std::string& pb, pugi::xml_node element)
 {
-    system.preservedConnectionXml[connectionKey(a, pa, b, pb)] = serializeChildrenExcept(element, {});
+    system.connectionExtras[connectionKey(a, pa, b, pb)] = {guixml::readConnectionLayout(element),
+                                                            serializeChildrenExcept(element, {})};
 }
 
 void storeOtherObject(System& system, pugi::xml_node element)

@@ -1,6 +1,7 @@
 #pragma once
-// Keeping the parts of a model file the core does not interpret (GUI layout, icons, notes),
-// so that load -> save round-trips a model without losing them.
+// Keeping the parts of a model file the core does not interpret (icons, notes, GUI
+// settings), so that load -> save round-trips a model without losing them. The GUI layout
+// is read into typed values as well (core/GuiLayout.h), each beside its element's XML.
 #include <pugixml.hpp>
 
 #include <string>
@@ -12,12 +13,13 @@ class System;
 
 namespace tlmhub::preserved {
 
-// Children of a <component>/<system> element other than the ones the loader reads.
+// Children of a <component>/<system> element other than the ones the loader reads, and its layout.
 void storeComponentExtras(Component& component, pugi::xml_node element);
-// Children of the root <system> the loader does not read (hopsangui, ...).
+// Children of the root <system> the loader does not read (hopsangui, ...), and its layout.
 void storeSystemExtras(System& root, pugi::xml_node element);
 // Children of <hopsanmodelfile> other than <system> (requirements, info) and its attributes.
 void storeDocumentExtras(System& root, pugi::xml_node top);
+// A system port's or connection's layout and children (System::systemPortExtras, connectionExtras).
 void storeSystemPortExtras(System& system, const std::string& portName, pugi::xml_node element);
 void storeConnectionExtras(System& system, const std::string& a, const std::string& pa,
                            const std::string& b, const std::string& pb, pugi::xml_node element);

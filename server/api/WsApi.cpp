@@ -11,7 +11,7 @@
 #include "server/protocol/UntrustedJson.h"
 #include "server/store/ModelName.h"
 
-#include "core/SystemCopy.h"
+#include "core/Model.h"
 
 namespace tlmhub::server {
 
@@ -243,7 +243,7 @@ WsApi::Reply WsApi::startSimulation(const protocol::SimulateStartRequest& start)
 {
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     // The job runs a copy of the model as it is now; later edits do not reach it.
-    Result<std::unique_ptr<System>> copy = copySystem(*mSession.root());
+    Result<Model> copy = mSession.openModel()->copy();
     if (!copy) return failure(protocolErrorCode(copy.status().code()), copy.status().message());
     JobRequest request;
     request.ownerId = mUser.id;

@@ -4,10 +4,8 @@
 #include "core/ParameterEvaluator.h"
 #include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
-#include "core/hmf/HmfSaver.h"
 #include "core/hmf/PreservedXml.h"
 #include "server/api/CoreErrorCodes.h"
-#include "server/edit/GuiLayout.h"
 #include "server/edit/ModelJson.h"
 
 #include <algorithm>
@@ -74,10 +72,8 @@ auto decoding(Result (EditSession::*handler)(System&, const Request&))
 
 void eraseConnectionExtras(System& system, const ConnectionEnds& e)
 {
-    system.preservedConnectionXml.erase(
-        preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
-    system.preservedConnectionXml.erase(
-        preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
+    system.connectionExtras.erase(preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
+    system.connectionExtras.erase(preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
 }
 
 } // namespace
@@ -92,7 +88,7 @@ bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::
             error = loaded.firstError().empty() ? "the model could not be loaded" : loaded.firstError();
             return false;
         }
-        mRoot = std::move(loaded.root);
+        mModel.emplace(std::move(loaded.root));
         mLoadMessages = std::move(loaded.messages);
         mName = name;
         return true;
@@ -104,27 +100,27 @@ bool EditSession::openHmf(const std::string& hmf, const std::string& name, std::
 
 void EditSession::createEmpty(const std::string& name)
 {
-    mRoot = std::make_unique<System>();
-    mRoot->setNameRaw(sanitizeName(name));
+    mModel.emplace();
+    mModel->root().setNameRaw(sanitizeName(name));
     mLoadMessages.clear();
     mName = name;
 }
 
 void EditSession::close()
 {
-    mRoot.reset();
+    mModel.reset();
     mLoadMessages.clear();
     mName.clear();
 }
 
 std::string EditSession::saveHmf() const
 {
-    return mRoot ? saveHmfString(*mRoot) : std::string();
+    return mModel ? mModel->toHmf() : std::string();
 }
 
 protocol::Model EditSession::model() const
 {
-    return describeModel(*mRoot, mName);
+    return describeModel(mModel->root(), mName);
 }
 
 // ---------------------------------------------------------------- dispatch
@@ -170,7 +166,7 @@ Result EditSession::handle(const json& request)
 
 System* EditSession::targetSystem(const json& request, Result& failure)
 {
-    System* system = mRoot.get();
+    System* system = &mModel->root();
     auto path = request.find("system");
     if (path == request.end() || path->is_null()) return system;
     if (!path->is_array()) {
@@ -210,9 +206,7 @@ Result EditSession::componentAdd(System& system, const protocol::ComponentAddReq
     }
     if (!component) return fail("unknown_component_type", "unknown component type '" + type + "'");
     if (request.name) component->setNameRaw(*request.name);
-    // The pose goes where the loader keeps <hopsangui>, so saving writes it to the .hmf.
-    const Pose pose = request.pose ? guiPose(*request.pose) : Pose{};
-    writePose(component->preservedXml, pose);
+    if (request.pose) component->layout.pose = guiPose(*request.pose);
     Component* added = component.get();
     system.addComponent(std::move(component));
     return success(protocol::ComponentAddedData{.component = describeComponent(*added)});
@@ -224,9 +218,9 @@ Result EditSession::componentRemove(System& system, const protocol::ComponentRem
     if (const Status removed = system.removeComponent(name); !removed) return fail(removed);
     // Drop what was kept for its connections and aliases, so a later component of the same
     // name does not inherit them.
-    for (auto it = system.preservedConnectionXml.begin(); it != system.preservedConnectionXml.end();) {
+    for (auto it = system.connectionExtras.begin(); it != system.connectionExtras.end();) {
         const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(it->first);
-        it = (k.a == name || k.b == name) ? system.preservedConnectionXml.erase(it) : std::next(it);
+        it = (k.a == name || k.b == name) ? system.connectionExtras.erase(it) : std::next(it);
     }
     for (auto it = system.aliases.begin(); it != system.aliases.end();)
         it = it->second.rfind(name + "#", 0) == 0 ? system.aliases.erase(it) : std::next(it);
@@ -241,13 +235,13 @@ Result EditSession::componentRename(System& system, const protocol::ComponentRen
     const std::string& actual = *renamed;
     if (actual != name) {
         // Connection extras and aliases are keyed by component name.
-        std::map<std::string, std::string> rekeyed;
+        std::map<std::string, ConnectionExtras> rekeyed;
         auto renamedEnd = [&](const std::string& end) { return end == name ? actual : end; };
-        for (auto& [key, xml] : system.preservedConnectionXml) {
+        for (auto& [key, extras] : system.connectionExtras) {
             const preserved::ConnectionKeyParts k = preserved::parseConnectionKey(key);
-            rekeyed[preserved::connectionKey(renamedEnd(k.a), k.pa, renamedEnd(k.b), k.pb)] = std::move(xml);
+            rekeyed[preserved::connectionKey(renamedEnd(k.a), k.pa, renamedEnd(k.b), k.pb)] = std::move(extras);
         }
-        system.preservedConnectionXml = std::move(rekeyed);
+        system.connectionExtras = std::move(rekeyed);
         for (auto& [alias, full] : system.aliases)
             if (full.rfind(name + "#", 0) == 0) full = actual + full.substr(name.size());
     }
@@ -259,11 +253,11 @@ Result EditSession::componentMove(System& system, const protocol::ComponentMoveR
     const std::string& name = request.name;
     const Pose pose = guiPose(request.pose);
     if (Component* c = system.component(name)) {
-        writePose(c->preservedXml, pose);
+        c->layout.pose = pose;
         return success();
     }
     if (system.systemPort(name)) {
-        writePose(system.preservedSystemPortXml[name], pose);
+        system.systemPortExtras[name].layout.pose = pose;
         return success();
     }
     return fail("not_found", "no component or system port named '" + name + "' in system '" + system.name() + "'");
@@ -277,13 +271,11 @@ Result EditSession::connect(System& system, const protocol::ConnectRequest& requ
     if (const Status connected = system.connect(e.fromComponent, e.fromPort, e.toComponent, e.toPort); !connected)
         return fail(connected);
     eraseConnectionExtras(system, e);
-    if (request.points) {
-        std::vector<LinePoint> points;
+    if (request.points && !request.points->empty()) {
+        std::vector<LinePoint>& points =
+            system.connectionExtras[preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort)]
+                .layout.points;
         for (const std::vector<double>& p : *request.points) points.push_back({p.at(0), p.at(1)});
-        if (!points.empty())
-            writeLinePoints(system.preservedConnectionXml[preserved::connectionKey(
-                                e.fromComponent, e.fromPort, e.toComponent, e.toPort)],
-                            points);
     }
     return success(protocol::ConnectedData{.connection = describeConnection(system, e)});
 }
@@ -366,7 +358,7 @@ Result EditSession::sysparamRemove(System& system, const protocol::SysParamRemov
 // share the root's times).
 Result EditSession::modelSettings(System&, const protocol::ModelSettingsRequest& request)
 {
-    System& root = *mRoot;
+    System& root = mModel->root();
     const double start = request.start.value_or(root.startTime);
     const double step = request.step.value_or(root.desiredTimestep);
     const double stop = request.stop.value_or(root.stopTime);
@@ -392,7 +384,7 @@ Result EditSession::modelGroup(System& system, const protocol::ModelGroupRequest
         std::size_t found = 0;
         for (const std::string& n : names)
             if (const Component* c = system.component(n)) {
-                const Pose p = readPose(c->preservedXml);
+                const Pose& p = c->layout.pose;
                 pose.x += p.x;
                 pose.y += p.y;
                 ++found;
@@ -404,7 +396,7 @@ Result EditSession::modelGroup(System& system, const protocol::ModelGroupRequest
     }
     const auto grouped = system.group(names, request.name);
     if (!grouped) return fail(grouped.status());
-    writePose(system.component(*grouped)->preservedXml, pose);
+    system.component(*grouped)->layout.pose = pose;
     return success(protocol::ModelGroupedData{.name = *grouped});
 }
 

@@ -1,17 +1,17 @@
 #pragma once
 // One open model being edited: applies the WebSocket editing requests (model.get,
 // component.*, connect, disconnect, parameter.*, sysparam.*, model.settings,
-// model.group, model.ungroup) to an in-memory System.
+// model.group, model.ungroup) to an in-memory Model.
 // It knows nothing of users, stores or sockets; the caller loads and saves the .hmf text.
 //
 // Requests arrive schema-validated, but handle() still checks every field it reads and
 // never throws: a bad request becomes a Result with a stable error code.
-#include "core/System.h"
+#include "core/Model.h"
 #include "server/protocol/Messages.generated.h"
 
 #include <nlohmann/json.hpp>
 
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,13 +33,13 @@ public:
     Result handle(const nlohmann::json& request);
 
     std::string saveHmf() const;   // empty if nothing is open
-    bool isOpen() const { return mRoot != nullptr; }
+    bool isOpen() const { return mModel.has_value(); }
 
     const std::string& name() const { return mName; }
     void setName(const std::string& name) { mName = name; }
     protocol::Model model() const;   // the open model as the protocol shows it; isOpen() first
-    // The open model, e.g. for starting a simulation of its current state.
-    const System* root() const { return mRoot.get(); }
+    // The open model (null if none), e.g. for starting a simulation of its current state.
+    const Model* openModel() const { return mModel ? &*mModel : nullptr; }
     const std::vector<Message>& loadMessages() const { return mLoadMessages; }
 
 private:
@@ -61,7 +61,7 @@ private:
     // The subsystem named by request["system"] (absent or [] = root), or null with `failure`.
     System* targetSystem(const nlohmann::json& request, Result& failure);
 
-    std::unique_ptr<System> mRoot;
+    std::optional<Model> mModel;
     std::string mName;
     std::vector<Message> mLoadMessages;
 };

@@ -1,7 +1,6 @@
 #include "server/edit/ModelJson.h"
 
 #include "core/hmf/PreservedXml.h"
-#include "server/edit/GuiLayout.h"
 
 #include <algorithm>
 #include <optional>
@@ -42,8 +41,8 @@ protocol::Port describePort(const Port& port)
 
 protocol::SystemPort describeSystemPort(const System& system, const Port& port)
 {
-    auto extras = system.preservedSystemPortXml.find(port.name());
-    const Pose pose = extras == system.preservedSystemPortXml.end() ? Pose{} : readPose(extras->second);
+    auto extras = system.systemPortExtras.find(port.name());
+    const Pose pose = extras == system.systemPortExtras.end() ? Pose{} : extras->second.layout.pose;
     return {.name = port.name(),
             .nodeType = port.nodeType() == NodeType::Empty ? std::nullopt
                                                             : std::optional(nodeTypeName(port.nodeType())),
@@ -106,24 +105,24 @@ std::vector<ConnectionEnds> connectionsOf(const System& system)
     return out;
 }
 
-const std::string* preservedConnectionXml(const System& system, const ConnectionEnds& e, bool& reversed)
+const ConnectionLayout* connectionLayout(const System& system, const ConnectionEnds& e, bool& reversed)
 {
-    const auto& extras = system.preservedConnectionXml;
+    const auto& extras = system.connectionExtras;
     reversed = false;
     auto it = extras.find(preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
     if (it == extras.end()) {
         it = extras.find(preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
         reversed = it != extras.end();
     }
-    return it == extras.end() ? nullptr : &it->second;
+    return it == extras.end() ? nullptr : &it->second.layout;
 }
 
 protocol::Connection describeConnection(const System& system, const ConnectionEnds& e)
 {
     std::vector<std::vector<double>> points;
     bool reversed = false;
-    if (const std::string* xml = preservedConnectionXml(system, e, reversed)) {
-        std::vector<LinePoint> line = readLinePoints(*xml);
+    if (const ConnectionLayout* layout = connectionLayout(system, e, reversed)) {
+        std::vector<LinePoint> line = layout->points;
         if (reversed) std::reverse(line.begin(), line.end());
         for (const LinePoint& p : line) points.push_back({p[0], p[1]});
     }
@@ -141,7 +140,7 @@ protocol::Component describeComponent(const Component& c)
     return {.name = c.name(),
             .type = c.typeName(),
             .kind = c.isSystem() ? "system" : cqsKindName(c.kind()),
-            .pose = describePose(readPose(c.preservedXml)),
+            .pose = describePose(c.layout.pose),
             .ports = std::move(ports),
             .parameters = std::move(parameters),
             .system = c.isSystem() ? std::optional(describeSystem(static_cast<const System&>(c))) : std::nullopt};

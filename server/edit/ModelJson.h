@@ -29,9 +29,9 @@ struct ConnectionEnds {
 // Every connection made inside `system` (not those of its subsystems), each once, in the
 // order the model file lists them.
 std::vector<ConnectionEnds> connectionsOf(const System& system);
-// The connection's GUI extras (line points) stored for it in either direction, or null;
-// `reversed` tells that they were stored as to -> from (their points run that way).
-const std::string* preservedConnectionXml(const System& system, const ConnectionEnds& ends, bool& reversed);
+// The connection's layout (line points) stored for it in either direction, or null;
+// `reversed` tells that it was stored as to -> from (its points run that way).
+const ConnectionLayout* connectionLayout(const System& system, const ConnectionEnds& ends, bool& reversed);
 protocol::Connection describeConnection(const System& system, const ConnectionEnds& ends);
 
 } // namespace tlmhub::server

@@ -1,7 +1,6 @@
 #include "TestFiles.h"
 
 #include "server/edit/EditSession.h"
-#include "server/edit/GuiLayout.h"
 #include "server/protocol/SchemaValidator.h"
 
 #include <gtest/gtest.h>
@@ -526,7 +525,7 @@ TEST(EditSession, GroupAndItsUndoUngroupGiveTheModelBack)
     const json* subsystem = findByName(system.at("components"), sub);
     ASSERT_NE(subsystem, nullptr);
     EXPECT_EQ(subsystem->at("kind"), "system");
-    EXPECT_EQ(session.root()->component(sub)->kind(), tlmhub::CqsKind::Q);
+    EXPECT_EQ(session.openModel()->root().component(sub)->kind(), tlmhub::CqsKind::Q);
     EXPECT_EQ(findByName(system.at("components"), "Step"), nullptr);
     // Placed among the components it replaces.
     EXPECT_GT(subsystem->at("pose").at("x").get<double>(), 0.0);
@@ -557,20 +556,4 @@ TEST(EditSession, GroupWithAnUndefinedKindIsRefusedWithTheReason)
     const auto notASubsystem = session.handle({{"id", 3}, {"type", "model.ungroup"}, {"name", "Mass"}});
     EXPECT_EQ(notASubsystem.code, "not_found");
     EXPECT_EQ(session.saveHmf(), original);
-}
-
-TEST(GuiLayout, PoseIsWrittenBesideOtherGuiData)
-{
-    std::string xml = "<ports/><hopsangui><nametext position=\"0\"/></hopsangui>";
-    EXPECT_DOUBLE_EQ(readPose(xml).x, 0.0);
-    writePose(xml, Pose{1.5, -2, 45, true});
-    const Pose p = readPose(xml);
-    EXPECT_DOUBLE_EQ(p.x, 1.5);
-    EXPECT_DOUBLE_EQ(p.y, -2);
-    EXPECT_DOUBLE_EQ(p.angle, 45);
-    EXPECT_TRUE(p.flipped);
-    EXPECT_NE(xml.find("<ports/>"), std::string::npos);
-    EXPECT_NE(xml.find("<nametext position=\"0\"/>"), std::string::npos);
-    writePose(xml, Pose{3, 4, 0, false});
-    EXPECT_EQ(xml.find("<pose"), xml.rfind("<pose"));   // replaced, not added
 }
