@@ -1,6 +1,7 @@
 #include "core/System.h"
 
 #include "core/ParameterEvaluator.h"
+#include "core/hmf/PreservedXml.h"
 #include "core/numerics/StepCount.h"
 
 #include <algorithm>
@@ -248,6 +249,7 @@ Result<std::string> System::renameSystemPort(const std::string& oldName, const s
     if (sanitizeName(newName) == oldName) return oldName;
     const std::string actual = uniqueName(newName);
     renamePort(oldName, actual);
+    moveSystemPortLayout(oldName, actual);
     return actual;
 }
 
@@ -268,7 +270,54 @@ Status System::deleteSystemPort(const std::string& name)
             break;
     }
     removePort(name);
+    moveSystemPortLayout(name, {});
     return Status::ok();
+}
+
+namespace {
+
+// Rekeys (or, for an empty new port, erases) the connection extras of `extras` that have
+// the end (component, port); keys are "a.pa|b.pb" (core/hmf/PreservedXml.h).
+void moveConnectionEnd(std::map<std::string, ConnectionExtras>& extras, const std::string& component,
+                       const std::string& port, const std::string& newComponent, const std::string& newPort)
+{
+    std::map<std::string, ConnectionExtras> moved;
+    for (auto it = extras.begin(); it != extras.end();) {
+        preserved::ConnectionKeyParts k = preserved::parseConnectionKey(it->first);
+        const bool atA = k.a == component && k.pa == port;
+        const bool atB = k.b == component && k.pb == port;
+        if (!atA && !atB) {
+            ++it;
+            continue;
+        }
+        if (!newPort.empty()) {
+            if (atA) k.a = newComponent, k.pa = newPort;
+            if (atB) k.b = newComponent, k.pb = newPort;
+            moved[preserved::connectionKey(k.a, k.pa, k.b, k.pb)] = std::move(it->second);
+        }
+        it = extras.erase(it);
+    }
+    extras.merge(moved);
+}
+
+} // namespace
+
+void System::moveSystemPortLayout(const std::string& oldName, const std::string& newName)
+{
+    // Inside, the system port is named twice, as component and port.
+    if (auto node = systemPortExtras.extract(oldName); node && !newName.empty()) {
+        node.key() = newName;
+        systemPortExtras.insert(std::move(node));
+    }
+    moveConnectionEnd(connectionExtras, oldName, oldName, newName, newName);
+    // Outside, it is a port of this subsystem, and a port on its icon.
+    if (System* parent = parentSystem())
+        moveConnectionEnd(parent->connectionExtras, name(), oldName, name(), newName);
+    auto& icon = layout.iconPorts;
+    auto port = std::find_if(icon.begin(), icon.end(), [&](const IconPort& p) { return p.name == oldName; });
+    if (port == icon.end()) return;
+    if (newName.empty()) icon.erase(port);
+    else port->name = newName;
 }
 
 // ---------------------------------------------------------------- connections

@@ -58,7 +58,8 @@ public:
     const std::vector<Component*>& componentsInOrder() const { return mOrder; }
 
     Port* addSystemPort(const std::string& desiredName);
-    // The actual new name (sanitised, made unique). Deleting disconnects it inside and out.
+    // The actual new name (sanitised, made unique); the port's layout and its connections' lines
+    // follow it. Deleting disconnects it inside and out and drops its layout.
     Result<std::string> renameSystemPort(const std::string& oldName, const std::string& newName);
     Status deleteSystemPort(const std::string& name);
     Port* systemPort(const std::string& name) const;
@@ -180,6 +181,9 @@ public:
 private:
     friend class Component;
     void determineKind();
+    // A renamed system port's layout, and its connections' lines inside and out, follow it;
+    // an empty newName (a deleted port) drops them.
+    void moveSystemPortLayout(const std::string& oldName, const std::string& newName);
     // The kind a subsystem gets from the inner ports attached to its system ports.
     static CqsKind interfaceKind(const std::vector<const Port*>& innerPorts);
     std::unique_ptr<Component> releaseComponent(Component* c);

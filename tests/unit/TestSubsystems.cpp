@@ -4,6 +4,9 @@
 #include "TestHelpers.h"
 
 #include "core/Results.h"
+#include "core/hmf/HmfLoader.h"
+#include "core/hmf/HmfSaver.h"
+#include "core/hmf/PreservedXml.h"
 
 using namespace tlmhub;
 using namespace tlmhub::test;
@@ -140,6 +143,58 @@ TEST(Subsystems, RenamingASystemPortKeepsItsConnectionsInsideAndOut)
     EXPECT_EQ(sub.renameSystemPort("nothing", "x").status().code(), StatusCode::NotFound);
     ASSERT_TRUE(run(root, 0, 0.01, 0.001, 11));
     EXPECT_DOUBLE_EQ(sub.component("G")->port("out")->node()->value(0), 6.0);
+}
+
+// The drawn layout of a system port: its pose, its place on the subsystem's icon and the
+// lines of its connections inside and outside.
+void drawSystemPortIn(System& root, System& sub)
+{
+    using preserved::connectionKey;
+    sub.systemPortExtras["in"].layout.pose = {10.0, 20.0, 90.0, false};
+    sub.layout.iconPorts = {{.name = "in", .x = 0.0, .y = 0.5}, {.name = "out", .x = 1.0, .y = 0.5}};
+    sub.connectionExtras[connectionKey("in", "in", "G", "in")].layout.points = {{10, 20}, {30, 20}};
+    root.connectionExtras[connectionKey("C", "y", "Sub", "in")].layout.points = {{0, 0}, {5, 0}};
+}
+
+TEST(Subsystems, ARenamedSystemPortKeepsItsLayoutThroughSaveAndLoad)
+{
+    System root;
+    System& sub = gainInSubsystem(root);
+    drawSystemPortIn(root, sub);
+    ASSERT_EQ(*sub.renameSystemPort("in", "u"), "u");
+
+    const LoadedModel reloaded = loadHmfString(saveHmfString(root), "");
+    ASSERT_TRUE(reloaded.root) << reloaded.firstError();
+    const auto* loadedSub = dynamic_cast<const System*>(reloaded.root->component("Sub"));
+    ASSERT_NE(loadedSub, nullptr);
+    ASSERT_TRUE(loadedSub->systemPortExtras.count("u"));
+    EXPECT_EQ(loadedSub->systemPortExtras.at("u").layout.pose, (Pose{10.0, 20.0, 90.0, false}));
+    ASSERT_EQ(loadedSub->layout.iconPorts.size(), 2u);
+    EXPECT_EQ(loadedSub->layout.iconPorts[0].name, "u");
+    using preserved::connectionKey;
+    ASSERT_TRUE(loadedSub->connectionExtras.count(connectionKey("u", "u", "G", "in")));
+    EXPECT_EQ(loadedSub->connectionExtras.at(connectionKey("u", "u", "G", "in")).layout.points,
+              (std::vector<LinePoint>{{10, 20}, {30, 20}}));
+    ASSERT_TRUE(reloaded.root->connectionExtras.count(connectionKey("C", "y", "Sub", "u")));
+    EXPECT_EQ(reloaded.root->connectionExtras.at(connectionKey("C", "y", "Sub", "u")).layout.points,
+              (std::vector<LinePoint>{{0, 0}, {5, 0}}));
+}
+
+TEST(Subsystems, ADeletedSystemPortLeavesNoLayoutBehind)
+{
+    System root;
+    System& sub = gainInSubsystem(root);
+    drawSystemPortIn(root, sub);
+    ASSERT_TRUE(isOk(sub.deleteSystemPort("in")));
+    EXPECT_FALSE(sub.systemPortExtras.count("in"));
+    ASSERT_EQ(sub.layout.iconPorts.size(), 1u);
+    EXPECT_EQ(sub.layout.iconPorts[0].name, "out");
+    // A new port of the same name, connected again, starts without the old lines.
+    sub.addSystemPort("in");
+    connectOk(sub, "in", "in", "G", "in");
+    connectOk(root, "C", "y", "Sub", "in");
+    EXPECT_TRUE(sub.connectionExtras.empty());
+    EXPECT_TRUE(root.connectionExtras.empty());
 }
 
 TEST(Subsystems, DeletingASystemPortDisconnectsItInsideAndOut)
