@@ -247,9 +247,10 @@ Result<std::string> System::renameSystemPort(const std::string& oldName, const s
 {
     if (!systemPort(oldName)) return Status{StatusCode::NotFound, "no system port named '" + oldName + "'"};
     if (sanitizeName(newName) == oldName) return oldName;
+    const std::string previous = oldName;   // oldName may be the port's own name, renamed below
     const std::string actual = uniqueName(newName);
-    renamePort(oldName, actual);
-    moveSystemPortLayout(oldName, actual);
+    renamePort(previous, actual);
+    moveSystemPortLayout(previous, actual);
     return actual;
 }
 
@@ -269,8 +270,9 @@ Status System::deleteSystemPort(const std::string& name)
         else
             break;
     }
-    removePort(name);
-    moveSystemPortLayout(name, {});
+    const std::string deleted = name;   // name may be the port's own name, freed below
+    removePort(deleted);
+    moveSystemPortLayout(deleted, {});
     return Status::ok();
 }
 
