@@ -208,12 +208,12 @@ void JobQueue::workerLoop()
         lock.unlock();
 
         const bool finished = mRunner.runSlice(*job, threads, mOthersWaiting);
+        if (finished) job.reset();   // its model and logs are freed outside the lock
 
         lock.lock();
         Active& active = mActive.at(jobId);
         mActiveLogBytes -= active.logBytes;
         if (finished) {
-            job.reset();
             mActive.erase(jobId);
             if (--mStartedPerOwner[ownerId] <= 0) mStartedPerOwner.erase(ownerId);
             mJobEnded.notify_all();

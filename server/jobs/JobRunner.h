@@ -99,10 +99,11 @@ public:
     static constexpr auto kProgressStorePeriod = std::chrono::seconds(1);
     static constexpr auto kFramePollPeriod = std::chrono::milliseconds(5);
     // A job's slices while other jobs wait: a short first one, which streams its first frame
-    // (the queue starts waiting jobs before it goes on with parked ones: 40 Position Servo
-    // runs of about 8 ms submitted at once on 2 workers give the last one its first frame
-    // after some 50 ms, not after 20 whole jobs), then longer ones, so that a short job is
-    // done in two and a long one switches, and streams a frame, every 10 ms of its running.
+    // (the queue starts the jobs of users with nothing running before it goes on with parked
+    // ones: of 40 Position Servo runs of about 8 ms submitted at once on 2 workers, the last
+    // one's first frame waits for 20 first slices, not for 20 whole jobs), then longer ones,
+    // so that a short job is done in two and a long one switches, and streams a frame, every
+    // 10 ms of its running.
     static constexpr auto kFirstSlice = std::chrono::milliseconds(2);
     static constexpr auto kSlice = std::chrono::milliseconds(10);
 
