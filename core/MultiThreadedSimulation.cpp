@@ -233,6 +233,7 @@ bool System::simulateStepsAutoThreaded(std::size_t n)
         bool ok = true;
         const double perStep = timeSingleThreadedSteps(window, ok);
         if (!ok) return false;
+        if (pauseRequested()) return true;
         done += window;
         if (perStep * static_cast<double>(window) < kTimedWindowSeconds) {
             window *= 2;   // too short to time well: grow the window, this one does not count
@@ -291,7 +292,10 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* che
     const double unmeasured = std::numeric_limits<double>::infinity();
     std::vector<double> costS(mS.size(), unmeasured), costC(mC.size(), unmeasured), costQ(mQ.size(), unmeasured);
     for (std::size_t step = 0; step < probeSteps; ++step) {
-        if (stopRequested()) return false;
+        if (interrupted()) {
+            taken = mTakenSteps - takenBefore;
+            return !stopRequested();
+        }
         mTime += mTimestep;
         timedRun<Clock>(mS, costS, mTime);
         timedRun<Clock>(mC, costC, mTime);
@@ -346,7 +350,7 @@ bool System::runThreaded(std::size_t n, unsigned threads, const ThreadCheck* che
             partC[id].step(t);
             barrier.arriveAndWait();
             partQ[id].step(t);
-            barrier.arriveAndWait([&] { endSnapshot = stopRequested() || giveUp.load(std::memory_order_relaxed); });
+            barrier.arriveAndWait([&] { endSnapshot = interrupted() || giveUp.load(std::memory_order_relaxed); });
             if (logsAfter[step]) {
                 for (std::size_t k = shares[id].first; k < shares[id].second; ++k) mLoggedNodes[k]->logSample(slot);
                 barrier.arriveAndWait();

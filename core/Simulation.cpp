@@ -186,6 +186,9 @@ Status Simulation::runSteps(std::size_t requested, const RunOptions& options)
     if (options.progress && options.progressInterval)
         mRoot->setProgressCallback(&ProgressRelay::call, &relay, options.progressInterval);
     std::stop_callback onStop(options.stop, [this] { mRoot->requestStop(); });
+    // A pause ends only the run it was asked for in (one already asked for ends it at once).
+    mRoot->clearPauseRequest();
+    std::stop_callback onPause(options.pause, [this] { mRoot->requestPause(); });
     mState = SimulationState::Running;
     bool ok = !options.stop.stop_requested();
     if (ok) ok = mRoot->simulateStepsMultiThreaded(steps, options.threads);

@@ -5,14 +5,14 @@
 //   auto sim = compile(root, {.stopTime = 2.0});
 //   if (!sim) report(sim.status());
 //   sim->run(1.0);                   // resumable: run(1.0) then run(2.0) == run(2.0)
-//   sim->run(2.0, {.threads = 2});
+//   sim->run(2.0, {.threads = 2});   // also when a RunOptions::pause request ended run(1.0) early
 //   ResultView results = sim->results();
 //   sim->setParameter("Mass.m", "20");
 //   sim->reset();                    // back to the start; the new value and what depends on it apply
 //   sim->run();
 //
 // States: compiled -> (first run initialises) initialised -> running -> paused (stopped
-// before the stop time on request of run's `until`) / finished / stopped / failed.
+// before the stop time on request of run's `until` or RunOptions::pause) / finished / stopped / failed.
 // reset() returns to compiled from any state but running. Log storage is allocated when a
 // run starts from compiled, not at compile.
 //
@@ -54,6 +54,9 @@ struct RunOptions {
     std::function<void(std::size_t stepsTaken, std::size_t stepsTotal)> progress = {};
     std::size_t progressInterval = 0;
     std::stop_token stop = {};   // a stop request ends the run (state stopped)
+    // A request ends the run early at a step boundary (state paused): a later run goes on
+    // from there and gives the same results (a server's time slices).
+    std::stop_token pause = {};
 };
 
 enum class SimulationState { Compiled, Initialised, Running, Paused, Finished, Stopped, Failed };

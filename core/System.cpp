@@ -1193,7 +1193,7 @@ bool System::simulate(double tStop) { return simulateSteps(stepsUntil(tStop)); }
 bool System::simulateSteps(std::size_t n)
 {
     for (std::size_t i = 0; i < n; ++i) {
-        if (stopRequested()) return false;
+        if (interrupted()) break;
         mTime += mTimestep;
         stepOnce();
         if (mProgress && mProgressInterval && (i + 1) % mProgressInterval == 0)

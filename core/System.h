@@ -135,6 +135,13 @@ public:
     // Safe to call from any thread (a server's cancel, a component on a worker thread).
     void requestStop() { mStopRequested.store(true, std::memory_order_relaxed); }
     bool stopRequested() const { return mStopRequested.load(std::memory_order_relaxed); }
+    // Safe to call from any thread: the run in progress returns early at a step boundary, as
+    // on a stop, but the system stays ready to go on (Simulation's RunOptions::pause).
+    void requestPause() { mPauseRequested.store(true, std::memory_order_relaxed); }
+    bool pauseRequested() const { return mPauseRequested.load(std::memory_order_relaxed); }
+    void clearPauseRequest() { mPauseRequested.store(false, std::memory_order_relaxed); }
+    // A stop or a pause: the step loops end.
+    bool interrupted() const { return stopRequested() || pauseRequested(); }
     // Progress callback for long runs (root only): called every `interval` steps.
     using ProgressCallback = void (*)(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
     void setProgressCallback(ProgressCallback cb, void* user, std::size_t interval);
@@ -231,6 +238,7 @@ private:
     RandomStream mRandom;                // root: the noise sources' numbers
     bool mDrawsRandomNumbers = false;    // root: some component took mRandom at initialize
     std::atomic<bool> mStopRequested{false};
+    std::atomic<bool> mPauseRequested{false};
     std::mutex mMessagesMutex;
     std::size_t mTakenSteps = 0;
     unsigned mThreadsUsed = 1;

@@ -62,7 +62,7 @@ struct JobInfo {
 struct JobLimits {
     std::uint64_t maxSteps = 50'000'000;      // ceil((stop-start)/step) per job
     std::size_t maxLogSamples = 100'000;
-    double maxWallSeconds = 300;              // s of simulation per job
+    double maxWallSeconds = 300;              // s a job runs (its time slices; not time parked)
     std::size_t maxResultBytes = 64u << 20;   // ResultTable::byteSize()
     int maxQueuedPerUser = 20;
     int maxRunningPerUser = 2;

@@ -31,6 +31,7 @@ void JobQueue::start()
     mStore.markRunningInterrupted();
     for (const JobInfo& job : mStore.listInState(JobState::Queued))
         if (!isQueuedInMemory(job.id)) enqueue(job.ownerId, job.id);
+    updateWaiting();
     for (unsigned i = 0; i < mWorkerCount; ++i) mWorkers.emplace_back([this] { workerLoop(); });
 }
 
@@ -40,7 +41,7 @@ void JobQueue::shutdown()
         std::lock_guard lock(mMutex);
         if (!mStarted) return;
         mStopping = true;
-        for (auto& [id, control] : mActive) control->requestStop(JobControl::Stop::Shutdown);
+        for (auto& [id, active] : mActive) active.control->requestStop(JobControl::Stop::Shutdown);
     }
     mWake.notify_all();
     for (auto& t : mWorkers) t.join();
@@ -84,8 +85,8 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
     }
 
     std::unique_lock lock(mMutex);
-    const auto queued = mQueued.find(request.ownerId);
-    const std::size_t alreadyQueued = queued == mQueued.end() ? 0 : queued->second.size();
+    const auto waiting = mWaiting.find(request.ownerId);
+    const std::size_t alreadyQueued = waiting == mWaiting.end() ? 0 : waiting->second.queued.size();
     if (alreadyQueued >= static_cast<std::size_t>(mLimits.maxQueuedPerUser)) {
         return {std::nullopt, "limit_exceeded",
                 "you have " + std::to_string(alreadyQueued) + " jobs queued; the limit is " +
@@ -94,6 +95,7 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
     const std::int64_t id = mStore.create(request, resolved);
     if (mCompiled.size() < kMaxCompiledQueued) mCompiled.emplace(id, std::move(prepared));
     enqueue(request.ownerId, id);
+    updateWaiting();
     lock.unlock();
     mWake.notify_all();
     return {id, {}, {}};
@@ -104,6 +106,7 @@ JobQueue::CancelRequest JobQueue::requestCancel(std::int64_t jobId)
     std::unique_lock lock(mMutex);
     if (removeQueued(jobId)) {
         mCompiled.erase(jobId);
+        updateWaiting();
         mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr);
         lock.unlock();
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
@@ -111,7 +114,18 @@ JobQueue::CancelRequest JobQueue::requestCancel(std::int64_t jobId)
     }
     auto active = mActive.find(jobId);
     if (active != mActive.end()) {
-        active->second->requestStop(JobControl::Stop::Cancel);
+        active->second.control->requestStop(JobControl::Stop::Cancel);
+        if (active->second.parked) {
+            // Its owner's next turn comes first and takes it: its slice ends at once.
+            const std::int64_t owner = active->second.ownerId;
+            auto& parked = mWaiting.at(owner).parked;
+            parked.erase(std::find(parked.begin(), parked.end(), jobId));
+            parked.push_front(jobId);
+            mRotation.erase(std::find(mRotation.begin(), mRotation.end(), owner));
+            mRotation.push_front(owner);
+            lock.unlock();
+            mWake.notify_one();
+        }
         return CancelRequest::Cancelling;
     }
     // Queued in the store but not (yet) here: the queue has not been started.
@@ -143,6 +157,14 @@ std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> v
     // ends the job's subscriptions, so either it serves this subscription or we do, once.
     const std::vector<std::string> wanted = variables;
     const std::uint64_t subscription = mHub.subscribe(jobId, std::move(variables), rate, std::move(sink));
+    {
+        // A parked job's subscriber gets what it has logged now, not after the job's next slice
+        // (a subscriber of a just submitted job tends to come after its first slice). The lock
+        // keeps workers from running it meanwhile.
+        std::lock_guard lock(mMutex);
+        const auto active = mActive.find(jobId);
+        if (active != mActive.end() && active->second.parked) mRunner.publishFrames(*active->second.parked);
+    }
     const auto info = mStore.info(jobId);
     if (info && isFinished(info->state)) {
         const auto table = mStore.result(jobId, wanted);
@@ -161,35 +183,47 @@ void JobQueue::workerLoop()
     std::unique_lock lock(mMutex);
     for (;;) {
         std::int64_t jobId = 0, ownerId = 0;
-        mWake.wait(lock, [&] { return mStopping || pickNext(jobId, ownerId); });
-        if (mStopping) return;
-        const unsigned threads = jobThreads(!mQueued.empty(), !mActive.empty());
-        auto control = std::make_shared<JobControl>();
-        std::unique_ptr<PreparedJob> compiled;
-        if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
-            compiled = std::move(it->second);
-            mCompiled.erase(it);
+        bool starts = false;
+        // When stopping, the workers end the parked jobs (interrupted) before they leave.
+        bool picked = false;
+        mWake.wait(lock, [&] { return (picked = pickNext(jobId, ownerId, starts)) || mStopping; });
+        if (!picked) return;
+        std::unique_ptr<StartedJob> job;
+        if (starts) {
+            std::unique_ptr<PreparedJob> compiled;
+            if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
+                compiled = std::move(it->second);
+                mCompiled.erase(it);
+            }
+            if (!mStore.markRunning(jobId)) continue;   // no longer queued in the store
+            auto control = std::make_shared<JobControl>();
+            job = std::make_unique<StartedJob>(jobId, std::move(compiled), control);
+            mActive.emplace(jobId, Active{ownerId, std::move(control), nullptr, 0});
+            ++mStartedPerOwner[ownerId];
+        } else {
+            job = std::move(mActive.at(jobId).parked);
         }
-        const bool marked = mStore.markRunning(jobId);
-        if (marked) mActive.emplace(jobId, control);
+        const unsigned threads = jobThreads(!mWaiting.empty(), mActive.size() > 1);
+        updateWaiting();
         lock.unlock();
 
-        if (marked) {
-            const auto request = compiled ? std::nullopt : mStore.request(jobId);
-            if (compiled) {
-                mRunner.run(jobId, *compiled, *control, threads);
-            } else if (request) {
-                mRunner.run(jobId, *request, *control, threads);
-            } else {
-                mStore.finish(jobId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
-                mHub.finish(jobId, nullptr, JobState::Failed, "the stored job request cannot be read");
-            }
-        }
+        const bool finished = mRunner.runSlice(*job, threads, mOthersWaiting);
+        if (finished) job.reset();   // its model and logs are freed outside the lock
 
         lock.lock();
-        mActive.erase(jobId);
-        if (--mRunningPerOwner[ownerId] <= 0) mRunningPerOwner.erase(ownerId);
-        mJobEnded.notify_all();
+        Active& active = mActive.at(jobId);
+        mActiveLogBytes -= active.logBytes;
+        if (finished) {
+            mActive.erase(jobId);
+            if (--mStartedPerOwner[ownerId] <= 0) mStartedPerOwner.erase(ownerId);
+            mJobEnded.notify_all();
+        } else {
+            active.logBytes = job->logBytes();
+            mActiveLogBytes += active.logBytes;
+            active.parked = std::move(job);
+            park(ownerId, jobId);
+        }
+        updateWaiting();
         mWake.notify_all();
     }
 }
@@ -200,42 +234,76 @@ std::size_t JobQueue::compiledQueued()
     return mCompiled.size();
 }
 
-bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId)
+bool JobQueue::canStart(std::int64_t ownerId) const
 {
-    for (auto it = mRotation.begin(); it != mRotation.end(); ++it) {
-        const std::int64_t owner = *it;
-        auto running = mRunningPerOwner.find(owner);
-        if (running != mRunningPerOwner.end() && running->second >= mLimits.maxRunningPerUser) continue;
-        auto& fifo = mQueued[owner];
-        jobId = fifo.front();
-        ownerId = owner;
-        fifo.pop_front();
-        mRotation.erase(it);
-        if (fifo.empty()) mQueued.erase(owner);
-        else mRotation.push_back(owner);   // served: goes to the back of the round
-        ++mRunningPerOwner[owner];
-        return true;
+    if (mStopping) return false;
+    const auto started = mStartedPerOwner.find(ownerId);
+    if (started != mStartedPerOwner.end() && started->second >= mLimits.maxRunningPerUser) return false;
+    return mActive.empty() || (mActive.size() < kMaxStartedJobs && mActiveLogBytes < kMaxStartedLogBytes);
+}
+
+bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId, bool& starts)
+{
+    // First the users with no job started (the short first slice of their next one, for its
+    // first frames), then all in turn.
+    for (const bool idleUsersOnly : {true, false}) {
+        for (auto it = mRotation.begin(); it != mRotation.end(); ++it) {
+            const std::int64_t owner = *it;
+            if (idleUsersOnly && mStartedPerOwner.count(owner)) continue;
+            OwnerJobs& jobs = mWaiting.at(owner);
+            std::deque<std::int64_t>* from = nullptr;
+            if (!jobs.queued.empty() && canStart(owner)) from = &jobs.queued;
+            else if (!jobs.parked.empty()) from = &jobs.parked;
+            else continue;
+            starts = from == &jobs.queued;
+            jobId = from->front();
+            ownerId = owner;
+            from->pop_front();
+            mRotation.erase(it);
+            if (jobs.queued.empty() && jobs.parked.empty()) mWaiting.erase(owner);
+            else mRotation.push_back(owner);   // served: goes to the back of the round
+            return true;
+        }
     }
     return false;
 }
 
+void JobQueue::updateWaiting()
+{
+    bool waiting = false;
+    for (const auto& [owner, jobs] : mWaiting) {
+        if (!jobs.parked.empty() || (!jobs.queued.empty() && canStart(owner))) {
+            waiting = true;
+            break;
+        }
+    }
+    mOthersWaiting.store(waiting, std::memory_order_relaxed);
+}
+
 void JobQueue::enqueue(std::int64_t ownerId, std::int64_t jobId)
 {
-    auto& fifo = mQueued[ownerId];
-    if (fifo.empty()) mRotation.push_back(ownerId);
-    fifo.push_back(jobId);
+    OwnerJobs& jobs = mWaiting[ownerId];
+    if (jobs.queued.empty() && jobs.parked.empty()) mRotation.push_back(ownerId);
+    jobs.queued.push_back(jobId);
+}
+
+void JobQueue::park(std::int64_t ownerId, std::int64_t jobId)
+{
+    OwnerJobs& jobs = mWaiting[ownerId];
+    if (jobs.queued.empty() && jobs.parked.empty()) mRotation.push_back(ownerId);
+    jobs.parked.push_back(jobId);
 }
 
 bool JobQueue::removeQueued(std::int64_t jobId)
 {
-    for (auto it = mQueued.begin(); it != mQueued.end(); ++it) {
-        auto& fifo = it->second;
+    for (auto it = mWaiting.begin(); it != mWaiting.end(); ++it) {
+        auto& fifo = it->second.queued;
         auto pos = std::find(fifo.begin(), fifo.end(), jobId);
         if (pos == fifo.end()) continue;
         fifo.erase(pos);
-        if (fifo.empty()) {
+        if (fifo.empty() && it->second.parked.empty()) {
             mRotation.erase(std::find(mRotation.begin(), mRotation.end(), it->first));
-            mQueued.erase(it);
+            mWaiting.erase(it);
         }
         return true;
     }
@@ -244,8 +312,8 @@ bool JobQueue::removeQueued(std::int64_t jobId)
 
 bool JobQueue::isQueuedInMemory(std::int64_t jobId) const
 {
-    for (const auto& [owner, fifo] : mQueued)
-        if (std::find(fifo.begin(), fifo.end(), jobId) != fifo.end()) return true;
+    for (const auto& [owner, jobs] : mWaiting)
+        if (std::find(jobs.queued.begin(), jobs.queued.end(), jobId) != jobs.queued.end()) return true;
     return false;
 }
 

@@ -2,15 +2,27 @@
 // The job queue: compiles and stores submitted jobs, and runs them on a pool of worker
 // threads (one worker per job; only a job alone on the server may use more, see jobThreads).
 //
-// Fairness: each user has a FIFO of queued jobs, and the workers serve users round robin,
-// skipping users who already run JobLimits::maxRunningPerUser jobs. A user with many queued
-// jobs therefore delays another user's job by at most one job per worker.
+// Time slices: a worker runs a job for a slice (JobRunner::kSlice) and, when other jobs wait
+// for a worker, parks it here and takes the next one, so every job streams its first frames
+// soon after it was submitted, not after the jobs before it have finished. A parked job
+// stays running (in the store too) and holds its log storage: at most kMaxStartedJobs are
+// started at once, and no more start while the started ones' logs take kMaxStartedLogBytes;
+// the others wait unstarted.
+//
+// Fairness: each user has a FIFO of queued jobs and one of parked jobs, and the workers serve
+// users round robin: first those with no job started, for the short first slice of their
+// next one (its first frames), then all in turn, where a user's turn starts their next
+// queued job if they have fewer than JobLimits::maxRunningPerUser started, else goes on with
+// their longest parked one. A user with many jobs therefore delays another user's job by at
+// most one slice per worker, and a user's first job waits only for the first slices of
+// other users' first jobs and the slices running when it came.
 #include "server/jobs/Job.h"
 #include "server/jobs/JobRunner.h"
 #include "server/jobs/JobStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
 
+#include <atomic>
 #include <condition_variable>
 #include <deque>
 #include <map>
@@ -37,8 +49,8 @@ public:
     // Marks jobs left running by a crash as interrupted, queues the stored queued jobs (a
     // restart continues where the last run stopped) and starts the workers.
     void start();
-    // Stops running jobs (they become interrupted), joins the workers. Queued jobs stay
-    // queued in the store for the next start().
+    // Stops started jobs, parked ones too (they become interrupted), joins the workers.
+    // Queued jobs stay queued in the store for the next start().
     void shutdown();
 
     struct Submitted {
@@ -55,8 +67,9 @@ public:
     // Beyond this many, a queued job keeps only its stored request: memory stays bounded.
     static constexpr std::size_t kMaxCompiledQueued = 256;
 
-    // Never waits: a queued job is cancelled at once; a running one is asked to stop, and its
-    // event.done (cancelled) follows when it has. NotActive: neither queued nor running.
+    // Never waits: a queued job is cancelled at once; a started one is asked to stop (a parked
+    // one is the next a worker takes), and its event.done (cancelled) follows when it has.
+    // NotActive: neither queued nor started.
     enum class CancelRequest { NotActive, Cancelled, Cancelling };
     CancelRequest requestCancel(std::int64_t jobId);
     // The same, and for a running job the call waits (a few seconds at most) until the job
@@ -72,14 +85,36 @@ public:
     StreamHub& hub() { return mHub; }
     const JobLimits& limits() const { return mLimits; }
 
+    // Jobs started at once (running or parked): a lab of 40 streams all its runs together.
+    static constexpr std::size_t kMaxStartedJobs = 64;
+    // Log storage of the started jobs beyond which no other starts (Position Servo: 2 MB).
+    static constexpr std::size_t kMaxStartedLogBytes = std::size_t(1) << 30;
+
 private:
     void workerLoop();
-    // Next job by the fairness rule; counts it as running. Caller holds mMutex.
-    bool pickNext(std::int64_t& jobId, std::int64_t& ownerId);
-    void enqueue(std::int64_t ownerId, std::int64_t jobId);   // caller holds mMutex
+    // Next job by the fairness rule; `starts`: it is a queued one (else parked). Caller holds mMutex.
+    bool pickNext(std::int64_t& jobId, std::int64_t& ownerId, bool& starts);
+    bool canStart(std::int64_t ownerId) const;                   // caller holds mMutex
+    // Whether a job waits that a worker could take; what a running slice checks.
+    void updateWaiting();                                        // caller holds mMutex
+    void enqueue(std::int64_t ownerId, std::int64_t jobId);     // caller holds mMutex
+    void park(std::int64_t ownerId, std::int64_t jobId);        // caller holds mMutex
     bool removeQueued(std::int64_t jobId);                      // caller holds mMutex
     bool isQueuedInMemory(std::int64_t jobId) const;            // caller holds mMutex
     Submitted queue(const JobRequest& request, std::unique_ptr<PreparedJob> prepared);
+
+    // A user's jobs waiting for a worker.
+    struct OwnerJobs {
+        std::deque<std::int64_t> queued;   // not started, FIFO
+        std::deque<std::int64_t> parked;   // started, between slices, FIFO
+    };
+    // A started job: running a slice on a worker, or parked (then `parked` holds it).
+    struct Active {
+        std::int64_t ownerId = 0;
+        std::shared_ptr<JobControl> control;
+        std::unique_ptr<StartedJob> parked;
+        std::size_t logBytes = 0;
+    };
 
     JobStore& mStore;
     StreamHub& mHub;
@@ -88,12 +123,14 @@ private:
     unsigned mWorkerCount;
 
     std::mutex mMutex;
-    std::condition_variable mWake;       // a job was queued, a worker freed, or stopping
-    std::condition_variable mJobEnded;   // a running job reached its final state
-    std::map<std::int64_t, std::deque<std::int64_t>> mQueued;   // owner -> job ids, FIFO
-    std::deque<std::int64_t> mRotation;                        // owners with queued jobs, next first
-    std::map<std::int64_t, int> mRunningPerOwner;
-    std::map<std::int64_t, std::shared_ptr<JobControl>> mActive;   // running job -> control
+    std::condition_variable mWake;       // a job was queued or parked, a worker freed, or stopping
+    std::condition_variable mJobEnded;   // a started job reached its final state
+    std::map<std::int64_t, OwnerJobs> mWaiting;    // owners with queued or parked jobs
+    std::deque<std::int64_t> mRotation;            // those owners, next first
+    std::map<std::int64_t, int> mStartedPerOwner;
+    std::map<std::int64_t, Active> mActive;        // started jobs
+    std::size_t mActiveLogBytes = 0;
+    std::atomic<bool> mOthersWaiting{false};
     std::map<std::int64_t, std::unique_ptr<PreparedJob>> mCompiled;   // queued job -> compiled
     std::vector<std::thread> mWorkers;
     bool mStarted = false;

@@ -54,173 +54,195 @@ void JobControl::detach()
     mSystem = nullptr;
 }
 
-// What the progress callback needs; lives on the job thread's stack during simulate().
-struct JobRunner::RunState {
-    JobRunner* runner = nullptr;
-    std::int64_t jobId = 0;
-    System* root = nullptr;
-    const FrameSource* live = nullptr;
-    Clock::time_point deadline;
-    bool wallTimeExceeded = false;
-    Clock::time_point lastProgressEvent{}, lastProgressStore{}, lastFramePoll{};
-};
-
-JobRunner::JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits)
-    : mStore(store), mHub(hub), mLimits(limits)
+StartedJob::StartedJob(std::int64_t id, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control)
+    : mId(id), mJob(std::move(compiled)), mControl(std::move(control))
 {
 }
 
-void JobRunner::onProgress(void* user, std::size_t stepsTaken, std::size_t stepsTotal)
+// The control must not reach the System after it is gone.
+StartedJob::~StartedJob() { mControl->detach(); }
+
+JobRunner::JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits)
+    : mStore(store), mHub(hub), mLimits(limits),
+      mMaxRunTime(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.maxWallSeconds)))
 {
-    auto& s = *static_cast<RunState*>(user);
+}
+
+void JobRunner::onProgress(StartedJob& job, System& root, std::size_t stepsTaken, std::size_t stepsTotal)
+{
     const auto now = Clock::now();
-    if (now > s.deadline) {
-        s.wallTimeExceeded = true;
-        s.root->requestStop();
+    if (job.mRunTime + (now - job.mSliceStart) > mMaxRunTime) {
+        job.mWallTimeExceeded = true;
+        root.requestStop();
         return;
     }
     const double progress = stepsTotal ? static_cast<double>(stepsTaken) / static_cast<double>(stepsTotal) : 1.0;
-    if (now - s.lastProgressEvent >= kProgressEventPeriod) {
-        s.lastProgressEvent = now;
-        s.runner->mHub.publishProgress(s.jobId, progress);
+    if (now - job.mLastProgressEvent >= kProgressEventPeriod) {
+        job.mLastProgressEvent = now;
+        mHub.publishProgress(job.mId, progress);
     }
-    if (now - s.lastProgressStore >= kProgressStorePeriod) {
-        s.lastProgressStore = now;
-        s.runner->mStore.setProgress(s.jobId, progress);
+    if (now - job.mLastProgressStore >= kProgressStorePeriod) {
+        job.mLastProgressStore = now;
+        mStore.setProgress(job.mId, progress);
     }
-    if (now - s.lastFramePoll >= kFramePollPeriod) {
-        s.lastFramePoll = now;
-        s.runner->mHub.publishFrames(s.jobId, *s.live);
+    if (now - job.mLastFramePoll >= kFramePollPeriod) {
+        job.mLastFramePoll = now;
+        mHub.publishFrames(job.mId, *job.mLive);
     }
+    if (now - job.mSliceStart >= job.mSliceLength && job.mOthersWaiting->load(std::memory_order_relaxed))
+        job.mPause.request_stop();
 }
 
-JobState JobRunner::finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
-                           const Result* result)
+void JobRunner::finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
+                       const Result* result)
 {
     mStore.finish(jobId, state, error, steps, result ? &result->blob : nullptr);
     mHub.finish(jobId, result ? &result->samples : nullptr, state, error);
-    return state;
 }
 
-JobState JobRunner::run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads)
+bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bool>& othersWaiting)
 {
+    job.mSliceStart = Clock::now();
     try {
-        PreparedJob job;
-        PrepareError prepareError;
-        if (!prepareJob(request, mLimits, job, prepareError))
-            return finish(jobId, JobState::Failed, prepareError.message, 0, nullptr);
-        return run(jobId, job, control, threads);
-    } catch (const std::exception& e) {
-        return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
-    }
-}
-
-JobState JobRunner::run(std::int64_t jobId, PreparedJob& job, JobControl& control, unsigned threads)
-{
-    const auto started = Clock::now();
-    const auto deadline = started + std::chrono::duration_cast<Clock::duration>(
-                                        std::chrono::duration<double>(mLimits.maxWallSeconds));
-    try {
-        Simulation& sim = *job.simulation;
+        job.mSliceLength = job.mInitialised ? kSlice : kFirstSlice;
+        if (!job.mInitialised && !start(job)) return true;
+        Simulation& sim = *job.mJob->simulation;
         System& root = sim.system();
-        // Detached when the run ends, also when something throws.
-        struct Detach {
-            JobControl& control;
-            ~Detach() { control.detach(); }
-        } detachOnExit{control};
-        control.attach(&root);
-        bool ok = sim.initialise().isOk();
-        // Initialising clears earlier stop requests; one that came before it is seen here.
-        if (control.stopReason() != JobControl::Stop::None) ok = false;
-        RunState state;
-        state.runner = this;
-        state.jobId = jobId;
-        state.root = &root;
-        state.deadline = deadline;
-        // markRunning stored progress 0 just now; the next store is due a period later (a
-        // short job's only progress write would be a wasted transaction).
-        state.lastProgressStore = started;
-        if (ok && Clock::now() > deadline) {
-            state.wallTimeExceeded = true;
-            ok = false;
+        job.mOthersWaiting = &othersWaiting;
+        job.mPause = std::stop_source();
+        // Automatic threads (a job alone on the server) end by themselves when other
+        // processes take a core later and the threads stop paying off.
+        RunOptions options;
+        options.threads = threads;
+        options.progressInterval = kProgressInterval;
+        options.progress = [this, &job, &root](std::size_t taken, std::size_t total) {
+            onProgress(job, root, taken, total);
+        };
+        options.pause = job.mPause.get_token();
+        const bool ok = sim.run(options).isOk();
+        const auto now = Clock::now();
+        job.mRunTime += now - job.mSliceStart;
+        if (ok && sim.state() == SimulationState::Paused) {
+            // Its subscribers see what it has so far while it waits (its first frame, after
+            // its first slice).
+            job.mLastFramePoll = now;
+            mHub.publishFrames(job.mId, *job.mLive);
+            return false;
         }
-        std::string tooLarge;
-        if (ok) {
-            LiveFrameSource live(root);
-            // Lower bound of the result's size, known before running: fail now, not after.
-            const std::size_t estimate = sim.logSlots() * (live.names().size() + 1) * sizeof(double);
-            if (estimate > mLimits.maxResultBytes) {
-                tooLarge = resultTooLargeMessage(estimate, mLimits.maxResultBytes);
-                ok = false;
-            } else {
-                state.live = &live;
-                // Automatic threads (a job alone on the server) end by themselves when other
-                // processes take a core later and the threads stop paying off.
-                RunOptions options;
-                options.threads = threads;
-                options.progressInterval = kProgressInterval;
-                options.progress = [&state](std::size_t taken, std::size_t total) {
-                    onProgress(&state, taken, total);
-                };
-                ok = sim.run(options).isOk();
-            }
-        }
-        control.detach();
-
-        const std::uint64_t steps = root.takenSteps();
-        JobState finalState = JobState::Done;
-        std::string error;
-        if (!tooLarge.empty()) {
-            finalState = JobState::Failed;
-            error = tooLarge;
-        } else if (!ok) {
-            switch (control.stopReason()) {
-            case JobControl::Stop::Cancel:
-                finalState = JobState::Cancelled;
-                break;
-            case JobControl::Stop::Shutdown:
-                finalState = JobState::Interrupted;
-                error = "the server stopped while the job was running";
-                break;
-            case JobControl::Stop::None:
-                finalState = JobState::Failed;
-                if (state.wallTimeExceeded) {
-                    error = wallTimeLimitMessage(mLimits.maxWallSeconds);
-                } else {
-                    error = firstErrorMessage(root);
-                    if (error.empty()) {
-                        std::ostringstream os;
-                        os << "simulation stopped at t=" << root.time() << " before the stop time " << job.stop;
-                        error = os.str();
-                    }
-                }
-                break;
-            }
-        }
-        if (!tooLarge.empty()) return finish(jobId, finalState, error, steps, nullptr);
-        // Whatever was logged is kept, also for stopped runs, as long as it fits. It is
-        // stored and its last frames sent straight from the log: no copy as a ResultTable.
-        const ResultView logged = sim.results();
-        const std::size_t bytes = uncompressedResultBytes(logged);
-        if (bytes > mLimits.maxResultBytes) {
-            if (finalState == JobState::Done) {
-                finalState = JobState::Failed;
-                error = resultTooLargeMessage(bytes, mLimits.maxResultBytes);
-            }
-            return finish(jobId, finalState, error, steps, nullptr);
-        }
-        // Each worker thread keeps its buffer: no fresh pages for every result. A rare large
-        // result's memory goes back once it is stored.
-        constexpr std::size_t kKeptBufferBytes = 16u << 20;
-        thread_local std::string blob;
-        encodeResult(logged, blob);
-        const Result result{blob, LiveFrameSource(root)};
-        const JobState finished = finish(jobId, finalState, error, steps, &result);
-        if (blob.capacity() > kKeptBufferBytes) std::string().swap(blob);
-        return finished;
+        finishRun(job, ok, {});
     } catch (const std::exception& e) {
-        return finish(jobId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
+        job.mControl->detach();
+        finish(job.mId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }
+    return true;
+}
+
+void JobRunner::publishFrames(StartedJob& job)
+{
+    if (job.mLive) mHub.publishFrames(job.mId, *job.mLive);
+}
+
+bool JobRunner::start(StartedJob& job)
+{
+    job.mInitialised = true;
+    if (!job.mJob) {
+        const auto request = mStore.request(job.mId);
+        if (!request) {
+            finish(job.mId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
+            return false;
+        }
+        auto prepared = std::make_unique<PreparedJob>();
+        PrepareError prepareError;
+        if (!prepareJob(*request, mLimits, *prepared, prepareError)) {
+            finish(job.mId, JobState::Failed, prepareError.message, 0, nullptr);
+            return false;
+        }
+        job.mJob = std::move(prepared);
+    }
+    Simulation& sim = *job.mJob->simulation;
+    System& root = sim.system();
+    job.mControl->attach(&root);
+    // markRunning stored progress 0 just now; the next store is due a period later (a short
+    // job's only progress write would be a wasted transaction).
+    job.mLastProgressStore = job.mSliceStart;
+    bool ok = sim.initialise().isOk();
+    // Initialising clears earlier stop requests; one that came before it is seen here.
+    if (job.mControl->stopReason() != JobControl::Stop::None) ok = false;
+    if (ok && Clock::now() - job.mSliceStart > mMaxRunTime) {
+        job.mWallTimeExceeded = true;
+        ok = false;
+    }
+    if (!ok) {
+        finishRun(job, false, {});
+        return false;
+    }
+    job.mLive.emplace(root);
+    // Lower bound of the result's size, known before running: fail now, not after.
+    const std::size_t estimate = sim.logSlots() * (job.mLive->names().size() + 1) * sizeof(double);
+    if (estimate > mLimits.maxResultBytes) {
+        finishRun(job, false, resultTooLargeMessage(estimate, mLimits.maxResultBytes));
+        return false;
+    }
+    job.mLogBytes = estimate;
+    return true;
+}
+
+void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge)
+{
+    job.mControl->detach();
+    Simulation& sim = *job.mJob->simulation;
+    System& root = sim.system();
+    const std::uint64_t steps = root.takenSteps();
+    JobState finalState = JobState::Done;
+    std::string error;
+    if (!tooLarge.empty()) {
+        finalState = JobState::Failed;
+        error = tooLarge;
+    } else if (!ran) {
+        switch (job.mControl->stopReason()) {
+        case JobControl::Stop::Cancel:
+            finalState = JobState::Cancelled;
+            break;
+        case JobControl::Stop::Shutdown:
+            finalState = JobState::Interrupted;
+            error = "the server stopped while the job was running";
+            break;
+        case JobControl::Stop::None:
+            finalState = JobState::Failed;
+            if (job.mWallTimeExceeded) {
+                error = wallTimeLimitMessage(mLimits.maxWallSeconds);
+            } else {
+                error = firstErrorMessage(root);
+                if (error.empty()) {
+                    std::ostringstream os;
+                    os << "simulation stopped at t=" << root.time() << " before the stop time " << job.mJob->stop;
+                    error = os.str();
+                }
+            }
+            break;
+        }
+    }
+    if (!tooLarge.empty()) return finish(job.mId, finalState, error, steps, nullptr);
+    // Whatever was logged is kept, also for stopped runs, as long as it fits. It is stored
+    // and its last frames sent straight from the log: no copy as a ResultTable.
+    const ResultView logged = sim.results();
+    const std::size_t bytes = uncompressedResultBytes(logged);
+    if (bytes > mLimits.maxResultBytes) {
+        if (finalState == JobState::Done) {
+            finalState = JobState::Failed;
+            error = resultTooLargeMessage(bytes, mLimits.maxResultBytes);
+        }
+        return finish(job.mId, finalState, error, steps, nullptr);
+    }
+    // Each worker thread keeps its buffer: no fresh pages for every result. A rare large
+    // result's memory goes back once it is stored.
+    constexpr std::size_t kKeptBufferBytes = 16u << 20;
+    thread_local std::string blob;
+    encodeResult(logged, blob);
+    if (!job.mLive) job.mLive.emplace(root);
+    const Result result{blob, *job.mLive};
+    finish(job.mId, finalState, error, steps, &result);
+    if (blob.capacity() > kKeptBufferBytes) std::string().swap(blob);
 }
 
 } // namespace tlmhub::server

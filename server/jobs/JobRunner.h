@@ -1,6 +1,10 @@
 #pragma once
-// Runs one compiled job on the calling thread to its final state: initialise, simulate with
-// progress/frames/wall-time checks, store the result and the state, publish event.done.
+// Runs jobs in time slices on the calling (worker) thread. A job's first slice initialises
+// it; each slice simulates until the job is done, or until it has run a while (kFirstSlice,
+// kSlice) while other jobs wait (the queue then parks it and runs another one: see JobQueue.h); the last one stores
+// the result and the state and publishes event.done. Slices give the same result as one
+// whole run (Simulation's RunOptions::pause).
+#include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/JobStore.h"
 #include "server/jobs/PreparedJob.h"
@@ -8,7 +12,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <mutex>
+#include <optional>
+#include <stop_token>
 
 namespace tlmhub {
 class System;
@@ -16,9 +23,10 @@ class System;
 
 namespace tlmhub::server {
 
-// Stops a running job from another thread (cancel, shutdown). The runner attaches the job's
-// System while it exists, so a stop request reaches the simulation loop at once; a request
-// that arrives before (or during) initialize is seen when the run starts.
+// Stops a started job from another thread (cancel, shutdown). The runner attaches the job's
+// System from its start to its end, also while it is parked between slices, so a stop
+// request reaches the simulation loop at once, or the job's next slice; a request that
+// arrives before (or during) initialize is seen when the run starts.
 class JobControl {
 public:
     enum class Stop { None, Cancel, Shutdown };
@@ -35,37 +43,90 @@ private:
     std::atomic<Stop> mReason{Stop::None};
 };
 
+// A job from its start to its final state: its simulation and what its slices carry over.
+// Only one thread at a time touches it (the worker running its slice).
+class StartedJob {
+public:
+    // `compiled`: null for a job queued before a restart, prepared again from its stored
+    // request. The job must already be marked running in the store.
+    StartedJob(std::int64_t id, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control);
+    ~StartedJob();
+
+    std::int64_t id() const { return mId; }
+    // Bytes of log storage it holds from its first slice on (a lower bound of its result).
+    std::size_t logBytes() const { return mLogBytes; }
+
+private:
+    friend class JobRunner;
+    using Clock = std::chrono::steady_clock;
+
+    std::int64_t mId;
+    std::unique_ptr<PreparedJob> mJob;
+    std::shared_ptr<JobControl> mControl;
+    bool mInitialised = false;
+    std::optional<LiveFrameSource> mLive;   // once initialised
+    std::size_t mLogBytes = 0;
+    Clock::duration mRunTime{};             // of its slices so far: the wall time limit
+    Clock::time_point mLastProgressEvent{}, mLastProgressStore{}, mLastFramePoll{};
+
+    // The running slice's, for the progress callback.
+    Clock::time_point mSliceStart{};
+    Clock::duration mSliceLength{};
+    const std::atomic<bool>* mOthersWaiting = nullptr;
+    std::stop_source mPause;
+    bool mWallTimeExceeded = false;
+};
+
 class JobRunner {
 public:
     JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
 
-    // The job must already be marked running in the store. Returns its final state.
-    // `threads` as RunOptions::threads (see jobThreads).
-    JobState run(std::int64_t jobId, PreparedJob& job, JobControl& control, unsigned threads);
-    // A job whose compiled form was not kept (queued before a restart): prepared from its request.
-    JobState run(std::int64_t jobId, const JobRequest& request, JobControl& control, unsigned threads);
+    // Runs the job's next slice with `threads` as RunOptions::threads (see jobThreads). The
+    // slice ends after kFirstSlice (the first) or kSlice at the first progress check that
+    // finds `othersWaiting` set.
+    // True when the job has reached its final state (stored, event.done published); false
+    // when it is paused, its new samples published as frames.
+    bool runSlice(StartedJob& job, unsigned threads, const std::atomic<bool>& othersWaiting);
+    // A frame of what a parked job has logged for each subscription due one (one that came
+    // since its last slice): on any thread, while no worker runs the job.
+    void publishFrames(StartedJob& job);
 
     // Steps between two progress callbacks: a clock read per 256 steps costs well under 1%
-    // even for the smallest models, and bounds how late a wall-time limit is noticed.
+    // even for the smallest models, and bounds how late a wall-time limit or the end of a
+    // slice is noticed.
     static constexpr std::size_t kProgressInterval = 256;
     static constexpr auto kProgressEventPeriod = std::chrono::milliseconds(100);
     static constexpr auto kProgressStorePeriod = std::chrono::seconds(1);
     static constexpr auto kFramePollPeriod = std::chrono::milliseconds(5);
+    // A job's slices while other jobs wait: a short first one, which streams its first frame
+    // (the queue starts the jobs of users with nothing running before it goes on with parked
+    // ones: of 40 Position Servo runs of about 8 ms submitted at once on 2 workers, the last
+    // one's first frame waits for 20 first slices, not for 20 whole jobs), then longer ones,
+    // so that a short job is done in two and a long one switches, and streams a frame, every
+    // 10 ms of its running.
+    static constexpr auto kFirstSlice = std::chrono::milliseconds(2);
+    static constexpr auto kSlice = std::chrono::milliseconds(10);
 
 private:
-    struct RunState;
-    static void onProgress(void* user, std::size_t stepsTaken, std::size_t stepsTotal);
+    // On the job's thread every kProgressInterval steps: limits, events, frames, slice end.
+    void onProgress(StartedJob& job, System& root, std::size_t stepsTaken, std::size_t stepsTotal);
+    // Initialises the job (prepares it first if needed). False when it has already reached
+    // its final state.
+    bool start(StartedJob& job);
+    // The job's final state after its last slice (ran: whether that slice ended well).
+    void finishRun(StartedJob& job, bool ran, const std::string& tooLarge);
     // A finished run's result: what is stored, and where its last frames come from.
     struct Result {
         const std::string& blob;
-        LiveFrameSource samples;
+        const FrameSource& samples;
     };
-    JobState finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
-                    const Result* result);
+    void finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
+                const Result* result);
 
     JobStore& mStore;
     StreamHub& mHub;
     JobLimits mLimits;
+    std::chrono::steady_clock::duration mMaxRunTime;   // mLimits.maxWallSeconds
 };
 
 // "wall time limit (N s) exceeded"

@@ -13,10 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -97,6 +99,44 @@ struct EventLog {
     {
         std::lock_guard lock(mutex);
         return !events.empty() && events.back().at("type") == "event.done";
+    }
+    bool hasFrame()
+    {
+        std::lock_guard lock(mutex);
+        return frames > 0;
+    }
+};
+
+// Which job's frames and event.done came in which order, across jobs.
+struct Timeline {
+    std::mutex mutex;
+    std::vector<std::pair<std::int64_t, std::string>> events;   // job, event type
+    std::map<std::int64_t, std::vector<double>> time;            // streamed time samples per job
+
+    StreamSink sink(std::int64_t job)
+    {
+        StreamSink sink;
+        sink.progress = [](nlohmann::json) {};
+        sink.done = [this, job](nlohmann::json) {
+            std::lock_guard lock(mutex);
+            events.emplace_back(job, "done");
+        };
+        sink.frame = [this, job](StreamFrame frame) {
+            const auto parsed = nlohmann::json::parse(frame.jsonText(0));
+            std::lock_guard lock(mutex);
+            events.emplace_back(job, "frame");
+            for (const auto& t : parsed.at("time")) time[job].push_back(t.get<double>());
+        };
+        return sink;
+    }
+    static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+    // Position of the job's first event of that type.
+    std::size_t first(std::int64_t job, const std::string& type)
+    {
+        std::lock_guard lock(mutex);
+        for (std::size_t i = 0; i < events.size(); ++i)
+            if (events[i] == std::make_pair(job, type)) return i;
+        return kNone;
     }
 };
 
@@ -272,10 +312,108 @@ TEST_F(Jobs, WorkersServeUsersRoundRobin)
         std::lock_guard lock(mutex);
         return finishedOrder.size() == 7;
     }));
-    // One worker: A1 first (submitted first), then B, then A's remaining five.
-    EXPECT_EQ(finishedOrder[0], ids[0]);
-    EXPECT_EQ(finishedOrder[1], userB);
-    EXPECT_NE(finishedOrder.back(), userB);
+    // One worker: B's job takes turns with A's first two (A's limit of started jobs), not
+    // after all six of A's.
+    const auto positionOfB = std::find(finishedOrder.begin(), finishedOrder.end(), userB) - finishedOrder.begin();
+    EXPECT_LT(positionOfB, 3);
+}
+
+TEST_F(Jobs, OneWorkerTakesTurnsSoASecondJobStreamsBeforeTheFirstIsDone)
+{
+    JobQueue queue(store, hub, {}, 1);
+    const auto first = *queue.submit(longRequest(1)).id;
+    const auto second = *queue.submit(longRequest(2)).id;
+    EventLog firstEvents, secondEvents;
+    queue.subscribe(first, {}, 0, firstEvents.sink());
+    queue.subscribe(second, {}, 0, secondEvents.sink());
+    queue.start();
+    ASSERT_TRUE(waitUntil([&] { return firstEvents.hasFrame() && secondEvents.hasFrame(); }));
+    // Both started; the one not on the worker waits parked, still running.
+    EXPECT_EQ(state(first), JobState::Running);
+    EXPECT_EQ(state(second), JobState::Running);
+    // One of the two is parked when both are asked to stop at once.
+    EXPECT_EQ(queue.requestCancel(first), JobQueue::CancelRequest::Cancelling);
+    EXPECT_EQ(queue.requestCancel(second), JobQueue::CancelRequest::Cancelling);
+    ASSERT_TRUE(waitUntil([&] { return firstEvents.done() && secondEvents.done(); }));
+    EXPECT_EQ(firstEvents.snapshot().back().at("state"), "cancelled");
+    EXPECT_EQ(secondEvents.snapshot().back().at("state"), "cancelled");
+    EXPECT_EQ(state(first), JobState::Cancelled);
+    EXPECT_EQ(state(second), JobState::Cancelled);
+    EXPECT_GT(store.info(second)->steps, 0u);
+}
+
+TEST_F(Jobs, JobsRunInSlicesStoreTheResultOfAWholeRunAndStreamIt)
+{
+    JobQueue queue(store, hub, {}, 1);
+    JobRequest r = request(kServo);
+    r.settings.stop = 20.0;   // 200000 steps: many slices
+    r.settings.logSamples = 20000;
+    const auto first = *queue.submit(r).id;
+    r.ownerId = 2;
+    const auto second = *queue.submit(r).id;
+    Timeline timeline;
+    queue.subscribe(first, {}, StreamHub::kMaxRate, timeline.sink(first));
+    queue.subscribe(second, {}, StreamHub::kMaxRate, timeline.sink(second));
+    queue.start();
+    ASSERT_TRUE(finishes(first) && finishes(second));
+    ASSERT_TRUE(waitUntil([&] {
+        return timeline.first(first, "done") != Timeline::kNone && timeline.first(second, "done") != Timeline::kNone;
+    }));
+    // They took turns: each streamed before the other was done.
+    EXPECT_LT(timeline.first(second, "frame"), timeline.first(first, "done"));
+    EXPECT_LT(timeline.first(first, "frame"), timeline.first(second, "done"));
+    const std::string whole = directRun(readFile(kServo), {}, 20.0, 20000).toCsv();
+    for (const auto id : {first, second}) {
+        ASSERT_EQ(state(id), JobState::Done) << store.info(id)->error;
+        const ResultTable result = *store.result(id);
+        EXPECT_EQ(result.toCsv(), whole);
+        std::lock_guard lock(timeline.mutex);
+        EXPECT_TRUE(bitwiseEqual(timeline.time[id], result.time));
+    }
+}
+
+TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
+{
+    std::int64_t first = 0, second = 0;
+    {
+        JobQueue queue(store, hub, {}, 1);
+        first = *queue.submit(longRequest(1)).id;
+        second = *queue.submit(longRequest(2)).id;
+        EventLog firstEvents, secondEvents;
+        queue.subscribe(first, {}, 0, firstEvents.sink());
+        queue.subscribe(second, {}, 0, secondEvents.sink());
+        queue.start();
+        ASSERT_TRUE(waitUntil([&] { return firstEvents.hasFrame() && secondEvents.hasFrame(); }));
+        queue.shutdown();
+        EXPECT_EQ(state(first), JobState::Interrupted);
+        EXPECT_EQ(state(second), JobState::Interrupted);
+        EXPECT_EQ(firstEvents.snapshot().back().at("state"), "interrupted");
+        EXPECT_EQ(secondEvents.snapshot().back().at("state"), "interrupted");
+    }
+    JobQueue restarted(store, hub, {}, 1);
+    restarted.start();
+    EXPECT_EQ(state(first), JobState::Interrupted);
+    EXPECT_EQ(state(second), JobState::Interrupted);
+}
+
+TEST_F(Jobs, AtMostSoManyJobsAreStartedAtOnceTheOthersWaitUnstarted)
+{
+    JobQueue queue(store, hub, {}, 1);
+    const std::size_t jobs = JobQueue::kMaxStartedJobs + 2;
+    std::vector<std::int64_t> ids;
+    for (std::size_t i = 0; i < jobs; ++i) ids.push_back(*queue.submit(longRequest(static_cast<std::int64_t>(i) + 1)).id);
+    queue.start();
+    auto count = [&](JobState s) { return store.listInState(s).size(); };
+    ASSERT_TRUE(waitUntil([&] { return count(JobState::Running) == JobQueue::kMaxStartedJobs; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(count(JobState::Running), JobQueue::kMaxStartedJobs);
+    EXPECT_EQ(count(JobState::Queued), 2u);
+    EXPECT_EQ(state(ids.back()), JobState::Queued);
+    // A started job ending lets the next one start.
+    EXPECT_TRUE(queue.cancel(ids.front()));
+    ASSERT_TRUE(waitUntil([&] { return count(JobState::Queued) == 1; }));
+    queue.shutdown();
+    EXPECT_EQ(count(JobState::Interrupted), JobQueue::kMaxStartedJobs);
 }
 
 TEST_F(Jobs, UserAtRunningLimitWaitsWhileOthersRun)
@@ -300,7 +438,10 @@ TEST_F(Jobs, UserAtRunningLimitWaitsWhileOthersRun)
 
 TEST_F(Jobs, CancelQueuedAndRunning)
 {
-    JobQueue queue(store, hub, {}, 1);
+    // One started job per user: the second stays queued (not started for a time slice).
+    JobLimits limits;
+    limits.maxRunningPerUser = 1;
+    JobQueue queue(store, hub, limits, 1);
     queue.start();
     const auto running = *queue.submit(longRequest()).id;
     const auto queued = *queue.submit(request(kExample)).id;
@@ -446,7 +587,9 @@ TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
 {
     std::int64_t running = 0, queued = 0;
     {
-        JobQueue queue(store, hub, {}, 1);
+        JobLimits limits;
+        limits.maxRunningPerUser = 1;   // the second job stays queued (not started for a time slice)
+        JobQueue queue(store, hub, limits, 1);
         queue.start();
         running = *queue.submit(longRequest()).id;
         queued = *queue.submit(request(kExample)).id;

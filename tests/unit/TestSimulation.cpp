@@ -222,6 +222,39 @@ TEST(Simulation, StopTokenEndsTheRun)
     EXPECT_LT(sim->takenSteps(), 5002u);
 }
 
+TEST(Simulation, RunInSlicesEndedByAPauseRequestEqualsOneWholeRun)
+{
+    const std::string whole = freshRunCsv(servoPath());
+    auto root = load(servoPath());
+    Result<Simulation> sim = compile(*root);
+    ASSERT_TRUE(sim) << sim.status().message();
+    // A pause asked for before the run: no step is taken.
+    std::stop_source early;
+    early.request_stop();
+    ASSERT_TRUE(sim->run({.pause = early.get_token()}));
+    EXPECT_EQ(sim->state(), SimulationState::Paused);
+    EXPECT_EQ(sim->takenSteps(), 0u);
+    // Pauses asked for from the progress callback, on one thread, two and automatic ones.
+    for (unsigned threads : {1u, 2u, RunOptions::autoThreads}) {
+        const std::size_t before = sim->takenSteps();
+        std::stop_source pauser;
+        RunOptions options;
+        options.threads = threads;
+        options.pause = pauser.get_token();
+        options.progressInterval = 500;
+        options.progress = [&](std::size_t taken, std::size_t) {
+            if (taken >= before + 3000) pauser.request_stop();
+        };
+        ASSERT_TRUE(sim->run(options));
+        EXPECT_EQ(sim->state(), SimulationState::Paused);
+        EXPECT_GT(sim->takenSteps(), before);
+        EXPECT_LT(sim->takenSteps(), sim->totalSteps());
+    }
+    ASSERT_TRUE(sim->run());
+    EXPECT_EQ(sim->state(), SimulationState::Finished);
+    EXPECT_EQ(csvOf(*sim), whole);
+}
+
 TEST(Simulation, CompileReportsTheProblemWithItsCodeAndPath)
 {
     {
