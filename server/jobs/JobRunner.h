@@ -1,9 +1,9 @@
 #pragma once
 // Runs jobs in time slices on the calling (worker) thread. A job's first slice initialises
 // it; each slice simulates until the job is done, or until it has run a while (kFirstSlice,
-// kSlice) while other jobs wait (the queue then parks it and runs another one: see JobQueue.h); the last one stores
-// the result and the state and publishes event.done. Slices give the same result as one
-// whole run (Simulation's RunOptions::pause).
+// kSlice) while other jobs wait (the queue then parks it and runs another one: see
+// JobQueue.h); the last one stores the result and the state and publishes event.done.
+// Slices give the same result as one whole run (Simulation's RunOptions::pause).
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/JobStore.h"

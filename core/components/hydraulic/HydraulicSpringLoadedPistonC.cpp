@@ -29,14 +29,8 @@ void HydraulicSpringLoadedPistonC::initialize()
 {
     mNumPorts1 = getNumPorts(mpP1);
     mNumPorts2 = getNumPorts(mpP2);
-    mvpP1_p.resize(mNumPorts1);
-    mvpP1_q.resize(mNumPorts1);
-    mvpP1_c.resize(mNumPorts1);
-    mvpP1_Zc.resize(mNumPorts1);
-    mvpP2_p.resize(mNumPorts2);
-    mvpP2_q.resize(mNumPorts2);
-    mvpP2_c.resize(mNumPorts2);
-    mvpP2_Zc.resize(mNumPorts2);
+    mP1.resize(mNumPorts1);
+    mP2.resize(mNumPorts2);
 
     const double A1 = *mpA1;
     const double A2 = *mpA2;
@@ -50,24 +44,24 @@ void HydraulicSpringLoadedPistonC::initialize()
     const double p1s = getDefaultStartValue(mpP1, NodeHydraulic::Pressure);
     const double q1s = getDefaultStartValue(mpP1, NodeHydraulic::Flow);
     for (std::size_t i = 0; i < mNumPorts1; ++i) {
-        mvpP1_p[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Pressure);
-        mvpP1_q[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Flow);
-        mvpP1_c[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::WaveVariable);
-        mvpP1_Zc[i] = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::CharImpedance);
-        *mvpP1_p[i] = p1s;
-        *mvpP1_q[i] = q1s / double(mNumPorts1);
-        *mvpP1_c[i] = p1s;
+        mP1[i].p = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Pressure);
+        mP1[i].q = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::Flow);
+        mP1[i].c = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::WaveVariable);
+        mP1[i].Zc = getSafeMultiPortNodeDataPtr(mpP1, i, NodeHydraulic::CharImpedance);
+        *mP1[i].p = p1s;
+        *mP1[i].q = q1s / double(mNumPorts1);
+        *mP1[i].c = p1s;
     }
     const double p2s = getDefaultStartValue(mpP2, NodeHydraulic::Pressure);
     const double q2s = getDefaultStartValue(mpP2, NodeHydraulic::Flow);
     for (std::size_t i = 0; i < mNumPorts2; ++i) {
-        mvpP2_p[i] = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::Pressure);
-        mvpP2_q[i] = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::Flow);
-        mvpP2_c[i] = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::WaveVariable);
-        mvpP2_Zc[i] = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::CharImpedance);
-        *mvpP2_p[i] = p2s;
-        *mvpP2_q[i] = q2s / double(mNumPorts2);
-        *mvpP2_c[i] = p2s;
+        mP2[i].p = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::Pressure);
+        mP2[i].q = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::Flow);
+        mP2[i].c = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::WaveVariable);
+        mP2[i].Zc = getSafeMultiPortNodeDataPtr(mpP2, i, NodeHydraulic::CharImpedance);
+        *mP2[i].p = p2s;
+        *mP2[i].q = q2s / double(mNumPorts2);
+        *mP2[i].c = p2s;
     }
     mpP3_x = getSafeNodeDataPtr(mpP3, NodeMechanic::Position);
     mpP3_v = getSafeNodeDataPtr(mpP3, NodeMechanic::Velocity);
@@ -75,8 +69,8 @@ void HydraulicSpringLoadedPistonC::initialize()
     mpP3_Zx = getSafeNodeDataPtr(mpP3, NodeMechanic::CharImpedance);
     mpP3_me = getSafeNodeDataPtr(mpP3, NodeMechanic::EquivalentMass);
 
-    const double p1 = *mvpP1_p[0];
-    const double p2 = *mvpP2_p[0];
+    const double p1 = *mP1[0].p;
+    const double p2 = *mP2[0].p;
     const double x3 = *mpP3_x;
     const double v3 = *mpP3_v;
 
@@ -103,12 +97,12 @@ void HydraulicSpringLoadedPistonC::initialize()
     const double c3 = A1 * ci1 - A2 * ci2;
 
     for (std::size_t i = 0; i < mNumPorts1; ++i) {
-        *mvpP1_c[i] = p1 + Zc1 * (*mvpP1_q[i]);
-        *mvpP1_Zc[i] = Zc1;
+        *mP1[i].c = p1 + Zc1 * (*mP1[i].q);
+        *mP1[i].Zc = Zc1;
     }
     for (std::size_t i = 0; i < mNumPorts2; ++i) {
-        *mvpP2_c[i] = p2 + Zc2 * (*mvpP2_q[i]);
-        *mvpP2_Zc[i] = Zc2;
+        *mP2[i].c = p2 + Zc2 * (*mP2[i].q);
+        *mP2[i].Zc = Zc2;
     }
     *mpP3_c = c3;
     *mpP3_Zx = Zx3;
@@ -116,8 +110,8 @@ void HydraulicSpringLoadedPistonC::initialize()
 
 void HydraulicSpringLoadedPistonC::simulateOneTimestep()
 {
-    double Zc1 = *mvpP1_Zc[0];
-    double Zc2 = *mvpP2_Zc[0];
+    double Zc1 = *mP1[0].Zc;
+    double Zc2 = *mP2[0].Zc;
     const double x3 = *mpP3_x;
     const double v3 = *mpP3_v;
     double me = *mpP3_me;
@@ -155,7 +149,7 @@ void HydraulicSpringLoadedPistonC::simulateOneTimestep()
     Zc1 = (double(mNumPorts1) + 2.0) / 2.0 * betae / V1 * mTimestep / (1.0 - mAlpha);
     double c1mean = (ci1 + 2.0 * Zc1 * qi1) + (cl1 + 2.0 * Zc1 * (-qLeak));
     for (std::size_t i = 0; i < mNumPorts1; ++i) {
-        c1mean += (*mvpP1_c[i]) + 2.0 * Zc1 * (*mvpP1_q[i]);
+        c1mean += (*mP1[i].c) + 2.0 * Zc1 * (*mP1[i].q);
     }
     c1mean = c1mean / (double(mNumPorts1) + 2.0);
     ci1 = std::max(0.0, mAlpha * ci1 + (1.0 - mAlpha) * (2.0 * c1mean - ci1 - 2.0 * Zc1 * qi1));
@@ -165,7 +159,7 @@ void HydraulicSpringLoadedPistonC::simulateOneTimestep()
     Zc2 = (double(mNumPorts2) + 2.0) / 2.0 * betae / V2 * mTimestep / (1.0 - mAlpha);
     double c2mean = (ci2 + 2.0 * Zc2 * qi2) + (cl2 + 2.0 * Zc2 * qLeak);
     for (std::size_t i = 0; i < mNumPorts2; ++i) {
-        c2mean += (*mvpP2_c[i]) + 2.0 * Zc2 * (*mvpP2_q[i]);
+        c2mean += (*mP2[i].c) + 2.0 * Zc2 * (*mP2[i].q);
     }
     c2mean = c2mean / (double(mNumPorts2) + 2.0);
     ci2 = std::max(0.0, mAlpha * ci2 + (1.0 - mAlpha) * (2.0 * c2mean - ci2 - 2.0 * Zc2 * qi2));
@@ -181,14 +175,14 @@ void HydraulicSpringLoadedPistonC::simulateOneTimestep()
     const double Zx3 = A1 * A1 * Zc1 + A2 * A2 * Zc2 + bp + ZxLim;
 
     for (std::size_t i = 0; i < mNumPorts1; ++i) {
-        const double c = *mvpP1_c[i];
-        *mvpP1_c[i] = std::max(0.0, mAlpha * c + (1.0 - mAlpha) * (2.0 * c1mean - c - 2.0 * Zc1 * (*mvpP1_q[i])));
-        *mvpP1_Zc[i] = Zc1;
+        const double c = *mP1[i].c;
+        *mP1[i].c = std::max(0.0, mAlpha * c + (1.0 - mAlpha) * (2.0 * c1mean - c - 2.0 * Zc1 * (*mP1[i].q)));
+        *mP1[i].Zc = Zc1;
     }
     for (std::size_t i = 0; i < mNumPorts2; ++i) {
-        const double c = *mvpP2_c[i];
-        *mvpP2_c[i] = std::max(0.0, mAlpha * c + (1.0 - mAlpha) * (2.0 * c2mean - c - 2.0 * Zc2 * (*mvpP2_q[i])));
-        *mvpP2_Zc[i] = Zc2;
+        const double c = *mP2[i].c;
+        *mP2[i].c = std::max(0.0, mAlpha * c + (1.0 - mAlpha) * (2.0 * c2mean - c - 2.0 * Zc2 * (*mP2[i].q)));
+        *mP2[i].Zc = Zc2;
     }
     *mpP3_c = c3 - Fs;
     *mpP3_Zx = Zx3;

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/Component.h"
+#include "core/components/hydraulic/HydraulicSubPortData.h"
 
 #include <vector>
 
@@ -25,8 +26,7 @@ private:
     double *mpA1 = nullptr, *mpA2 = nullptr, *mpSl = nullptr, *mpFs = nullptr;
     double *mpV01 = nullptr, *mpV02 = nullptr, *mpBp = nullptr, *mpBetae = nullptr, *mpCLeak = nullptr;
     std::size_t mNumPorts1 = 0, mNumPorts2 = 0;
-    std::vector<double*> mvpP1_p, mvpP1_q, mvpP1_c, mvpP1_Zc;
-    std::vector<double*> mvpP2_p, mvpP2_q, mvpP2_c, mvpP2_Zc;
+    std::vector<HydraulicSubPortData> mP1, mP2;
     double *mpP3_x = nullptr, *mpP3_v = nullptr, *mpP3_c = nullptr, *mpP3_Zx = nullptr;
     double* mpP3_me = nullptr;
 };
