@@ -1,0 +1,264 @@
+#include "TemporaryPostgres.h"
+
+#include <pqxx/pqxx>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <grp.h>
+#include <netinet/in.h>
+#include <pwd.h>
+#include <sstream>
+#include <stdexcept>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace tlmhub::test {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The account the PostgreSQL binaries run as. initdb and postgres refuse to run as root (CI
+// runs the tests as root), so as root they run as `nobody`: the child process drops to it with
+// setgid/setuid itself before exec (no runuser/setpriv needed), and the temporary directory is
+// chown'ed to it. Otherwise they run as the current user.
+struct RunAs {
+    bool drop = false;
+    uid_t uid = 0;
+    gid_t gid = 0;
+};
+
+RunAs runAs()
+{
+    RunAs r;
+    if (::geteuid() != 0) return r;
+    const passwd* pw = ::getpwnam("nobody");
+    if (pw == nullptr) throw std::runtime_error("TemporaryPostgres: running as root and there is no user 'nobody' to run PostgreSQL as");
+    r.drop = true;
+    r.uid = pw->pw_uid;
+    r.gid = pw->pw_gid;
+    return r;
+}
+
+std::string tailOf(const std::filesystem::path& file, std::size_t maxBytes)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return "(no log at " + file.string() + ")";
+    std::ostringstream s;
+    s << in.rdbuf();
+    std::string text = s.str();
+    if (text.size() > maxBytes) text = "..." + text.substr(text.size() - maxBytes);
+    return text;
+}
+
+// Starts `args` (args[0] an absolute path) as `who` in `cwd`, stdout and stderr appended to
+// `log`. Everything the child needs is prepared before fork (the test process has threads).
+int spawn(const std::vector<std::string>& args, const std::filesystem::path& log,
+          const std::filesystem::path& cwd, const RunAs& who)
+{
+    const int logFd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (logFd < 0) throw std::runtime_error("TemporaryPostgres: cannot open " + log.string() + ": " + std::strerror(errno));
+    if (who.drop && ::fchown(logFd, who.uid, who.gid) != 0) {
+        ::close(logFd);
+        throw std::runtime_error("TemporaryPostgres: cannot chown " + log.string());
+    }
+    std::vector<std::string> copy = args;
+    std::vector<char*> argv;
+    for (auto& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string dir = cwd.string();
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(logFd);
+        throw std::runtime_error("TemporaryPostgres: fork failed");
+    }
+    if (pid == 0) {
+        ::dup2(logFd, STDOUT_FILENO);
+        ::dup2(logFd, STDERR_FILENO);
+        ::setpgid(0, 0); // a Ctrl-C in the terminal reaches the test, not the server directly
+        if (who.drop && (::setgroups(0, nullptr) != 0 || ::setgid(who.gid) != 0 || ::setuid(who.uid) != 0)) {
+            static const char msg[] = "TemporaryPostgres: cannot drop to user nobody\n";
+            (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
+            ::_exit(126);
+        }
+        if (::chdir(dir.c_str()) != 0) ::_exit(126);
+        ::execv(argv[0], argv.data());
+        static const char msg[] = "TemporaryPostgres: exec failed\n";
+        (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
+        ::_exit(127);
+    }
+    ::close(logFd);
+    return pid;
+}
+
+// Waits for `pid` until `deadline`; returns its wait status, or -1 (still running) at the deadline.
+int waitUntil(int pid, Clock::time_point deadline)
+{
+    for (;;) {
+        int status = 0;
+        const pid_t r = ::waitpid(pid, &status, WNOHANG);
+        if (r == pid) return status;
+        if (r < 0 && errno != EINTR) return 0;
+        if (Clock::now() >= deadline) return -1;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+}
+
+// A loopback port nobody listens on right now (postgres binds it a moment later; a lost race
+// shows up as "Address already in use" in the log and is retried with another port).
+unsigned short freeLoopbackPort()
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) throw std::runtime_error("TemporaryPostgres: socket failed");
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    addr.sin_port = 0;
+    socklen_t len = sizeof addr;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len) != 0) {
+        ::close(fd);
+        throw std::runtime_error("TemporaryPostgres: cannot bind a loopback port");
+    }
+    ::close(fd);
+    return ntohs(addr.sin_port);
+}
+
+std::string describeStatus(int status)
+{
+    if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+    return "ended (wait status " + std::to_string(status) + ")";
+}
+
+} // namespace
+
+TemporaryPostgres::TemporaryPostgres(std::string dbName) : mDbName(std::move(dbName))
+{
+    const std::filesystem::path bin = kBinDir;
+    for (const char* tool : {"initdb", "postgres"}) {
+        if (::access((bin / tool).c_str(), X_OK) != 0)
+            throw std::runtime_error(std::string("TemporaryPostgres: ") + (bin / tool).string() +
+                                     " not found or not executable: install Debian's postgresql-15 "
+                                     "(apt-get install postgresql-15, or scripts/install-deps.sh)");
+    }
+    const RunAs who = runAs();
+
+    std::string tmpl = (std::filesystem::temp_directory_path() / "tlmhub-pg-XXXXXX").string();
+    if (::mkdtemp(tmpl.data()) == nullptr)
+        throw std::runtime_error("TemporaryPostgres: mkdtemp failed for " + tmpl + ": " + std::strerror(errno));
+    mDir = tmpl;
+    try {
+        const auto data = mDir / "data";
+        const auto socketDir = mDir / "socket";
+        std::filesystem::create_directory(socketDir);
+        if (who.drop) {
+            // The parent of mDir (normally /tmp) must be searchable by nobody.
+            if (::chown(mDir.c_str(), who.uid, who.gid) != 0 || ::chown(socketDir.c_str(), who.uid, who.gid) != 0)
+                throw std::runtime_error("TemporaryPostgres: cannot chown " + mDir.string() + " to nobody");
+        }
+
+        // initdb: trust authentication (the server listens on loopback only, in a directory
+        // only its user can enter), no fsync: the data is thrown away after the test.
+        const auto initdbLog = mDir / "initdb.log";
+        const int initdb = spawn({(bin / "initdb").string(), "-D", data.string(), "-U", kUser, "--auth=trust",
+                                  "--encoding=UTF8", "--locale=C.UTF-8", "--no-sync", "--no-instructions"},
+                                 initdbLog, mDir, who);
+        const int initStatus = waitUntil(initdb, Clock::now() + std::chrono::seconds(60));
+        if (initStatus == -1) {
+            ::kill(initdb, SIGKILL);
+            ::waitpid(initdb, nullptr, 0);
+            throw std::runtime_error("TemporaryPostgres: initdb did not finish within 60 s; log:\n" + tailOf(initdbLog, 4000));
+        }
+        if (!WIFEXITED(initStatus) || WEXITSTATUS(initStatus) != 0)
+            throw std::runtime_error("TemporaryPostgres: initdb " + describeStatus(initStatus) + "; log:\n" +
+                                     tailOf(initdbLog, 4000));
+
+        // postgres, retried on another port if the one picked was taken in the meantime.
+        const auto deadline = Clock::now() + std::chrono::seconds(30);
+        for (int attempt = 1;; ++attempt) {
+            mPort = freeLoopbackPort();
+            mPid = spawn({(bin / "postgres").string(), "-D", data.string(), "-h", "127.0.0.1", "-p",
+                          std::to_string(mPort), "-k", socketDir.string(), "-c", "fsync=off", "-c",
+                          "synchronous_commit=off", "-c", "full_page_writes=off", "-c", "max_connections=20"},
+                         mDir / "postgres.log", mDir, who);
+            bool ready = false;
+            std::string lastError = "no connection attempt yet";
+            while (!ready) {
+                const int status = waitUntil(mPid, Clock::now());
+                if (status != -1) {
+                    mPid = -1;
+                    const std::string log = logTail(4000);
+                    if (attempt < 3 && log.find("Address already in use") != std::string::npos) break;
+                    throw std::runtime_error("TemporaryPostgres: postgres " + describeStatus(status) +
+                                             " before accepting connections on 127.0.0.1:" +
+                                             std::to_string(mPort) + "; log:\n" + log);
+                }
+                if (Clock::now() >= deadline)
+                    throw std::runtime_error("TemporaryPostgres: postgres did not accept connections on 127.0.0.1:" +
+                                             std::to_string(mPort) + " within 30 s (last error: " + lastError +
+                                             "); log:\n" + logTail(4000));
+                try {
+                    pqxx::connection probe(uri("postgres") + "?connect_timeout=2");
+                    ready = true;
+                } catch (const std::exception& e) {
+                    lastError = e.what();
+                    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                }
+            }
+            if (ready) break;
+        }
+
+        pqxx::connection admin(uri("postgres") + "?connect_timeout=10");
+        pqxx::nontransaction txn(admin);
+        txn.exec0("CREATE DATABASE " + txn.quote_name(mDbName));
+    } catch (...) {
+        stop();
+        std::error_code ignored;
+        std::filesystem::remove_all(mDir, ignored);
+        throw;
+    }
+}
+
+TemporaryPostgres::~TemporaryPostgres()
+{
+    stop();
+    std::error_code ignored;
+    std::filesystem::remove_all(mDir, ignored);
+}
+
+void TemporaryPostgres::stop()
+{
+    if (mPid <= 0) return;
+    // SIGINT is PostgreSQL's fast shutdown: sessions are disconnected, no waiting for clients.
+    ::kill(mPid, SIGINT);
+    if (waitUntil(mPid, Clock::now() + std::chrono::seconds(30)) == -1) {
+        ::kill(mPid, SIGQUIT); // immediate shutdown
+        if (waitUntil(mPid, Clock::now() + std::chrono::seconds(5)) == -1) {
+            ::kill(-mPid, SIGKILL); // the whole process group: postmaster and backends
+            ::waitpid(mPid, nullptr, 0);
+        }
+    }
+    mPid = -1;
+}
+
+std::string TemporaryPostgres::uri() const { return uri(mDbName); }
+
+std::string TemporaryPostgres::uri(const std::string& dbName) const
+{
+    return std::string("postgresql://") + kUser + "@127.0.0.1:" + std::to_string(mPort) + "/" + dbName;
+}
+
+std::string TemporaryPostgres::logTail(std::size_t maxBytes) const
+{
+    return tailOf(mDir / "postgres.log", maxBytes);
+}
+
+} // namespace tlmhub::test
