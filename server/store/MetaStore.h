@@ -1,7 +1,5 @@
 #pragma once
 // Small server-wide key/value facts (table meta), e.g. which example files were seeded.
-#include "server/store/Database.h"
-
 #include <optional>
 #include <string>
 
@@ -9,13 +7,10 @@ namespace tlmhub::server {
 
 class MetaStore {
 public:
-    explicit MetaStore(Database& db);
+    virtual ~MetaStore() = default;
 
-    std::optional<std::string> get(const std::string& key);
-    void set(const std::string& key, const std::string& value);
-
-private:
-    Database& mDb;
+    virtual std::optional<std::string> get(const std::string& key) = 0;
+    virtual void set(const std::string& key, const std::string& value) = 0;
 };
 
 } // namespace tlmhub::server

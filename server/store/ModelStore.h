@@ -3,7 +3,6 @@
 // whether it is an example. The text is stored verbatim; loading and validating it is the
 // caller's business, so the store works without the core.
 #include "server/auth/User.h"
-#include "server/store/Database.h"
 
 #include <cstdint>
 #include <optional>
@@ -23,25 +22,23 @@ struct ModelSummary {
 
 class ModelStore {
 public:
-    // Needs the users table (owners), so construct after UserStore.
-    explicit ModelStore(Database& db);
+    virtual ~ModelStore() = default;
 
-    // Returns the new id. Names need not be unique.
-    std::int64_t create(std::int64_t ownerId, const std::string& name, const std::string& hmf,
-                        bool isExample);
-    std::optional<ModelSummary> summary(std::int64_t id);
-    std::optional<std::string> hmf(std::int64_t id);
+    // Returns the new id; nullopt when `ownerId` names no account. Names need not be unique.
+    virtual std::optional<std::int64_t> create(std::int64_t ownerId, const std::string& name,
+                                               const std::string& hmf, bool isExample) = 0;
+    virtual std::optional<ModelSummary> summary(std::int64_t id) = 0;
+    virtual std::optional<std::string> hmf(std::int64_t id) = 0;
     // Changes the given fields and touches updated_at; false when the model does not exist.
-    bool update(std::int64_t id, const std::optional<std::string>& name,
-                const std::optional<std::string>& hmf);
-    bool remove(std::int64_t id);
-    // Every model `who` may read (AccessPolicy::canRead), by id.
+    virtual bool update(std::int64_t id, const std::optional<std::string>& name,
+                        const std::optional<std::string>& hmf) = 0;
+    // Works on a full disk too (deleting is how space is freed).
+    virtual bool remove(std::int64_t id) = 0;
+    virtual std::vector<ModelSummary> list() = 0;   // by id
+
+    // Every model `who` may read (AccessPolicy::canRead), by id. The rule has one home, the
+    // policy, rather than one SQL text per back end.
     std::vector<ModelSummary> listVisibleTo(const User& who);
-
-    Database& database() { return mDb; }
-
-private:
-    Database& mDb;
 };
 
 } // namespace tlmhub::server

@@ -1,0 +1,66 @@
+#pragma once
+// Accounts (table users): name, argon2id password hash, role. Hashing happens outside the
+// database lock because it takes about 0.1 s.
+#include "server/auth/User.h"
+#include "server/store/Database.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+// Error texts of create()/changePassword(), fixed so callers can map them to API codes
+// (kUsernameTaken -> conflict, the rest -> bad_request / unauthorized).
+inline constexpr const char* kUsernameTaken = "username is already taken";
+inline constexpr const char* kBadUsername =
+    "username must be 1-64 characters of A-Z, a-z, 0-9, '_', '.', '-'";
+inline constexpr const char* kBadRole = "role must be admin, teacher or user";
+inline constexpr const char* kShortPassword = "password must be at least 8 characters";
+inline constexpr const char* kWrongPassword = "old password is wrong";
+inline constexpr const char* kNoSuchUser = "no such user";
+inline constexpr const char* kLastAdmin = "the last enabled administrator cannot be disabled or lose the role";
+
+inline constexpr std::size_t kMinPasswordLength = 8;
+
+bool isValidUsername(const std::string& username);
+
+class UserStore {
+public:
+    explicit UserStore(Database& db);
+
+    // Names are unique regardless of case ("ALICE" is taken when "alice" exists).
+    std::optional<User> create(const std::string& username, const std::string& password,
+                               const std::string& role, std::string& error);
+    // The user when the password matches (also a disabled one: the caller refuses it, after
+    // the password proved who asks); nullopt for unknown user or wrong password (both take
+    // the time of one hash, so timing does not reveal which names exist). The name matches
+    // exactly, or else regardless of case when that finds one account.
+    std::optional<User> authenticate(const std::string& username, const std::string& password);
+    std::optional<User> find(std::int64_t id);
+    std::optional<User> findByName(const std::string& username);
+    std::vector<User> list();   // by id
+    std::size_t count();
+    bool changePassword(std::int64_t id, const std::string& oldPw, const std::string& newPw,
+                        std::string& error);
+    // An administrator's change of role and/or enabled state; the updated user, or nullopt
+    // with `error` (kNoSuchUser, kBadRole, kLastAdmin).
+    std::optional<User> update(std::int64_t id, const std::optional<std::string>& role,
+                               std::optional<bool> disabled, std::string& error);
+    // Existing names that differ only in case (made before names were compared that way),
+    // one "alice, ALICE" line per group; they keep working, the server reports them at start.
+    std::vector<std::string> namesDifferingOnlyInCase();
+
+    Database& database() { return mDb; }
+
+private:
+    std::optional<std::string> passwordHash(const std::string& username, std::int64_t& id);
+    // Every account but `id`, with the database lock held by the caller.
+    std::vector<User> usersOtherThan(std::int64_t id);
+
+    Database& mDb;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,54 @@
+#pragma once
+// Jobs as stored (table jobs): state, timing, resolved settings and the request JSON, so a job
+// can be run again. A finished job's result goes to table job_results in the same transaction
+// (read through ResultStore).
+#include "server/jobs/Job.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+class JobStore {
+public:
+    virtual ~JobStore() = default;
+
+    // A new queued job; `resolved` gives the settings and planned steps (its other fields are
+    // ignored). Returns the job id.
+    virtual std::int64_t create(const JobRequest& request, const JobInfo& resolved) = 0;
+
+    virtual std::optional<JobInfo> info(std::int64_t id) = 0;
+    // The stored request's JSON text (JobRequest::toJson).
+    virtual std::optional<std::string> requestText(std::int64_t id) = 0;
+    // Newest first.
+    virtual std::vector<JobInfo> listForOwner(std::int64_t ownerId) = 0;
+    virtual std::vector<JobInfo> listAll() = 0;
+    // Oldest first (the order they were submitted in).
+    virtual std::vector<JobInfo> listInState(JobState state) = 0;
+
+    // queued -> running (sets started_at); false if the job is not queued any more.
+    virtual bool markRunning(std::int64_t id) = 0;
+    // Only while the job runs.
+    virtual void setProgress(std::int64_t id, double progress) = 0;
+    // Final state in one transaction: state, error, taken steps, finished_at and, when given,
+    // the result (encodeResult's blob). Refuses (false) a job that is already finished or
+    // gone; a failure writing the result leaves the job as it was.
+    virtual bool finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
+                        const std::string* resultBlob) = 0;
+    // Start-up after a crash: every job left running becomes interrupted. Returns how many.
+    virtual int markRunningInterrupted() = 0;
+
+    // Deletes the job and its result; works on a full disk too.
+    virtual bool remove(std::int64_t id) = 0;
+    // Deletes finished jobs (and their results) that finished before `unixSeconds`;
+    // returns how many.
+    virtual int removeFinishedBefore(std::int64_t unixSeconds) = 0;
+
+    // The stored request; nullopt when the job does not exist or its text is not a request.
+    std::optional<JobRequest> request(std::int64_t id);
+};
+
+} // namespace tlmhub::server

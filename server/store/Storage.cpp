@@ -1,0 +1,17 @@
+#include "server/store/Storage.h"
+
+#include "server/store/sqlite/SqliteStorage.h"
+
+namespace tlmhub::server {
+
+bool isPostgresUri(const std::string& database)
+{
+    return database.starts_with("postgresql://") || database.starts_with("postgres://");
+}
+
+std::unique_ptr<Storage> openStorage(const StorageConfig& config)
+{
+    return std::make_unique<SqliteStorage>(config);
+}
+
+} // namespace tlmhub::server

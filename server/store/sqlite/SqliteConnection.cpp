@@ -1,0 +1,52 @@
+#include "server/store/sqlite/SqliteConnection.h"
+
+#include <sqlite3.h>
+
+namespace tlmhub::server {
+
+SqliteConnection::SqliteConnection(const std::string& path)
+    : mDb(path, SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE | SQLite::OPEN_NOMUTEX)
+{
+    // Before anything else: a writer on another connection makes this one wait, not fail.
+    mDb.setBusyTimeout(kBusyTimeoutMs);
+    // Results are blobs of megabytes: large pages write them in few system calls. Takes
+    // effect for a new database only (set before the journal mode).
+    mDb.exec("PRAGMA page_size=65536");
+    mDb.exec("PRAGMA journal_mode=WAL");
+    mDb.exec("PRAGMA synchronous=NORMAL");   // WAL: durable at checkpoints, never corrupt
+    mDb.exec("PRAGMA foreign_keys=ON");
+    // The WAL shrinks back after checkpoints instead of keeping its largest size.
+    mDb.exec("PRAGMA journal_size_limit=16777216");
+}
+
+SqliteConnection::Statement SqliteConnection::prepared(const char* sql)
+{
+    auto& slot = mStatements[sql];
+    if (!slot) slot = std::make_unique<SQLite::Statement>(mDb, sql);
+    return Statement(*slot);
+}
+
+bool isDiskFull(const SQLite::Exception& e)
+{
+    const int primary = e.getErrorCode() & 0xff;
+    return primary == SQLITE_FULL || primary == SQLITE_IOERR;
+}
+
+StoreError toStoreError(const SQLite::Exception& e)
+{
+    const std::string what = std::string("SQLite: ") + e.what();
+    if (isDiskFull(e)) return StoreError(StoreErrc::DiskFull, what);
+    switch (e.getErrorCode() & 0xff) {
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED: return StoreError(StoreErrc::Busy, what);
+    case SQLITE_CONSTRAINT: return StoreError(StoreErrc::Constraint, what);
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB: return StoreError(StoreErrc::Corrupt, what);
+    case SQLITE_CANTOPEN:
+    case SQLITE_PERM:
+    case SQLITE_READONLY: return StoreError(StoreErrc::Unavailable, what);
+    default: return StoreError(StoreErrc::Internal, what);
+    }
+}
+
+} // namespace tlmhub::server

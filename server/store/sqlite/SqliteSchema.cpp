@@ -1,0 +1,117 @@
+#include "server/store/sqlite/SqliteSchema.h"
+
+#include "server/store/Storage.h"
+#include "server/store/UnixTime.h"
+
+#include <SQLiteCpp/Transaction.h>
+
+#include <array>
+
+namespace tlmhub::server {
+
+namespace {
+
+bool hasColumn(SQLite::Database& db, const char* table, const char* column)
+{
+    SQLite::Statement columns(db, std::string("PRAGMA table_info(") + table + ")");
+    while (columns.executeStep())
+        if (columns.getColumn(1).getString() == column) return true;
+    return false;
+}
+
+// Version 1: the tables as the stores made them before migrations existed, so on such a
+// database every statement finds its table already there. Owners and models are not foreign
+// keys of jobs: a job's record outlives a deleted model.
+void createTables(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE IF NOT EXISTS users ("
+            " id INTEGER PRIMARY KEY,"
+            " username TEXT UNIQUE NOT NULL,"
+            " password_hash TEXT,"
+            " role TEXT CHECK(role IN ('admin','teacher','user')),"
+            " created_at INTEGER,"
+            " disabled INTEGER NOT NULL DEFAULT 0)");
+    // Databases from before accounts could be disabled lack the column.
+    if (!hasColumn(db, "users", "disabled"))
+        db.exec("ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0");
+    db.exec("CREATE TABLE IF NOT EXISTS models ("
+            " id INTEGER PRIMARY KEY,"
+            " owner_id INTEGER REFERENCES users(id),"
+            " name TEXT,"
+            " hmf TEXT,"
+            " is_example INTEGER,"
+            " created_at INTEGER,"
+            " updated_at INTEGER)");
+    db.exec("CREATE INDEX IF NOT EXISTS models_owner ON models(owner_id)");
+    db.exec("CREATE TABLE IF NOT EXISTS sessions ("
+            " token_hash TEXT PRIMARY KEY,"
+            " user_id INTEGER REFERENCES users(id) ON DELETE CASCADE,"
+            " expires_at INTEGER)");
+    db.exec("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT)");
+    db.exec("CREATE TABLE IF NOT EXISTS jobs ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " owner_id INTEGER NOT NULL,"
+            " model_id INTEGER,"
+            " state TEXT NOT NULL,"
+            " progress REAL NOT NULL DEFAULT 0,"
+            " error TEXT NOT NULL DEFAULT '',"
+            " created_at INTEGER NOT NULL,"
+            " started_at INTEGER NOT NULL DEFAULT 0,"
+            " finished_at INTEGER NOT NULL DEFAULT 0,"
+            " steps INTEGER NOT NULL DEFAULT 0,"
+            " start REAL NOT NULL, step REAL NOT NULL, stop REAL NOT NULL,"
+            " log_samples INTEGER NOT NULL,"
+            " request TEXT NOT NULL)");
+    db.exec("CREATE INDEX IF NOT EXISTS jobs_owner ON jobs(owner_id)");
+    db.exec("CREATE INDEX IF NOT EXISTS jobs_state ON jobs(state)");
+    db.exec("CREATE TABLE IF NOT EXISTS job_results ("
+            " job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,"
+            " data BLOB NOT NULL)");
+}
+
+// Version 2: logging out everywhere and clearing expired sessions found their rows by
+// scanning the table.
+void indexSessions(SQLite::Database& db)
+{
+    db.exec("CREATE INDEX sessions_user ON sessions(user_id)");
+    db.exec("CREATE INDEX sessions_expiry ON sessions(expires_at)");
+}
+
+using Migration = void (*)(SQLite::Database&);
+constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions};
+
+} // namespace
+
+int sqliteSchemaVersion(SqliteConnection& connection)
+{
+    SQLite::Statement q(connection.db(), "SELECT COALESCE(MAX(version), 0) FROM schema_migrations");
+    q.executeStep();
+    return q.getColumn(0).getInt();
+}
+
+void migrateSqlite(SqliteConnection& connection)
+{
+    auto& db = connection.db();
+    db.exec("CREATE TABLE IF NOT EXISTS schema_migrations ("
+            " version INTEGER PRIMARY KEY, applied_at INTEGER NOT NULL)");
+    // IMMEDIATE: two servers starting on one file take turns, and the second sees the first's
+    // migrations as applied.
+    for (;;) {
+        SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
+        const int version = sqliteSchemaVersion(connection);
+        if (version > kSchemaVersion)
+            throw StoreError(StoreErrc::Corrupt,
+                             "the database is at schema version " + std::to_string(version) +
+                                 ", newer than this server's " + std::to_string(kSchemaVersion) +
+                                 "; run a newer tlmhub-server");
+        if (version == kSchemaVersion) return;
+        kMigrations[static_cast<std::size_t>(version)](db);
+        SQLite::Statement record(db, "INSERT INTO schema_migrations(version, applied_at) VALUES(?, ?)");
+        record.bind(1, version + 1);
+        record.bind(2, static_cast<std::int64_t>(unixNow()));
+        record.exec();
+        transaction.commit();
+    }
+}
+
+} // namespace tlmhub::server
