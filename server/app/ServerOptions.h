@@ -13,6 +13,8 @@ struct ServerOptions {
     std::string host = "127.0.0.1";
     unsigned short port = 8080;
     std::string dataDir = "data";
+    // Empty: the embedded SQLite file <dataDir>/tlmhub.sqlite; else a postgresql:// URI.
+    std::string database;
     std::string webRoot = "web/dist";
     std::vector<std::string> exampleDirs;       // default: examples (if it exists)
     std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only
