@@ -1,0 +1,167 @@
+#include "StoreBackends.h"
+
+#include "../TemporaryPostgres.h"
+
+#include "server/store/UnixTime.h"
+
+#include <SQLiteCpp/Database.h>
+#include <pqxx/pqxx>
+
+#include <chrono>
+#include <cstdlib>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace tlmhub::test {
+namespace {
+
+// One server per process: starting one takes seconds, a database on it milliseconds. A start
+// that failed is not tried again for every test; each test fails with its message instead.
+std::mutex gPostgresMutex;
+std::unique_ptr<TemporaryPostgres> gPostgres;
+std::string gPostgresFailure;
+int gDatabasesMade = 0;
+
+TemporaryPostgres& postgres()
+{
+    if (!gPostgresFailure.empty()) throw std::runtime_error(gPostgresFailure);
+    if (!gPostgres) {
+        try {
+            gPostgres = std::make_unique<TemporaryPostgres>();
+        } catch (const std::exception& e) {
+            gPostgresFailure = std::string("PostgreSQL back end not tested: ") + e.what();
+            throw;
+        }
+    }
+    return *gPostgres;
+}
+
+class StopPostgresAtEnd : public ::testing::Environment {
+public:
+    void TearDown() override
+    {
+        std::lock_guard lock(gPostgresMutex);
+        gPostgres.reset();
+    }
+};
+[[maybe_unused]] ::testing::Environment* const gStopPostgres =
+    ::testing::AddGlobalTestEnvironment(new StopPostgresAtEnd);
+
+std::filesystem::path makeTemporaryDirectory()
+{
+    std::string pattern = (std::filesystem::temp_directory_path() / "tlmhub-store-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a directory " + pattern);
+    return pattern;
+}
+
+} // namespace
+
+std::string backendName(const ::testing::TestParamInfo<Backend>& info)
+{
+    return info.param == Backend::SQLite ? "SQLite" : "PostgreSQL";
+}
+
+server::JobRequest jobRequest(std::int64_t ownerId)
+{
+    server::JobRequest r;
+    r.ownerId = ownerId;
+    r.hmf = "<hopsanmodelfile/>";
+    r.parameters = {{"Mass.m", "20"}};
+    r.settings.stop = 2.0;
+    return r;
+}
+
+server::JobInfo resolvedSettings()
+{
+    server::JobInfo settings;
+    settings.start = 0.0;
+    settings.step = 0.001;
+    settings.stop = 2.0;
+    settings.steps = 2000;
+    settings.logSamples = 2048;
+    return settings;
+}
+
+void waitForNextSecond()
+{
+    const long long before = server::unixNow();
+    while (server::unixNow() == before) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
+FreshDatabase::FreshDatabase(Backend backend) : mBackend(backend), mDir(makeTemporaryDirectory())
+{
+    if (backend == Backend::SQLite) {
+        mDatabase = (mDir / "tlmhub.sqlite").string();
+        return;
+    }
+    std::lock_guard lock(gPostgresMutex);
+    TemporaryPostgres& server = postgres();
+    const std::string name = "t_" + std::to_string(++gDatabasesMade);
+    pqxx::connection admin(server.uri("postgres") + "?connect_timeout=10");
+    pqxx::nontransaction txn(admin);   // CREATE DATABASE cannot run in a transaction
+    txn.exec0("CREATE DATABASE " + name);
+    mDatabase = server.uri(name);
+}
+
+FreshDatabase::~FreshDatabase()
+{
+    std::error_code ignored;
+    std::filesystem::remove_all(mDir, ignored);
+}
+
+std::unique_ptr<server::Storage> FreshDatabase::open(unsigned maxConnections) const
+{
+    server::StorageConfig config;
+    config.database = mDatabase;
+    config.maxConnections = maxConnections;
+    return server::openStorage(config);
+}
+
+void FreshDatabase::exec(const std::string& sql) const
+{
+    if (mBackend == Backend::SQLite) {
+        SQLite::Database raw(mDatabase, SQLite::OPEN_READWRITE);
+        raw.setBusyTimeout(10'000);
+        raw.exec(sql);
+        return;
+    }
+    pqxx::connection raw(mDatabase + "?connect_timeout=10");
+    pqxx::work txn(raw);
+    txn.exec(sql);
+    txn.commit();
+}
+
+void StoreTest::SetUp()
+{
+    db = std::make_unique<FreshDatabase>(GetParam());
+    storage = db->open();
+}
+
+void StoreTest::TearDown()
+{
+    storage.reset();   // closed before its directory goes
+    db.reset();
+}
+
+std::int64_t StoreTest::addJob(std::int64_t ownerId)
+{
+    return store().jobs().create(jobRequest(ownerId), resolvedSettings());
+}
+
+std::int64_t StoreTest::addFinishedJob(std::int64_t ownerId, const std::string* resultBlob)
+{
+    const std::int64_t id = addJob(ownerId);
+    if (!store().jobs().markRunning(id) || !store().jobs().finish(id, server::JobState::Done, "", 2000, resultBlob))
+        throw std::runtime_error("cannot run and finish job " + std::to_string(id));
+    return id;
+}
+
+server::User StoreTest::addUser(const std::string& name, const std::string& role)
+{
+    auto user = store().users().insert(name, "hash of " + name, role);
+    if (!user) throw std::runtime_error("cannot add user " + name);
+    return *user;
+}
+
+} // namespace tlmhub::test
