@@ -2,6 +2,7 @@
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
 #include "server/jobs/Job.h"
 #include "server/protocol/ProtocolConstants.generated.h"
+#include "server/store/Storage.h"
 
 #include <chrono>
 #include <string>
@@ -13,6 +14,8 @@ struct ServerOptions {
     std::string host = "127.0.0.1";
     unsigned short port = 8080;
     std::string dataDir = "data";
+    // Empty: the embedded SQLite file <dataDir>/tlmhub.sqlite; else a postgresql:// URI.
+    std::string database;
     std::string webRoot = "web/dist";
     std::vector<std::string> exampleDirs;       // default: examples (if it exists)
     std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only
@@ -28,6 +31,9 @@ struct ServerOptions {
     std::chrono::seconds loginWindow{60};
     JobLimits limits;
 };
+
+// Where the options say the database is: options.database, else <dataDir>/tlmhub.sqlite.
+StorageConfig storageConfig(const ServerOptions& options);
 
 // Parses argv. On a bad flag returns false with `error`; `--help` sets `helpText`.
 bool parseServerOptions(int argc, char** argv, ServerOptions& options, std::string& error,
