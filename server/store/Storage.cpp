@@ -1,5 +1,6 @@
 #include "server/store/Storage.h"
 
+#include "server/store/postgres/PostgresStorage.h"
 #include "server/store/sqlite/SqliteStorage.h"
 
 namespace tlmhub::server {
@@ -11,6 +12,7 @@ bool isPostgresUri(const std::string& database)
 
 std::unique_ptr<Storage> openStorage(const StorageConfig& config)
 {
+    if (isPostgresUri(config.database)) return openPostgresStorage(config);
     return std::make_unique<SqliteStorage>(config);
 }
 

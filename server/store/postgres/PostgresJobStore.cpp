@@ -1,0 +1,193 @@
+#include "server/store/UnixTime.h"
+#include "server/store/postgres/PostgresStores.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+constexpr PgStatement kCreate{"jobs_create",
+                              "INSERT INTO jobs(owner_id, model_id, state, created_at, steps, start, step, stop,"
+                              " log_samples, request) VALUES($1, $2, $3, $4, $5, $6, $7, $8, $9, $10) RETURNING id"};
+constexpr PgStatement kInfo{"jobs_info",
+                            "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+                            " finished_at, steps, start, step, stop, log_samples FROM jobs WHERE id = $1"};
+constexpr PgStatement kRequest{"jobs_request", "SELECT request FROM jobs WHERE id = $1"};
+constexpr PgStatement kListForOwner{"jobs_list_for_owner",
+                                    "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+                                    " finished_at, steps, start, step, stop, log_samples FROM jobs"
+                                    " WHERE owner_id = $1 ORDER BY id DESC"};
+constexpr PgStatement kListAll{"jobs_list_all",
+                               "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+                               " finished_at, steps, start, step, stop, log_samples FROM jobs ORDER BY id DESC"};
+constexpr PgStatement kListInState{"jobs_list_in_state",
+                                   "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+                                   " finished_at, steps, start, step, stop, log_samples FROM jobs"
+                                   " WHERE state = $1 ORDER BY id ASC"};
+constexpr PgStatement kMarkRunning{"jobs_mark_running",
+                                   "UPDATE jobs SET state = 'running', started_at = $1, progress = 0"
+                                   " WHERE id = $2 AND state = 'queued'"};
+constexpr PgStatement kSetProgress{"jobs_set_progress",
+                                   "UPDATE jobs SET progress = $1 WHERE id = $2 AND state = 'running'"};
+constexpr PgStatement kFinish{"jobs_finish",
+                              "UPDATE jobs SET state = $1, error = $2, steps = $3, finished_at = $4,"
+                              " progress = CASE WHEN $5 THEN 1 ELSE progress END"
+                              " WHERE id = $6 AND state IN ('queued', 'running')"};
+constexpr PgStatement kStoreResult{"jobs_store_result",
+                                   "INSERT INTO job_results(job_id, data) VALUES($1, $2)"
+                                   " ON CONFLICT (job_id) DO UPDATE SET data = EXCLUDED.data"};
+constexpr PgStatement kMarkRunningInterrupted{"jobs_mark_running_interrupted",
+                                              "UPDATE jobs SET state = 'interrupted', finished_at = $1,"
+                                              " error = 'the server stopped while the job was running'"
+                                              " WHERE state = 'running'"};
+// Results go with their job (ON DELETE CASCADE), in the same statement.
+constexpr PgStatement kRemove{"jobs_remove", "DELETE FROM jobs WHERE id = $1"};
+constexpr PgStatement kRemoveFinishedBefore{"jobs_remove_finished_before",
+                                            "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled',"
+                                            " 'interrupted') AND finished_at < $1"};
+
+JobInfo readInfo(const pqxx::row& row)
+{
+    JobInfo j;
+    j.id = row[0].as<std::int64_t>();
+    j.ownerId = row[1].as<std::int64_t>();
+    j.modelId = nullable<std::int64_t>(row[2]);
+    jobStateFromName(row[3].as<std::string>(), j.state);
+    j.progress = row[4].as<double>();
+    j.error = row[5].as<std::string>();
+    j.createdAt = row[6].as<std::int64_t>();
+    j.startedAt = row[7].as<std::int64_t>();
+    j.finishedAt = row[8].as<std::int64_t>();
+    j.steps = static_cast<std::uint64_t>(row[9].as<std::int64_t>());
+    j.start = row[10].as<double>();
+    j.step = row[11].as<double>();
+    j.stop = row[12].as<double>();
+    j.logSamples = static_cast<std::size_t>(row[13].as<std::int64_t>());
+    return j;
+}
+
+std::vector<JobInfo> readInfos(const pqxx::result& r)
+{
+    std::vector<JobInfo> jobs;
+    jobs.reserve(r.size());
+    for (const auto& row : r) jobs.push_back(readInfo(row));
+    return jobs;
+}
+
+} // namespace
+
+std::int64_t PostgresJobStore::create(const JobRequest& request, const JobInfo& resolved)
+{
+    const std::string requestJson = request.toJson().dump();
+    const std::optional<std::string> modelId =
+        request.modelId ? std::optional(std::to_string(*request.modelId)) : std::nullopt;
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kCreate, request.ownerId, orNull(modelId), jobStateName(JobState::Queued),
+                      static_cast<std::int64_t>(unixNow()), static_cast<std::int64_t>(resolved.steps),
+                      resolved.start, resolved.step, resolved.stop,
+                      static_cast<std::int64_t>(resolved.logSamples), requestJson)[0][0]
+            .as<std::int64_t>();
+    });
+}
+
+std::optional<JobInfo> PostgresJobStore::info(std::int64_t id)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<JobInfo> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kInfo, id);
+        if (r.empty()) return std::nullopt;
+        return readInfo(r[0]);
+    });
+}
+
+std::optional<std::string> PostgresJobStore::requestText(std::int64_t id)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<std::string> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kRequest, id);
+        if (r.empty()) return std::nullopt;
+        return r[0][0].as<std::string>();
+    });
+}
+
+std::vector<JobInfo> PostgresJobStore::listForOwner(std::int64_t ownerId)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return readInfos(c.exec(tx, kListForOwner, ownerId));
+    });
+}
+
+std::vector<JobInfo> PostgresJobStore::listAll()
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return readInfos(c.exec(tx, kListAll));
+    });
+}
+
+std::vector<JobInfo> PostgresJobStore::listInState(JobState state)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return readInfos(c.exec(tx, kListInState, jobStateName(state)));
+    });
+}
+
+bool PostgresJobStore::markRunning(std::int64_t id)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kMarkRunning, static_cast<std::int64_t>(unixNow()), id).affected_rows() == 1;
+    });
+}
+
+void PostgresJobStore::setProgress(std::int64_t id, double progress)
+{
+    mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        c.exec(tx, kSetProgress, progress, id);
+    });
+}
+
+bool PostgresJobStore::finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
+                              const std::string* resultBlob)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::work tx(c.raw());
+        const auto updated = c.exec(tx, kFinish, jobStateName(state), error, static_cast<std::int64_t>(steps),
+                                    static_cast<std::int64_t>(unixNow()), state == JobState::Done, id);
+        if (updated.affected_rows() != 1) return false;   // finished already, or gone
+        // Sent as binary (bytea) data: every byte value arrives as it is, no escaping involved.
+        if (resultBlob) c.exec(tx, kStoreResult, id, pqxx::binarystring(resultBlob->data(), resultBlob->size()));
+        tx.commit();
+        return true;
+    });
+}
+
+int PostgresJobStore::markRunningInterrupted()
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return static_cast<int>(
+            c.exec(tx, kMarkRunningInterrupted, static_cast<std::int64_t>(unixNow())).affected_rows());
+    });
+}
+
+bool PostgresJobStore::remove(std::int64_t id)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kRemove, id).affected_rows() > 0;
+    });
+}
+
+int PostgresJobStore::removeFinishedBefore(std::int64_t unixSeconds)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return static_cast<int>(c.exec(tx, kRemoveFinishedBefore, unixSeconds).affected_rows());
+    });
+}
+
+} // namespace tlmhub::server

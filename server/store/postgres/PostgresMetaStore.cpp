@@ -1,0 +1,31 @@
+#include "server/store/postgres/PostgresStores.h"
+
+namespace tlmhub::server {
+
+namespace {
+
+constexpr PgStatement kGet{"meta_get", "SELECT value FROM meta WHERE key = $1"};
+constexpr PgStatement kSet{"meta_set", "INSERT INTO meta(key, value) VALUES($1, $2)"
+                                       " ON CONFLICT (key) DO UPDATE SET value = EXCLUDED.value"};
+
+} // namespace
+
+std::optional<std::string> PostgresMetaStore::get(const std::string& key)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<std::string> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kGet, key);
+        if (r.empty()) return std::nullopt;
+        return r[0][0].as<std::string>(std::string());
+    });
+}
+
+void PostgresMetaStore::set(const std::string& key, const std::string& value)
+{
+    mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        c.exec(tx, kSet, key, value);
+    });
+}
+
+} // namespace tlmhub::server

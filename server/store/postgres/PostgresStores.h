@@ -1,0 +1,104 @@
+#pragma once
+// The PostgreSQL implementations of the store interfaces, one per aggregate (each in its own
+// .cpp), all on one PostgresDatabase.
+#include "server/store/JobStore.h"
+#include "server/store/MetaStore.h"
+#include "server/store/ModelStore.h"
+#include "server/store/ResultStore.h"
+#include "server/store/SessionStore.h"
+#include "server/store/UserStore.h"
+#include "server/store/postgres/PostgresDatabase.h"
+
+namespace tlmhub::server {
+
+class PostgresUserStore final : public UserStore {
+public:
+    explicit PostgresUserStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<User> insert(const std::string& username, const std::string& passwordHash,
+                               const std::string& role) override;
+    std::optional<Credentials> credentials(const std::string& username) override;
+    std::optional<Credentials> credentials(std::int64_t id) override;
+    bool setPasswordHash(std::int64_t id, const std::string& passwordHash) override;
+    std::optional<User> find(std::int64_t id) override;
+    std::optional<User> findByName(const std::string& username) override;
+    std::vector<User> list() override;
+    std::size_t count() override;
+    UserChangeOutcome change(std::int64_t id, const UserChange& change, User& updated) override;
+    std::vector<std::string> namesDifferingOnlyInCase() override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresSessionStore final : public SessionStore {
+public:
+    explicit PostgresSessionStore(PostgresDatabase& db) : mDb(db) {}
+    void insert(const std::string& tokenHash, std::int64_t userId, std::int64_t expiresAt,
+                std::int64_t now) override;
+    std::optional<std::int64_t> userOf(const std::string& tokenHash, std::int64_t now) override;
+    void remove(const std::string& tokenHash) override;
+    void removeAllFor(std::int64_t userId) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresModelStore final : public ModelStore {
+public:
+    explicit PostgresModelStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<std::int64_t> create(std::int64_t ownerId, const std::string& name,
+                                       const std::string& hmf, bool isExample) override;
+    std::optional<ModelSummary> summary(std::int64_t id) override;
+    std::optional<std::string> hmf(std::int64_t id) override;
+    bool update(std::int64_t id, const std::optional<std::string>& name,
+                const std::optional<std::string>& hmf) override;
+    bool remove(std::int64_t id) override;
+    std::vector<ModelSummary> list() override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresJobStore final : public JobStore {
+public:
+    explicit PostgresJobStore(PostgresDatabase& db) : mDb(db) {}
+    std::int64_t create(const JobRequest& request, const JobInfo& resolved) override;
+    std::optional<JobInfo> info(std::int64_t id) override;
+    std::optional<std::string> requestText(std::int64_t id) override;
+    std::vector<JobInfo> listForOwner(std::int64_t ownerId) override;
+    std::vector<JobInfo> listAll() override;
+    std::vector<JobInfo> listInState(JobState state) override;
+    bool markRunning(std::int64_t id) override;
+    void setProgress(std::int64_t id, double progress) override;
+    bool finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
+                const std::string* resultBlob) override;
+    int markRunningInterrupted() override;
+    bool remove(std::int64_t id) override;
+    int removeFinishedBefore(std::int64_t unixSeconds) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresResultStore final : public ResultStore {
+public:
+    explicit PostgresResultStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<std::string> blob(std::int64_t jobId) override;
+    bool has(std::int64_t jobId) override;
+    std::size_t storedBytes(std::int64_t ownerId) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresMetaStore final : public MetaStore {
+public:
+    explicit PostgresMetaStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<std::string> get(const std::string& key) override;
+    void set(const std::string& key, const std::string& value) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,170 @@
+#include "server/auth/AccessPolicy.h"
+#include "server/store/UnixTime.h"
+#include "server/store/postgres/PostgresStores.h"
+
+#include <algorithm>
+
+namespace tlmhub::server {
+
+namespace {
+
+constexpr PgStatement kInsert{
+    "users_insert",
+    // A name taken regardless of case, also by a concurrent insert, yields no row here (the
+    // unique index on lower(username)) instead of an error.
+    "INSERT INTO users(username, password_hash, role, created_at) VALUES($1, $2, $3, $4)"
+    " ON CONFLICT ((lower(username))) DO NOTHING RETURNING id"};
+constexpr PgStatement kCredentialsByName{
+    "users_credentials_by_name",
+    // The exact name first, then any other names equal regardless of case.
+    "SELECT id, password_hash, username = $1 FROM users WHERE lower(username) = lower($1)"
+    " ORDER BY username = $1 DESC, id LIMIT 2"};
+constexpr PgStatement kCredentialsById{"users_credentials_by_id",
+                                       "SELECT id, password_hash FROM users WHERE id = $1"};
+constexpr PgStatement kSetPasswordHash{"users_set_password_hash",
+                                       "UPDATE users SET password_hash = $1 WHERE id = $2"};
+constexpr PgStatement kFind{"users_find", "SELECT id, username, role, disabled FROM users WHERE id = $1"};
+constexpr PgStatement kFindByName{"users_find_by_name",
+                                  "SELECT id, username, role, disabled FROM users WHERE username = $1"};
+constexpr PgStatement kList{"users_list", "SELECT id, username, role, disabled FROM users ORDER BY id"};
+constexpr PgStatement kCount{"users_count", "SELECT COUNT(*) FROM users"};
+constexpr PgStatement kLockAll{
+    "users_lock_all",
+    // Every account, locked against another change until this transaction ends (in id order,
+    // so two changes cannot deadlock). NO KEY: logins inserting sessions (foreign keys to
+    // these rows) are not held up.
+    "SELECT id, username, role, disabled FROM users ORDER BY id FOR NO KEY UPDATE"};
+constexpr PgStatement kWrite{"users_write", "UPDATE users SET role = $1, disabled = $2 WHERE id = $3"};
+constexpr PgStatement kNamesDifferingOnlyInCase{
+    "users_names_differing_only_in_case",
+    "SELECT string_agg(username, ', ' ORDER BY id) FROM users GROUP BY lower(username)"
+    " HAVING COUNT(*) > 1 ORDER BY MIN(id)"};
+
+User readUser(const pqxx::row& row)
+{
+    return User{row[0].as<std::int64_t>(), row[1].as<std::string>(), row[2].as<std::string>(std::string()),
+                row[3].as<bool>()};
+}
+
+Credentials readCredentials(const pqxx::row& row)
+{
+    return Credentials{row[0].as<std::int64_t>(), nullable<std::string>(row[1])};
+}
+
+} // namespace
+
+std::optional<User> PostgresUserStore::insert(const std::string& username, const std::string& passwordHash,
+                                              const std::string& role)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) -> std::optional<User> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kInsert, username, passwordHash, role, static_cast<std::int64_t>(unixNow()));
+        if (r.empty()) return std::nullopt;
+        return User{r[0][0].as<std::int64_t>(), username, role, false};
+    });
+}
+
+std::optional<Credentials> PostgresUserStore::credentials(const std::string& username)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<Credentials> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kCredentialsByName, username);
+        if (r.empty()) return std::nullopt;
+        const bool exact = r[0][2].as<bool>();
+        if (!exact && r.size() > 1) return std::nullopt;   // two old accounts differ only in case
+        return readCredentials(r[0]);
+    });
+}
+
+std::optional<Credentials> PostgresUserStore::credentials(std::int64_t id)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<Credentials> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kCredentialsById, id);
+        if (r.empty()) return std::nullopt;
+        return readCredentials(r[0]);
+    });
+}
+
+bool PostgresUserStore::setPasswordHash(std::int64_t id, const std::string& passwordHash)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kSetPasswordHash, passwordHash, id).affected_rows() > 0;
+    });
+}
+
+std::optional<User> PostgresUserStore::find(std::int64_t id)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<User> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kFind, id);
+        if (r.empty()) return std::nullopt;
+        return readUser(r[0]);
+    });
+}
+
+std::optional<User> PostgresUserStore::findByName(const std::string& username)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<User> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kFindByName, username);
+        if (r.empty()) return std::nullopt;
+        return readUser(r[0]);
+    });
+}
+
+std::vector<User> PostgresUserStore::list()
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        std::vector<User> users;
+        for (const auto& row : c.exec(tx, kList)) users.push_back(readUser(row));
+        return users;
+    });
+}
+
+std::size_t PostgresUserStore::count()
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kCount)[0][0].as<std::size_t>();
+    });
+}
+
+UserChangeOutcome PostgresUserStore::change(std::int64_t id, const UserChange& change, User& updated)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::work tx(c.raw());
+        std::vector<User> others;
+        std::optional<User> user;
+        for (const auto& row : c.exec(tx, kLockAll)) {
+            User u = readUser(row);
+            if (u.id == id) user = std::move(u);
+            else others.push_back(std::move(u));
+        }
+        if (!user) return UserChangeOutcome::NoSuchUser;
+        const bool administeredBefore = administersServer(*user);
+        if (change.role) user->role = *change.role;
+        if (change.disabled) user->disabled = *change.disabled;
+        // Someone must be left who can administer the server; AccessPolicy says who can.
+        if (administeredBefore && !administersServer(*user) && std::ranges::none_of(others, administersServer))
+            return UserChangeOutcome::LastAdmin;
+        c.exec(tx, kWrite, user->role, user->disabled, id);
+        tx.commit();
+        updated = *user;
+        return UserChangeOutcome::Changed;
+    });
+}
+
+std::vector<std::string> PostgresUserStore::namesDifferingOnlyInCase()
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        std::vector<std::string> groups;
+        for (const auto& row : c.exec(tx, kNamesDifferingOnlyInCase)) groups.push_back(row[0].as<std::string>());
+        return groups;
+    });
+}
+
+} // namespace tlmhub::server
