@@ -68,7 +68,7 @@ TEST_P(StorageConformance, DescribeNamesTheBackEnd)
     EXPECT_TRUE(store().describe().starts_with(prefix)) << store().describe();
 }
 
-TEST_P(StorageConformance, BackupWritesASnapshotOnSQLiteAndIsRefusedOnPostgreSQL)
+TEST_P(StorageConformance, BackupWritesASnapshotOrIsRefusedByTheBackEnd)
 {
     const User alice = addUser("alice");
     const auto snapshot = db->directory() / "snapshot.sqlite";
