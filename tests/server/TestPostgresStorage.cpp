@@ -160,31 +160,66 @@ TEST(PostgresStorage, ResultBlobsRoundTripByteForByte)
     EXPECT_EQ(storage->jobs().info(big)->state, JobState::Done);
 }
 
+TEST(PostgresStorage, RealsAndNullsRoundTripExactly)
+{
+    TemporaryPostgres pg;
+    auto storage = open(pg.uri());
+    const auto owner = storage->users().insert("owner", "hash", "user");
+    ASSERT_TRUE(owner);
+    JobRequest request;
+    request.ownerId = owner->id;
+    request.modelId = 42;
+    JobInfo resolved;
+    resolved.start = 1.0 / 3.0;
+    resolved.step = 1e-7 / 3.0;
+    resolved.stop = 123.456789012345678;
+    resolved.logSamples = 7;
+    const auto withModel = storage->jobs().info(storage->jobs().create(request, resolved));
+    ASSERT_TRUE(withModel);
+    EXPECT_EQ(withModel->modelId, std::optional<std::int64_t>(42));
+    EXPECT_EQ(withModel->start, resolved.start);   // bit for bit, not just close
+    EXPECT_EQ(withModel->step, resolved.step);
+    EXPECT_EQ(withModel->stop, resolved.stop);
+    request.modelId.reset();
+    EXPECT_EQ(storage->jobs().info(storage->jobs().create(request, resolved))->modelId, std::nullopt);
+
+    // An absent field is a NULL parameter: the stored value stays.
+    const auto model = storage->models().create(owner->id, "first", "<hmf/>", false);
+    ASSERT_TRUE(model);
+    ASSERT_TRUE(storage->models().update(*model, std::string("renamed"), std::nullopt));
+    EXPECT_EQ(storage->models().hmf(*model), std::optional<std::string>("<hmf/>"));
+    EXPECT_EQ(storage->models().summary(*model)->name, "renamed");
+}
+
 TEST(PostgresStorage, ReplacesConnectionsTheServerEnded)
 {
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 4);
     ASSERT_TRUE(storage->users().insert("admin", "hash", "admin"));
-    // Several threads at once, so the pool holds more than one connection.
-    std::vector<std::thread> threads;
-    for (int t = 0; t < 4; ++t)
-        threads.emplace_back([&] {
-            for (int i = 0; i < 50; ++i) storage->users().count();
-        });
-    for (auto& t : threads) t.join();
-
     pqxx::connection admin(pg.uri());
     {
         pqxx::nontransaction tx(admin);
+        // Client connections only: an autovacuum worker may be at work on the database too.
+        const char* const others = "SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
+                                   " AND datname = current_database() AND backend_type = 'client backend'";
+        // Several threads at once until the pool holds more than one connection, so the call
+        // after the ending meets a dead connection again if it is retried on a pooled one.
+        for (int round = 0; round < 50 && tx.exec1(others)[0].as<int>() < 2; ++round) {
+            std::vector<std::thread> threads;
+            for (int t = 0; t < 4; ++t)
+                threads.emplace_back([&] {
+                    for (int i = 0; i < 20; ++i) storage->users().count();
+                });
+            for (auto& t : threads) t.join();
+        }
         const int ended = tx.exec1("SELECT COUNT(pg_terminate_backend(pid)) FROM pg_stat_activity"
-                                   " WHERE pid <> pg_backend_pid() AND datname = current_database()")[0]
+                                   " WHERE pid <> pg_backend_pid() AND datname = current_database()"
+                                   " AND backend_type = 'client backend'")[0]
                               .as<int>();
-        ASSERT_GE(ended, 1);
+        ASSERT_GE(ended, 2);
         // pg_terminate_backend only signals: wait until the backends are gone.
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-        while (tx.exec1("SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
-                        " AND datname = current_database()")[0]
-                   .as<int>() > 0) {
+        while (tx.exec1(others)[0].as<int>() > 0) {
             ASSERT_LT(std::chrono::steady_clock::now(), deadline);
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
