@@ -35,6 +35,8 @@ public:
     // Runs `work(PostgresConnection&)` on a leased connection. A transaction `work` opens is
     // rolled back by its destructor when `work` throws; serialization failures and deadlocks
     // (the transaction rolled back whole) run it again a few times before giving up with Busy.
+    // A connection found broken is closed; an idempotent `work` then runs once more on a fresh
+    // one, anything else fails with Unavailable.
     template <typename Work>
     auto run(Idempotent idempotent, Work&& work) -> decltype(work(std::declval<PostgresConnection&>()))
     {
@@ -43,15 +45,6 @@ public:
             auto lease = acquire();
             try {
                 return work(*lease);
-            } catch (const pqxx::broken_connection& e) {
-                lease.discard();
-                distrustOpenConnections();
-                if (idempotent == Idempotent::No || reconnected) throw toStoreError(e);
-                reconnected = true;
-            } catch (const pqxx::in_doubt_error& e) {
-                lease.discard();
-                distrustOpenConnections();
-                throw toStoreError(e);
             } catch (const pqxx::serialization_failure& e) {
                 if (attempt >= kMaxAttempts) throw toStoreError(e);
                 backOff(attempt);
@@ -59,11 +52,17 @@ public:
                 if (attempt >= kMaxAttempts) throw toStoreError(e);
                 backOff(attempt);
             } catch (const pqxx::pqxx_exception& e) {
-                if (!lease->isOpen()) {
-                    lease.discard();
-                    distrustOpenConnections();
-                }
-                throw toStoreError(e.base());
+                const bool broken = dynamic_cast<const pqxx::broken_connection*>(&e) || !lease->isOpen();
+                if (!broken) throw toStoreError(e.base());
+                lease.discard();
+                distrustOpenConnections();
+                // A commit whose outcome is unknown (in_doubt_error) is never run again.
+                const bool again = idempotent == Idempotent::Yes && !reconnected &&
+                                   !dynamic_cast<const pqxx::in_doubt_error*>(&e);
+                if (!again)
+                    throw StoreError(StoreErrc::Unavailable,
+                                     "lost the connection to PostgreSQL " + mEndpoint + ": " + e.base().what());
+                reconnected = true;
             }
         }
     }

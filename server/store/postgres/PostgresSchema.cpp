@@ -96,7 +96,7 @@ void migratePostgres(PostgresConnection& connection)
         pqxx::work tx(connection.raw());
         // Held until this transaction ends: a second server starting now waits here, then
         // finds the migration recorded.
-        tx.exec_params0("SELECT pg_advisory_xact_lock($1)", kMigrationLock);
+        tx.exec_params1("SELECT pg_advisory_xact_lock($1)", kMigrationLock);
         // Created under the lock: two servers creating it at once would collide in the
         // catalog, IF NOT EXISTS or not.
         if (tx.exec1("SELECT to_regclass('schema_migrations') IS NULL")[0].as<bool>())
