@@ -7,11 +7,13 @@
 #include <SQLiteCpp/Database.h>
 #include <pqxx/pqxx>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace tlmhub::test {
 namespace {
@@ -81,6 +83,23 @@ server::JobInfo resolvedSettings()
     settings.steps = 2000;
     settings.logSamples = 2048;
     return settings;
+}
+
+void runAtOnce(int threads, const std::function<void(int)>& work)
+{
+    std::atomic<int> ready = 0;
+    std::vector<std::thread> running;
+    for (int i = 0; i < threads; ++i)
+        running.emplace_back([&, i] {
+            ready.fetch_add(1);
+            while (ready.load() < threads) std::this_thread::yield();
+            try {
+                work(i);
+            } catch (const std::exception& e) {
+                ADD_FAILURE() << "thread " << i << ": " << e.what();
+            }
+        });
+    for (auto& t : running) t.join();
 }
 
 void waitForNextSecond()

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -45,6 +46,11 @@ private:
 // A request of `ownerId` and the settings it resolved to, as the job queue gives them.
 server::JobRequest jobRequest(std::int64_t ownerId);
 server::JobInfo resolvedSettings();
+
+// Runs work(0) .. work(threads - 1) on as many threads, released together: each spins until
+// all are up (a latch's wake-ups are spread too far apart for two short calls to overlap).
+// An exception a thread throws fails the test.
+void runAtOnce(int threads, const std::function<void(int)>& work);
 
 // Returns once unixNow() has moved on to the next second, so a timestamp the store writes
 // afterwards is later than one it wrote before (timestamps are whole seconds).

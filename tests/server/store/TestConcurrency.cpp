@@ -4,9 +4,7 @@
 
 #include "server/store/StoreError.h"
 
-#include <latch>
 #include <mutex>
-#include <thread>
 
 using namespace tlmhub::server;
 
@@ -68,14 +66,9 @@ void writeConcurrently(const std::vector<Storage*>& storages, int writers)
     for (int i = 0; i < writers; ++i)
         owners.push_back(check.users().insert("owner " + std::to_string(i), "h", kRoleUser).value());
     Failures failures;
-    std::latch start(writers);
-    std::vector<std::thread> threads;
-    for (int i = 0; i < writers; ++i)
-        threads.emplace_back([&, i] {
-            start.arrive_and_wait();
-            write(*storages[static_cast<std::size_t>(i) % storages.size()], owners[static_cast<std::size_t>(i)], i, failures);
-        });
-    for (auto& t : threads) t.join();
+    runAtOnce(writers, [&](int i) {
+        write(*storages[static_cast<std::size_t>(i) % storages.size()], owners[static_cast<std::size_t>(i)], i, failures);
+    });
     EXPECT_EQ(failures.busy, 0);
     for (const std::string& m : failures.messages) ADD_FAILURE() << m;
 

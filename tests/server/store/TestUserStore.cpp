@@ -1,8 +1,6 @@
 // UserStore's contract (server/store/UserStore.h) on both back ends.
 #include "StoreBackends.h"
 
-#include <latch>
-#include <thread>
 #include <vector>
 
 using namespace tlmhub::server;
@@ -78,15 +76,10 @@ TEST_P(UserStoreConformance, InsertRefusesANameTakenInAnyCase)
 TEST_P(UserStoreConformance, ConcurrentInsertsOfOneNameInDifferentCasesMakeOneAccount)
 {
     const std::vector<std::string> spellings{"carol", "CAROL", "Carol", "cArOl", "caROL", "CARol", "carOL", "CaRoL"};
-    std::latch start(static_cast<std::ptrdiff_t>(spellings.size()));
     std::vector<int> made(spellings.size(), 0);
-    std::vector<std::thread> threads;
-    for (std::size_t i = 0; i < spellings.size(); ++i)
-        threads.emplace_back([&, i] {
-            start.arrive_and_wait();
-            made[i] = store().users().insert(spellings[i], "h", kRoleUser).has_value();
-        });
-    for (auto& t : threads) t.join();
+    runAtOnce(static_cast<int>(spellings.size()), [&](int i) {
+        made[static_cast<std::size_t>(i)] = store().users().insert(spellings[static_cast<std::size_t>(i)], "h", kRoleUser).has_value();
+    });
     int total = 0;
     for (int m : made) total += m;
     EXPECT_EQ(total, 1);
@@ -217,17 +210,10 @@ TEST_P(UserStoreConformance, TwoAdminsDemotingEachOtherAtOnceLeaveOneAdmin)
         const User newcomer = addUser("admin" + std::to_string(round), kRoleAdmin);
         // Alternate demoting and disabling: both take away an administrator.
         const UserChange takeAway = round % 2 ? roleTo(kRoleUser) : disabledTo(true);
-        std::latch start(2);
-        UserChangeOutcome outcomes[2];
+        UserChangeOutcome outcomes[2] = {UserChangeOutcome::NoSuchUser, UserChangeOutcome::NoSuchUser};
         User updated[2];
         const std::int64_t ids[2] = {survivor.id, newcomer.id};
-        std::vector<std::thread> threads;
-        for (int i = 0; i < 2; ++i)
-            threads.emplace_back([&, i] {
-                start.arrive_and_wait();
-                outcomes[i] = store().users().change(ids[i], takeAway, updated[i]);
-            });
-        for (auto& t : threads) t.join();
+        runAtOnce(2, [&](int i) { outcomes[i] = store().users().change(ids[i], takeAway, updated[i]); });
         ASSERT_EQ(enabledAdmins(store().users()), 1) << "round " << round;
         const int changed = (outcomes[0] == UserChangeOutcome::Changed) + (outcomes[1] == UserChangeOutcome::Changed);
         const int refused = (outcomes[0] == UserChangeOutcome::LastAdmin) + (outcomes[1] == UserChangeOutcome::LastAdmin);
