@@ -6,6 +6,7 @@
 
 #include "server/store/Storage.h"
 #include "server/store/StoreError.h"
+#include "server/store/postgres/PostgresConnection.h"
 
 #include <gtest/gtest.h>
 #include <pqxx/pqxx>
@@ -232,6 +233,41 @@ TEST(PostgresStorage, ReplacesConnectionsTheServerEnded)
     EXPECT_EQ(storage->users().list().size(), 2u);
 }
 
+TEST(PostgresStorage, FailuresBecomeStoreErrorCodes)
+{
+    auto code = [](const std::exception& e) { return server::toStoreError(e).code(); };
+    EXPECT_EQ(code(pqxx::broken_connection("gone")), StoreErrc::Unavailable);
+    EXPECT_EQ(code(pqxx::in_doubt_error("commit unknown")), StoreErrc::Unavailable);
+    EXPECT_EQ(code(pqxx::serialization_failure("40001")), StoreErrc::Busy);
+    EXPECT_EQ(code(pqxx::deadlock_detected("40P01")), StoreErrc::Busy);
+    EXPECT_EQ(code(pqxx::sql_error("unique", "INSERT", "23505")), StoreErrc::Constraint);
+    EXPECT_EQ(code(pqxx::sql_error("foreign key", "INSERT", "23503")), StoreErrc::Constraint);
+    EXPECT_EQ(code(pqxx::sql_error("disk full", "INSERT", "53100")), StoreErrc::DiskFull);
+    EXPECT_EQ(code(pqxx::sql_error("out of memory", "SELECT", "53200")), StoreErrc::DiskFull);
+    EXPECT_EQ(code(pqxx::sql_error("serialization", "UPDATE", "40001")), StoreErrc::Busy);
+    EXPECT_EQ(code(pqxx::sql_error("data corrupted", "SELECT", "XX001")), StoreErrc::Corrupt);
+    EXPECT_EQ(code(pqxx::sql_error("index corrupted", "SELECT", "XX002")), StoreErrc::Corrupt);
+    EXPECT_EQ(code(pqxx::sql_error("no such table", "SELECT", "42P01")), StoreErrc::Internal);
+    EXPECT_EQ(code(std::runtime_error("other")), StoreErrc::Internal);
+
+    // Through the stores, on a real server.
+    TemporaryPostgres pg;
+    auto storage = open(pg.uri());
+    try {
+        storage->sessions().insert("token", 12345, 100, 0);   // no such user
+        FAIL() << "a session of a user that does not exist was stored";
+    } catch (const StoreError& e) {
+        EXPECT_EQ(e.code(), StoreErrc::Constraint) << e.what();
+    }
+    EXPECT_EQ(storage->models().create(12345, "orphan", "<hmf/>", false), std::nullopt);
+    try {
+        storage->backup("/tmp/never-written");
+        FAIL() << "backup() of a PostgreSQL database did something";
+    } catch (const StoreError& e) {
+        EXPECT_NE(std::string(e.what()).find("pg_dump"), std::string::npos) << e.what();
+    }
+}
+
 TEST(PostgresStorage, UnreachableServerIsUnavailableAtOnce)
 {
     const unsigned short port = unusedPort();
@@ -252,7 +288,8 @@ TEST(PostgresStorage, ConcurrentInsertsOfOneNameMakeOneAccount)
 {
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 8);
-    const std::vector<std::string> spellings{"carol", "Carol", "CAROL", "cArOl", "caROL", "CaroL", "carOL", "CARol"};
+    // The same name several times as typed, and in other cases.
+    const std::vector<std::string> spellings{"carol", "carol", "Carol", "CAROL", "carol", "cArOl", "CAROL", "carol"};
     std::atomic<int> made{0}, ready{0};
     std::vector<std::thread> threads;
     for (const std::string& name : spellings)

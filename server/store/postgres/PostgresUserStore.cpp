@@ -25,7 +25,8 @@ constexpr PgStatement kSetPasswordHash{"users_set_password_hash",
                                        "UPDATE users SET password_hash = $1 WHERE id = $2"};
 constexpr PgStatement kFind{"users_find", "SELECT id, username, role, disabled FROM users WHERE id = $1"};
 constexpr PgStatement kFindByName{"users_find_by_name",
-                                  "SELECT id, username, role, disabled FROM users WHERE username = $1"};
+                                  "SELECT id, username, role, disabled FROM users"
+                                  " WHERE lower(username) = lower($1) AND username = $1"};
 constexpr PgStatement kList{"users_list", "SELECT id, username, role, disabled FROM users ORDER BY id"};
 constexpr PgStatement kCount{"users_count", "SELECT COUNT(*) FROM users"};
 constexpr PgStatement kLockAll{
