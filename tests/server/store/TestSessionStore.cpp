@@ -16,7 +16,7 @@ TEST_P(SessionStoreConformance, ASessionNamesItsUserUntilItExpires)
     store().sessions().insert("token-a", alice.id, 1000, 100);
     EXPECT_EQ(store().sessions().userOf("token-a", 100), alice.id);
     EXPECT_EQ(store().sessions().userOf("token-a", 999), alice.id);
-    EXPECT_FALSE(store().sessions().userOf("token-a", 1001));
+    EXPECT_FALSE(store().sessions().userOf("token-a", 1000)) << "a session has expired at its expiry time";
     EXPECT_FALSE(store().sessions().userOf("no such token", 100));
 }
 
@@ -34,10 +34,12 @@ TEST_P(SessionStoreConformance, InsertDeletesSessionsExpiredAtItsTime)
     const User alice = addUser("alice");
     const User bob = addUser("bob");
     store().sessions().insert("short", alice.id, 200, 100);
+    store().sessions().insert("until 300", alice.id, 300, 100);
     store().sessions().insert("long", bob.id, 5000, 100);
     store().sessions().insert("new", alice.id, 5000, 300);
-    // Looked up at a time before they expire: only one that was deleted is missing.
+    // Looked up at a time before they expire: only the ones deleted are missing.
     EXPECT_FALSE(store().sessions().userOf("short", 150));
+    EXPECT_FALSE(store().sessions().userOf("until 300", 150));
     EXPECT_EQ(store().sessions().userOf("long", 150), bob.id);
     EXPECT_EQ(store().sessions().userOf("new", 150), alice.id);
 }

@@ -232,5 +232,24 @@ TEST_P(UserStoreConformance, NamesDifferingOnlyInCaseIsEmptyWhenInsertKeepsNames
     EXPECT_TRUE(store().users().namesDifferingOnlyInCase().empty());
 }
 
+// Databases from before names were compared regardless of case may hold "alice" and "ALICE".
+// Only SQLite's schema lets such rows exist (PostgreSQL's unique index is on lower(name)), so
+// they are made past the store.
+TEST(SQLiteStore, AccountsWhoseNamesDifferOnlyInCaseAreListedAndNotGuessedBetween)
+{
+    FreshDatabase db(Backend::SQLite);
+    auto storage = db.open();
+    const auto alice = storage->users().insert("alice", "h-alice", kRoleUser);
+    ASSERT_TRUE(alice);
+    storage->users().insert("bob", "h-bob", kRoleUser);
+    db.exec("INSERT INTO users(username, password_hash, role, created_at) VALUES('ALICE', 'h-ALICE', 'user', 0)");
+    db.exec("INSERT INTO users(username, password_hash, role, created_at) VALUES('Alice', 'h-Alice', 'user', 0)");
+    EXPECT_EQ(storage->users().namesDifferingOnlyInCase(), std::vector<std::string>{"alice, ALICE, Alice"});
+    EXPECT_EQ(storage->users().credentials("alice")->id, alice->id) << "the exact name still logs in";
+    EXPECT_EQ(storage->users().credentials("ALICE")->passwordHash, "h-ALICE");
+    EXPECT_FALSE(storage->users().credentials("aLiCe")) << "ambiguous";
+    EXPECT_EQ(storage->users().credentials("BOB")->passwordHash, "h-bob");
+}
+
 } // namespace
 } // namespace tlmhub::test
