@@ -116,15 +116,26 @@ FreshDatabase::FreshDatabase(Backend backend) : mBackend(backend), mDir(makeTemp
     }
     std::lock_guard lock(gPostgresMutex);
     TemporaryPostgres& server = postgres();
-    const std::string name = "t_" + std::to_string(++gDatabasesMade);
+    mPostgresName = "t_" + std::to_string(++gDatabasesMade);
     pqxx::connection admin(server.uri("postgres") + "?connect_timeout=10");
     pqxx::nontransaction txn(admin);   // CREATE DATABASE cannot run in a transaction
-    txn.exec0("CREATE DATABASE " + name);
-    mDatabase = server.uri(name);
+    txn.exec0("CREATE DATABASE " + mPostgresName);
+    mDatabase = server.uri(mPostgresName);
 }
 
 FreshDatabase::~FreshDatabase()
 {
+    // Each database takes megabytes in the server's directory. A failure to drop one is no
+    // test's business: the server and its directory go at the end anyway.
+    if (!mPostgresName.empty()) {
+        try {
+            std::lock_guard lock(gPostgresMutex);
+            pqxx::connection admin(postgres().uri("postgres") + "?connect_timeout=10");
+            pqxx::nontransaction txn(admin);
+            txn.exec0("DROP DATABASE " + mPostgresName + " WITH (FORCE)");
+        } catch (const std::exception&) {
+        }
+    }
     std::error_code ignored;
     std::filesystem::remove_all(mDir, ignored);
 }

@@ -41,6 +41,7 @@ private:
     Backend mBackend;
     std::filesystem::path mDir;
     std::string mDatabase;
+    std::string mPostgresName;   // PostgreSQL: the database made for this test
 };
 
 // A request of `ownerId` and the settings it resolved to, as the job queue gives them.

@@ -9,6 +9,7 @@
 #include "server/store/StoreError.h"
 
 #include <cstring>
+#include <stdexcept>
 
 using namespace tlmhub::server;
 
