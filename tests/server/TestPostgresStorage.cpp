@@ -7,6 +7,7 @@
 #include "server/store/Storage.h"
 #include "server/store/StoreError.h"
 #include "server/store/postgres/PostgresConnection.h"
+#include "server/store/postgres/PostgresDatabase.h"
 
 #include <gtest/gtest.h>
 #include <pqxx/pqxx>
@@ -266,6 +267,17 @@ TEST(PostgresStorage, FailuresBecomeStoreErrorCodes)
     } catch (const StoreError& e) {
         EXPECT_NE(std::string(e.what()).find("pg_dump"), std::string::npos) << e.what();
     }
+}
+
+TEST(PostgresStorage, DescribesTheServerWithoutThePassword)
+{
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub:secret@db.example:5433/lab?sslmode=require"),
+              "tlmhub@db.example:5433/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgres://db.example/lab"), "db.example:5432/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@[::1]:6000/lab"), "tlmhub@[::1]:6000/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@[::1]/lab"), "tlmhub@[::1]:5432/lab");
+    // libpq's defaults: the local server, and a database named as the user.
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@"), "tlmhub@localhost:5432/tlmhub");
 }
 
 TEST(PostgresStorage, UnreachableServerIsUnavailableAtOnce)

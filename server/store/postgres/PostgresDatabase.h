@@ -71,7 +71,7 @@ public:
     static constexpr int kMaxAttempts = 4;
 
 private:
-    // A connection that was opened after the last broken one; throws StoreError(Unavailable)
+    // An open connection that was opened after the last broken one; throws StoreError(Unavailable)
     // naming the server when none can be opened.
     ConnectionPool<PostgresConnection>::Lease acquire();
     void distrustOpenConnections() { ++mGeneration; }
