@@ -35,6 +35,31 @@ Response apiError(http::status status, const std::string& code, const std::strin
     return jsonResponse(status, protocol::ErrorBody{.error = {.code = code, .message = message}});
 }
 
+const char* storeErrorCode(const StoreError& e)
+{
+    switch (e.code()) {
+    case StoreErrc::DiskFull: return "storage_full";
+    case StoreErrc::Unavailable:
+    case StoreErrc::Busy: return "busy";
+    default: return "internal";
+    }
+}
+
+Response storeErrorResponse(const StoreError& e)
+{
+    const std::string code = storeErrorCode(e);
+    if (code == "storage_full")
+        return apiError(http::status::insufficient_storage, code,
+                        "the server's disk is full: delete jobs or models to free space");
+    if (code == "busy") {
+        Response busy = apiError(http::status::service_unavailable, code,
+                                 std::string("the database is not available at the moment; try again (") + e.what() + ")");
+        busy.set(http::field::retry_after, "1");
+        return busy;
+    }
+    return apiError(http::status::internal_server_error, code, e.what());
+}
+
 bool readJsonBody(const Call& call, const std::string& definition, nlohmann::json& body,
                   Response& error)
 {

@@ -1,6 +1,7 @@
 #pragma once
 // What every REST route handler works with: the services, the authenticated call, and
 // helpers for JSON bodies and the protocol's error shape.
+#include "server/auth/Accounts.h"
 #include "server/auth/DownloadLinks.h"
 #include "server/auth/LiveSessions.h"
 #include "server/auth/LoginRateLimiter.h"
@@ -11,7 +12,7 @@
 #include "server/jobs/StreamHub.h"
 #include "server/protocol/Messages.generated.h"
 #include "server/store/ModelStore.h"
-#include "server/store/UserStore.h"
+#include "server/store/StoreError.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +28,7 @@ class HandlerPools;
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
     const ServerOptions& options;
-    UserStore& users;
+    Accounts& users;
     ModelStore& models;
     TokenService& tokens;
     LoginRateLimiter& loginLimiter;     // failures per user name
@@ -67,6 +68,11 @@ Response jsonResponse(http::status status, const nlohmann::json& body);
 Response textResponse(http::status status, std::string body, const std::string& contentType);
 Response noContent();
 Response apiError(http::status status, const std::string& code, const std::string& message);
+// The protocol's error code for a failure of the database: storage_full (disk full), busy
+// (unreachable or contended: try again), internal (the rest).
+const char* storeErrorCode(const StoreError& e);
+// 507 storage_full, 503 busy (with Retry-After) or 500 internal.
+Response storeErrorResponse(const StoreError& e);
 
 // Parses the body as JSON and checks it against the protocol definition `definition`
 // (empty: no schema check). On failure returns false with the error response in `error`.

@@ -117,7 +117,7 @@ Response jobResults(Services& s, Call& call)
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
     const auto& q = call.params.query;
     const std::vector<std::string> variables = q.count("variables") ? splitList(q.at("variables")) : std::vector<std::string>{};
-    const auto table = s.queue.store().result(job->id, variables);
+    const auto table = s.queue.results().result(job->id, variables);
     if (!table) return apiError(http::status::not_found, "not_found", "the job's results are gone");
     for (const std::string& v : variables)
         if (!table->hasColumn(v))

@@ -60,9 +60,10 @@ Response listModels(Services& s, Call& call)
     return jsonResponse(http::status::ok, out);
 }
 
-Response created(Services& s, std::int64_t id)
+Response created(Services& s, std::optional<std::int64_t> id)
 {
-    return jsonResponse(http::status::created, modelSummaryJson(*s.models.summary(id)));
+    if (!id) return apiError(http::status::not_found, "not_found", "the account that would own the model does not exist");
+    return jsonResponse(http::status::created, modelSummaryJson(*s.models.summary(*id)));
 }
 
 Response createModel(Services& s, Call& call)

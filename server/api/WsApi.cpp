@@ -126,6 +126,8 @@ WsApi::Reply WsApi::dispatchSafely(const std::string& type, const nlohmann::json
 {
     try {
         return dispatch(type, msg);
+    } catch (const StoreError& e) {
+        return failure(storeErrorCode(e), e.what());
     } catch (const std::exception& e) {
         return failure("internal", e.what());
     }
@@ -177,6 +179,7 @@ WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
         return failure("bad_request", "model name: " + problem);
     mSession.createEmpty(name);
     mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
+    if (!mModelId) return failure("not_found", "the account that would own the model does not exist");
     mModelName = name;
     return success(protocol::ModelOpenedData{.modelId = *mModelId, .model = mSession.model(), .writable = true});
 }
@@ -192,6 +195,7 @@ WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
         return failure("bad_request", "model name: " + problem);
     if (asCopy) {
         mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
+        if (!mModelId) return failure("not_found", "the account that would own the model does not exist");
     } else {
         mServices.models.update(*mModelId, name, mSession.saveHmf());
     }

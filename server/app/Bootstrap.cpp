@@ -2,7 +2,7 @@
 
 #include "core/hmf/HmfLoader.h"
 #include "server/auth/Sodium.h"
-#include "server/store/MetaStore.h"
+#include "server/store/UnixTime.h"
 
 #include <sodium.h>
 
@@ -59,7 +59,7 @@ bool readFile(const fs::path& path, std::string& text)
 
 } // namespace
 
-std::optional<std::string> ensureAdmin(UserStore& users, const char* envPassword)
+std::optional<std::string> ensureAdmin(Accounts& users, const char* envPassword)
 {
     if (users.findByName(kAdminUsername)) return std::nullopt;
     const bool chosen = envPassword != nullptr && envPassword[0] != '\0';
@@ -71,15 +71,14 @@ std::optional<std::string> ensureAdmin(UserStore& users, const char* envPassword
     return password;
 }
 
-int seedExamples(ModelStore& models, UserStore& users, const std::vector<std::string>& dirs,
-                 std::string& log)
+int seedExamples(ModelStore& models, MetaStore& meta, Accounts& users,
+                 const std::vector<std::string>& dirs, std::string& log)
 {
     const std::optional<User> admin = users.findByName(kAdminUsername);
     if (!admin) {
         log += "examples: no admin user, nothing seeded\n";
         return 0;
     }
-    MetaStore meta(models.database());
     int added = 0;
     for (const std::string& dir : dirs) {
         for (const fs::path& file : hmfFilesIn(dir, log)) {

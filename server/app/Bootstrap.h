@@ -1,7 +1,9 @@
 #pragma once
 // First-start setup: the admin account and the example models.
 #include "server/store/ModelStore.h"
-#include "server/store/UserStore.h"
+#include "server/auth/Accounts.h"
+#include "server/store/MetaStore.h"
+#include "server/store/ModelStore.h"
 
 #include <optional>
 #include <string>
@@ -16,14 +18,14 @@ inline constexpr const char* kAdminUsername = "admin";
 // Returns the password only when it was generated here, so main can print it once; nullopt
 // when the admin already existed or the operator chose the password.
 // Throws std::runtime_error when the given password is refused (e.g. shorter than 8).
-std::optional<std::string> ensureAdmin(UserStore& users, const char* envPassword);
+std::optional<std::string> ensureAdmin(Accounts& users, const char* envPassword);
 
 // Stores every *.hmf of each directory (sorted by file name) as an example owned by the
 // admin, named after the file stem. Each file name is seeded once ever (meta key
 // "seeded:<file name>"), so an example the admin deleted stays deleted after a restart.
 // Files that do not load are skipped (and retried next start). Appends one line per file or
 // problem to `log`; returns the number of examples added.
-int seedExamples(ModelStore& models, UserStore& users, const std::vector<std::string>& dirs,
-                 std::string& log);
+int seedExamples(ModelStore& models, MetaStore& meta, Accounts& users,
+                 const std::vector<std::string>& dirs, std::string& log);
 
 } // namespace tlmhub::server

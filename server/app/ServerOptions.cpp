@@ -153,4 +153,14 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
     return true;
 }
 
+StorageConfig storageConfig(const ServerOptions& options)
+{
+    StorageConfig config;
+    config.database = !options.database.empty()
+                          ? options.database
+                          : (std::filesystem::path(options.dataDir) / "tlmhub.sqlite").string();
+    config.reserveBytes = options.diskReserveBytes;
+    return config;
+}
+
 } // namespace tlmhub::server

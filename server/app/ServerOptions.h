@@ -2,6 +2,7 @@
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
 #include "server/jobs/Job.h"
 #include "server/protocol/ProtocolConstants.generated.h"
+#include "server/store/Storage.h"
 
 #include <chrono>
 #include <string>
@@ -33,6 +34,9 @@ struct ServerOptions {
     std::chrono::seconds loginWindow{60};
     JobLimits limits;
 };
+
+// Where the options say the database is: options.database, else <dataDir>/tlmhub.sqlite.
+StorageConfig storageConfig(const ServerOptions& options);
 
 // Parses argv. On a bad flag returns false with `error`; `--help` sets `helpText`.
 bool parseServerOptions(int argc, char** argv, ServerOptions& options, std::string& error,

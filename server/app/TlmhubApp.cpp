@@ -26,26 +26,23 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     std::error_code ec;
     std::filesystem::create_directories(mOptions.dataDir, ec);
     if (ec) throw std::runtime_error("cannot create data directory '" + mOptions.dataDir + "': " + ec.message());
-    mDatabase = std::make_unique<Database>((std::filesystem::path(mOptions.dataDir) / "tlmhub.sqlite").string(),
-                                           mOptions.diskReserveBytes);
-    mUsers = std::make_unique<UserStore>(*mDatabase);
-    mModels = std::make_unique<ModelStore>(*mDatabase);
-    mTokens = std::make_unique<TokenService>(*mDatabase, mOptions.tokenTtl, *mUsers);
+    mStorage = openStorage(storageConfig(mOptions));
+    mUsers = std::make_unique<Accounts>(mStorage->users());
+    mTokens = std::make_unique<TokenService>(mStorage->sessions(), mStorage->users(), mOptions.tokenTtl);
     mLoginLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures, mOptions.loginWindow);
     mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures * 10, mOptions.loginWindow);
-    mJobStore = std::make_unique<JobStore>(*mDatabase);
     // A job still marked running was cut off by a crash or kill: say so, keep its input.
-    mInterruptedAtStart = mJobStore->markRunningInterrupted();
+    mInterruptedAtStart = mStorage->jobs().markRunningInterrupted();
     mStreams = std::make_unique<StreamHub>();
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
-    mQueue = std::make_unique<JobQueue>(*mJobStore, *mStreams, mOptions.limits, workers);
-    if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(*mJobStore, mOptions.resultTtl);
+    mQueue = std::make_unique<JobQueue>(mStorage->jobs(), mStorage->results(), *mStreams, mOptions.limits, workers);
+    if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(mStorage->jobs(), mOptions.resultTtl);
     mLiveSessions = std::make_unique<LiveSessions>(*mTokens, kLoginCheckPeriod);
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
                                             kHashingQueueLimit);
-    mServices.reset(new Services{mOptions, *mUsers, *mModels, *mTokens, *mLoginLimiter, *mAddressLimiter,
+    mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mLoginLimiter, *mAddressLimiter,
                                  *mQueue, *mStreams, *mLiveSessions, *mDownloadLinks, *mPools});
 
     std::vector<RouteSpec> routes;
@@ -66,7 +63,7 @@ TlmhubApp::~TlmhubApp()
 std::optional<std::string> TlmhubApp::bootstrap(std::string& log)
 {
     const auto generated = ensureAdmin(*mUsers, std::getenv("TLMHUB_ADMIN_PASSWORD"));
-    seedExamples(*mModels, *mUsers, mOptions.exampleDirs, log);
+    seedExamples(mStorage->models(), mStorage->meta(), *mUsers, mOptions.exampleDirs, log);
     for (const std::string& group : mUsers->namesDifferingOnlyInCase())
         log += "warning: user names differ only in case: " + group +
                " (they keep working; new names are unique regardless of case)\n";
@@ -159,11 +156,8 @@ Response TlmhubApp::callRoute(const Route& route, Call& call)
                                 "log in first: send 'Authorization: Bearer <token>'");
         }
         return route.handler(*mServices, call);
-    } catch (const SQLite::Exception& e) {
-        if (!Database::isDiskFull(e))
-            return apiError(http::status::internal_server_error, "internal", e.what());
-        return apiError(http::status::insufficient_storage, "storage_full",
-                        "the server's disk is full: delete jobs or models to free space");
+    } catch (const StoreError& e) {
+        return storeErrorResponse(e);
     } catch (const std::exception& e) {
         return apiError(http::status::internal_server_error, "internal", e.what());
     }

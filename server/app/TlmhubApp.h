@@ -1,14 +1,13 @@
 #pragma once
-// The composition root of a running server: opens the database, builds the stores, the job
+// The composition root of a running server: opens the storage, builds the services, the job
 // queue and the routes, and answers the transport's requests.
 #include "server/api/ApiSupport.h"
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
-#include "server/jobs/JobStore.h"
 #include "server/jobs/ResultExpiry.h"
-#include "server/store/Database.h"
+#include "server/store/Storage.h"
 
 #include <memory>
 
@@ -16,7 +15,8 @@ namespace tlmhub::server {
 
 class TlmhubApp : public HttpApplication {
 public:
-    // Opens (or creates) the data directory; throws std::runtime_error naming the problem.
+    // Opens (or creates) the data directory and the storage; throws std::runtime_error (or
+    // StoreError) naming the problem.
     explicit TlmhubApp(const ServerOptions& options);
     ~TlmhubApp() override;
 
@@ -46,13 +46,11 @@ private:
                                      std::string& token, bool queryToken);
 
     ServerOptions mOptions;
-    std::unique_ptr<Database> mDatabase;
-    std::unique_ptr<UserStore> mUsers;
-    std::unique_ptr<ModelStore> mModels;
+    std::unique_ptr<Storage> mStorage;
+    std::unique_ptr<Accounts> mUsers;
     std::unique_ptr<TokenService> mTokens;
     std::unique_ptr<LoginRateLimiter> mLoginLimiter;
     std::unique_ptr<LoginRateLimiter> mAddressLimiter;
-    std::unique_ptr<JobStore> mJobStore;
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
     std::unique_ptr<ResultExpiry> mExpiry;   // only with --result-ttl

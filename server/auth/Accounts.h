@@ -1,8 +1,9 @@
 #pragma once
-// Accounts (table users): name, argon2id password hash, role. Hashing happens outside the
-// database lock because it takes about 0.1 s.
+// Accounts: creating, logging in, changing passwords and roles, with the rules of each (valid
+// names, password length, argon2id hashes, a last administrator). What is stored goes through
+// UserStore; hashing (about 0.1 s) happens before any database work.
 #include "server/auth/User.h"
-#include "server/store/Database.h"
+#include "server/store/UserStore.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,9 +28,9 @@ inline constexpr std::size_t kMinPasswordLength = 8;
 
 bool isValidUsername(const std::string& username);
 
-class UserStore {
+class Accounts {
 public:
-    explicit UserStore(Database& db);
+    explicit Accounts(UserStore& store);
 
     // Names are unique regardless of case ("ALICE" is taken when "alice" exists).
     std::optional<User> create(const std::string& username, const std::string& password,
@@ -39,10 +40,10 @@ public:
     // the time of one hash, so timing does not reveal which names exist). The name matches
     // exactly, or else regardless of case when that finds one account.
     std::optional<User> authenticate(const std::string& username, const std::string& password);
-    std::optional<User> find(std::int64_t id);
-    std::optional<User> findByName(const std::string& username);
-    std::vector<User> list();   // by id
-    std::size_t count();
+    std::optional<User> find(std::int64_t id) { return mStore.find(id); }
+    std::optional<User> findByName(const std::string& username) { return mStore.findByName(username); }
+    std::vector<User> list() { return mStore.list(); }   // by id
+    std::size_t count() { return mStore.count(); }
     bool changePassword(std::int64_t id, const std::string& oldPw, const std::string& newPw,
                         std::string& error);
     // An administrator's change of role and/or enabled state; the updated user, or nullopt
@@ -51,16 +52,10 @@ public:
                                std::optional<bool> disabled, std::string& error);
     // Existing names that differ only in case (made before names were compared that way),
     // one "alice, ALICE" line per group; they keep working, the server reports them at start.
-    std::vector<std::string> namesDifferingOnlyInCase();
-
-    Database& database() { return mDb; }
+    std::vector<std::string> namesDifferingOnlyInCase() { return mStore.namesDifferingOnlyInCase(); }
 
 private:
-    std::optional<std::string> passwordHash(const std::string& username, std::int64_t& id);
-    // Every account but `id`, with the database lock held by the caller.
-    std::vector<User> usersOtherThan(std::int64_t id);
-
-    Database& mDb;
+    UserStore& mStore;
 };
 
 } // namespace tlmhub::server

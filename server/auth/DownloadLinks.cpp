@@ -1,7 +1,7 @@
 #include "server/auth/DownloadLinks.h"
 
 #include "server/auth/Sodium.h"
-#include "server/store/Database.h"
+#include "server/store/UnixTime.h"
 
 #include <sodium.h>
 

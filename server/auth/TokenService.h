@@ -1,9 +1,9 @@
 #pragma once
 // Login sessions as bearer tokens. A token is 32 random bytes (hex); only its BLAKE2b hash
-// (crypto_generichash) is stored in table sessions, so a copy of the database does not hand
-// out live sessions. Tokens expire `ttl` after issue and can be revoked (logout).
+// (crypto_generichash) is stored (SessionStore), so a copy of the database does not hand out
+// live sessions. Tokens expire `ttl` after issue and can be revoked (logout).
 #include "server/auth/User.h"
-#include "server/store/Database.h"
+#include "server/store/SessionStore.h"
 #include "server/store/UserStore.h"
 
 #include <chrono>
@@ -15,8 +15,7 @@ namespace tlmhub::server {
 
 class TokenService {
 public:
-    // Needs the users table, so construct after `users`.
-    TokenService(Database& db, std::chrono::seconds ttl, UserStore& users);
+    TokenService(SessionStore& sessions, UserStore& users, std::chrono::seconds ttl);
 
     struct Issued {
         std::string token;
@@ -32,9 +31,9 @@ public:
     void revokeAllFor(std::int64_t userId);
 
 private:
-    Database& mDb;
-    std::chrono::seconds mTtl;
+    SessionStore& mSessions;
     UserStore& mUsers;
+    std::chrono::seconds mTtl;
 };
 
 } // namespace tlmhub::server

@@ -14,8 +14,8 @@ unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning)
     return otherJobsQueued || otherJobsRunning ? 1 : RunOptions::autoThreads;
 }
 
-JobQueue::JobQueue(JobStore& store, StreamHub& hub, JobLimits limits, unsigned workers)
-    : mStore(store), mHub(hub), mLimits(limits), mRunner(store, hub, limits),
+JobQueue::JobQueue(JobStore& store, ResultStore& results, StreamHub& hub, JobLimits limits, unsigned workers)
+    : mStore(store), mResults(results), mHub(hub), mLimits(limits), mRunner(store, hub, limits),
       mWorkerCount(std::max(1u, workers))
 {
 }
@@ -76,7 +76,7 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
     resolved.logSamples = prepared->logSamples;
     resolved.steps = prepared->steps;
 
-    const std::size_t stored = mStore.storedBytes(request.ownerId);
+    const std::size_t stored = mResults.storedBytes(request.ownerId);
     if (stored >= mLimits.maxStoredBytesPerUser) {
         return {std::nullopt, "limit_exceeded",
                 "your stored results use " + std::to_string(stored >> 20) + " MiB of " +
@@ -167,7 +167,7 @@ std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> v
     }
     const auto info = mStore.info(jobId);
     if (info && isFinished(info->state)) {
-        const auto table = mStore.result(jobId, wanted);
+        const auto table = mResults.result(jobId, wanted);
         if (table) {
             TableFrameSource source(*table);
             mHub.finishSubscription(subscription, &source, info->state, info->error);

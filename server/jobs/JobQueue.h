@@ -18,7 +18,8 @@
 // other users' first jobs and the slices running when it came.
 #include "server/jobs/Job.h"
 #include "server/jobs/JobRunner.h"
-#include "server/jobs/JobStore.h"
+#include "server/store/JobStore.h"
+#include "server/store/ResultStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
 
@@ -41,7 +42,7 @@ unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning);
 
 class JobQueue {
 public:
-    JobQueue(JobStore& store, StreamHub& hub, JobLimits limits, unsigned workers);
+    JobQueue(JobStore& store, ResultStore& results, StreamHub& hub, JobLimits limits, unsigned workers);
     ~JobQueue();   // shutdown()
     JobQueue(const JobQueue&) = delete;
     JobQueue& operator=(const JobQueue&) = delete;
@@ -82,6 +83,7 @@ public:
                             StreamSink sink);
 
     JobStore& store() { return mStore; }
+    ResultStore& results() { return mResults; }
     StreamHub& hub() { return mHub; }
     const JobLimits& limits() const { return mLimits; }
 
@@ -117,6 +119,7 @@ private:
     };
 
     JobStore& mStore;
+    ResultStore& mResults;
     StreamHub& mHub;
     JobLimits mLimits;
     JobRunner mRunner;

@@ -6,7 +6,7 @@
 // Slices give the same result as one whole run (Simulation's RunOptions::pause).
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
-#include "server/jobs/JobStore.h"
+#include "server/store/JobStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
 

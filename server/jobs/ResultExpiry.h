@@ -3,7 +3,7 @@
 // --result-ttl, so a lab server's disk does not fill with last term's runs. Sweeps at
 // start and then every quarter of the lifetime (at least every second, at most hourly) on a
 // thread of its own; the per-user storage quota still applies in between.
-#include "server/jobs/JobStore.h"
+#include "server/store/JobStore.h"
 
 #include <chrono>
 #include <condition_variable>

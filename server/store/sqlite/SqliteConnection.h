@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 
 namespace tlmhub::server {
@@ -23,7 +24,7 @@ public:
     SQLite::Database& db() { return mDb; }
 
     // A statement of this connection, prepared on first use; reset and unbound when the
-    // handle goes. `sql` must be a string literal (its address is the cache key).
+    // handle goes. `sql` must be a string literal (the cache keeps a view of it).
     class Statement {
     public:
         explicit Statement(SQLite::Statement& s) : mStatement(s) {}
@@ -46,7 +47,7 @@ public:
 
 private:
     SQLite::Database mDb;
-    std::unordered_map<const char*, std::unique_ptr<SQLite::Statement>> mStatements;
+    std::unordered_map<std::string_view, std::unique_ptr<SQLite::Statement>> mStatements;
 };
 
 // The StoreError for a failure SQLite reported (disk full, busy, constraint, corrupt, ...).
