@@ -31,14 +31,17 @@ int backupOrRestore(const ServerOptions& options)
                      "pg_restore (see docs/storage.md)\n";
         return 2;
     }
-    const fs::path database = fs::path(options.dataDir) / "tlmhub.sqlite";
+    StorageConfig config = storageConfig(options);
+    const fs::path database = config.database;
     try {
         if (!options.backupFile.empty()) {
             // Opening would make an empty database where there is none.
             if (!fs::exists(database))
                 throw StoreError(StoreErrc::Unavailable, "there is no database " + database.string() + " (see --data-dir)");
             // One connection, and no disk reserve: a server may be using the database meanwhile.
-            const auto storage = openStorage({.database = database.string(), .maxConnections = 1, .reserveBytes = 0});
+            config.maxConnections = 1;
+            config.reserveBytes = 0;
+            const auto storage = openStorage(config);
             storage->backup(options.backupFile);
             std::cout << "backup of " << storage->describe() << " written to " << options.backupFile << " ("
                       << fs::file_size(options.backupFile) << " bytes, schema version " << storage->schemaVersion()
@@ -49,7 +52,7 @@ int backupOrRestore(const ServerOptions& options)
             restoreSqliteBackup(options.restoreFile, database);
             std::cout << "restored " << options.restoreFile << " into " << database.string();
             if (replacing) std::cout << "; the previous database is kept as " << database.string() << ".before-restore";
-            std::cout << "\n(an older schema version is migrated at the next start)\n";
+            std::cout << "\n";
         }
     } catch (const std::exception& e) {
         std::cerr << "tlmhub-server: " << e.what() << "\n";

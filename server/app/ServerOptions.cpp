@@ -1,7 +1,5 @@
 #include "server/app/ServerOptions.h"
 
-#include "server/store/Storage.h"
-
 #include <charconv>
 #include <filesystem>
 #include <string>

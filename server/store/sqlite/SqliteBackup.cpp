@@ -139,8 +139,7 @@ void SqliteStorage::backup(const fs::path& file)
         syncPath(partial);
         // RENAME_NOREPLACE: a file made under the target name meanwhile is not replaced.
         if (::renameat2(AT_FDCWD, partial.c_str(), AT_FDCWD, file.c_str(), RENAME_NOREPLACE) != 0)
-            throw ioError(errno == EEXIST ? "the backup file appeared meanwhile:" : "cannot rename the backup to",
-                          file, errno);
+            throw ioError("cannot rename the backup to", file, errno);
         syncPath(directoryOf(file));
     } catch (const StoreError& e) {
         removeQuietly(partial);
