@@ -14,7 +14,7 @@
 // 2 models, 1 finished job with its result and one meta row.
 #include "ServerHarness.h"
 
-#include "server/auth/PasswordHasher.h"
+#include "server/auth/Accounts.h"
 #include "server/store/Storage.h"
 
 #include <SQLiteCpp/Database.h>
@@ -93,6 +93,7 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         const auto storage = openStorage({.database = file.string()});
         EXPECT_EQ(storage->schemaVersion(), kSchemaVersion);
 
+        Accounts accounts(storage->users());
         const std::vector<User> users = storage->users().list();
         ASSERT_EQ(users.size(), 3u);
         const std::tuple<const char*, const char*, bool, const char*> expectedUsers[] = {
@@ -106,11 +107,10 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
             EXPECT_EQ(users[i].role, role);
             EXPECT_EQ(users[i].disabled, disabled);
             // The old password still logs in (the argon2id hash is kept as it was).
-            const auto credentials = storage->users().credentials(std::string(name));
-            ASSERT_TRUE(credentials && credentials->passwordHash) << name;
-            EXPECT_EQ(credentials->id, users[i].id);
-            EXPECT_TRUE(verifyPassword(*credentials->passwordHash, password)) << name;
-            EXPECT_FALSE(verifyPassword(*credentials->passwordHash, "wrong-password")) << name;
+            const auto loggedIn = accounts.authenticate(name, password);
+            ASSERT_TRUE(loggedIn) << name;
+            EXPECT_EQ(loggedIn->id, users[i].id);
+            EXPECT_FALSE(accounts.authenticate(name, "wrong-password")) << name;
         }
 
         EXPECT_EQ(storage->sessions().userOf(
