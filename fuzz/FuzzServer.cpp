@@ -57,10 +57,9 @@ FuzzServer::FuzzServer()
     std::string log;
     if (!mApp->bootstrap(log)) fail("bootstrap did not create the admin");
 
-    mDatabase = std::make_unique<server::Database>((fs::path(options.dataDir) / "tlmhub.sqlite").string());
-    mUsers = std::make_unique<server::UserStore>(*mDatabase);
-    mTokens = std::make_unique<server::TokenService>(*mDatabase, options.tokenTtl, *mUsers);
-    const auto admin = mUsers->findByName("admin");
+    mStorage = server::openStorage(server::storageConfig(options));
+    mTokens = std::make_unique<server::TokenService>(mStorage->sessions(), mStorage->users(), options.tokenTtl);
+    const auto admin = mStorage->users().findByName("admin");
     if (!admin) fail("no admin user after bootstrap");
     mAdmin = *admin;
     mToken = mTokens->issue(mAdmin).token;

@@ -4,8 +4,7 @@
 // never started, so a submitted job stays queued and the fuzz loop never simulates.
 #include "server/app/TlmhubApp.h"
 #include "server/auth/TokenService.h"
-#include "server/store/Database.h"
-#include "server/store/UserStore.h"
+#include "server/store/Storage.h"
 
 #include <filesystem>
 #include <memory>
@@ -42,10 +41,9 @@ private:
 
     TempDir mDir;   // first member: removed after everything that has files in it
     std::unique_ptr<server::TlmhubApp> mApp;
-    // A second connection to the app's database, so an input that logs out (or changes the
+    // A second storage on the app's database, so an input that logs out (or changes the
     // password) cannot lock the fuzzer out: a fresh token is issued without a login.
-    std::unique_ptr<server::Database> mDatabase;
-    std::unique_ptr<server::UserStore> mUsers;
+    std::unique_ptr<server::Storage> mStorage;
     std::unique_ptr<server::TokenService> mTokens;
     server::User mAdmin;
     std::string mToken;

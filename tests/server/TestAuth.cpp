@@ -2,8 +2,9 @@
 #include "server/auth/LoginRateLimiter.h"
 #include "server/auth/PasswordHasher.h"
 #include "server/auth/TokenService.h"
-#include "server/store/Database.h"
-#include "server/store/UserStore.h"
+#include "server/auth/Accounts.h"
+#include "server/store/UnixTime.h"
+#include "TemporarySqliteStorage.h"
 
 #include <SQLiteCpp/Statement.h>
 #include <gtest/gtest.h>
@@ -34,10 +35,11 @@ TEST(PasswordHasher, MalformedHashNeverVerifies)
 
 namespace {
 
-// Every test gets its own in-memory database; nothing is shared between tests.
+// Every test gets its own database; nothing is shared between tests.
 struct AuthFixture : ::testing::Test {
-    Database db{":memory:"};
-    UserStore users{db};
+    tlmhub::test::TemporarySqliteStorage storage;
+    SQLite::Database& db = storage.raw();
+    Accounts users{storage->users()};
 
     User makeUser(const std::string& name, const std::string& role = "user",
                   const std::string& password = "password1")
@@ -102,7 +104,7 @@ TEST_F(UserStoreTest, BadRoleShortPasswordAndBadNameAreRefused)
 
 TEST_F(UserStoreTest, SchemaRejectsUnknownRoleEvenWithoutTheStore)
 {
-    EXPECT_THROW(db.sql().exec("INSERT INTO users(username, role) VALUES('x', 'root')"),
+    EXPECT_THROW(db.exec("INSERT INTO users(username, role) VALUES('x', 'root')"),
                  SQLite::Exception);
 }
 
@@ -148,7 +150,7 @@ TEST_F(UserStoreTest, ListIsInCreationOrder)
 TEST_F(TokenServiceTest, IssuedTokenValidatesToItsUser)
 {
     const User frank = makeUser("frank");
-    TokenService tokens(db, 3600s, users);
+    TokenService tokens(storage->sessions(), storage->users(), 3600s);
     const TokenService::Issued issued = tokens.issue(frank);
     EXPECT_EQ(issued.token.size(), 64u);
     EXPECT_EQ(issued.token.find_first_not_of("0123456789abcdef"), std::string::npos);
@@ -163,7 +165,7 @@ TEST_F(TokenServiceTest, IssuedTokenValidatesToItsUser)
 TEST_F(TokenServiceTest, UnknownOrAlteredTokenIsInvalid)
 {
     const User gina = makeUser("gina");
-    TokenService tokens(db, 3600s, users);
+    TokenService tokens(storage->sessions(), storage->users(), 3600s);
     std::string token = tokens.issue(gina).token;
     EXPECT_FALSE(tokens.validate(""));
     EXPECT_FALSE(tokens.validate(std::string(64, '0')));
@@ -174,9 +176,9 @@ TEST_F(TokenServiceTest, UnknownOrAlteredTokenIsInvalid)
 TEST_F(TokenServiceTest, OnlyTheTokenHashIsStored)
 {
     const User hank = makeUser("hank");
-    TokenService tokens(db, 3600s, users);
+    TokenService tokens(storage->sessions(), storage->users(), 3600s);
     const std::string token = tokens.issue(hank).token;
-    SQLite::Statement q(db.sql(), "SELECT token_hash, user_id FROM sessions");
+    SQLite::Statement q(db, "SELECT token_hash, user_id FROM sessions");
     ASSERT_TRUE(q.executeStep());
     EXPECT_NE(q.getColumn(0).getString(), token);
     EXPECT_EQ(q.getColumn(1).getInt64(), hank.id);
@@ -185,7 +187,7 @@ TEST_F(TokenServiceTest, OnlyTheTokenHashIsStored)
 TEST_F(TokenServiceTest, RevokedTokenIsInvalidOthersStayValid)
 {
     const User ivan = makeUser("ivan");
-    TokenService tokens(db, 3600s, users);
+    TokenService tokens(storage->sessions(), storage->users(), 3600s);
     const std::string first = tokens.issue(ivan).token;
     const std::string second = tokens.issue(ivan).token;
     tokens.revoke(first);
@@ -199,10 +201,10 @@ TEST_F(TokenServiceTest, ExpiredTokenIsInvalidAndDeleted)
 {
     const User judy = makeUser("judy");
     for (const std::chrono::seconds ttl : {0s, -10s}) {
-        TokenService tokens(db, ttl, users);
+        TokenService tokens(storage->sessions(), storage->users(), ttl);
         const std::string token = tokens.issue(judy).token;
         EXPECT_FALSE(tokens.validate(token)) << "ttl " << ttl.count();
-        SQLite::Statement q(db.sql(), "SELECT COUNT(*) FROM sessions");
+        SQLite::Statement q(db, "SELECT COUNT(*) FROM sessions");
         ASSERT_TRUE(q.executeStep());
         EXPECT_EQ(q.getColumn(0).getInt64(), 0) << "ttl " << ttl.count();
     }

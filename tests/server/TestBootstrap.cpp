@@ -1,7 +1,5 @@
 #include "server/app/Bootstrap.h"
-#include "server/store/Database.h"
-#include "server/store/ModelStore.h"
-#include "server/store/UserStore.h"
+#include "server/store/Storage.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +12,10 @@ namespace fs = std::filesystem;
 namespace {
 
 struct BootstrapTest : ::testing::Test {
-    Database db{":memory:"};
-    UserStore users{db};
-    ModelStore models{db};
+    std::unique_ptr<Storage> storage = openStorage({.database = ":memory:"});
+    Accounts users{storage->users()};
+    ModelStore& models = storage->models();
+    MetaStore& meta = storage->meta();
     fs::path dir;
 
     void SetUp() override
@@ -88,7 +87,7 @@ TEST_F(BootstrapTest, SeedsEachFileOnceSortedAndNamedByStem)
     copyExample(dir / "sub" / "nested.hmf");   // only the given directories, not below
 
     std::string log;
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 2) << log;
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 2) << log;
     EXPECT_EQ(exampleNames(), (std::vector<std::string>{"a-first", "b-second"}));
 
     std::ifstream in(dir / "a-first.hmf", std::ios::binary);
@@ -99,7 +98,7 @@ TEST_F(BootstrapTest, SeedsEachFileOnceSortedAndNamedByStem)
 
     // A second start adds nothing.
     log.clear();
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 0) << log;
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 0) << log;
     EXPECT_EQ(exampleNames().size(), 2u);
 }
 
@@ -108,15 +107,15 @@ TEST_F(BootstrapTest, DeletedExampleIsNotResurrected)
     ensureAdmin(users, "adminpassword");
     copyExample(dir / "only.hmf");
     std::string log;
-    ASSERT_EQ(seedExamples(models, users, {dir.string()}, log), 1) << log;
+    ASSERT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 1) << log;
     models.remove(models.listVisibleTo(*users.findByName("admin")).at(0).id);
 
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 0) << log;
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 0) << log;
     EXPECT_TRUE(exampleNames().empty());
 
     // A new file in the directory is still picked up.
     copyExample(dir / "later.hmf");
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 1) << log;
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 1) << log;
     EXPECT_EQ(exampleNames(), (std::vector<std::string>{"later"}));
 }
 
@@ -125,12 +124,12 @@ TEST_F(BootstrapTest, BrokenFileIsSkippedAndRetriedLater)
     ensureAdmin(users, "adminpassword");
     write(dir / "broken.hmf", "<hopsanmodelfile><system");
     std::string log;
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 0);
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 0);
     EXPECT_NE(log.find("broken.hmf"), std::string::npos) << log;
     EXPECT_TRUE(exampleNames().empty());
 
     copyExample(dir / "broken.hmf");   // fixed by the operator
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 1) << log;
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 1) << log;
 }
 
 TEST_F(BootstrapTest, SeveralDirectoriesAndMissingDirectory)
@@ -141,7 +140,7 @@ TEST_F(BootstrapTest, SeveralDirectoriesAndMissingDirectory)
     copyExample(dir / "one" / "x.hmf");
     copyExample(dir / "two" / "y.hmf");
     std::string log;
-    EXPECT_EQ(seedExamples(models, users,
+    EXPECT_EQ(seedExamples(models, meta, users,
                            {(dir / "one").string(), (dir / "missing").string(),
                             (dir / "two").string()},
                            log),
@@ -154,6 +153,6 @@ TEST_F(BootstrapTest, NothingSeededWithoutAdmin)
 {
     copyExample(dir / "x.hmf");
     std::string log;
-    EXPECT_EQ(seedExamples(models, users, {dir.string()}, log), 0);
+    EXPECT_EQ(seedExamples(models, meta, users, {dir.string()}, log), 0);
     EXPECT_FALSE(log.empty());
 }

@@ -6,10 +6,9 @@
 #include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 #include "server/jobs/JobQueue.h"
-#include "server/jobs/JobStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
-#include "server/store/Database.h"
+#include "server/store/Storage.h"
 
 #include <gtest/gtest.h>
 
@@ -142,8 +141,9 @@ struct Timeline {
 
 class Jobs : public ::testing::Test {
 protected:
-    Database db{":memory:"};
-    JobStore store{db};
+    std::unique_ptr<Storage> storage = openStorage({.database = ":memory:"});
+    JobStore& store = storage->jobs();
+    ResultStore& results = storage->results();
     StreamHub hub;
 
     JobRequest request(const std::string& path, std::int64_t owner = 1)
@@ -179,7 +179,7 @@ protected:
 
 TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     queue.start();
     const auto submitted = queue.submit(request(kExample));
     ASSERT_TRUE(submitted.id) << submitted.code << ": " << submitted.message;
@@ -194,14 +194,14 @@ TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
     EXPECT_EQ(info.logSamples, 501u);
     EXPECT_GT(info.startedAt, 0);
     EXPECT_GE(info.finishedAt, info.startedAt);
-    const auto result = store.result(*submitted.id);
+    const auto result = results.result(*submitted.id);
     ASSERT_TRUE(result);
     EXPECT_EQ(result->toCsv(), directRun(readFile(kExample)).toCsv());
 }
 
 TEST_F(Jobs, AJobIsCompiledAtSubmissionAndTheWorkerRunsThatCompiledJob)
 {
-    JobQueue queue(store, hub, {}, 1);   // not started yet: the jobs wait in the queue
+    JobQueue queue(store, results, hub, {}, 1);   // not started yet: the jobs wait in the queue
     const auto kept = queue.submit(request(kExample));
     const auto cancelled = queue.submit(request(kExample));
     ASSERT_TRUE(kept.id && cancelled.id);
@@ -212,29 +212,29 @@ TEST_F(Jobs, AJobIsCompiledAtSubmissionAndTheWorkerRunsThatCompiledJob)
     ASSERT_TRUE(finishes(*kept.id));
     EXPECT_EQ(state(*kept.id), JobState::Done) << store.info(*kept.id)->error;
     EXPECT_EQ(queue.compiledQueued(), 0u);
-    EXPECT_EQ(store.result(*kept.id)->toCsv(), directRun(readFile(kExample)).toCsv());
+    EXPECT_EQ(results.result(*kept.id)->toCsv(), directRun(readFile(kExample)).toCsv());
 }
 
 TEST_F(Jobs, AJobQueuedBeforeARestartIsCompiledAgainFromItsStoredRequest)
 {
     std::int64_t id = 0;
     {
-        JobQueue queue(store, hub, {}, 1);
+        JobQueue queue(store, results, hub, {}, 1);
         JobRequest r = request(kExample);
         r.parameters = {{"Orifice.Kc", "2e-10"}};
         id = *queue.submit(r).id;
     }   // the server stops before the job ran: its compiled form is gone
-    JobQueue restarted(store, hub, {}, 1);
+    JobQueue restarted(store, results, hub, {}, 1);
     EXPECT_EQ(restarted.compiledQueued(), 0u);
     restarted.start();
     ASSERT_TRUE(finishes(id));
     EXPECT_EQ(state(id), JobState::Done) << store.info(id)->error;
-    EXPECT_EQ(store.result(id)->toCsv(), directRun(readFile(kExample), {{"Orifice.Kc", "2e-10"}}).toCsv());
+    EXPECT_EQ(results.result(id)->toCsv(), directRun(readFile(kExample), {{"Orifice.Kc", "2e-10"}}).toCsv());
 }
 
 TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(kExample);
     r.parameters = {{"Orifice.Kc", "2e-10"}, {"pump_flow", "2e-4"}};
@@ -244,7 +244,7 @@ TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
     ASSERT_TRUE(submitted.id) << submitted.message;
     ASSERT_TRUE(finishes(*submitted.id));
     ASSERT_EQ(state(*submitted.id), JobState::Done) << store.info(*submitted.id)->error;
-    const auto result = store.result(*submitted.id);
+    const auto result = results.result(*submitted.id);
     ASSERT_TRUE(result);
     ASSERT_EQ(result->time.size(), 101u);
     EXPECT_NEAR(result->time.back(), 1.0, 1e-9);
@@ -272,7 +272,7 @@ TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 
 TEST_F(Jobs, StoredRequestRunsAgainAsANewJob)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(kExample);
     r.modelId = 7;
@@ -284,12 +284,12 @@ TEST_F(Jobs, StoredRequestRunsAgainAsANewJob)
     EXPECT_NE(*again.id, *first.id);
     ASSERT_TRUE(finishes(*again.id));
     EXPECT_EQ(store.info(*again.id)->modelId, 7);
-    EXPECT_EQ(store.result(*again.id)->toCsv(), store.result(*first.id)->toCsv());
+    EXPECT_EQ(results.result(*again.id)->toCsv(), results.result(*first.id)->toCsv());
 }
 
 TEST_F(Jobs, WorkersServeUsersRoundRobin)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     std::mutex mutex;
     std::vector<std::int64_t> finishedOrder;
     std::vector<std::int64_t> ids;
@@ -320,7 +320,7 @@ TEST_F(Jobs, WorkersServeUsersRoundRobin)
 
 TEST_F(Jobs, OneWorkerTakesTurnsSoASecondJobStreamsBeforeTheFirstIsDone)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     const auto first = *queue.submit(longRequest(1)).id;
     const auto second = *queue.submit(longRequest(2)).id;
     EventLog firstEvents, secondEvents;
@@ -344,7 +344,7 @@ TEST_F(Jobs, OneWorkerTakesTurnsSoASecondJobStreamsBeforeTheFirstIsDone)
 
 TEST_F(Jobs, JobsRunInSlicesStoreTheResultOfAWholeRunAndStreamIt)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     JobRequest r = request(kServo);
     r.settings.stop = 20.0;   // 200000 steps: many slices
     r.settings.logSamples = 20000;
@@ -365,7 +365,7 @@ TEST_F(Jobs, JobsRunInSlicesStoreTheResultOfAWholeRunAndStreamIt)
     const std::string whole = directRun(readFile(kServo), {}, 20.0, 20000).toCsv();
     for (const auto id : {first, second}) {
         ASSERT_EQ(state(id), JobState::Done) << store.info(id)->error;
-        const ResultTable result = *store.result(id);
+        const ResultTable result = *results.result(id);
         EXPECT_EQ(result.toCsv(), whole);
         std::lock_guard lock(timeline.mutex);
         EXPECT_TRUE(bitwiseEqual(timeline.time[id], result.time));
@@ -376,7 +376,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
 {
     std::int64_t first = 0, second = 0;
     {
-        JobQueue queue(store, hub, {}, 1);
+        JobQueue queue(store, results, hub, {}, 1);
         first = *queue.submit(longRequest(1)).id;
         second = *queue.submit(longRequest(2)).id;
         EventLog firstEvents, secondEvents;
@@ -390,7 +390,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
         EXPECT_EQ(firstEvents.snapshot().back().at("state"), "interrupted");
         EXPECT_EQ(secondEvents.snapshot().back().at("state"), "interrupted");
     }
-    JobQueue restarted(store, hub, {}, 1);
+    JobQueue restarted(store, results, hub, {}, 1);
     restarted.start();
     EXPECT_EQ(state(first), JobState::Interrupted);
     EXPECT_EQ(state(second), JobState::Interrupted);
@@ -398,7 +398,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
 
 TEST_F(Jobs, AtMostSoManyJobsAreStartedAtOnceTheOthersWaitUnstarted)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     const std::size_t jobs = JobQueue::kMaxStartedJobs + 2;
     std::vector<std::int64_t> ids;
     for (std::size_t i = 0; i < jobs; ++i) ids.push_back(*queue.submit(longRequest(static_cast<std::int64_t>(i) + 1)).id);
@@ -420,7 +420,7 @@ TEST_F(Jobs, UserAtRunningLimitWaitsWhileOthersRun)
 {
     JobLimits limits;
     limits.maxRunningPerUser = 1;
-    JobQueue queue(store, hub, limits, 2);
+    JobQueue queue(store, results, hub, limits, 2);
     const auto a1 = *queue.submit(longRequest(1)).id;
     const auto a2 = *queue.submit(longRequest(1)).id;
     const auto b1 = *queue.submit(longRequest(2)).id;
@@ -441,7 +441,7 @@ TEST_F(Jobs, CancelQueuedAndRunning)
     // One started job per user: the second stays queued (not started for a time slice).
     JobLimits limits;
     limits.maxRunningPerUser = 1;
-    JobQueue queue(store, hub, limits, 1);
+    JobQueue queue(store, results, hub, limits, 1);
     queue.start();
     const auto running = *queue.submit(longRequest()).id;
     const auto queued = *queue.submit(request(kExample)).id;
@@ -476,7 +476,7 @@ TEST_F(Jobs, LimitsAreCheckedAtSubmit)
     limits.maxSteps = 10'000;
     limits.maxLogSamples = 500;
     limits.maxQueuedPerUser = 2;
-    JobQueue queue(store, hub, limits, 1);   // not started: jobs stay queued
+    JobQueue queue(store, results, hub, limits, 1);   // not started: jobs stay queued
 
     auto tooLong = queue.submit(request(kExample));   // 20000 steps
     EXPECT_FALSE(tooLong.id);
@@ -505,7 +505,7 @@ TEST_F(Jobs, LimitsAreCheckedAtSubmit)
 
 TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     auto submitWith = [&](const std::string& key, const std::string& value) {
         JobRequest r = request(kExample);
         r.parameters[key] = value;
@@ -537,7 +537,7 @@ TEST_F(Jobs, NestedParametersReachIntoSubsystems)
 {
     const std::string path =
         std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Example Models/Sub System Example.hmf";
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(path);
     r.parameters = {{"Servo1$Translational_Mass.m", "400"}};
@@ -546,7 +546,7 @@ TEST_F(Jobs, NestedParametersReachIntoSubsystems)
     const auto plain = queue.submit(request(path));
     ASSERT_TRUE(finishes(*heavier.id) && finishes(*plain.id));
     ASSERT_EQ(state(*heavier.id), JobState::Done);
-    const ResultTable a = *store.result(*heavier.id), b = *store.result(*plain.id);
+    const ResultTable a = *results.result(*heavier.id), b = *results.result(*plain.id);
     const ResultColumn* moved = a.column("Servo1$Translational_Mass#P1#Position");
     ASSERT_TRUE(moved);
     EXPECT_NE(moved->data, b.column("Servo1$Translational_Mass#P1#Position")->data);
@@ -558,7 +558,7 @@ TEST_F(Jobs, WallTimeLimitFailsTheJob)
 {
     JobLimits limits;
     limits.maxWallSeconds = 0.2;
-    JobQueue queue(store, hub, limits, 1);
+    JobQueue queue(store, results, hub, limits, 1);
     queue.start();
     const auto t0 = std::chrono::steady_clock::now();
     const auto id = *queue.submit(longRequest()).id;
@@ -573,14 +573,14 @@ TEST_F(Jobs, ResultLargerThanTheLimitFailsTheJob)
 {
     JobLimits limits;
     limits.maxResultBytes = 4096;
-    JobQueue queue(store, hub, limits, 1);
+    JobQueue queue(store, results, hub, limits, 1);
     queue.start();
     const auto id = *queue.submit(request(kExample)).id;
     ASSERT_TRUE(finishes(id));
     const JobInfo info = *store.info(id);
     EXPECT_EQ(info.state, JobState::Failed);
     EXPECT_NE(info.error.find("larger than the limit of 4096 bytes"), std::string::npos) << info.error;
-    EXPECT_FALSE(store.result(id));
+    EXPECT_FALSE(results.result(id));
 }
 
 TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
@@ -589,7 +589,7 @@ TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
     {
         JobLimits limits;
         limits.maxRunningPerUser = 1;   // the second job stays queued (not started for a time slice)
-        JobQueue queue(store, hub, limits, 1);
+        JobQueue queue(store, results, hub, limits, 1);
         queue.start();
         running = *queue.submit(longRequest()).id;
         queued = *queue.submit(request(kExample)).id;
@@ -598,7 +598,7 @@ TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
         EXPECT_EQ(state(running), JobState::Interrupted);
         EXPECT_EQ(state(queued), JobState::Queued);
     }
-    JobQueue restarted(store, hub, {}, 1);
+    JobQueue restarted(store, results, hub, {}, 1);
     restarted.start();
     ASSERT_TRUE(finishes(queued));
     EXPECT_EQ(state(queued), JobState::Done);
@@ -613,7 +613,7 @@ TEST_F(Jobs, JobsLeftRunningByACrashBecomeInterrupted)
     const auto id = store.create(request(kExample), resolved);
     ASSERT_TRUE(store.markRunning(id));
     EXPECT_EQ(state(id), JobState::Running);
-    JobQueue queue(store, hub, {}, 1);   // the server starting again
+    JobQueue queue(store, results, hub, {}, 1);   // the server starting again
     queue.start();
     EXPECT_EQ(state(id), JobState::Interrupted);
     EXPECT_GT(store.info(id)->finishedAt, 0);
@@ -622,7 +622,7 @@ TEST_F(Jobs, JobsLeftRunningByACrashBecomeInterrupted)
 
 TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     JobRequest r = request(kServo);
     r.settings.stop = 60.0;   // 600000 steps: long enough for frames during the run
     r.settings.logSamples = 20000;
@@ -636,7 +636,7 @@ TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
     queue.start();
     ASSERT_TRUE(finishes(id));
     ASSERT_TRUE(waitUntil([&] { return all.done() && picked.done(); }));
-    const ResultTable result = *store.result(id);
+    const ResultTable result = *results.result(id);
     ASSERT_EQ(state(id), JobState::Done);
 
     auto check = [&](EventLog& log, std::size_t expectVariables) {
@@ -677,11 +677,11 @@ TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
 
 TEST_F(Jobs, LateSubscriberGetsEverythingAtOnce)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     queue.start();
     const auto id = *queue.submit(request(kExample)).id;
     ASSERT_TRUE(finishes(id));
-    const ResultTable result = *store.result(id);
+    const ResultTable result = *results.result(id);
     EventLog late;
     queue.subscribe(id, {result.columns[2].name}, 0, late.sink());
     const auto events = late.snapshot();   // delivered during subscribe()
@@ -699,7 +699,7 @@ TEST_F(Jobs, LateSubscriberGetsEverythingAtOnce)
 
 TEST_F(Jobs, UnsubscribedSinkHearsNothing)
 {
-    JobQueue queue(store, hub, {}, 1);
+    JobQueue queue(store, results, hub, {}, 1);
     const auto id = *queue.submit(request(kExample)).id;
     EventLog gone, kept;
     const auto subscription = queue.subscribe(id, {}, 0, gone.sink());

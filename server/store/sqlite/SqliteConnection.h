@@ -30,7 +30,9 @@ public:
         explicit Statement(SQLite::Statement& s) : mStatement(s) {}
         ~Statement()
         {
-            mStatement.reset();
+            // tryReset: reset() repeats the last step's error (e.g. a constraint), which was
+            // already thrown. sqlite3_clear_bindings cannot fail.
+            mStatement.tryReset();
             mStatement.clearBindings();
         }
         Statement(const Statement&) = delete;
