@@ -230,6 +230,14 @@ TEST(Backup, RestoreReplacesTheDatabaseAndKeepsTheOldOne)
     }
     // A second restore would overwrite what the first kept: refused.
     EXPECT_THROW(restoreSqliteBackup(dir / "new.backup", database), StoreError);
+
+    // A database SQLite cannot read is no server's: it is replaced (and kept) too.
+    const fs::path damagedDir = dir / "damaged";
+    fs::create_directories(damagedDir);
+    std::ofstream(damagedDir / "tlmhub.sqlite") << std::string(8192, 'x');
+    restoreSqliteBackup(dir / "new.backup", damagedDir / "tlmhub.sqlite");
+    EXPECT_TRUE(openStorage({.database = (damagedDir / "tlmhub.sqlite").string()})->users().findByName("new"));
+    EXPECT_EQ(readFile(damagedDir / "tlmhub.sqlite.before-restore"), std::string(8192, 'x'));
     fs::remove_all(dir);
 }
 
