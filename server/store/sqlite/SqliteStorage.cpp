@@ -5,7 +5,7 @@
 namespace tlmhub::server {
 
 SqliteStorage::SqliteStorage(const StorageConfig& config)
-    : mDb(config.database, config.maxConnections, config.reserveBytes)
+    : mDb(config)
 {
     mDb.run([](SqliteConnection& c) { migrateSqlite(c); });
 }
