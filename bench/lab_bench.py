@@ -15,7 +15,8 @@ Printed:
   then reads the stored result during the lab, as the web app does);
 - p50 / p99 (nearest rank) of the time from sending simulate.start to the job's first
   event.frame and to its event.done;
-- the server's CPU seconds (utime + stime from /proc/PID/stat) from just before the first
+- the server's CPU seconds (utime + stime from /proc/PID/stat; with --postgres plus that of
+  PostgreSQL's processes) from just before the first
   simulate.start to just after the last event.done (creating users, logins, uploads, connecting
   and model.open are excluded), beside the CPU of `tlmhub-cli batch MODEL --copies N*R
   --threads 1` (the bare engine for the same runs, measured with getrusage(RUSAGE_CHILDREN)
@@ -113,6 +114,71 @@ class Server:
 
     def cleanup(self):
         shutil.rmtree(self.tmp, ignore_errors=True)
+
+
+class Postgres:
+    """A PostgreSQL 15 (Debian's postgresql-15) with its durable defaults (fsync and synchronous
+    commit on) in its own temporary directory on a free loopback port, run as nobody when this
+    script runs as root (initdb refuses root)."""
+    BIN = "/usr/lib/postgresql/15/bin"
+
+    def __init__(self):
+        import pwd, socket
+        self.dir = tempfile.mkdtemp(prefix="tlmhub-lab-pg-")
+        os.makedirs(os.path.join(self.dir, "socket"))
+        demote = None
+        if os.geteuid() == 0:
+            nobody = pwd.getpwnam("nobody")
+            for d in (self.dir, os.path.join(self.dir, "socket")):
+                os.chown(d, nobody.pw_uid, nobody.pw_gid)
+
+            def demote():
+                os.setgroups([])
+                os.setgid(nobody.pw_gid)
+                os.setuid(nobody.pw_uid)
+        data = os.path.join(self.dir, "data")
+        subprocess.run([self.BIN + "/initdb", "-D", data, "-U", "tlmhub", "--auth=trust", "--encoding=UTF8",
+                        "--locale=C.UTF-8", "--no-instructions"], check=True, stdout=subprocess.DEVNULL,
+                       preexec_fn=demote, cwd=self.dir)
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            self.port = s.getsockname()[1]
+        self.log = open(os.path.join(self.dir, "postgres.log"), "wb")
+        self.proc = subprocess.Popen([self.BIN + "/postgres", "-D", data, "-h", "127.0.0.1", "-p", str(self.port),
+                                      "-k", os.path.join(self.dir, "socket")],
+                                     stdout=self.log, stderr=subprocess.STDOUT, preexec_fn=demote, cwd=self.dir)
+        deadline = time.monotonic() + 30
+        while subprocess.run(["/usr/bin/createdb", "-h", "127.0.0.1", "-p", str(self.port), "-U", "tlmhub", "tlmhub"],
+                             stderr=subprocess.DEVNULL).returncode != 0:
+            if time.monotonic() > deadline or self.proc.poll() is not None:
+                self.stop()
+                raise RuntimeError("PostgreSQL did not start; see " + self.log.name)
+            time.sleep(0.2)
+        self.uri = f"postgresql://tlmhub@127.0.0.1:{self.port}/tlmhub"
+
+    def cpu_seconds(self):
+        """The postmaster's CPU with that of its ended children, plus its live children's."""
+        def stat(pid):
+            with open(f"/proc/{pid}/stat") as f:
+                return f.read().rsplit(")", 1)[1].split()
+        fields = stat(self.proc.pid)
+        total = sum(int(fields[i]) for i in (11, 12, 13, 14))  # utime, stime, cutime, cstime
+        for pid in os.listdir("/proc"):
+            if pid.isdigit() and pid != str(self.proc.pid):
+                try:
+                    child = stat(pid)
+                except OSError:
+                    continue
+                if child[1] == str(self.proc.pid):
+                    total += int(child[11]) + int(child[12])
+        return total / CLK_TCK
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGINT)  # fast shutdown
+            self.proc.wait(timeout=60)
+        self.log.close()
+        shutil.rmtree(self.dir, ignore_errors=True)
 
 
 def rest(port, method, path, token=None, body=None, content_type="application/json", timeout=60):
@@ -368,13 +434,18 @@ def main():
     ap.add_argument("--port-file", help="write the server's port here once it listens")
     ap.add_argument("--server-arg", action="append", default=[], help="one more server argument (repeatable)")
     ap.add_argument("--label", default="", help="a name for this run in the output")
+    ap.add_argument("--postgres", action="store_true",
+                    help="store in a PostgreSQL 15 this script starts (fsync on) instead of SQLite; "
+                         "its CPU counts as the server's")
     ap.add_argument("--perf", help="record the server's lab phase with perf (call graphs) into this file")
     ap.add_argument("--json", help="append the figures as one JSON line to this file")
     a = ap.parse_args()
     clis = a.cli or [os.path.join(ROOT, "build/bin/tlmhub-cli")]
     n, r = a.students, a.runs
 
-    server = Server(a.server, a.workers, a.server_arg)
+    postgres = Postgres() if a.postgres else None
+    server_args = a.server_arg + (["--database", postgres.uri] if postgres else [])
+    server = Server(a.server, a.workers, server_args)
     try:
         try:
             if a.port_file:
@@ -408,15 +479,18 @@ def main():
             ready.wait()  # every student is connected and has the model open
             profiler = start_profiler(a.perf, server.proc.pid) if a.perf else None
             cpu0, client0, wall0 = server.cpu_seconds(), os.times(), time.perf_counter()
+            pg0 = postgres.cpu_seconds() if postgres else 0.0
             go.wait()
             for t in threads:
                 t.join(max(0.0, deadline - time.monotonic()) + 5)
             wall = time.perf_counter() - wall0
             cpu1, client1 = server.cpu_seconds(), os.times()
+            database_cpu = postgres.cpu_seconds() - pg0 if postgres else 0.0
             if profiler:
                 profiler.send_signal(signal.SIGINT)
                 profiler.wait()
-            server_cpu = cpu1 - cpu0
+            # With PostgreSQL, its processes' CPU is the server's too.
+            server_cpu = cpu1 - cpu0 + database_cpu
             client_cpu = (client1.user - client0.user) + (client1.system - client0.system)
 
             runs = [run for rs in out for run in rs]
@@ -428,6 +502,8 @@ def main():
         engines = [(cli,) + engine_cpu(cli, a.model, n * r) for cli in clis]
     finally:
         server.cleanup()
+        if postgres:
+            postgres.stop()
 
     # Verdicts
     done = [x for x in runs if x.state == "done"]
@@ -479,7 +555,7 @@ def main():
         ("done p50 / p99 / max", f"{ms(percentile(dones, 50))} / {ms(percentile(dones, 99))} / "
                                  f"{ms(max(dones) if dones else float('nan'))}"),
         ("lab wall time", f"{wall:.2f} s  (connect + model.open before it: p99 {ms(percentile(conn, 99))})"),
-        ("server CPU", f"{server_cpu:.2f} s"),
+        ("server CPU", f"{server_cpu:.2f} s" + (f" (PostgreSQL's processes: {database_cpu:.2f} s)" if a.postgres else "")),
     ]
     for cli, cpu, ewall, _ in engines:
         name = "engine CPU" + (f" ({cli})" if len(engines) > 1 else " (tlmhub-cli batch)")

@@ -29,6 +29,10 @@ struct StorageConfig {
     // SQLite: bytes kept in a reserve file beside the database, given back when the disk is
     // full so logging in and deleting still work. 0: none.
     std::size_t reserveBytes = 8u << 20;
+    // SQLite: flush the WAL to disk at every commit (synchronous=FULL). Off, it is flushed at
+    // checkpoints: a power cut may lose the last commits, never corrupt the file. PostgreSQL
+    // flushes every commit in any case (its server's fsync settings decide).
+    bool syncEveryCommit = false;
 };
 
 class Storage {

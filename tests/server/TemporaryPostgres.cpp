@@ -140,7 +140,7 @@ std::string describeStatus(int status)
 
 } // namespace
 
-TemporaryPostgres::TemporaryPostgres(std::string dbName) : mDbName(std::move(dbName))
+TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName(std::move(dbName))
 {
     const std::filesystem::path bin = kBinDir;
     for (const char* tool : {"initdb", "postgres"}) {
@@ -166,11 +166,12 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName) : mDbName(std::move(dbN
         }
 
         // initdb: trust authentication (the server listens on loopback only, in a directory
-        // only its user can enter), no fsync: the data is thrown away after the test.
+        // only its user can enter).
         const auto initdbLog = mDir / "initdb.log";
-        const int initdb = spawn({(bin / "initdb").string(), "-D", data.string(), "-U", kUser, "--auth=trust",
-                                  "--encoding=UTF8", "--locale=C.UTF-8", "--no-sync", "--no-instructions"},
-                                 initdbLog, mDir, who);
+        std::vector<std::string> initdbArgs{(bin / "initdb").string(), "-D", data.string(), "-U", kUser,
+                                            "--auth=trust", "--encoding=UTF8", "--locale=C.UTF-8", "--no-instructions"};
+        if (!durable) initdbArgs.push_back("--no-sync");
+        const int initdb = spawn(initdbArgs, initdbLog, mDir, who);
         const int initStatus = waitUntil(initdb, Clock::now() + std::chrono::seconds(60));
         if (initStatus == -1) {
             ::kill(initdb, SIGKILL);
@@ -185,10 +186,13 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName) : mDbName(std::move(dbN
         const auto deadline = Clock::now() + std::chrono::seconds(30);
         for (int attempt = 1;; ++attempt) {
             mPort = freeLoopbackPort();
-            mPid = spawn({(bin / "postgres").string(), "-D", data.string(), "-h", "127.0.0.1", "-p",
-                          std::to_string(mPort), "-k", socketDir.string(), "-c", "fsync=off", "-c",
-                          "synchronous_commit=off", "-c", "full_page_writes=off", "-c", "max_connections=20"},
-                         mDir / "postgres.log", mDir, who);
+            std::vector<std::string> args{(bin / "postgres").string(), "-D", data.string(), "-h", "127.0.0.1",
+                                          "-p", std::to_string(mPort), "-k", socketDir.string(), "-c",
+                                          "max_connections=40"};
+            if (!durable)
+                for (const char* setting : {"fsync=off", "synchronous_commit=off", "full_page_writes=off"})
+                    args.insert(args.end(), {"-c", setting});
+            mPid = spawn(args, mDir / "postgres.log", mDir, who);
             bool ready = false;
             std::string lastError = "no connection attempt yet";
             while (!ready) {

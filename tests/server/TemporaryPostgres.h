@@ -12,8 +12,10 @@ class TemporaryPostgres {
 public:
     // Runs initdb, starts postgres, waits (at most 30 s) until it accepts connections and
     // creates the database `dbName`. Throws std::runtime_error naming the step that failed,
-    // with the tail of that step's log.
-    explicit TemporaryPostgres(std::string dbName = "tlmhub_test");
+    // with the tail of that step's log. Tests throw their data away, so by default nothing is
+    // flushed to disk; `durable` keeps PostgreSQL's defaults (fsync and synchronous commit
+    // on), for benchmarks of what a real server costs.
+    explicit TemporaryPostgres(std::string dbName = "tlmhub_test", bool durable = false);
     // Fast shutdown (SIGINT; SIGQUIT then SIGKILL if it has not ended after 30 s), then the
     // temporary directory is removed.
     ~TemporaryPostgres();

@@ -4,7 +4,7 @@
 
 namespace tlmhub::server {
 
-SqliteConnection::SqliteConnection(const std::string& path)
+SqliteConnection::SqliteConnection(const std::string& path, bool syncEveryCommit)
     : mDb(path, SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE | SQLite::OPEN_NOMUTEX)
 {
     // Before anything else: a writer on another connection makes this one wait, not fail.
@@ -13,7 +13,7 @@ SqliteConnection::SqliteConnection(const std::string& path)
     // effect for a new database only (set before the journal mode).
     mDb.exec("PRAGMA page_size=65536");
     mDb.exec("PRAGMA journal_mode=WAL");
-    mDb.exec("PRAGMA synchronous=NORMAL");   // WAL: durable at checkpoints, never corrupt
+    mDb.exec(syncEveryCommit ? "PRAGMA synchronous=FULL" : "PRAGMA synchronous=NORMAL");
     mDb.exec("PRAGMA foreign_keys=ON");
     // The WAL shrinks back after checkpoints instead of keeping its largest size.
     mDb.exec("PRAGMA journal_size_limit=16777216");

@@ -19,7 +19,8 @@ class SqliteConnection {
 public:
     // Opens `path` (creating it) in WAL mode with a busy timeout, so a writer waits for
     // another instead of failing with SQLITE_BUSY.
-    explicit SqliteConnection(const std::string& path);
+    // `syncEveryCommit`: synchronous=FULL rather than NORMAL (see StorageConfig).
+    SqliteConnection(const std::string& path, bool syncEveryCommit);
 
     SQLite::Database& db() { return mDb; }
 

@@ -7,12 +7,12 @@
 
 namespace tlmhub::server {
 
-SqliteDatabase::SqliteDatabase(const std::string& path, unsigned maxConnections, std::size_t reserveBytes)
-    : mPath(path),
-      mPool([path] { return std::make_unique<SqliteConnection>(path); },
-            path == ":memory:" ? 1 : maxConnections),
-      mReservePath(path == ":memory:" || reserveBytes == 0 ? "" : path + ".reserve"),
-      mReserveBytes(reserveBytes)
+SqliteDatabase::SqliteDatabase(const StorageConfig& config)
+    : mPath(config.database),
+      mPool([path = config.database, sync = config.syncEveryCommit] { return std::make_unique<SqliteConnection>(path, sync); },
+            config.database == ":memory:" ? 1 : config.maxConnections),
+      mReservePath(config.database == ":memory:" || config.reserveBytes == 0 ? "" : config.database + ".reserve"),
+      mReserveBytes(config.reserveBytes)
 {
     restoreReserve();
 }

@@ -7,6 +7,7 @@
 // the file system when the disk is full, so logging in and deleting (the way to free space)
 // still work; it is made again once there is room.
 #include "server/store/ConnectionPool.h"
+#include "server/store/Storage.h"
 #include "server/store/sqlite/SqliteConnection.h"
 
 #include <cstddef>
@@ -18,7 +19,7 @@ class SqliteDatabase {
 public:
     // ":memory:" is one private database, so it gets one connection (a second would be a
     // second, empty database) and no reserve.
-    SqliteDatabase(const std::string& path, unsigned maxConnections, std::size_t reserveBytes);
+    explicit SqliteDatabase(const StorageConfig& config);
 
     const std::string& path() const { return mPath; }
 
