@@ -22,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -120,7 +121,8 @@ TEST(PostgresStorage, RefusesADatabaseANewerServerMigrated)
     {
         pqxx::connection admin(pg.uri());
         pqxx::work tx(admin);
-        tx.exec_params0("INSERT INTO schema_migrations(version, applied_at) VALUES($1, 0)", server::kSchemaVersion + 1);
+        tx.exec_params0("INSERT INTO schema_migrations(version, applied_at) VALUES($1, 0)",
+                        server::kSchemaVersion + 1);
         tx.commit();
     }
     try {
@@ -193,45 +195,66 @@ TEST(PostgresStorage, RealsAndNullsRoundTripExactly)
     EXPECT_EQ(storage->models().summary(*model)->name, "renamed");
 }
 
+// Client connections to the test database other than `admin`'s own (an autovacuum worker may
+// be at work on the database too).
+constexpr const char* kOtherClients = "SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
+                                      " AND datname = current_database() AND backend_type = 'client backend'";
+
+// Ends every other client connection to the database, as an administrator or a restarting
+// server would, and returns how many once they are gone (pg_terminate_backend only signals).
+int endOtherClients(pqxx::connection& admin)
+{
+    pqxx::nontransaction tx(admin);
+    const int ended = tx.exec1("SELECT COUNT(pg_terminate_backend(pid)) FROM pg_stat_activity"
+                               " WHERE pid <> pg_backend_pid() AND datname = current_database()"
+                               " AND backend_type = 'client backend'")[0]
+                          .as<int>();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (tx.exec1(kOtherClients)[0].as<int>() > 0) {
+        if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error("backends not ended in 10 s");
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return ended;
+}
+
 TEST(PostgresStorage, ReplacesConnectionsTheServerEnded)
 {
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 4);
     ASSERT_TRUE(storage->users().insert("admin", "hash", "admin"));
     pqxx::connection admin(pg.uri());
-    {
-        pqxx::nontransaction tx(admin);
-        // Client connections only: an autovacuum worker may be at work on the database too.
-        const char* const others = "SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
-                                   " AND datname = current_database() AND backend_type = 'client backend'";
-        // Several threads at once until the pool holds more than one connection, so the call
-        // after the ending meets a dead connection again if it is retried on a pooled one.
-        for (int round = 0; round < 50 && tx.exec1(others)[0].as<int>() < 2; ++round) {
-            std::vector<std::thread> threads;
-            for (int t = 0; t < 4; ++t)
-                threads.emplace_back([&] {
-                    for (int i = 0; i < 20; ++i) storage->users().count();
-                });
-            for (auto& t : threads) t.join();
-        }
-        const int ended = tx.exec1("SELECT COUNT(pg_terminate_backend(pid)) FROM pg_stat_activity"
-                                   " WHERE pid <> pg_backend_pid() AND datname = current_database()"
-                                   " AND backend_type = 'client backend'")[0]
-                              .as<int>();
-        ASSERT_GE(ended, 2);
-        // pg_terminate_backend only signals: wait until the backends are gone.
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-        while (tx.exec1(others)[0].as<int>() > 0) {
-            ASSERT_LT(std::chrono::steady_clock::now(), deadline);
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
+    // Several threads at once until the pool holds more than one connection, so the call
+    // after the ending meets a dead connection again if it is retried on a pooled one.
+    for (int round = 0; round < 50 && pqxx::nontransaction(admin).exec1(kOtherClients)[0].as<int>() < 2; ++round) {
+        std::vector<std::thread> threads;
+        for (int t = 0; t < 4; ++t)
+            threads.emplace_back([&] {
+                for (int i = 0; i < 20; ++i) storage->users().count();
+            });
+        for (auto& t : threads) t.join();
     }
+    ASSERT_GE(endOtherClients(admin), 2);
 
     // A read runs again on a fresh connection; the connections opened before are not reused,
     // so a write after it finds a working one too.
     EXPECT_EQ(storage->users().count(), 1u);
     EXPECT_TRUE(storage->users().insert("second", "hash", "user"));
     EXPECT_EQ(storage->users().list().size(), 2u);
+}
+
+TEST(PostgresStorage, ATransactionOnAnEndedConnectionStartsAgain)
+{
+    TemporaryPostgres pg;
+    auto storage = open(pg.uri(), 2);
+    const auto user = storage->users().insert("user", "hash", "user");
+    ASSERT_TRUE(user);
+    pqxx::connection admin(pg.uri());
+    ASSERT_EQ(endOtherClients(admin), 1);
+    // A login (a write, in a transaction) as the first call after the server ended the
+    // connection: nothing reached the server before the connection was found dead, so it runs
+    // again on a fresh one instead of failing.
+    storage->sessions().insert("token", user->id, 2'000'000'000, 1'000'000'000);
+    EXPECT_EQ(storage->sessions().userOf("token", 1'000'000'000), user->id);
 }
 
 TEST(PostgresStorage, FailuresBecomeStoreErrorCodes)
@@ -301,7 +324,8 @@ TEST(PostgresStorage, ConcurrentInsertsOfOneNameMakeOneAccount)
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 8);
     // The same name several times as typed, and in other cases.
-    const std::vector<std::string> spellings{"carol", "carol", "Carol", "CAROL", "carol", "cArOl", "CAROL", "carol"};
+    const std::vector<std::string> spellings{"carol", "carol", "Carol", "CAROL",
+                                             "carol", "cArOl", "CAROL", "carol"};
     std::atomic<int> made{0}, failed{0}, ready{0};
     std::vector<std::thread> threads;
     for (const std::string& name : spellings)
@@ -351,7 +375,8 @@ TEST(PostgresStorage, ConcurrentDemotionsLeaveAnAdministrator)
         std::thread ta(demote, a->id, std::ref(outcomeA)), tb(demote, b->id, std::ref(outcomeB));
         ta.join();
         tb.join();
-        EXPECT_EQ((outcomeA == server::UserChangeOutcome::Changed) + (outcomeB == server::UserChangeOutcome::Changed), 1)
+        using server::UserChangeOutcome;
+        EXPECT_EQ((outcomeA == UserChangeOutcome::Changed) + (outcomeB == UserChangeOutcome::Changed), 1)
             << "round " << round;
         int admins = 0;
         for (const auto& u : storage->users().list()) admins += u.role == "admin" && !u.disabled;
