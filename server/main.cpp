@@ -92,6 +92,8 @@ int main(int argc, char** argv)
         // A broken embedded schema shows now, not on the first request.
         SchemaValidator::protocol();
         TlmhubApp app(options);
+        std::cout << "storage: " << app.storage().describe() << ", schema version "
+                  << app.storage().schemaVersion() << "\n";
         std::string seedLog;
         if (const auto generated = app.bootstrap(seedLog))
             std::cout << "created user 'admin' with password: " << *generated
