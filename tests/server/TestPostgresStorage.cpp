@@ -142,8 +142,8 @@ TEST(PostgresStorage, ResultBlobsRoundTripByteForByte)
 
     std::string everyByte(256, '\0');
     for (int i = 0; i < 256; ++i) everyByte[static_cast<std::size_t>(i)] = static_cast<char>(i);
-    // 5 MB of every byte value in an irregular order, with runs of NULs and backslashes (the
-    // bytes text escaping of bytea gets wrong) at both ends.
+    // 5 MB of every byte value in an irregular order, with runs of backslashes and NULs at the
+    // ends (what bytea in text form, escaped wrongly, would mangle or cut off).
     std::string large(5 * 1024 * 1024, '\0');
     for (std::size_t i = 0; i < large.size(); ++i) large[i] = static_cast<char>((i * 2654435761u) >> 7);
     large.replace(0, 1000, 1000, '\\');
