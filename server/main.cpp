@@ -1,9 +1,11 @@
 // tlmhub-server: the simulation service. Parses the start-up options, opens the data
 // directory, seeds the examples, then serves HTTP and WebSocket until SIGTERM or SIGINT.
+// With --backup or --restore it does only that to the database and exits.
 #include "server/app/ServerOptions.h"
 #include "server/app/TlmhubApp.h"
 #include "server/http/Listener.h"
 #include "server/protocol/SchemaValidator.h"
+#include "server/store/sqlite/SqliteStorage.h"
 
 #include "core/ComponentLibrary.h"
 #include "core/FileAccess.h"
@@ -11,11 +13,55 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <thread>
 
 using namespace tlmhub::server;
 namespace net = boost::asio;
+namespace fs = std::filesystem;
+
+namespace {
+
+// --backup FILE or --restore FILE (docs/storage.md); returns the exit status.
+int backupOrRestore(const ServerOptions& options)
+{
+    if (isPostgresUri(options.database)) {
+        std::cerr << "tlmhub-server: a PostgreSQL database is backed up with pg_dump and restored with "
+                     "pg_restore (see docs/storage.md)\n";
+        return 2;
+    }
+    StorageConfig config = storageConfig(options);
+    const fs::path database = config.database;
+    try {
+        if (!options.backupFile.empty()) {
+            // Opening would make an empty database where there is none.
+            if (!fs::exists(database))
+                throw StoreError(StoreErrc::Unavailable, "there is no database " + database.string() + " (see --data-dir)");
+            // One connection, and no disk reserve: a server may be using the database meanwhile.
+            config.maxConnections = 1;
+            config.reserveBytes = 0;
+            const auto storage = openStorage(config);
+            storage->backup(options.backupFile);
+            std::cout << "backup of " << storage->describe() << " written to " << options.backupFile << " ("
+                      << fs::file_size(options.backupFile) << " bytes, schema version " << storage->schemaVersion()
+                      << ")\n";
+        } else {
+            fs::create_directories(options.dataDir);
+            const bool replacing = fs::exists(database);
+            restoreSqliteBackup(options.restoreFile, database);
+            std::cout << "restored " << options.restoreFile << " into " << database.string();
+            if (replacing) std::cout << "; the previous database is kept as " << database.string() << ".before-restore";
+            std::cout << "\n";
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "tlmhub-server: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -29,6 +75,7 @@ int main(int argc, char** argv)
         std::cout << help;
         return 0;
     }
+    if (!options.backupFile.empty() || !options.restoreFile.empty()) return backupOrRestore(options);
     // Models come from users: they must not read or write the host's files.
     tlmhub::setModelFileAccess(false);
     // Component libraries run code with the server's rights: only this start-up flag,
@@ -45,6 +92,8 @@ int main(int argc, char** argv)
         // A broken embedded schema shows now, not on the first request.
         SchemaValidator::protocol();
         TlmhubApp app(options);
+        std::cout << "storage: " << app.storage().describe() << ", schema version "
+                  << app.storage().schemaVersion() << "\n";
         std::string seedLog;
         if (const auto generated = app.bootstrap(seedLog))
             std::cout << "created user 'admin' with password: " << *generated

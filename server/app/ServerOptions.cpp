@@ -13,6 +13,13 @@ const std::string kHelp = std::string(
     "usage: tlmhub-server [options]\n"
     "  --listen HOST:PORT       address to listen on (default 127.0.0.1:8080; port 0 = any free)\n"
     "  --data-dir DIR           SQLite database directory (default ./data)\n"
+    "  --database URI           a PostgreSQL database (postgresql://user@host:port/db) instead\n"
+    "                           of SQLite in the data directory (docs/storage.md)\n"
+    "  --backup FILE            write a consistent copy of the SQLite database to FILE (a new\n"
+    "                           file) and exit; works while a server runs on the data directory\n"
+    "  --restore FILE           replace the SQLite database with the backup FILE and exit (the\n"
+    "                           server must be stopped; the old file is kept as\n"
+    "                           tlmhub.sqlite.before-restore)\n"
     "  --web-root DIR           built web app to serve (default web/dist)\n"
     "  --examples-dir DIR       seed *.hmf found here as examples on first sight (repeatable;\n"
     "                           default ./examples)\n"
@@ -73,6 +80,16 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             if (ok) o.host = value.substr(0, colon);
         } else if (flag == "--data-dir") {
             o.dataDir = value;
+        } else if (flag == "--database") {
+            if (!isPostgresUri(value)) {
+                error = "--database takes a postgresql:// URI; SQLite is chosen with --data-dir";
+                return false;
+            }
+            o.database = value;
+        } else if (flag == "--backup") {
+            o.backupFile = value;
+        } else if (flag == "--restore") {
+            o.restoreFile = value;
         } else if (flag == "--web-root") {
             o.webRoot = value;
         } else if (flag == "--examples-dir") {
@@ -124,6 +141,10 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             error = "bad value '" + value + "' for " + flag;
             return false;
         }
+    }
+    if (!o.backupFile.empty() && !o.restoreFile.empty()) {
+        error = "--backup and --restore cannot be given together";
+        return false;
     }
     if (!examplesGiven && std::filesystem::is_directory("examples"))
         o.exampleDirs.push_back("examples");

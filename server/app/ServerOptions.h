@@ -16,6 +16,9 @@ struct ServerOptions {
     std::string dataDir = "data";
     // Empty: the embedded SQLite file <dataDir>/tlmhub.sqlite; else a postgresql:// URI.
     std::string database;
+    // Non-empty: write a backup of the database to this file, or restore the database from
+    // this file, and exit without serving (docs/storage.md).
+    std::string backupFile, restoreFile;
     std::string webRoot = "web/dist";
     std::vector<std::string> exampleDirs;       // default: examples (if it exists)
     std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only

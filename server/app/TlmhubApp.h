@@ -31,6 +31,7 @@ public:
                                                       std::shared_ptr<WebSocketSender> sender,
                                                       Response& refusal) override;
     int interruptedAtStart() const { return mInterruptedAtStart; }
+    Storage& storage() { return *mStorage; }
 
 private:
     struct Route {

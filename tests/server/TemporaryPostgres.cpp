@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/socket.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -74,6 +75,7 @@ int spawn(const std::vector<std::string>& args, const std::filesystem::path& log
     for (auto& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
     const std::string dir = cwd.string();
+    const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) {
         ::close(logFd);
@@ -88,6 +90,12 @@ int spawn(const std::vector<std::string>& args, const std::filesystem::path& log
             (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
             ::_exit(126);
         }
+        // A test process that dies without its destructors (a crash, a sanitizer abort, ctest's
+        // timeout) takes its server along (SIGQUIT: immediate shutdown) instead of leaving it
+        // running. (Linux sends it when the thread that forked ends: construct TemporaryPostgres
+        // on a thread that lives as long as it.) Set after the user change, which clears it;
+        // the parent may already be gone by then.
+        if (::prctl(PR_SET_PDEATHSIG, SIGQUIT) != 0 || ::getppid() != parent) ::_exit(126);
         if (::chdir(dir.c_str()) != 0) ::_exit(126);
         ::execv(argv[0], argv.data());
         static const char msg[] = "TemporaryPostgres: exec failed\n";

@@ -7,6 +7,7 @@
 #include "server/store/Storage.h"
 #include "server/store/StoreError.h"
 #include "server/store/postgres/PostgresConnection.h"
+#include "server/store/postgres/PostgresDatabase.h"
 
 #include <gtest/gtest.h>
 #include <pqxx/pqxx>
@@ -21,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -119,7 +121,8 @@ TEST(PostgresStorage, RefusesADatabaseANewerServerMigrated)
     {
         pqxx::connection admin(pg.uri());
         pqxx::work tx(admin);
-        tx.exec_params0("INSERT INTO schema_migrations(version, applied_at) VALUES($1, 0)", server::kSchemaVersion + 1);
+        tx.exec_params0("INSERT INTO schema_migrations(version, applied_at) VALUES($1, 0)",
+                        server::kSchemaVersion + 1);
         tx.commit();
     }
     try {
@@ -139,8 +142,8 @@ TEST(PostgresStorage, ResultBlobsRoundTripByteForByte)
 
     std::string everyByte(256, '\0');
     for (int i = 0; i < 256; ++i) everyByte[static_cast<std::size_t>(i)] = static_cast<char>(i);
-    // 5 MB of every byte value in an irregular order, with runs of NULs and backslashes (the
-    // bytes text escaping of bytea gets wrong) at both ends.
+    // 5 MB of every byte value in an irregular order, with runs of backslashes and NULs at the
+    // ends (what bytea in text form, escaped wrongly, would mangle or cut off).
     std::string large(5 * 1024 * 1024, '\0');
     for (std::size_t i = 0; i < large.size(); ++i) large[i] = static_cast<char>((i * 2654435761u) >> 7);
     large.replace(0, 1000, 1000, '\\');
@@ -192,45 +195,66 @@ TEST(PostgresStorage, RealsAndNullsRoundTripExactly)
     EXPECT_EQ(storage->models().summary(*model)->name, "renamed");
 }
 
+// Client connections to the test database other than `admin`'s own (an autovacuum worker may
+// be at work on the database too).
+constexpr const char* kOtherClients = "SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
+                                      " AND datname = current_database() AND backend_type = 'client backend'";
+
+// Ends every other client connection to the database, as an administrator or a restarting
+// server would, and returns how many once they are gone (pg_terminate_backend only signals).
+int endOtherClients(pqxx::connection& admin)
+{
+    pqxx::nontransaction tx(admin);
+    const int ended = tx.exec1("SELECT COUNT(pg_terminate_backend(pid)) FROM pg_stat_activity"
+                               " WHERE pid <> pg_backend_pid() AND datname = current_database()"
+                               " AND backend_type = 'client backend'")[0]
+                          .as<int>();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (tx.exec1(kOtherClients)[0].as<int>() > 0) {
+        if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error("backends not ended in 10 s");
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return ended;
+}
+
 TEST(PostgresStorage, ReplacesConnectionsTheServerEnded)
 {
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 4);
     ASSERT_TRUE(storage->users().insert("admin", "hash", "admin"));
     pqxx::connection admin(pg.uri());
-    {
-        pqxx::nontransaction tx(admin);
-        // Client connections only: an autovacuum worker may be at work on the database too.
-        const char* const others = "SELECT COUNT(*) FROM pg_stat_activity WHERE pid <> pg_backend_pid()"
-                                   " AND datname = current_database() AND backend_type = 'client backend'";
-        // Several threads at once until the pool holds more than one connection, so the call
-        // after the ending meets a dead connection again if it is retried on a pooled one.
-        for (int round = 0; round < 50 && tx.exec1(others)[0].as<int>() < 2; ++round) {
-            std::vector<std::thread> threads;
-            for (int t = 0; t < 4; ++t)
-                threads.emplace_back([&] {
-                    for (int i = 0; i < 20; ++i) storage->users().count();
-                });
-            for (auto& t : threads) t.join();
-        }
-        const int ended = tx.exec1("SELECT COUNT(pg_terminate_backend(pid)) FROM pg_stat_activity"
-                                   " WHERE pid <> pg_backend_pid() AND datname = current_database()"
-                                   " AND backend_type = 'client backend'")[0]
-                              .as<int>();
-        ASSERT_GE(ended, 2);
-        // pg_terminate_backend only signals: wait until the backends are gone.
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-        while (tx.exec1(others)[0].as<int>() > 0) {
-            ASSERT_LT(std::chrono::steady_clock::now(), deadline);
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
+    // Several threads at once until the pool holds more than one connection, so the call
+    // after the ending meets a dead connection again if it is retried on a pooled one.
+    for (int round = 0; round < 50 && pqxx::nontransaction(admin).exec1(kOtherClients)[0].as<int>() < 2; ++round) {
+        std::vector<std::thread> threads;
+        for (int t = 0; t < 4; ++t)
+            threads.emplace_back([&] {
+                for (int i = 0; i < 20; ++i) storage->users().count();
+            });
+        for (auto& t : threads) t.join();
     }
+    ASSERT_GE(endOtherClients(admin), 2);
 
     // A read runs again on a fresh connection; the connections opened before are not reused,
     // so a write after it finds a working one too.
     EXPECT_EQ(storage->users().count(), 1u);
     EXPECT_TRUE(storage->users().insert("second", "hash", "user"));
     EXPECT_EQ(storage->users().list().size(), 2u);
+}
+
+TEST(PostgresStorage, ATransactionOnAnEndedConnectionStartsAgain)
+{
+    TemporaryPostgres pg;
+    auto storage = open(pg.uri(), 2);
+    const auto user = storage->users().insert("user", "hash", "user");
+    ASSERT_TRUE(user);
+    pqxx::connection admin(pg.uri());
+    ASSERT_EQ(endOtherClients(admin), 1);
+    // A login (a write, in a transaction) as the first call after the server ended the
+    // connection: nothing reached the server before the connection was found dead, so it runs
+    // again on a fresh one instead of failing.
+    storage->sessions().insert("token", user->id, 2'000'000'000, 1'000'000'000);
+    EXPECT_EQ(storage->sessions().userOf("token", 1'000'000'000), user->id);
 }
 
 TEST(PostgresStorage, FailuresBecomeStoreErrorCodes)
@@ -268,6 +292,17 @@ TEST(PostgresStorage, FailuresBecomeStoreErrorCodes)
     }
 }
 
+TEST(PostgresStorage, DescribesTheServerWithoutThePassword)
+{
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub:secret@db.example:5433/lab?sslmode=require"),
+              "tlmhub@db.example:5433/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgres://db.example/lab"), "db.example:5432/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@[::1]:6000/lab"), "tlmhub@[::1]:6000/lab");
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@[::1]/lab"), "tlmhub@[::1]:5432/lab");
+    // libpq's defaults: the local server, and a database named as the user.
+    EXPECT_EQ(server::postgresEndpoint("postgresql://tlmhub@"), "tlmhub@localhost:5432/tlmhub");
+}
+
 TEST(PostgresStorage, UnreachableServerIsUnavailableAtOnce)
 {
     const unsigned short port = unusedPort();
@@ -289,16 +324,22 @@ TEST(PostgresStorage, ConcurrentInsertsOfOneNameMakeOneAccount)
     TemporaryPostgres pg;
     auto storage = open(pg.uri(), 8);
     // The same name several times as typed, and in other cases.
-    const std::vector<std::string> spellings{"carol", "carol", "Carol", "CAROL", "carol", "cArOl", "CAROL", "carol"};
-    std::atomic<int> made{0}, ready{0};
+    const std::vector<std::string> spellings{"carol", "carol", "Carol", "CAROL",
+                                             "carol", "cArOl", "CAROL", "carol"};
+    std::atomic<int> made{0}, failed{0}, ready{0};
     std::vector<std::thread> threads;
     for (const std::string& name : spellings)
         threads.emplace_back([&, name] {
             ++ready;
             while (ready < static_cast<int>(spellings.size())) std::this_thread::yield();
-            if (storage->users().insert(name, "hash", "user")) ++made;
+            try {
+                if (storage->users().insert(name, "hash", "user")) ++made;
+            } catch (const StoreError&) {   // a taken name must come back as nullopt
+                ++failed;
+            }
         });
     for (auto& t : threads) t.join();
+    EXPECT_EQ(failed, 0);
     EXPECT_EQ(made, 1);
     EXPECT_EQ(storage->users().count(), 1u);
 }
@@ -325,12 +366,17 @@ TEST(PostgresStorage, ConcurrentDemotionsLeaveAnAdministrator)
             ++ready;
             while (ready < 2) std::this_thread::yield();
             server::User updated;
-            outcome = storage->users().change(id, {.role = "user", .disabled = {}}, updated);
+            try {
+                outcome = storage->users().change(id, {.role = "user", .disabled = {}}, updated);
+            } catch (const StoreError& e) {
+                ADD_FAILURE() << e.what();
+            }
         };
         std::thread ta(demote, a->id, std::ref(outcomeA)), tb(demote, b->id, std::ref(outcomeB));
         ta.join();
         tb.join();
-        EXPECT_EQ((outcomeA == server::UserChangeOutcome::Changed) + (outcomeB == server::UserChangeOutcome::Changed), 1)
+        using server::UserChangeOutcome;
+        EXPECT_EQ((outcomeA == UserChangeOutcome::Changed) + (outcomeB == UserChangeOutcome::Changed), 1)
             << "round " << round;
         int admins = 0;
         for (const auto& u : storage->users().list()) admins += u.role == "admin" && !u.disabled;

@@ -43,7 +43,8 @@ StoreError toStoreError(const std::exception& e)
     // libpqxx 6 throws these two (SQLSTATE 40001, 40P01) as transaction_rollback, not sql_error.
     if (dynamic_cast<const pqxx::serialization_failure*>(&e) || dynamic_cast<const pqxx::deadlock_detected*>(&e))
         return StoreError(StoreErrc::Busy, what);
-    if (const auto* sql = dynamic_cast<const pqxx::sql_error*>(&e)) return StoreError(codeOfSqlState(sql->sqlstate()), what);
+    if (const auto* sql = dynamic_cast<const pqxx::sql_error*>(&e))
+        return StoreError(codeOfSqlState(sql->sqlstate()), what);
     return StoreError(StoreErrc::Internal, what);
 }
 

@@ -38,14 +38,21 @@ public:
     template <typename... Args>
     pqxx::result exec(pqxx::transaction_base& tx, const PgStatement& statement, Args&&... args)
     {
+        mSentStatement = true;
         return tx.exec_prepared(prepared(statement), std::forward<Args>(args)...);
     }
+
+    // Whether exec() has sent a statement since forgetSentStatements(): a call that failed
+    // before it did (e.g. opening its transaction on a dead connection) changed nothing.
+    bool sentStatement() const { return mSentStatement; }
+    void forgetSentStatements() { mSentStatement = false; }
 
 private:
     const char* prepared(const PgStatement& statement);
 
     pqxx::connection mConnection;
     std::uint64_t mGeneration;
+    bool mSentStatement = false;
     std::unordered_set<std::string> mPrepared;
 };
 

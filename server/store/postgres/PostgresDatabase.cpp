@@ -49,8 +49,9 @@ ConnectionPool<PostgresConnection>::Lease PostgresDatabase::acquire()
     for (;;) {
         try {
             auto lease = mPool.acquire();
-            if (lease->generation() == mGeneration.load()) return lease;
-            lease.discard();   // opened before a connection broke: likely broken too
+            if (lease->generation() == mGeneration.load() && lease->isOpen()) return lease;
+            // Opened before a connection broke (likely broken too), or known closed already.
+            lease.discard();
         } catch (const pqxx::pqxx_exception& e) {
             throw StoreError(StoreErrc::Unavailable,
                              "cannot connect to PostgreSQL " + mEndpoint + ": " + e.base().what());

@@ -20,7 +20,8 @@ namespace tlmhub::server {
 
 // Whether a call may simply run again when its connection broke midway: true for reads and
 // for single statements whose second run changes nothing the first did not. Other writes
-// might have been committed before the connection went, so they fail (Unavailable) instead.
+// might have been committed before the connection went, so they fail (Unavailable) instead,
+// unless the connection was found dead before they sent anything.
 enum class Idempotent { No, Yes };
 
 class PostgresDatabase {
@@ -35,14 +36,15 @@ public:
     // Runs `work(PostgresConnection&)` on a leased connection. A transaction `work` opens is
     // rolled back by its destructor when `work` throws; serialization failures and deadlocks
     // (the transaction rolled back whole) run it again a few times before giving up with Busy.
-    // A connection found broken is closed; an idempotent `work` then runs once more on a fresh
-    // one, anything else fails with Unavailable.
+    // A connection found broken is closed; `work` then runs once more on a fresh one if it is
+    // idempotent or had not sent a statement yet, else fails with Unavailable.
     template <typename Work>
     auto run(Idempotent idempotent, Work&& work) -> decltype(work(std::declval<PostgresConnection&>()))
     {
         bool reconnected = false;
         for (int attempt = 1;; ++attempt) {
             auto lease = acquire();
+            lease->forgetSentStatements();
             try {
                 return work(*lease);
             } catch (const pqxx::serialization_failure& e) {
@@ -57,8 +59,8 @@ public:
                 lease.discard();
                 distrustOpenConnections();
                 // A commit whose outcome is unknown (in_doubt_error) is never run again.
-                const bool again = idempotent == Idempotent::Yes && !reconnected &&
-                                   !dynamic_cast<const pqxx::in_doubt_error*>(&e);
+                const bool harmless = idempotent == Idempotent::Yes || !lease->sentStatement();
+                const bool again = harmless && !reconnected && !dynamic_cast<const pqxx::in_doubt_error*>(&e);
                 if (!again)
                     throw StoreError(StoreErrc::Unavailable,
                                      "lost the connection to PostgreSQL " + mEndpoint + ": " + e.base().what());
@@ -71,7 +73,7 @@ public:
     static constexpr int kMaxAttempts = 4;
 
 private:
-    // A connection that was opened after the last broken one; throws StoreError(Unavailable)
+    // An open connection that was opened after the last broken one; throws StoreError(Unavailable)
     // naming the server when none can be opened.
     ConnectionPool<PostgresConnection>::Lease acquire();
     void distrustOpenConnections() { ++mGeneration; }

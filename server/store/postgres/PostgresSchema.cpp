@@ -15,8 +15,8 @@ constexpr long long kMigrationLock = 0x746c6d6875620001;
 
 // Version 1: the tables SQLite's version 1 has, in PostgreSQL types. There are no legacy
 // rows here, so names are unique regardless of case by an index (SQLite's are unique as
-// typed, and only compared regardless of case). Owners and models are not foreign keys of jobs: a job's record outlives a deleted
-// model.
+// typed, and only compared regardless of case). Owners and models are not foreign keys of
+// jobs: a job's record outlives a deleted model.
 void createTables(pqxx::transaction_base& tx)
 {
     tx.exec0("CREATE TABLE users ("

@@ -17,14 +17,4 @@ int SqliteStorage::schemaVersion()
 
 std::string SqliteStorage::describe() const { return "SQLite " + mDb.path(); }
 
-void SqliteStorage::backup(const std::filesystem::path& file)
-{
-    // VACUUM INTO reads in one transaction, so the copy is one consistent state of the file.
-    mDb.run([&](SqliteConnection& c) {
-        SQLite::Statement vacuum(c.db(), "VACUUM INTO ?");
-        vacuum.bind(1, file.string());
-        vacuum.exec();
-    });
-}
-
 } // namespace tlmhub::server
