@@ -64,6 +64,11 @@ std::string backendName(const ::testing::TestParamInfo<Backend>& info)
     return info.param == Backend::SQLite ? "SQLite" : "PostgreSQL";
 }
 
+void PrintTo(Backend backend, std::ostream* out)
+{
+    *out << (backend == Backend::SQLite ? "SQLite" : "PostgreSQL");
+}
+
 server::JobRequest jobRequest(std::int64_t ownerId)
 {
     server::JobRequest r;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <ostream>
 #include <string>
 
 namespace tlmhub::test {
@@ -19,6 +20,8 @@ enum class Backend { SQLite, PostgreSQL };
 
 // "SQLite" / "PostgreSQL": the last part of every test name, which ctest's two filters match.
 std::string backendName(const ::testing::TestParamInfo<Backend>& info);
+// So a failure says "GetParam() = PostgreSQL" rather than showing the enum's bytes.
+void PrintTo(Backend backend, std::ostream* out);
 
 class FreshDatabase {
 public:
