@@ -10,6 +10,13 @@ bool isPostgresUri(const std::string& database)
     return database.starts_with("postgresql://") || database.starts_with("postgres://");
 }
 
+StoreError schemaNewerThanThisServer(int version)
+{
+    return StoreError(StoreErrc::Corrupt, "the database is at schema version " + std::to_string(version) +
+                                              ", newer than this server's " + std::to_string(kSchemaVersion) +
+                                              "; run a newer tlmhub-server");
+}
+
 std::unique_ptr<Storage> openStorage(const StorageConfig& config)
 {
     if (isPostgresUri(config.database)) return openPostgresStorage(config);

@@ -11,6 +11,7 @@
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
 #include "server/store/SessionStore.h"
+#include "server/store/StoreError.h"
 #include "server/store/UserStore.h"
 
 #include <cstddef>
@@ -66,5 +67,9 @@ inline constexpr int kSchemaVersion = 2;
 std::unique_ptr<Storage> openStorage(const StorageConfig& config);
 
 bool isPostgresUri(const std::string& database);
+
+// The error for a database at schema `version`, newer than kSchemaVersion: this build does not
+// know that schema, so it must not write it.
+StoreError schemaNewerThanThisServer(int version);
 
 } // namespace tlmhub::server

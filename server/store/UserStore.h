@@ -23,6 +23,13 @@ struct UserChange {
 
 enum class UserChangeOutcome { Changed, NoSuchUser, LastAdmin };
 
+// The rule of UserStore::change, for the back ends to apply to the accounts they read (and
+// locked) in the change's transaction: `updated` gets account `id` of `all` with `change`
+// applied, unless that would leave no enabled administrator (AccessPolicy's
+// administersServer) or there is no such account.
+UserChangeOutcome applyUserChange(const std::vector<User>& all, std::int64_t id, const UserChange& change,
+                                  User& updated);
+
 class UserStore {
 public:
     virtual ~UserStore() = default;

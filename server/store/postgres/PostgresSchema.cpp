@@ -106,10 +106,7 @@ void migratePostgres(PostgresConnection& connection)
                      " version INTEGER PRIMARY KEY, applied_at BIGINT NOT NULL)");
         const int version = versionIn(tx);
         if (version > kSchemaVersion)
-            throw StoreError(StoreErrc::Corrupt,
-                             "the database is at schema version " + std::to_string(version) +
-                                 ", newer than this server's " + std::to_string(kSchemaVersion) +
-                                 "; run a newer tlmhub-server");
+            throw schemaNewerThanThisServer(version);
         if (version == kSchemaVersion) return;
         kMigrations[static_cast<std::size_t>(version)](tx);
         tx.exec_params0("INSERT INTO schema_migrations(version, applied_at) VALUES($1, $2)", version + 1,

@@ -1,8 +1,6 @@
-#include "server/auth/AccessPolicy.h"
 #include "server/store/UnixTime.h"
 #include "server/store/postgres/PostgresStores.h"
 
-#include <algorithm>
 
 namespace tlmhub::server {
 
@@ -137,24 +135,15 @@ UserChangeOutcome PostgresUserStore::change(std::int64_t id, const UserChange& c
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::work tx(c.raw());
-        std::vector<User> others;
-        std::optional<User> user;
-        for (const auto& row : c.exec(tx, kLockAll)) {
-            User u = readUser(row);
-            if (u.id == id) user = std::move(u);
-            else others.push_back(std::move(u));
-        }
-        if (!user) return UserChangeOutcome::NoSuchUser;
-        const bool administeredBefore = administersServer(*user);
-        if (change.role) user->role = *change.role;
-        if (change.disabled) user->disabled = *change.disabled;
-        // Someone must be left who can administer the server; AccessPolicy says who can.
-        if (administeredBefore && !administersServer(*user) && std::ranges::none_of(others, administersServer))
-            return UserChangeOutcome::LastAdmin;
-        c.exec(tx, kWrite, user->role, user->disabled, id);
+        std::vector<User> all;
+        for (const auto& row : c.exec(tx, kLockAll)) all.push_back(readUser(row));
+        User changed;
+        const UserChangeOutcome outcome = applyUserChange(all, id, change, changed);
+        if (outcome != UserChangeOutcome::Changed) return outcome;
+        c.exec(tx, kWrite, changed.role, changed.disabled, id);
         tx.commit();
-        updated = *user;
-        return UserChangeOutcome::Changed;
+        updated = changed;
+        return outcome;
     });
 }
 

@@ -100,10 +100,7 @@ void migrateSqlite(SqliteConnection& connection)
         SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
         const int version = sqliteSchemaVersion(connection);
         if (version > kSchemaVersion)
-            throw StoreError(StoreErrc::Corrupt,
-                             "the database is at schema version " + std::to_string(version) +
-                                 ", newer than this server's " + std::to_string(kSchemaVersion) +
-                                 "; run a newer tlmhub-server");
+            throw schemaNewerThanThisServer(version);
         if (version == kSchemaVersion) return;
         kMigrations[static_cast<std::size_t>(version)](db);
         SQLite::Statement record(db, "INSERT INTO schema_migrations(version, applied_at) VALUES(?, ?)");

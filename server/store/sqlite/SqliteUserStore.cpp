@@ -1,10 +1,8 @@
-#include "server/auth/AccessPolicy.h"
 #include "server/store/UnixTime.h"
 #include "server/store/sqlite/SqliteStores.h"
 
 #include <SQLiteCpp/Transaction.h>
 
-#include <algorithm>
 
 namespace tlmhub::server {
 
@@ -132,31 +130,22 @@ UserChangeOutcome SqliteUserStore::change(std::int64_t id, const UserChange& cha
     return mDb.run([&](SqliteConnection& c) {
         // IMMEDIATE: no other writer between reading who administers and writing the change.
         SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
-        std::vector<User> others;
-        std::optional<User> user;
+        std::vector<User> all;
         {
             auto q = c.prepared("SELECT id, username, role, disabled FROM users");
-            while (q->executeStep()) {
-                User u = readUser(*q);
-                if (u.id == id) user = std::move(u);
-                else others.push_back(std::move(u));
-            }
+            while (q->executeStep()) all.push_back(readUser(*q));
         }
-        if (!user) return UserChangeOutcome::NoSuchUser;
-        const bool administeredBefore = administersServer(*user);
-        if (change.role) user->role = *change.role;
-        if (change.disabled) user->disabled = *change.disabled;
-        // Someone must be left who can administer the server; AccessPolicy says who can.
-        if (administeredBefore && !administersServer(*user) && std::ranges::none_of(others, administersServer))
-            return UserChangeOutcome::LastAdmin;
+        User changed;
+        const UserChangeOutcome outcome = applyUserChange(all, id, change, changed);
+        if (outcome != UserChangeOutcome::Changed) return outcome;
         auto write = c.prepared("UPDATE users SET role = ?, disabled = ? WHERE id = ?");
-        write->bind(1, user->role);
-        write->bind(2, user->disabled ? 1 : 0);
+        write->bind(1, changed.role);
+        write->bind(2, changed.disabled ? 1 : 0);
         write->bind(3, id);
         write->exec();
         transaction.commit();
-        updated = *user;
-        return UserChangeOutcome::Changed;
+        updated = changed;
+        return outcome;
     });
 }
 
