@@ -10,6 +10,7 @@
 #include "core/hmf/HmfLoader.h"
 #include "server/store/ResultBlob.h"
 #include "server/store/Storage.h"
+#include "TemporaryDirectory.h"
 #include "TemporaryPostgres.h"
 
 #include <benchmark/benchmark.h>
@@ -41,12 +42,7 @@ std::string servoResultBlob()
 
 class TemporaryDir {
 public:
-    TemporaryDir()
-    {
-        std::string pattern = (std::filesystem::temp_directory_path() / "tlmhub-bench-XXXXXX").string();
-        if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-        mPath = pattern;
-    }
+    TemporaryDir() : mPath(test::makeTemporaryDirectory("tlmhub-bench-")) {}
     ~TemporaryDir() { std::filesystem::remove_all(mPath); }
     const std::filesystem::path& path() const { return mPath; }
 

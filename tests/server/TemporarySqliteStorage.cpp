@@ -1,15 +1,12 @@
 #include "TemporarySqliteStorage.h"
 
-#include <cstdlib>
-#include <stdexcept>
+#include "TemporaryDirectory.h"
 
 namespace tlmhub::test {
 
 TemporarySqliteStorage::TemporarySqliteStorage()
 {
-    std::string pattern = (std::filesystem::temp_directory_path() / "tlmhub-store-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed for " + pattern);
-    mDir = pattern;
+    mDir = makeTemporaryDirectory("tlmhub-store-");
     mFile = mDir / "tlmhub.sqlite";
     mStorage = server::openStorage(server::StorageConfig{.database = mFile.string(), .reserveBytes = 0});
 }

@@ -1,5 +1,6 @@
 #include "StoreBackends.h"
 
+#include "../TemporaryDirectory.h"
 #include "../TemporaryPostgres.h"
 
 #include "server/store/UnixTime.h"
@@ -49,13 +50,6 @@ public:
 };
 [[maybe_unused]] ::testing::Environment* const gStopPostgres =
     ::testing::AddGlobalTestEnvironment(new StopPostgresAtEnd);
-
-std::filesystem::path makeTemporaryDirectory()
-{
-    std::string pattern = (std::filesystem::temp_directory_path() / "tlmhub-store-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a directory " + pattern);
-    return pattern;
-}
 
 } // namespace
 
@@ -113,7 +107,7 @@ void waitForNextSecond()
     while (server::unixNow() == before) std::this_thread::sleep_for(std::chrono::milliseconds(20));
 }
 
-FreshDatabase::FreshDatabase(Backend backend) : mBackend(backend), mDir(makeTemporaryDirectory())
+FreshDatabase::FreshDatabase(Backend backend) : mBackend(backend), mDir(makeTemporaryDirectory("tlmhub-store-"))
 {
     if (backend == Backend::SQLite) {
         mDatabase = (mDir / "tlmhub.sqlite").string();
