@@ -1,0 +1,79 @@
+#pragma once
+// Studies as stored (tables studies and study_runs): a study is many runs of one model with
+// other parameters (a sweep, a Monte Carlo sensitivity analysis, an optimisation). The study
+// row keeps its request, state and counters; each finished run adds a row with its
+// parameters, its scalar outputs and, when the study keeps full variables, its result
+// (encodeResult's blob, as a job's). Run blobs count against their owner's stored bytes.
+#include "server/jobs/Job.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct StudyInfo {
+    std::int64_t id = 0, ownerId = 0;
+    std::optional<std::int64_t> modelId;
+    std::string kind;                       // sweep, sensitivity, optimise
+    std::string name;
+    JobState state = JobState::Queued;      // the job states, with the same transitions
+    std::int64_t runsTotal = 0;             // planned (optimise: the evaluation budget)
+    std::int64_t runsDone = 0, runsFailed = 0;
+    std::string error;
+    std::int64_t createdAt = 0, startedAt = 0, finishedAt = 0;   // unix s; 0 = not yet
+    std::string summary;                    // JSON text: best point, bands...; "" until set
+};
+
+struct StudyRun {
+    std::int64_t index = 0;                 // 0-based, unique within its study
+    bool ok = true;                         // false: the run failed (error says why)
+    std::string parameters;                 // JSON object text: name -> value
+    std::string outputs;                    // JSON object text: column -> value
+    std::string error;
+    bool hasResult = false;                 // a full result blob is stored
+};
+
+class StudyStore {
+public:
+    virtual ~StudyStore() = default;
+
+    // A new queued study; `request` is the request JSON text (kept to run it again after a
+    // restart). Returns the study id, or nullopt when the owner does not exist.
+    virtual std::optional<std::int64_t> create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
+                                               const std::string& kind, const std::string& name,
+                                               const std::string& request, std::int64_t runsTotal) = 0;
+    virtual std::optional<StudyInfo> info(std::int64_t id) = 0;
+    virtual std::optional<std::string> request(std::int64_t id) = 0;
+    // Newest first.
+    virtual std::vector<StudyInfo> listForOwner(std::int64_t ownerId) = 0;
+    // Oldest first.
+    virtual std::vector<StudyInfo> listInState(JobState state) = 0;
+
+    // queued -> running (sets started_at); false if it is not queued any more.
+    virtual bool markRunning(std::int64_t id) = 0;
+    // Adds a finished run (and its result blob when `resultBlob` is given) and counts it in
+    // runs_done or runs_failed, in one transaction. False when the study is not running or the
+    // run index exists already.
+    virtual bool addRun(std::int64_t studyId, const StudyRun& run, const std::string* resultBlob) = 0;
+    // Replaces the summary JSON while the study runs (best so far).
+    virtual void setSummary(std::int64_t id, const std::string& summary) = 0;
+    // Final state, error, summary and finished_at; false when already finished or gone.
+    virtual bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) = 0;
+    // Start-up after a crash: running studies become interrupted. Returns how many.
+    virtual int markRunningInterrupted() = 0;
+
+    // Runs with index >= fromIndex in index order, at most `limit` (no blobs).
+    virtual std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) = 0;
+    // The stored result of a run, nullopt when there is none.
+    virtual std::optional<std::string> runResult(std::int64_t studyId, std::int64_t index) = 0;
+    // Bytes of run results the owner's studies hold.
+    virtual std::size_t storedBytes(std::int64_t ownerId) = 0;
+
+    // Deletes the study with its runs; works on a full disk too.
+    virtual bool remove(std::int64_t id) = 0;
+};
+
+} // namespace tlmhub::server
