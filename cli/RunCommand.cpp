@@ -6,6 +6,7 @@
 #include "core/Results.h"
 #include "core/Sha256.h"
 #include "core/Simulation.h"
+#include "core/ParameterPath.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <chrono>
@@ -33,6 +34,33 @@ bool writeCsv(const ResultTable& table, const std::string& path, std::string& er
     return ok;
 }
 
+// Every "--param Comp.P=value" in order (Options keeps one value per name).
+std::vector<std::pair<std::string, std::string>> parameterOverrides(const std::vector<std::string>& args)
+{
+    std::vector<std::pair<std::string, std::string>> overrides;
+    for (std::size_t i = 0; i + 1 < args.size(); ++i) {
+        if (args[i] != "--param") continue;
+        const std::string& assignment = args[++i];
+        const std::size_t equals = assignment.find('=');
+        overrides.emplace_back(assignment.substr(0, equals),
+                               equals == std::string::npos ? std::string() : assignment.substr(equals + 1));
+    }
+    return overrides;
+}
+
+// As the server applies a job's overrides: system parameters first, since component values
+// may refer to them.
+Status applyOverrides(System& root, const std::vector<std::pair<std::string, std::string>>& overrides)
+{
+    for (const bool systemParameters : {true, false}) {
+        for (const auto& [path, value] : overrides) {
+            if ((path.find('.') == std::string::npos) != systemParameters) continue;
+            if (Status set = setParameterValue(root, path, value); !set) return set;
+        }
+    }
+    return {};
+}
+
 std::string csvSha256(const ResultTable& table)
 {
     Sha256 hash;
@@ -56,6 +84,17 @@ int runCommand(const std::vector<std::string>& args)
         return 1;
     }
     Model model(std::move(loaded.root));
+    const auto overrides = parameterOverrides(args);
+    for (const auto& [name, value] : overrides) {
+        if (name.empty() || value.empty()) {
+            std::cerr << "error: --param needs Comp.Param=value (or Name=value for a system parameter)\n";
+            return 2;
+        }
+    }
+    if (const Status set = applyOverrides(model.root(), overrides); !set) {
+        std::cerr << "error: " << path << ": " << describe(set) << "\n";
+        return 1;
+    }
     const System& root = model.root();
     double start = root.startTime, stop = root.stopTime, step = root.desiredTimestep;
     double samples = static_cast<double>(root.requestedLogSamples);

@@ -177,6 +177,42 @@ paths = {
                 {"name": "variables", "in": "query", "required": False,
                  "description": "Comma-separated variable names; all when absent",
                  "schema": {"type": "string"}}], tag="jobs")},
+    "/studies": {
+        "get": op("The caller's studies, newest first", {**ok("Studies", "StudyList"), **errors("401")}, tag="studies"),
+        "post": op("Queue a study: a sweep, a sensitivity analysis or an optimisation of one model (docs/studies.md)",
+                   {**ok("Queued", "StudyCreated", "201"), **errors("400", "401", "404", "413", "429")},
+                   body=json_body("StudyCreate"), tag="studies")},
+    "/studies/{id}": {
+        "get": op("A study", {**ok("The study", "StudyInfo"), **errors("401", "404")}, params=[ID], tag="studies"),
+        "delete": op("Cancel a queued or running study (200 when cancelled, 202 while its runs stop); delete a "
+                     "finished one with its runs (204)",
+                     {**ok("The study", "StudyInfo"), "202": {"description": "Cancelling"},
+                      "204": {"description": "Deleted"}, **errors("401", "404")}, params=[ID], tag="studies")},
+    "/studies/{id}/results": {"get": op(
+        "The table of runs finished so far: run, ok, parameters, outputs[, objective]; CSV (%.17g) or JSON "
+        "{columns, rows, errors}",
+        {"200": {"description": "The table", "content": {"application/json": {"schema": {"type": "object"}},
+                                                          "text/csv": {"schema": {"type": "string"}}}},
+         **errors("400", "401", "404")},
+        params=[ID, {"name": "format", "in": "query", "required": False,
+                     "schema": {"type": "string", "enum": ["csv", "json"]}}], tag="studies")},
+    "/studies/{id}/runs/{index}/results": {"get": op(
+        "A run's whole result, kept with outputs.full; the CSV is byte-identical to tlmhub-cli run --csv --param",
+        {"200": {"description": "Results", "content": {"application/json": {"schema": ref("ResultsJson")},
+                                                        "text/csv": {"schema": {"type": "string"}}}},
+         **errors("400", "401", "404")},
+        params=[ID, {"name": "index", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 0}},
+                {"name": "format", "in": "query", "required": False,
+                 "schema": {"type": "string", "enum": ["csv", "json"]}},
+                {"name": "variables", "in": "query", "required": False, "schema": {"type": "string"}}],
+        tag="studies")},
+    "/studies/{id}/bands": {"get": op(
+        "A finished sensitivity study's bands per variable: mean, ±1 and ±2 standard deviations over time",
+        {"200": {"description": "Bands", "content": {"application/json": {"schema": {"type": "object"}},
+                                                      "text/csv": {"schema": {"type": "string"}}}},
+         **errors("400", "401", "404", "409")},
+        params=[ID, {"name": "format", "in": "query", "required": False,
+                     "schema": {"type": "string", "enum": ["csv", "json"]}}], tag="studies")},
     "/ws": {"get": op("WebSocket upgrade for the tlmhub.v1 protocol (see protocol/README.md); the token "
                       "comes as ?token= (browsers) or Authorization: Bearer",
                       {"101": {"description": "Switching protocols"}, **errors("401")},

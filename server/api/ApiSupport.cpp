@@ -6,6 +6,7 @@
 #include "server/protocol/UntrustedJson.h"
 
 #include <charconv>
+#include <sstream>
 
 namespace tlmhub::server {
 
@@ -83,6 +84,15 @@ std::optional<std::int64_t> parseId(const std::string& text)
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), id);
     if (ec != std::errc() || ptr != text.data() + text.size() || id <= 0) return std::nullopt;
     return id;
+}
+
+std::vector<std::string> commaSeparated(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) if (!item.empty()) out.push_back(item);
+    return out;
 }
 
 bool isXmlRequest(const Request& request)

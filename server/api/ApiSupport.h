@@ -24,6 +24,7 @@ namespace tlmhub::server {
 
 struct ServerOptions;
 class HandlerPools;
+class StudyService;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -35,6 +36,7 @@ struct Services {
     LoginRateLimiter& addressLimiter;   // failures per client address (looser: a lab shares one)
     JobQueue& queue;
     StreamHub& streams;
+    StudyService& studies;
     LiveSessions& liveSessions;         // open WebSockets, ended with their login
     const DownloadLinks& downloadLinks;
     HandlerPools& pools;                // where slow work goes instead of an I/O thread
@@ -88,6 +90,8 @@ bool readBody(const Call& call, const std::string& definition, Body& body, Respo
     return true;
 }
 std::optional<std::int64_t> parseId(const std::string& text);
+// "a,b,,c" -> {a, b, c} (a query's list, e.g. variables=).
+std::vector<std::string> commaSeparated(const std::string& text);
 bool isXmlRequest(const Request& request);
 bool wantsXml(const Call& call);
 
@@ -97,6 +101,7 @@ void addUserRoutes(std::vector<RouteSpec>& routes);
 void addModelRoutes(std::vector<RouteSpec>& routes);
 void addJobRoutes(std::vector<RouteSpec>& routes);
 void addCatalogueRoutes(std::vector<RouteSpec>& routes);
+void addStudyRoutes(std::vector<RouteSpec>& routes);
 
 // Summaries as the API shows them.
 protocol::User publicUser(const User& user);

@@ -4,7 +4,6 @@
 #include "server/auth/AccessPolicy.h"
 #include "server/http/HeaderValues.h"
 
-#include <sstream>
 
 namespace tlmhub::server {
 
@@ -99,15 +98,6 @@ Response rerunJob(Services& s, Call& call)
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
-std::vector<std::string> splitList(const std::string& text)
-{
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) if (!item.empty()) out.push_back(item);
-    return out;
-}
-
 Response jobResults(Services& s, Call& call)
 {
     const auto job = visibleJob(s, call.who(), call.params.path["id"]);
@@ -116,7 +106,7 @@ Response jobResults(Services& s, Call& call)
         return apiError(http::status::conflict, "conflict",
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
     const auto& q = call.params.query;
-    const std::vector<std::string> variables = q.count("variables") ? splitList(q.at("variables")) : std::vector<std::string>{};
+    const std::vector<std::string> variables = q.count("variables") ? commaSeparated(q.at("variables")) : std::vector<std::string>{};
     const auto table = s.queue.results().result(job->id, variables);
     if (!table) return apiError(http::status::not_found, "not_found", "the job's results are gone");
     for (const std::string& v : variables)

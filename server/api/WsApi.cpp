@@ -8,6 +8,7 @@
 #include "server/protocol/Messages.generated.h"
 #include "server/protocol/ProtocolConstants.generated.h"
 #include "server/protocol/SchemaValidator.h"
+#include "server/studies/StudyService.h"
 #include "server/protocol/UntrustedJson.h"
 #include "server/store/ModelName.h"
 
@@ -48,7 +49,7 @@ nlohmann::json echoableId(const nlohmann::json& msg)
 bool touchesStorage(const std::string& type)
 {
     return type == "model.open" || type == "model.create" || type == "model.save" || type == "simulate.stop" ||
-           type == "log.subscribe";
+           type == "log.subscribe" || type == "study.subscribe";
 }
 
 FrameEncoding frameEncoding(const std::optional<std::string>& frames)
@@ -73,6 +74,8 @@ void WsApi::onClose()
     mServices.liveSessions.remove(mLiveSession);
     for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
     mSubscriptions.clear();
+    for (const auto& [study, id] : mStudySubscriptions) mServices.studies.hub().unsubscribe(id);
+    mStudySubscriptions.clear();
 }
 
 void WsApi::sendError(const nlohmann::json& id, const std::string& code, const std::string& message)
@@ -155,6 +158,8 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
     if (type == "simulate.start") return startSimulation(msg.get<protocol::SimulateStartRequest>());
     if (type == "simulate.stop") return stopSimulation(msg.get<protocol::SimulateStopRequest>());
     if (type == "log.subscribe") return subscribe(msg.get<protocol::LogSubscribeRequest>());
+    if (type == "study.subscribe") return subscribeStudy(msg.get<protocol::StudySubscribeRequest>());
+    if (type == "study.unsubscribe") return unsubscribeStudy(msg.get<protocol::StudyUnsubscribeRequest>());
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     return mSession.handle(msg);
 }
@@ -311,6 +316,42 @@ WsApi::Reply WsApi::subscribe(const protocol::LogSubscribeRequest& request)
                    rate = request.rate.value_or(protocol::kDefaultFrameRate), encoding = frameEncoding(request.frames)] {
         subscribeToJob(jobId, variables, rate, encoding);
     };
+    return success();
+}
+
+WsApi::Reply WsApi::subscribeStudy(const protocol::StudySubscribeRequest& request)
+{
+    const std::int64_t studyId = request.studyId;
+    const auto study = mServices.studies.store().info(studyId);
+    if (!study || !canControlJob(mUser, study->ownerId)) return failure("not_found", "no such study");
+    if (isFinished(study->state)) {
+        // Finished before this server's time, or long ago: its last event from the store.
+        nlohmann::json event = {{"type", "event.study.progress"}, {"study_id", studyId},
+                                {"state", jobStateName(study->state)}, {"runs_done", study->runsDone},
+                                {"runs_failed", study->runsFailed}, {"runs_total", study->runsTotal},
+                                {"rows", nlohmann::json::array()}};
+        if (!study->error.empty()) event["error"] = study->error;
+        mAfterReply = [sender = mSender, text = event.dump()] { sender->send(text); };
+        return success();
+    }
+    mAfterReply = [this, studyId] {
+        if (mStudySubscriptions.count(studyId)) return;
+        std::weak_ptr<WebSocketSender> weakSender = mSender;
+        const std::uint64_t id = mServices.studies.hub().subscribe(studyId, [weakSender](const nlohmann::json& event) {
+            if (auto sender = weakSender.lock()) sender->send(event.dump());
+        });
+        if (id) mStudySubscriptions.emplace(studyId, id);
+    };
+    return success();
+}
+
+WsApi::Reply WsApi::unsubscribeStudy(const protocol::StudyUnsubscribeRequest& request)
+{
+    const auto found = mStudySubscriptions.find(request.studyId);
+    if (found != mStudySubscriptions.end()) {
+        mServices.studies.hub().unsubscribe(found->second);
+        mStudySubscriptions.erase(found);
+    }
     return success();
 }
 

@@ -10,6 +10,7 @@
 
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 
 namespace tlmhub::server {
@@ -42,6 +43,8 @@ private:
     Reply startSimulation(const protocol::SimulateStartRequest& start);
     Reply stopSimulation(const protocol::SimulateStopRequest& request);
     Reply subscribe(const protocol::LogSubscribeRequest& request);
+    Reply subscribeStudy(const protocol::StudySubscribeRequest& request);
+    Reply unsubscribeStudy(const protocol::StudyUnsubscribeRequest& request);
     // `variables`: at most max_stream_variables are streamed; `rate` in frames per second.
     void subscribeToJob(std::int64_t jobId, std::vector<std::string> variables, double rate, FrameEncoding encoding);
     // On the strand, once a simulate.start's job is compiled and queued (or refused).
@@ -57,6 +60,7 @@ private:
     std::optional<std::int64_t> mModelId;
     std::string mModelName;
     std::vector<std::uint64_t> mSubscriptions;
+    std::map<std::int64_t, std::uint64_t> mStudySubscriptions;   // study -> StudyProgressHub's
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;
     bool mReplyDeferred = false;   // the message being handled is answered later

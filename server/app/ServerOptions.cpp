@@ -31,7 +31,10 @@ const std::string kHelp = std::string(
     "  --max-wall-seconds S     wall time per job (default 300)\n"
     "  --max-running-per-user N jobs running at once per user (default 2)\n"
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
-    "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n") +
+    "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
+    "  --max-study-runs N       runs per study (default 10000)\n"
+    "  --max-studies-per-user N studies queued or running per user (default 2)\n"
+    "  --max-study-bytes N      run results one study keeps (default 536870912)\n") +
     "  --max-body-bytes N       request body limit (default " + std::to_string(protocol::kMaxBodyBytes) + ")\n" +
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
     "  --max-model-components N components and subsystems in a model (default 20000)\n"
@@ -109,6 +112,12 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.maxLogSamples);
         } else if (flag == "--max-wall-seconds") {
             ok = parseNumber(value, o.limits.maxWallSeconds);
+        } else if (flag == "--max-study-runs") {
+            ok = parseNumber(value, o.studyLimits.maxRuns) && o.studyLimits.maxRuns > 0;
+        } else if (flag == "--max-studies-per-user") {
+            ok = parseNumber(value, o.studyLimits.maxActivePerUser) && o.studyLimits.maxActivePerUser > 0;
+        } else if (flag == "--max-study-bytes") {
+            ok = parseNumber(value, o.studyLimits.maxStoredBytes);
         } else if (flag == "--max-running-per-user") {
             ok = parseNumber(value, o.limits.maxRunningPerUser);
         } else if (flag == "--max-queued-per-user") {

@@ -3,6 +3,7 @@
 #include "server/jobs/Job.h"
 #include "server/protocol/ProtocolConstants.generated.h"
 #include "server/store/Storage.h"
+#include "server/studies/StudyExecution.h"
 
 #include <chrono>
 #include <string>
@@ -33,6 +34,7 @@ struct ServerOptions {
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};
     JobLimits limits;
+    StudyLimits studyLimits;
 };
 
 // Where the options say the database is: options.database, else <dataDir>/tlmhub.sqlite.

@@ -36,6 +36,9 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mStreams = std::make_unique<StreamHub>();
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
     mQueue = std::make_unique<JobQueue>(mStorage->jobs(), mStorage->results(), *mStreams, mOptions.limits, workers);
+    mStudyHub = std::make_unique<StudyProgressHub>();
+    mStudies = std::make_unique<StudyService>(mStorage->studies(), mStorage->results(), *mQueue, *mStudyHub,
+                                              mOptions.limits, mOptions.studyLimits, workers);
     if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(mStorage->jobs(), mOptions.resultTtl);
     mLiveSessions = std::make_unique<LiveSessions>(*mTokens, kLoginCheckPeriod);
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
@@ -43,7 +46,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
                                             kHashingQueueLimit);
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mLoginLimiter, *mAddressLimiter,
-                                 *mQueue, *mStreams, *mLiveSessions, *mDownloadLinks, *mPools});
+                                 *mQueue, *mStreams, *mStudies, *mLiveSessions, *mDownloadLinks, *mPools});
 
     std::vector<RouteSpec> routes;
     addCatalogueRoutes(routes);
@@ -51,6 +54,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     addUserRoutes(routes);
     addModelRoutes(routes);
     addJobRoutes(routes);
+    addStudyRoutes(routes);
     for (RouteSpec& r : routes)
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
 }
@@ -72,6 +76,7 @@ std::optional<std::string> TlmhubApp::bootstrap(std::string& log)
 
 void TlmhubApp::startJobs()
 {
+    mStudies->start();
     mQueue->start();
 }
 

@@ -32,7 +32,7 @@ void JobQueue::start()
     for (const JobInfo& job : mStore.listInState(JobState::Queued))
         if (!isQueuedInMemory(job.id)) enqueue(job.ownerId, job.id);
     updateWaiting();
-    for (unsigned i = 0; i < mWorkerCount; ++i) mWorkers.emplace_back([this] { workerLoop(); });
+    for (unsigned i = 0; i < mWorkerCount; ++i) mWorkers.emplace_back([this, i] { workerLoop(i); });
 }
 
 void JobQueue::shutdown()
@@ -42,12 +42,70 @@ void JobQueue::shutdown()
         if (!mStarted) return;
         mStopping = true;
         for (auto& [id, active] : mActive) active.control->requestStop(JobControl::Stop::Shutdown);
+        for (auto& [id, study] : mStudies) study->stop(JobState::Interrupted);
     }
     mWake.notify_all();
     for (auto& t : mWorkers) t.join();
-    std::lock_guard lock(mMutex);
+    std::unique_lock lock(mMutex);
     mWorkers.clear();
     mStarted = false;
+    // Studies that have started end interrupted; the others stay queued in the store.
+    std::vector<std::shared_ptr<StudyExecution>> ended;
+    while (!mStudies.empty()) {
+        std::shared_ptr<StudyExecution> study = mStudies.begin()->second;
+        if (study->started()) ended.push_back(study);
+        retireStudy(study);
+    }
+    lock.unlock();
+    for (auto& study : ended) study->finalise();
+}
+
+void JobQueue::addStudy(std::shared_ptr<StudyExecution> study)
+{
+    std::unique_lock lock(mMutex);
+    OwnerJobs& jobs = mWaiting[study->ownerId()];
+    if (jobs.empty()) mRotation.push_back(study->ownerId());
+    jobs.studies.push_back(study);
+    mStudies.emplace(study->id(), std::move(study));
+    updateWaiting();
+    lock.unlock();
+    mWake.notify_all();
+}
+
+bool JobQueue::stopStudy(std::int64_t studyId)
+{
+    std::unique_lock lock(mMutex);
+    const auto found = mStudies.find(studyId);
+    if (found == mStudies.end()) return false;
+    std::shared_ptr<StudyExecution> study = found->second;
+    study->stop(JobState::Cancelled);
+    if (!study->complete()) return true;   // the worker of its last run finalises it
+    retireStudy(study);
+    updateWaiting();
+    lock.unlock();
+    study->finalise();
+    return true;
+}
+
+int JobQueue::activeStudies(std::int64_t ownerId)
+{
+    std::lock_guard lock(mMutex);
+    int count = 0;
+    for (const auto& [id, study] : mStudies) count += study->ownerId() == ownerId;
+    return count;
+}
+
+void JobQueue::retireStudy(const std::shared_ptr<StudyExecution>& study)
+{
+    mStudies.erase(study->id());
+    const auto owner = mWaiting.find(study->ownerId());
+    if (owner == mWaiting.end()) return;
+    auto& studies = owner->second.studies;
+    studies.erase(std::remove(studies.begin(), studies.end(), study), studies.end());
+    if (owner->second.empty()) {
+        mRotation.erase(std::remove(mRotation.begin(), mRotation.end(), owner->first), mRotation.end());
+        mWaiting.erase(owner);
+    }
 }
 
 JobQueue::Submitted JobQueue::submit(const JobRequest& request)
@@ -178,53 +236,76 @@ std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> v
     return subscription;
 }
 
-void JobQueue::workerLoop()
+void JobQueue::workerLoop(unsigned worker)
 {
     std::unique_lock lock(mMutex);
     for (;;) {
-        std::int64_t jobId = 0, ownerId = 0;
-        bool starts = false;
+        Work work;
         // When stopping, the workers end the parked jobs (interrupted) before they leave.
         bool picked = false;
-        mWake.wait(lock, [&] { return (picked = pickNext(jobId, ownerId, starts)) || mStopping; });
+        mWake.wait(lock, [&] { return (picked = pickNext(work)) || mStopping; });
         if (!picked) return;
-        std::unique_ptr<StartedJob> job;
-        if (starts) {
-            std::unique_ptr<PreparedJob> compiled;
-            if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
-                compiled = std::move(it->second);
-                mCompiled.erase(it);
-            }
-            if (!mStore.markRunning(jobId)) continue;   // no longer queued in the store
-            auto control = std::make_shared<JobControl>();
-            job = std::make_unique<StartedJob>(jobId, std::move(compiled), control);
-            mActive.emplace(jobId, Active{ownerId, std::move(control), nullptr, 0});
-            ++mStartedPerOwner[ownerId];
-        } else {
-            job = std::move(mActive.at(jobId).parked);
-        }
-        const unsigned threads = jobThreads(!mWaiting.empty(), mActive.size() > 1);
-        updateWaiting();
-        lock.unlock();
-
-        const bool finished = mRunner.runSlice(*job, threads, mOthersWaiting);
-        if (finished) job.reset();   // its model and logs are freed outside the lock
-
-        lock.lock();
-        Active& active = mActive.at(jobId);
-        mActiveLogBytes -= active.logBytes;
-        if (finished) {
-            mActive.erase(jobId);
-            if (--mStartedPerOwner[ownerId] <= 0) mStartedPerOwner.erase(ownerId);
-            mJobEnded.notify_all();
-        } else {
-            active.logBytes = job->logBytes();
-            mActiveLogBytes += active.logBytes;
-            active.parked = std::move(job);
-            park(ownerId, jobId);
-        }
+        if (work.kind == Work::Kind::StudyRun) runStudy(worker, work, lock);
+        else runJob(work, lock);
         updateWaiting();
         mWake.notify_all();
+    }
+}
+
+void JobQueue::runJob(Work& work, std::unique_lock<std::mutex>& lock)
+{
+    const std::int64_t jobId = work.jobId, ownerId = work.ownerId;
+    std::unique_ptr<StartedJob> job;
+    if (work.kind == Work::Kind::StartJob) {
+        std::unique_ptr<PreparedJob> compiled;
+        if (auto it = mCompiled.find(jobId); it != mCompiled.end()) {
+            compiled = std::move(it->second);
+            mCompiled.erase(it);
+        }
+        if (!mStore.markRunning(jobId)) return;   // no longer queued in the store
+        auto control = std::make_shared<JobControl>();
+        job = std::make_unique<StartedJob>(jobId, std::move(compiled), control);
+        mActive.emplace(jobId, Active{ownerId, std::move(control), nullptr, 0});
+        ++mStartedPerOwner[ownerId];
+    } else {
+        job = std::move(mActive.at(jobId).parked);
+    }
+    const unsigned threads = jobThreads(!mWaiting.empty(), mActive.size() > 1 || mStudyRunsInFlight > 0);
+    updateWaiting();
+    lock.unlock();
+
+    const bool finished = mRunner.runSlice(*job, threads, mOthersWaiting);
+    if (finished) job.reset();   // its model and logs are freed outside the lock
+
+    lock.lock();
+    Active& active = mActive.at(jobId);
+    mActiveLogBytes -= active.logBytes;
+    if (finished) {
+        mActive.erase(jobId);
+        if (--mStartedPerOwner[ownerId] <= 0) mStartedPerOwner.erase(ownerId);
+        mJobEnded.notify_all();
+    } else {
+        active.logBytes = job->logBytes();
+        mActiveLogBytes += active.logBytes;
+        active.parked = std::move(job);
+        park(ownerId, jobId);
+    }
+}
+
+void JobQueue::runStudy(unsigned worker, Work& work, std::unique_lock<std::mutex>& lock)
+{
+    ++mStudyRunsInFlight;
+    updateWaiting();
+    lock.unlock();
+    work.study->execute(worker, work.run);
+    lock.lock();
+    --mStudyRunsInFlight;
+    // The worker of the last run stores the study's end (a cancelled one's too).
+    if (mStudies.count(work.study->id()) && work.study->complete()) {
+        retireStudy(work.study);
+        lock.unlock();
+        work.study->finalise();
+        lock.lock();
     }
 }
 
@@ -242,7 +323,7 @@ bool JobQueue::canStart(std::int64_t ownerId) const
     return mActive.empty() || (mActive.size() < kMaxStartedJobs && mActiveLogBytes < kMaxStartedLogBytes);
 }
 
-bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId, bool& starts)
+bool JobQueue::pickNext(Work& work)
 {
     // First the users with no job started (the short first slice of their next one, for its
     // first frames), then all in turn.
@@ -251,17 +332,41 @@ bool JobQueue::pickNext(std::int64_t& jobId, std::int64_t& ownerId, bool& starts
             const std::int64_t owner = *it;
             if (idleUsersOnly && mStartedPerOwner.count(owner)) continue;
             OwnerJobs& jobs = mWaiting.at(owner);
-            std::deque<std::int64_t>* from = nullptr;
-            if (!jobs.queued.empty() && canStart(owner)) from = &jobs.queued;
-            else if (!jobs.parked.empty()) from = &jobs.parked;
-            else continue;
-            starts = from == &jobs.queued;
-            jobId = from->front();
-            ownerId = owner;
-            from->pop_front();
+            work.ownerId = owner;
+            if (!jobs.queued.empty() && canStart(owner)) {
+                work.kind = Work::Kind::StartJob;
+                work.jobId = jobs.queued.front();
+                jobs.queued.pop_front();
+            } else if (idleUsersOnly) {
+                continue;   // a study's run or a parked job is no first slice
+            } else if (!jobs.parked.empty()) {
+                work.kind = Work::Kind::ContinueJob;
+                work.jobId = jobs.parked.front();
+                jobs.parked.pop_front();
+            } else if (!takeStudyRun(jobs.studies, work)) {
+                continue;
+            }
             mRotation.erase(it);
-            if (jobs.queued.empty() && jobs.parked.empty()) mWaiting.erase(owner);
+            if (jobs.empty()) mWaiting.erase(owner);
             else mRotation.push_back(owner);   // served: goes to the back of the round
+            return true;
+        }
+    }
+    return false;
+}
+
+bool JobQueue::takeStudyRun(std::deque<std::shared_ptr<StudyExecution>>& studies, Work& work)
+{
+    for (std::size_t i = 0; i < studies.size(); ++i) {
+        std::shared_ptr<StudyExecution> study = studies.front();
+        // The owner's studies take turns too.
+        studies.pop_front();
+        studies.push_back(study);
+        if (mStopping) continue;
+        if (auto run = study->take()) {
+            work.kind = Work::Kind::StudyRun;
+            work.study = std::move(study);
+            work.run = std::move(*run);
             return true;
         }
     }
@@ -272,7 +377,8 @@ void JobQueue::updateWaiting()
 {
     bool waiting = false;
     for (const auto& [owner, jobs] : mWaiting) {
-        if (!jobs.parked.empty() || (!jobs.queued.empty() && canStart(owner))) {
+        if (!jobs.parked.empty() || (!jobs.queued.empty() && canStart(owner)) ||
+            std::any_of(jobs.studies.begin(), jobs.studies.end(), [](const auto& study) { return study->hasWork(); })) {
             waiting = true;
             break;
         }
@@ -283,14 +389,14 @@ void JobQueue::updateWaiting()
 void JobQueue::enqueue(std::int64_t ownerId, std::int64_t jobId)
 {
     OwnerJobs& jobs = mWaiting[ownerId];
-    if (jobs.queued.empty() && jobs.parked.empty()) mRotation.push_back(ownerId);
+    if (jobs.empty()) mRotation.push_back(ownerId);
     jobs.queued.push_back(jobId);
 }
 
 void JobQueue::park(std::int64_t ownerId, std::int64_t jobId)
 {
     OwnerJobs& jobs = mWaiting[ownerId];
-    if (jobs.queued.empty() && jobs.parked.empty()) mRotation.push_back(ownerId);
+    if (jobs.empty()) mRotation.push_back(ownerId);
     jobs.parked.push_back(jobId);
 }
 
@@ -301,7 +407,7 @@ bool JobQueue::removeQueued(std::int64_t jobId)
         auto pos = std::find(fifo.begin(), fifo.end(), jobId);
         if (pos == fifo.end()) continue;
         fifo.erase(pos);
-        if (fifo.empty() && it->second.parked.empty()) {
+        if (it->second.empty()) {
             mRotation.erase(std::find(mRotation.begin(), mRotation.end(), it->first));
             mWaiting.erase(it);
         }

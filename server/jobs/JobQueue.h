@@ -16,12 +16,18 @@
 // their longest parked one. A user with many jobs therefore delays another user's job by at
 // most one slice per worker, and a user's first job waits only for the first slices of
 // other users' first jobs and the slices running when it came.
+//
+// Studies (server/studies/StudyExecution.h) share the workers: a study waits in its owner's
+// turn behind the owner's jobs and runs one of its runs per turn, on as many workers as take
+// it in turn; a user's first job still goes first, so a study of 10,000 runs delays another
+// user's job by at most one run.
 #include "server/jobs/Job.h"
 #include "server/jobs/JobRunner.h"
 #include "server/store/JobStore.h"
 #include "server/store/ResultStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
+#include "server/studies/StudyExecution.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -82,6 +88,15 @@ public:
     std::uint64_t subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
                             StreamSink sink);
 
+    // Queues a study (its first run marks it running). Runs continue until its plan is done
+    // or stopStudy; then a worker stores its final state.
+    void addStudy(std::shared_ptr<StudyExecution> study);
+    // Cancels a queued or running study; false when it is not active here. Its final state is
+    // stored at once when no run is in flight, else when the last one has stopped.
+    bool stopStudy(std::int64_t studyId);
+    // Studies of the user queued or running here.
+    int activeStudies(std::int64_t ownerId);
+
     JobStore& store() { return mStore; }
     ResultStore& results() { return mResults; }
     StreamHub& hub() { return mHub; }
@@ -93,9 +108,22 @@ public:
     static constexpr std::size_t kMaxStartedLogBytes = std::size_t(1) << 30;
 
 private:
-    void workerLoop();
-    // Next job by the fairness rule; `starts`: it is a queued one (else parked). Caller holds mMutex.
-    bool pickNext(std::int64_t& jobId, std::int64_t& ownerId, bool& starts);
+    // What a worker takes next: a job to start or to continue, or a run of a study.
+    struct Work {
+        enum class Kind { StartJob, ContinueJob, StudyRun } kind = Kind::StartJob;
+        std::int64_t jobId = 0, ownerId = 0;
+        std::shared_ptr<StudyExecution> study;
+        PlannedRun run;
+    };
+    void workerLoop(unsigned worker);
+    void runJob(Work& work, std::unique_lock<std::mutex>& lock);
+    void runStudy(unsigned worker, Work& work, std::unique_lock<std::mutex>& lock);
+    // Next work by the fairness rule. Caller holds mMutex.
+    bool pickNext(Work& work);
+    // A run of one of the owner's studies, if one has a run ready. Caller holds mMutex.
+    bool takeStudyRun(std::deque<std::shared_ptr<StudyExecution>>& studies, Work& work);
+    // Removes a study that has nothing left to run from the queue. Caller holds mMutex.
+    void retireStudy(const std::shared_ptr<StudyExecution>& study);
     bool canStart(std::int64_t ownerId) const;                   // caller holds mMutex
     // Whether a job waits that a worker could take; what a running slice checks.
     void updateWaiting();                                        // caller holds mMutex
@@ -109,6 +137,8 @@ private:
     struct OwnerJobs {
         std::deque<std::int64_t> queued;   // not started, FIFO
         std::deque<std::int64_t> parked;   // started, between slices, FIFO
+        std::deque<std::shared_ptr<StudyExecution>> studies;   // queued or running, in turn
+        bool empty() const { return queued.empty() && parked.empty() && studies.empty(); }
     };
     // A started job: running a slice on a worker, or parked (then `parked` holds it).
     struct Active {
@@ -135,6 +165,8 @@ private:
     std::size_t mActiveLogBytes = 0;
     std::atomic<bool> mOthersWaiting{false};
     std::map<std::int64_t, std::unique_ptr<PreparedJob>> mCompiled;   // queued job -> compiled
+    std::map<std::int64_t, std::shared_ptr<StudyExecution>> mStudies;  // queued or running
+    std::size_t mStudyRunsInFlight = 0;
     std::vector<std::thread> mWorkers;
     bool mStarted = false;
     bool mStopping = false;

@@ -30,17 +30,9 @@ bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limi
                    PrepareError& error)
 {
     System& root = model.root();
-
-    // System parameters first: component values may refer to them.
-    for (int pass = 0; pass < 2; ++pass) {
-        for (const auto& [key, value] : request.parameters) {
-            const bool isSystemParameter = key.find('.') == std::string::npos;
-            if (isSystemParameter != (pass == 0)) continue;
-            if (const Status set = setParameterValue(root, key, value); !set) {
-                error = {protocolErrorCode(set.code()), set.message()};
-                return false;
-            }
-        }
+    if (const Status set = applyParameterOverrides(root, request.parameters); !set) {
+        error = {protocolErrorCode(set.code()), set.message()};
+        return false;
     }
 
     const JobSettings& s = request.settings;
@@ -78,6 +70,18 @@ bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limi
 }
 
 } // namespace
+
+Status applyParameterOverrides(System& root, const std::map<std::string, std::string>& parameters)
+{
+    // System parameters first: component values may refer to them.
+    for (const bool systemParameters : {true, false}) {
+        for (const auto& [key, value] : parameters) {
+            if ((key.find('.') == std::string::npos) != systemParameters) continue;
+            if (Status set = setParameterValue(root, key, value); !set) return set;
+        }
+    }
+    return {};
+}
 
 bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out, PrepareError& error)
 {

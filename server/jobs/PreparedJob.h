@@ -8,6 +8,7 @@
 #include "core/Simulation.h"
 #include "server/jobs/Job.h"
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -27,6 +28,10 @@ struct PrepareError {
 
 // Log samples of a job whose model and request both leave them at 0.
 constexpr std::size_t kDefaultLogSamples = 1024;
+
+// A job's parameter overrides ("Comp.Param", "Sub$Comp.Param", or a system parameter's name),
+// system parameters first since component values may refer to them.
+Status applyParameterOverrides(System& root, const std::map<std::string, std::string>& parameters);
 
 bool prepareJob(const JobRequest& request, const JobLimits& limits, PreparedJob& out,
                 PrepareError& error);

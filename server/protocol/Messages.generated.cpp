@@ -1290,4 +1290,156 @@ void to_json(nlohmann::json& j, const BinaryFrameHeaderVariablesItem& v)
     j["samples"] = v.samples;
 }
 
+void from_json(const nlohmann::json& j, StudyCreate& v)
+{
+    j.at("kind").get_to(v.kind);
+    if (const auto x = j.find("name"); x != j.end()) v.name = x->get<std::string>();
+    if (const auto x = j.find("model_id"); x != j.end()) v.modelId = x->get<std::int64_t>();
+    if (const auto x = j.find("hmf"); x != j.end()) v.hmf = x->get<std::string>();
+    if (const auto x = j.find("start"); x != j.end()) v.start = x->get<double>();
+    if (const auto x = j.find("step"); x != j.end()) v.step = x->get<double>();
+    if (const auto x = j.find("stop"); x != j.end()) v.stop = x->get<double>();
+    if (const auto x = j.find("log_samples"); x != j.end()) v.logSamples = x->get<std::int64_t>();
+    if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<nlohmann::json>();
+    if (const auto x = j.find("outputs"); x != j.end()) v.outputs = x->get<nlohmann::json>();
+    if (const auto x = j.find("sweep"); x != j.end()) v.sweep = x->get<nlohmann::json>();
+    if (const auto x = j.find("sensitivity"); x != j.end()) v.sensitivity = x->get<nlohmann::json>();
+    if (const auto x = j.find("optimise"); x != j.end()) v.optimise = x->get<nlohmann::json>();
+}
+
+void to_json(nlohmann::json& j, const StudyCreate& v)
+{
+    j = nlohmann::json::object();
+    j["kind"] = v.kind;
+    if (v.name) j["name"] = *v.name;
+    if (v.modelId) j["model_id"] = *v.modelId;
+    if (v.hmf) j["hmf"] = *v.hmf;
+    if (v.start) j["start"] = *v.start;
+    if (v.step) j["step"] = *v.step;
+    if (v.stop) j["stop"] = *v.stop;
+    if (v.logSamples) j["log_samples"] = *v.logSamples;
+    if (v.parameters) j["parameters"] = *v.parameters;
+    if (v.outputs) j["outputs"] = *v.outputs;
+    if (v.sweep) j["sweep"] = *v.sweep;
+    if (v.sensitivity) j["sensitivity"] = *v.sensitivity;
+    if (v.optimise) j["optimise"] = *v.optimise;
+}
+
+void from_json(const nlohmann::json& j, StudyCreated& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("runs_total").get_to(v.runsTotal);
+}
+
+void to_json(nlohmann::json& j, const StudyCreated& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["runs_total"] = v.runsTotal;
+}
+
+void from_json(const nlohmann::json& j, StudyInfo& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("kind").get_to(v.kind);
+    j.at("name").get_to(v.name);
+    if (const nlohmann::json& x = j.at("model_id"); !x.is_null()) v.modelId = x.get<std::int64_t>();
+    j.at("state").get_to(v.state);
+    j.at("runs_total").get_to(v.runsTotal);
+    j.at("runs_done").get_to(v.runsDone);
+    j.at("runs_failed").get_to(v.runsFailed);
+    j.at("progress").get_to(v.progress);
+    j.at("error").get_to(v.error);
+    j.at("created_at").get_to(v.createdAt);
+    if (const nlohmann::json& x = j.at("started_at"); !x.is_null()) v.startedAt = x.get<std::int64_t>();
+    if (const nlohmann::json& x = j.at("finished_at"); !x.is_null()) v.finishedAt = x.get<std::int64_t>();
+    j.at("summary").get_to(v.summary);
+}
+
+void to_json(nlohmann::json& j, const StudyInfo& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["kind"] = v.kind;
+    j["name"] = v.name;
+    j["model_id"] = v.modelId ? nlohmann::json(*v.modelId) : nlohmann::json(nullptr);
+    j["state"] = v.state;
+    j["runs_total"] = v.runsTotal;
+    j["runs_done"] = v.runsDone;
+    j["runs_failed"] = v.runsFailed;
+    j["progress"] = v.progress;
+    j["error"] = v.error;
+    j["created_at"] = v.createdAt;
+    j["started_at"] = v.startedAt ? nlohmann::json(*v.startedAt) : nlohmann::json(nullptr);
+    j["finished_at"] = v.finishedAt ? nlohmann::json(*v.finishedAt) : nlohmann::json(nullptr);
+    j["summary"] = v.summary;
+}
+
+void from_json(const nlohmann::json& j, StudyList& v)
+{
+    j.at("studies").get_to(v.studies);
+}
+
+void to_json(nlohmann::json& j, const StudyList& v)
+{
+    j = nlohmann::json::object();
+    j["studies"] = v.studies;
+}
+
+void from_json(const nlohmann::json& j, StudySubscribeRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("study_id").get_to(v.studyId);
+}
+
+void to_json(nlohmann::json& j, const StudySubscribeRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "study.subscribe";
+    j["study_id"] = v.studyId;
+}
+
+void from_json(const nlohmann::json& j, StudyUnsubscribeRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("study_id").get_to(v.studyId);
+}
+
+void to_json(nlohmann::json& j, const StudyUnsubscribeRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "study.unsubscribe";
+    j["study_id"] = v.studyId;
+}
+
+void from_json(const nlohmann::json& j, StudyProgressEvent& v)
+{
+    j.at("study_id").get_to(v.studyId);
+    j.at("state").get_to(v.state);
+    j.at("runs_done").get_to(v.runsDone);
+    j.at("runs_failed").get_to(v.runsFailed);
+    j.at("runs_total").get_to(v.runsTotal);
+    if (const auto x = j.find("columns"); x != j.end()) v.columns = x->get<std::vector<std::string>>();
+    j.at("rows").get_to(v.rows);
+    if (const auto x = j.find("best"); x != j.end()) v.best = x->get<nlohmann::json>();
+    if (const auto x = j.find("error"); x != j.end()) v.error = x->get<std::string>();
+}
+
+void to_json(nlohmann::json& j, const StudyProgressEvent& v)
+{
+    j = nlohmann::json::object();
+    j["type"] = "event.study.progress";
+    j["study_id"] = v.studyId;
+    j["state"] = v.state;
+    j["runs_done"] = v.runsDone;
+    j["runs_failed"] = v.runsFailed;
+    j["runs_total"] = v.runsTotal;
+    if (v.columns) j["columns"] = *v.columns;
+    j["rows"] = v.rows;
+    if (v.best) j["best"] = *v.best;
+    if (v.error) j["error"] = *v.error;
+}
+
 } // namespace tlmhub::server::protocol

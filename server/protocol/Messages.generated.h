@@ -83,6 +83,13 @@ struct SimulateStartedData;
 struct SimulateStopRequest;
 struct SimulateStoppedData;
 struct SimulationSettings;
+struct StudyCreate;
+struct StudyCreated;
+struct StudyInfo;
+struct StudyList;
+struct StudyProgressEvent;
+struct StudySubscribeRequest;
+struct StudyUnsubscribeRequest;
 struct SysParam;
 struct SysParamData;
 struct SysParamRemoveRequest;
@@ -858,6 +865,91 @@ struct BinaryFrameHeaderVariablesItem {
 void from_json(const nlohmann::json& j, BinaryFrameHeaderVariablesItem& v);
 void to_json(nlohmann::json& j, const BinaryFrameHeaderVariablesItem& v);
 
+// A study: many runs of one model (docs/studies.md). The server checks the parts in detail.
+struct StudyCreate {
+    std::string kind{};
+    std::optional<std::string> name;
+    std::optional<std::int64_t> modelId;
+    std::optional<std::string> hmf;
+    std::optional<double> start;
+    std::optional<double> step;
+    std::optional<double> stop;
+    std::optional<std::int64_t> logSamples;
+    std::optional<nlohmann::json> parameters;
+    std::optional<nlohmann::json> outputs;
+    std::optional<nlohmann::json> sweep;
+    std::optional<nlohmann::json> sensitivity;
+    std::optional<nlohmann::json> optimise;
+};
+void from_json(const nlohmann::json& j, StudyCreate& v);
+void to_json(nlohmann::json& j, const StudyCreate& v);
+
+struct StudyCreated {
+    std::int64_t id{};
+    std::int64_t runsTotal{};
+};
+void from_json(const nlohmann::json& j, StudyCreated& v);
+void to_json(nlohmann::json& j, const StudyCreated& v);
+
+// A study. Times are unix seconds; null = not yet.
+struct StudyInfo {
+    std::int64_t id{};
+    std::string kind{};
+    std::string name{};
+    std::optional<std::int64_t> modelId;
+    std::string state{};
+    std::int64_t runsTotal{};
+    std::int64_t runsDone{};
+    std::int64_t runsFailed{};
+    double progress{};
+    std::string error{};
+    std::int64_t createdAt{};
+    std::optional<std::int64_t> startedAt;
+    std::optional<std::int64_t> finishedAt;
+    nlohmann::json summary{};
+};
+void from_json(const nlohmann::json& j, StudyInfo& v);
+void to_json(nlohmann::json& j, const StudyInfo& v);
+
+struct StudyList {
+    std::vector<StudyInfo> studies;
+};
+void from_json(const nlohmann::json& j, StudyList& v);
+void to_json(nlohmann::json& j, const StudyList& v);
+
+// Follow a study's progress (event.study.progress).
+struct StudySubscribeRequest {
+    nlohmann::json id{};
+    // "type": always "study.subscribe"
+    std::int64_t studyId{};
+};
+void from_json(const nlohmann::json& j, StudySubscribeRequest& v);
+void to_json(nlohmann::json& j, const StudySubscribeRequest& v);
+
+struct StudyUnsubscribeRequest {
+    nlohmann::json id{};
+    // "type": always "study.unsubscribe"
+    std::int64_t studyId{};
+};
+void from_json(const nlohmann::json& j, StudyUnsubscribeRequest& v);
+void to_json(nlohmann::json& j, const StudyUnsubscribeRequest& v);
+
+// Rows of a study's runs finished since its previous event; the last one has a final state.
+struct StudyProgressEvent {
+    // "type": always "event.study.progress"
+    std::int64_t studyId{};
+    std::string state{};
+    std::int64_t runsDone{};
+    std::int64_t runsFailed{};
+    std::int64_t runsTotal{};
+    std::optional<std::vector<std::string>> columns;
+    std::vector<std::vector<nlohmann::json>> rows;
+    std::optional<nlohmann::json> best;
+    std::optional<std::string> error;
+};
+void from_json(const nlohmann::json& j, StudyProgressEvent& v);
+void to_json(nlohmann::json& j, const StudyProgressEvent& v);
+
 // Calls visit.template operator()<T>("Name") for every struct, e.g. for a test that
 // round-trips examples through them all.
 template <typename Visitor>
@@ -934,6 +1026,13 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<SimulateStopRequest>("SimulateStopRequest");
     visit.template operator()<SimulateStoppedData>("SimulateStoppedData");
     visit.template operator()<SimulationSettings>("SimulationSettings");
+    visit.template operator()<StudyCreate>("StudyCreate");
+    visit.template operator()<StudyCreated>("StudyCreated");
+    visit.template operator()<StudyInfo>("StudyInfo");
+    visit.template operator()<StudyList>("StudyList");
+    visit.template operator()<StudyProgressEvent>("StudyProgressEvent");
+    visit.template operator()<StudySubscribeRequest>("StudySubscribeRequest");
+    visit.template operator()<StudyUnsubscribeRequest>("StudyUnsubscribeRequest");
     visit.template operator()<SysParam>("SysParam");
     visit.template operator()<SysParamData>("SysParamData");
     visit.template operator()<SysParamRemoveRequest>("SysParamRemoveRequest");

@@ -6,12 +6,14 @@
 // server/store/sqlite/ and server/store/postgres/.
 //
 // Every store method may be called from any thread at the same time.
+#include "server/store/ApiTokenStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
 #include "server/store/SessionStore.h"
 #include "server/store/StoreError.h"
+#include "server/store/StudyStore.h"
 #include "server/store/UserStore.h"
 
 #include <cstddef>
@@ -46,6 +48,8 @@ public:
     virtual JobStore& jobs() = 0;
     virtual ResultStore& results() = 0;
     virtual MetaStore& meta() = 0;
+    virtual ApiTokenStore& apiTokens() = 0;
+    virtual StudyStore& studies() = 0;
 
     // The schema version the database is at (the newest migration applied).
     virtual int schemaVersion() = 0;

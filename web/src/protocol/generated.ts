@@ -88,11 +88,14 @@ export type ClientMessage =
     | SimulateStartRequest
     | SimulateStopRequest
     | LogSubscribeRequest
-    | PingRequest;
+    | PingRequest
+    | StudySubscribeRequest
+    | StudyUnsubscribeRequest;
 /**
  * Any message the server sends.
  */
-export type ServerMessage = Hello | Reply | ErrorReply | ProgressEvent | FrameEvent | DoneEvent | ResyncEvent;
+export type ServerMessage =
+    Hello | Reply | ErrorReply | ProgressEvent | FrameEvent | DoneEvent | ResyncEvent | StudyProgressEvent;
 
 /**
  * Index of every definition in protocol/messages.schema.json.
@@ -190,6 +193,13 @@ export interface ProtocolDefinitions {
     ModelSettingsRequest?: ModelSettingsRequest;
     ModelSettingsData?: ModelSettingsData;
     BinaryFrameHeader?: BinaryFrameHeader;
+    StudyCreate?: StudyCreate;
+    StudyCreated?: StudyCreated;
+    StudyInfo?: StudyInfo;
+    StudyList?: StudyList;
+    StudySubscribeRequest?: StudySubscribeRequest;
+    StudyUnsubscribeRequest?: StudyUnsubscribeRequest;
+    StudyProgressEvent?: StudyProgressEvent;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -733,6 +743,19 @@ export interface ModelUngroupRequest {
     name: string;
     system?: SystemPath;
 }
+/**
+ * Follow a study's progress (event.study.progress).
+ */
+export interface StudySubscribeRequest {
+    id: RequestId;
+    type: 'study.subscribe';
+    study_id: number;
+}
+export interface StudyUnsubscribeRequest {
+    id: RequestId;
+    type: 'study.unsubscribe';
+    study_id: number;
+}
 export interface EmptyData {}
 export interface ModelOpenedData {
     model_id: number;
@@ -843,6 +866,21 @@ export interface ResyncEvent {
     type: 'event.resync';
     job_id: number;
 }
+/**
+ * Rows of a study's runs finished since its previous event; the last one has a final state.
+ */
+export interface StudyProgressEvent {
+    type: 'event.study.progress';
+    study_id: number;
+    state: string;
+    runs_done: number;
+    runs_failed: number;
+    runs_total: number;
+    columns?: string[];
+    rows: unknown[][];
+    best?: {};
+    error?: string;
+}
 export interface ModelSettingsData {
     simulation: SimulationSettings;
 }
@@ -862,4 +900,66 @@ export interface BinaryFrameHeader {
      * Frames merged into this one because the socket was slow; their samples are included.
      */
     dropped: number;
+}
+/**
+ * A study: many runs of one model (docs/studies.md). The server checks the parts in detail.
+ */
+export interface StudyCreate {
+    kind: 'sweep' | 'sensitivity' | 'optimise';
+    name?: string;
+    model_id?: number;
+    hmf?: string;
+    start?: number;
+    step?: number;
+    stop?: number;
+    log_samples?: number;
+    /**
+     * Fixed values for every run, as for a job.
+     */
+    parameters?: {};
+    /**
+     * {variables, values (final, min, max, mean), full}
+     */
+    outputs?: {};
+    /**
+     * {parameters: {name: [values] or {from, to, steps}}, mode: grid|list|random, samples, seed}
+     */
+    sweep?: {};
+    /**
+     * {runs, seed, parameters: {name: {distribution: normal, mean, sd} or {distribution: uniform, min, max}}}
+     */
+    sensitivity?: {};
+    /**
+     * {algorithm, parameters: {name: {min, max, start?}}, objective: {goal, terms}, max_evaluations, seed, tolerance, options}
+     */
+    optimise?: {};
+}
+export interface StudyCreated {
+    id: number;
+    runs_total: number;
+}
+/**
+ * A study. Times are unix seconds; null = not yet.
+ */
+export interface StudyInfo {
+    id: number;
+    kind: string;
+    name: string;
+    model_id: number | null;
+    state: JobState;
+    runs_total: number;
+    runs_done: number;
+    runs_failed: number;
+    progress: number;
+    error: string;
+    created_at: number;
+    started_at: number | null;
+    finished_at: number | null;
+    /**
+     * best {run, parameters, objective}, finish_reason, correlations
+     */
+    summary: {};
+}
+export interface StudyList {
+    studies: StudyInfo[];
 }

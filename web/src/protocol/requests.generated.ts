@@ -33,6 +33,8 @@ import type {
     SimulateStartedData,
     SimulateStopRequest,
     SimulateStoppedData,
+    StudySubscribeRequest,
+    StudyUnsubscribeRequest,
     SysParamData,
     SysParamRemoveRequest,
     SysParamSetRequest,
@@ -60,6 +62,8 @@ export interface RequestMap {
     'simulate.stop': { request: SimulateStopRequest; reply: SimulateStoppedData };
     'log.subscribe': { request: LogSubscribeRequest; reply: EmptyData };
     'ping': { request: PingRequest; reply: EmptyData };
+    'study.subscribe': { request: StudySubscribeRequest; reply: EmptyData };
+    'study.unsubscribe': { request: StudyUnsubscribeRequest; reply: EmptyData };
 }
 
 export type RequestType = keyof RequestMap;

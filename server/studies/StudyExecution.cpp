@@ -1,0 +1,320 @@
+#include "server/studies/StudyExecution.h"
+
+#include "server/jobs/JobRunner.h"
+#include "server/store/ResultBlob.h"
+#include "server/studies/RunMeasures.h"
+
+#include "core/ResultView.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace tlmhub::server {
+
+namespace {
+
+// Exactly the double: what setParameter evaluates gives the value back bit for bit.
+std::string exactText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+// JSON has no NaN or infinity: those become null.
+nlohmann::json number(double value)
+{
+    return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json();
+}
+
+constexpr auto kEventPeriod = std::chrono::milliseconds(100);
+
+} // namespace
+
+StudyExecution::StudyExecution(PreparedStudy prepared, const JobLimits& jobLimits, const StudyLimits& studyLimits,
+                               unsigned workers, StudyStore& store, StudyProgressHub& hub)
+    : mId(prepared.id), mOwnerId(prepared.ownerId), mRequest(std::move(prepared.request)),
+      mParameterNames(mRequest.parameterNames()), mModel(std::move(prepared.model)),
+      mSettings(prepared.settings), mJobLimits(jobLimits), mStudyLimits(studyLimits), mStore(store), mHub(hub),
+      mSimulations(workers), mSpare(std::move(prepared.compiled)), mPlan(mRequest)
+{
+    if (mRequest.kind == StudyKind::Sensitivity) mBands.resize(mRequest.outputs.variables.size());
+}
+
+std::vector<std::string> StudyExecution::tableColumns(const StudyRequest& request)
+{
+    std::vector<std::string> columns{"run", "ok"};
+    for (const std::string& name : request.parameterNames()) columns.push_back(name);
+    for (const std::string& name : request.outputs.columnNames()) columns.push_back(name);
+    if (request.kind == StudyKind::Optimise) columns.push_back("objective");
+    return columns;
+}
+
+std::optional<PlannedRun> StudyExecution::take()
+{
+    std::lock_guard lock(mMutex);
+    if (mStopReason || !mFailure.empty()) return std::nullopt;
+    if (!mStarted) {
+        mStarted = true;
+        if (!mStore.markRunning(mId)) {
+            mStopReason = JobState::Cancelled;   // no longer queued in the store (deleted)
+            return std::nullopt;
+        }
+    }
+    return mPlan.next();
+}
+
+bool StudyExecution::hasWork()
+{
+    std::lock_guard lock(mMutex);
+    if (mStopReason || !mFailure.empty()) return false;
+    return !mStarted || mPlan.hasReady();
+}
+
+bool StudyExecution::started()
+{
+    std::lock_guard lock(mMutex);
+    return mStarted;
+}
+
+bool StudyExecution::complete()
+{
+    std::lock_guard lock(mMutex);
+    if (mPlan.inFlight() > 0) return false;
+    return mStopReason || !mFailure.empty() || mPlan.finished();
+}
+
+void StudyExecution::stop(JobState reason)
+{
+    {
+        std::lock_guard lock(mMutex);
+        if (!mStopReason) mStopReason = reason;
+    }
+    mStop.request_stop();
+}
+
+Simulation* StudyExecution::simulationFor(unsigned worker, std::string& error)
+{
+    std::optional<Simulation>& slot = mSimulations.at(worker);
+    if (!slot) {
+        {
+            std::lock_guard lock(mMutex);
+            if (mSpare) {
+                slot.emplace(std::move(*mSpare));
+                mSpare.reset();
+            }
+        }
+        if (!slot) {
+            Result<Simulation> compiled = compile(*mModel, mSettings);
+            if (!compiled) {
+                error = compiled.status().message();
+                return nullptr;
+            }
+            slot.emplace(std::move(*compiled));
+        }
+    }
+    return &*slot;
+}
+
+StudyExecution::RunOutcome StudyExecution::simulate(unsigned worker, const PlannedRun& run)
+{
+    RunOutcome outcome;
+    Simulation* simulation = simulationFor(worker, outcome.error);
+    if (!simulation) return outcome;
+    if (simulation->state() != SimulationState::Compiled) {
+        if (const Status reset = simulation->reset(); !reset) {
+            outcome.error = reset.message();
+            return outcome;
+        }
+    }
+    for (std::size_t i = 0; i < mParameterNames.size(); ++i) {
+        if (const Status set = simulation->setParameter(mParameterNames[i], exactText(run.values[i])); !set) {
+            outcome.error = mParameterNames[i] + ": " + set.message();
+            return outcome;
+        }
+    }
+    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(mJobLimits.maxWallSeconds));
+    bool wallTimeExceeded = false;
+    RunOptions options;
+    options.threads = 1;
+    options.stop = mStop.get_token();
+    options.progressInterval = JobRunner::kProgressInterval;
+    options.progress = [&](std::size_t, std::size_t) {
+        if (!wallTimeExceeded && Clock::now() > deadline) {
+            wallTimeExceeded = true;
+            simulation->requestStop();
+        }
+    };
+    const Status ran = simulation->run(options);
+    if (!ran) {
+        outcome.error = wallTimeExceeded ? wallTimeLimitMessage(mJobLimits.maxWallSeconds) : ran.message();
+        return outcome;
+    }
+    const ResultView results = simulation->results();
+    if (const std::size_t bytes = uncompressedResultBytes(results); bytes > mJobLimits.maxResultBytes) {
+        outcome.error = "the result takes " + std::to_string(bytes >> 20) + " MiB; the limit is " +
+                        std::to_string(mJobLimits.maxResultBytes >> 20) + " MiB";
+        return outcome;
+    }
+    auto outputs = runOutputs(mRequest.outputs, results, outcome.error);
+    if (!outputs) return outcome;
+    outcome.outputs = std::move(*outputs);
+    if (mRequest.kind == StudyKind::Optimise) {
+        outcome.objective = runObjective(mRequest.objective, results, outcome.error);
+        if (!outcome.objective) return outcome;
+    }
+    if (mRequest.kind == StudyKind::Sensitivity) {
+        std::lock_guard lock(mMutex);
+        if (mBandTime.empty()) mBandTime.assign(results.time().begin(), results.time().end());
+        for (std::size_t v = 0; v < mBands.size(); ++v) mBands[v].add(*results.data(mRequest.outputs.variables[v]));
+    }
+    if (mRequest.outputs.full) encodeResult(results, outcome.blob);
+    outcome.ok = true;
+    return outcome;
+}
+
+void StudyExecution::execute(unsigned worker, const PlannedRun& run)
+{
+    RunOutcome outcome = simulate(worker, run);
+    const bool stopped = mStop.stop_requested();
+    if (!stopped) {
+        StudyRun row;
+        row.index = run.index;
+        row.ok = outcome.ok;
+        row.error = outcome.error;
+        nlohmann::json parameters = nlohmann::json::object(), outputs = nlohmann::json::object();
+        for (std::size_t i = 0; i < mParameterNames.size(); ++i) parameters[mParameterNames[i]] = run.values[i];
+        const std::vector<std::string> columns = mRequest.outputs.columnNames();
+        for (std::size_t i = 0; i < outcome.outputs.size(); ++i) outputs[columns[i]] = number(outcome.outputs[i]);
+        if (outcome.objective) outputs["objective"] = number(*outcome.objective);
+        row.parameters = parameters.dump();
+        row.outputs = outputs.dump();
+        row.hasResult = outcome.ok && mRequest.outputs.full;
+        bool tooLarge = false;
+        {
+            std::lock_guard lock(mMutex);
+            tooLarge = mStoredBytes + outcome.blob.size() > mStudyLimits.maxStoredBytes;
+            if (tooLarge && mFailure.empty())
+                mFailure = "the study's results would take more than " +
+                           std::to_string(mStudyLimits.maxStoredBytes >> 20) + " MiB";
+            else
+                mStoredBytes += outcome.blob.size();
+        }
+        if (!tooLarge) mStore.addRun(mId, row, row.hasResult ? &outcome.blob : nullptr);
+    }
+    std::lock_guard lock(mMutex);
+    record(run, outcome);
+}
+
+void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
+{
+    const double objective = outcome.objective.value_or(std::numeric_limits<double>::quiet_NaN());
+    mPlan.completed(run.index, outcome.ok ? objective : std::numeric_limits<double>::quiet_NaN());
+    if (mStop.stop_requested()) return;
+    (outcome.ok ? mRunsDone : mRunsFailed) += 1;
+
+    nlohmann::json row = nlohmann::json::array({run.index, outcome.ok ? 1 : 0});
+    for (double v : run.values) row.push_back(v);
+    for (double v : outcome.outputs) row.push_back(number(v));
+    if (mRequest.kind == StudyKind::Optimise) row.push_back(outcome.ok ? number(objective) : nlohmann::json());
+    mPendingRows.push_back(std::move(row));
+
+    if (outcome.ok && outcome.objective) {
+        const bool better = !mBestRun || (mRequest.objective.maximise ? objective > mBestObjective
+                                                                       : objective < mBestObjective);
+        if (better && std::isfinite(objective)) {
+            mBestRun = run.index;
+            mBestObjective = objective;
+            mBestValues = run.values;
+            mStore.setSummary(mId, summary().dump());
+        }
+    }
+    if (outcome.ok && mRequest.kind == StudyKind::Sensitivity) {
+        mSampledParameters.push_back(run.values);
+        mSampledOutputs.push_back(outcome.outputs);
+    }
+    if (Clock::now() - mLastEvent >= kEventPeriod) {
+        mLastEvent = Clock::now();
+        mHub.publish(mId, progressEvent(false));
+    }
+}
+
+nlohmann::json StudyExecution::summary()
+{
+    nlohmann::json s = nlohmann::json::object();
+    if (mBestRun) {
+        nlohmann::json parameters = nlohmann::json::object();
+        for (std::size_t i = 0; i < mParameterNames.size(); ++i) parameters[mParameterNames[i]] = mBestValues[i];
+        s["best"] = {{"run", *mBestRun}, {"parameters", parameters}, {"objective", number(mBestObjective)}};
+    }
+    if (const std::string reason = mPlan.finishReason(); !reason.empty()) s["finish_reason"] = reason;
+    if (mRequest.kind == StudyKind::Sensitivity && !mSampledParameters.empty()) {
+        // Pearson's r of each parameter with each output column.
+        const std::vector<std::string> columns = mRequest.outputs.columnNames();
+        nlohmann::json correlations = nlohmann::json::object();
+        for (std::size_t p = 0; p < mParameterNames.size(); ++p) {
+            std::vector<double> x;
+            for (const auto& values : mSampledParameters) x.push_back(values[p]);
+            nlohmann::json perOutput = nlohmann::json::object();
+            for (std::size_t c = 0; c < columns.size(); ++c) {
+                std::vector<double> y;
+                for (const auto& outputs : mSampledOutputs) y.push_back(outputs[c]);
+                perOutput[columns[c]] = number(pearsonCorrelation(x, y));
+            }
+            correlations[mParameterNames[p]] = perOutput;
+        }
+        s["correlations"] = correlations;
+    }
+    return s;
+}
+
+nlohmann::json StudyExecution::progressEvent(bool last)
+{
+    nlohmann::json event = {{"type", "event.study.progress"},
+                            {"study_id", mId},
+                            {"state", last ? "" : "running"},
+                            {"runs_done", mRunsDone},
+                            {"runs_failed", mRunsFailed},
+                            {"runs_total", mRequest.plannedRuns()},
+                            {"columns", tableColumns(mRequest)},
+                            {"rows", std::move(mPendingRows)}};
+    mPendingRows.clear();
+    if (mBestRun) event["best"] = summary()["best"];
+    return event;
+}
+
+void StudyExecution::finalise()
+{
+    std::lock_guard lock(mMutex);
+    if (mFinalised) return;
+    mFinalised = true;
+    JobState state = JobState::Done;
+    std::string error;
+    if (mStopReason) {
+        state = *mStopReason;
+    } else if (!mFailure.empty()) {
+        state = JobState::Failed;
+        error = mFailure;
+    }
+    nlohmann::json s = summary();
+    if (mRequest.kind == StudyKind::Sensitivity && !mBandTime.empty() && mBands.front().count() > 0) {
+        nlohmann::json bands = nlohmann::json::object();
+        bands["time"] = mBandTime;
+        nlohmann::json variables = nlohmann::json::object();
+        for (std::size_t v = 0; v < mBands.size(); ++v) {
+            variables[mRequest.outputs.variables[v]] = {{"mean", mBands[v].mean()},
+                                                        {"sd", mBands[v].standardDeviation()}};
+        }
+        bands["variables"] = variables;
+        s["bands"] = bands;
+    }
+    mStore.finish(mId, state, error, s.dump());
+    nlohmann::json event = progressEvent(true);
+    event["state"] = jobStateName(state);
+    if (!error.empty()) event["error"] = error;
+    mHub.finish(mId, event);
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,125 @@
+#pragma once
+// One study while it is queued or running: its plan, a compiled simulation per worker (the
+// model is parsed once per study and compiled once per worker; between runs only parameters
+// change: Simulation::setParameter + reset), the counters and what its events carry. The
+// job queue schedules it (JobQueue.h): take() under the queue's lock hands out a run,
+// execute() runs it on the worker, finalise() stores the end once complete().
+#include "server/jobs/Job.h"
+#include "server/store/StudyStore.h"
+#include "server/studies/StudyPlan.h"
+#include "server/studies/StudyProgressHub.h"
+#include "server/studies/StudyRequest.h"
+#include "server/studies/StudyStatistics.h"
+
+#include "core/Model.h"
+#include "core/Simulation.h"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct StudyLimits {
+    std::size_t maxRuns = 10'000;                        // per study
+    int maxActivePerUser = 2;                            // queued or running studies
+    std::size_t maxStoredBytes = std::size_t(512) << 20;  // run results one study keeps
+};
+
+// A study ready to run: the parsed request and the model with its fixed parameters applied.
+struct PreparedStudy {
+    std::int64_t id = 0, ownerId = 0;
+    StudyRequest request;
+    std::shared_ptr<const Model> model;
+    SimulationSettings settings;                // resolved: start, stop, step, log samples
+    std::optional<Simulation> compiled;         // the submit check's compile, for a first worker
+};
+
+class StudyExecution {
+public:
+    StudyExecution(PreparedStudy prepared, const JobLimits& jobLimits, const StudyLimits& studyLimits,
+                   unsigned workers, StudyStore& store, StudyProgressHub& hub);
+
+    std::int64_t id() const { return mId; }
+    std::int64_t ownerId() const { return mOwnerId; }
+
+    // --- under the queue's lock ---
+    // A run to execute now, or nullopt (none ready, or the study is ending). The first one
+    // marks the study running in the store.
+    std::optional<PlannedRun> take();
+    bool hasWork();
+    // Its first run has been taken (it is running in the store).
+    bool started();
+    // No run in flight, and none to come: finalise() may run.
+    bool complete();
+    // Ends the study as cancelled (or interrupted, at shutdown): runs in flight stop.
+    void stop(JobState reason);
+
+    // --- on a worker ---
+    void execute(unsigned worker, const PlannedRun& run);
+    // Stores the final state and summary, publishes the last event. Once, after complete().
+    void finalise();
+
+    // Columns of the results table: run, ok, the parameters, the outputs[, objective].
+    static std::vector<std::string> tableColumns(const StudyRequest& request);
+
+private:
+    using Clock = std::chrono::steady_clock;
+    struct RunOutcome {
+        bool ok = false;
+        std::string error;
+        std::vector<double> outputs;
+        std::optional<double> objective;
+        std::string blob;
+    };
+    RunOutcome simulate(unsigned worker, const PlannedRun& run);
+    Simulation* simulationFor(unsigned worker, std::string& error);
+    // Records an ended run (caller holds mMutex); publishes an event when one is due.
+    void record(const PlannedRun& run, const RunOutcome& outcome);
+    nlohmann::json progressEvent(bool last);   // caller holds mMutex; takes the pending rows
+    nlohmann::json summary();                   // caller holds mMutex
+
+    const std::int64_t mId, mOwnerId;
+    const StudyRequest mRequest;
+    const std::vector<std::string> mParameterNames;
+    const std::shared_ptr<const Model> mModel;
+    const SimulationSettings mSettings;
+    const JobLimits mJobLimits;
+    const StudyLimits mStudyLimits;
+    StudyStore& mStore;
+    StudyProgressHub& mHub;
+    std::stop_source mStop;   // cancel / shutdown: ends the runs in flight
+
+    // One per worker, touched only by that worker.
+    std::vector<std::optional<Simulation>> mSimulations;
+
+    std::mutex mMutex;   // everything below
+    std::optional<Simulation> mSpare;   // the submit check's compile
+    StudyPlan mPlan;
+    bool mStarted = false;
+    std::optional<JobState> mStopReason;
+    std::string mFailure;               // a reason the whole study fails
+    std::int64_t mRunsDone = 0, mRunsFailed = 0;
+    std::size_t mStoredBytes = 0;
+    std::vector<nlohmann::json> mPendingRows;
+    Clock::time_point mLastEvent{};
+    // Best run so far (optimise), as the user's objective.
+    std::optional<std::int64_t> mBestRun;
+    double mBestObjective = 0.0;
+    std::vector<double> mBestValues;
+    // Sensitivity: per output variable the bands, and every run's parameters and outputs.
+    std::vector<SeriesBands> mBands;
+    std::vector<double> mBandTime;
+    std::vector<std::vector<double>> mSampledParameters, mSampledOutputs;
+    bool mFinalised = false;
+};
+
+} // namespace tlmhub::server

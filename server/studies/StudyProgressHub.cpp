@@ -1,0 +1,54 @@
+#include "server/studies/StudyProgressHub.h"
+
+namespace tlmhub::server {
+
+std::uint64_t StudyProgressHub::subscribe(std::int64_t studyId, Sink sink)
+{
+    std::lock_guard lock(mMutex);
+    if (const auto finished = mFinished.find(studyId); finished != mFinished.end()) {
+        sink(finished->second);
+        return 0;
+    }
+    const std::uint64_t id = mNextId++;
+    mSubscriptions.emplace(id, Subscription{studyId, std::move(sink)});
+    return id;
+}
+
+void StudyProgressHub::unsubscribe(std::uint64_t subscription)
+{
+    std::lock_guard lock(mMutex);
+    mSubscriptions.erase(subscription);
+}
+
+void StudyProgressHub::publish(std::int64_t studyId, const nlohmann::json& event)
+{
+    std::lock_guard lock(mMutex);
+    for (const auto& [id, subscription] : mSubscriptions)
+        if (subscription.studyId == studyId) subscription.sink(event);
+}
+
+void StudyProgressHub::finish(std::int64_t studyId, const nlohmann::json& event)
+{
+    std::lock_guard lock(mMutex);
+    for (auto it = mSubscriptions.begin(); it != mSubscriptions.end();) {
+        if (it->second.studyId != studyId) {
+            ++it;
+            continue;
+        }
+        it->second.sink(event);
+        it = mSubscriptions.erase(it);
+    }
+    if (mFinished.emplace(studyId, event).second) mFinishedOrder.push_back(studyId);
+    if (mFinishedOrder.size() > kFinishedKept) {
+        mFinished.erase(mFinishedOrder.front());
+        mFinishedOrder.pop_front();
+    }
+}
+
+std::size_t StudyProgressHub::subscriptionCount() const
+{
+    std::lock_guard lock(mMutex);
+    return mSubscriptions.size();
+}
+
+} // namespace tlmhub::server

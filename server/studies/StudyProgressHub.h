@@ -1,0 +1,43 @@
+#pragma once
+// Who follows which study: WebSocket connections that sent study.subscribe get its
+// event.study.progress messages. A study's worker publishes; sinks run on that thread with
+// the hub's lock held, so a sink must only queue the event (as the WebSocket layer does).
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <mutex>
+
+namespace tlmhub::server {
+
+class StudyProgressHub {
+public:
+    using Sink = std::function<void(const nlohmann::json& event)>;
+
+    // A study that finished lately gets its last event at once (on this thread) and no
+    // subscription (0): a subscriber that came just after the end still sees it.
+    std::uint64_t subscribe(std::int64_t studyId, Sink sink);
+    void unsubscribe(std::uint64_t subscription);
+    // To every subscriber of the study.
+    void publish(std::int64_t studyId, const nlohmann::json& event);
+    // The study's last event: published, then its subscriptions end.
+    void finish(std::int64_t studyId, const nlohmann::json& event);
+    std::size_t subscriptionCount() const;
+
+private:
+    struct Subscription {
+        std::int64_t studyId;
+        Sink sink;
+    };
+    mutable std::mutex mMutex;
+    std::uint64_t mNextId = 1;
+    std::map<std::uint64_t, Subscription> mSubscriptions;
+    // The last events of the latest finished studies, oldest first out.
+    static constexpr std::size_t kFinishedKept = 256;
+    std::map<std::int64_t, nlohmann::json> mFinished;
+    std::deque<std::int64_t> mFinishedOrder;
+};
+
+} // namespace tlmhub::server

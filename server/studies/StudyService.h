@@ -1,0 +1,72 @@
+#pragma once
+// Studies as the API sees them: submission (checked and compiled up front, so a study that
+// cannot run is refused with a clear error before anything is queued), cancellation, restart
+// after a server stop, and the study's results as one table.
+#include "server/jobs/JobQueue.h"
+#include "server/store/ResultStore.h"
+#include "server/store/StudyStore.h"
+#include "server/studies/StudyExecution.h"
+#include "server/studies/StudyProgressHub.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace tlmhub::server {
+
+class StudyService {
+public:
+    StudyService(StudyStore& store, ResultStore& results, JobQueue& queue, StudyProgressHub& hub,
+                 const JobLimits& jobLimits, StudyLimits limits, unsigned workers);
+
+    // Before the queue starts: studies left running by a crash become interrupted; queued
+    // ones are queued again from their stored request.
+    void start();
+
+    struct Submitted {
+        std::optional<std::int64_t> id;
+        std::size_t runsTotal = 0;
+        std::string code, message;   // bad_request, limit_exceeded, invalid_model, invalid_parameter, ...
+    };
+    // `body` as POST /studies takes it; `hmf` the model's text (from model_id, or the body's).
+    Submitted submit(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf);
+    // Cancels a queued or running study; false when it is neither.
+    bool cancel(std::int64_t id);
+
+    // {id, kind, name, model_id, state, runs_total, runs_done, runs_failed, progress, error,
+    //  created_at, started_at, finished_at, summary} (the summary without its bands).
+    static nlohmann::json infoJson(const StudyInfo& info);
+    struct Table {
+        std::vector<std::string> columns;
+        std::vector<nlohmann::json> rows;   // arrays in column order; null for no value
+        std::map<std::int64_t, std::string> errors;   // failed runs: why
+    };
+    // The runs finished so far; nullopt when the study's request is unreadable.
+    std::optional<Table> table(std::int64_t id);
+    static std::string tableCsv(const Table& table);
+    // A sensitivity study's bands as CSV (time, then per variable mean-2sd, mean-sd, mean,
+    // mean+sd, mean+2sd) or JSON; nullopt when it has none (yet).
+    std::optional<std::string> bandsCsv(const StudyInfo& info);
+    std::optional<nlohmann::json> bandsJson(const StudyInfo& info);
+
+    StudyStore& store() { return mStore; }
+    StudyProgressHub& hub() { return mHub; }
+    const StudyLimits& limits() const { return mLimits; }
+
+private:
+    // Parses, checks and compiles; fills `prepared` (id and owner aside).
+    Submitted prepare(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf,
+                      PreparedStudy& prepared);
+
+    StudyStore& mStore;
+    ResultStore& mResults;
+    JobQueue& mQueue;
+    StudyProgressHub& mHub;
+    JobLimits mJobLimits;
+    StudyLimits mLimits;
+    unsigned mWorkers;
+};
+
+} // namespace tlmhub::server
