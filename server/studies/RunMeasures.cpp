@@ -142,8 +142,8 @@ std::optional<double> runObjective(const StudyObjective& objective, const Result
 std::vector<std::string> variablesRead(const StudyRequest& request)
 {
     std::vector<std::string> names = request.outputs.variables;
-    if (request.kind == StudyKind::Optimise) {
-        for (const ObjectiveTerm& term : request.objective.terms) {
+    if (request.objective) {
+        for (const ObjectiveTerm& term : request.objective->terms) {
             names.push_back(term.variable);
             if (!term.referenceVariable.empty()) names.push_back(term.referenceVariable);
         }

@@ -47,7 +47,7 @@ std::vector<std::string> StudyExecution::tableColumns(const StudyRequest& reques
     std::vector<std::string> columns{"run", "ok"};
     for (const std::string& name : request.parameterNames()) columns.push_back(name);
     for (const std::string& name : request.outputs.columnNames()) columns.push_back(name);
-    if (request.kind == StudyKind::Optimise) columns.push_back("objective");
+    if (request.objective) columns.push_back("objective");
     return columns;
 }
 
@@ -161,8 +161,8 @@ StudyExecution::RunOutcome StudyExecution::simulate(unsigned worker, const Plann
     auto outputs = runOutputs(mRequest.outputs, results, outcome.error);
     if (!outputs) return outcome;
     outcome.outputs = std::move(*outputs);
-    if (mRequest.kind == StudyKind::Optimise) {
-        outcome.objective = runObjective(mRequest.objective, results, outcome.error);
+    if (mRequest.objective) {
+        outcome.objective = runObjective(*mRequest.objective, results, outcome.error);
         if (!outcome.objective) return outcome;
     }
     if (mRequest.kind == StudyKind::Sensitivity) {
@@ -218,12 +218,12 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
     nlohmann::json row = nlohmann::json::array({run.index, outcome.ok ? 1 : 0});
     for (double v : run.values) row.push_back(v);
     for (double v : outcome.outputs) row.push_back(number(v));
-    if (mRequest.kind == StudyKind::Optimise) row.push_back(outcome.ok ? number(objective) : nlohmann::json());
+    if (mRequest.objective) row.push_back(outcome.ok ? number(objective) : nlohmann::json());
     mPendingRows.push_back(std::move(row));
 
     if (outcome.ok && outcome.objective) {
-        const bool better = !mBestRun || (mRequest.objective.maximise ? objective > mBestObjective
-                                                                       : objective < mBestObjective);
+        const bool better = !mBestRun || (mRequest.objective->maximise ? objective > mBestObjective
+                                                                        : objective < mBestObjective);
         if (better && std::isfinite(objective)) {
             mBestRun = run.index;
             mBestObjective = objective;

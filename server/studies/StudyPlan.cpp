@@ -56,7 +56,7 @@ void StudyPlan::completed(std::int64_t index, double objective)
     if (!mOptimiser) return;
     const std::size_t position = static_cast<std::size_t>(index - mBatchFirstIndex);
     // The optimiser minimises; a run without a value is the worst.
-    const double value = mRequest.objective.maximise ? -objective : objective;
+    const double value = mRequest.objective->maximise ? -objective : objective;
     mBatchValues[position] = std::isnan(value) ? std::numeric_limits<double>::infinity() : value;
     if (++mBatchCompleted < mBatch.size()) return;
     mOptimiser->tell(mBatchValues);

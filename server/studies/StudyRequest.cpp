@@ -329,6 +329,24 @@ bool readTerm(Reader& r, const Json& spec, ObjectiveTerm& term)
     return true;
 }
 
+bool readObjective(Reader& r, const Json& objective, StudyObjective& out)
+{
+    if (!r.object(objective, "objective")) return false;
+    std::string goal = "minimise";
+    if (objective.contains("goal") && !r.text(objective["goal"], "objective.goal", goal)) return false;
+    if (goal != "minimise" && goal != "maximise") return r.fail("objective.goal must be minimise or maximise");
+    out.maximise = goal == "maximise";
+    if (!objective.contains("terms") || !objective["terms"].is_array() || objective["terms"].empty() ||
+        objective["terms"].size() > kMaxObjectiveTerms)
+        return r.fail("objective.terms must list 1 to " + std::to_string(kMaxObjectiveTerms) + " terms");
+    for (const Json& spec : objective["terms"]) {
+        ObjectiveTerm term;
+        if (!readTerm(r, spec, term)) return false;
+        out.terms.push_back(std::move(term));
+    }
+    return true;
+}
+
 bool readOptimise(Reader& r, const Json& body, StudyRequest& out)
 {
     if (!body.contains("optimise")) return r.fail("an optimisation needs \"optimise\": {parameters, objective}");
@@ -374,22 +392,8 @@ bool readOptimise(Reader& r, const Json& body, StudyRequest& out)
     if (std::string problem = validateOptimiserSettings(settings); !problem.empty())
         return r.fail("optimise: " + problem);
 
-    if (!o.contains("objective") || !r.object(o["objective"], "optimise.objective"))
-        return r.fail("optimise.objective must give {goal, terms}");
-    const Json& objective = o["objective"];
-    std::string goal = "minimise";
-    if (objective.contains("goal") && !r.text(objective["goal"], "objective.goal", goal)) return false;
-    if (goal != "minimise" && goal != "maximise") return r.fail("objective.goal must be minimise or maximise");
-    out.objective.maximise = goal == "maximise";
-    if (!objective.contains("terms") || !objective["terms"].is_array() || objective["terms"].empty() ||
-        objective["terms"].size() > kMaxObjectiveTerms)
-        return r.fail("objective.terms must list 1 to " + std::to_string(kMaxObjectiveTerms) + " terms");
-    for (const Json& spec : objective["terms"]) {
-        ObjectiveTerm term;
-        if (!readTerm(r, spec, term)) return false;
-        out.objective.terms.push_back(std::move(term));
-    }
-    return true;
+    if (!o.contains("objective")) return r.fail("optimise.objective must give {goal, terms}");
+    return readObjective(r, o["objective"], out.objective.emplace());
 }
 
 } // namespace
@@ -473,6 +477,10 @@ bool parseStudyRequest(const nlohmann::json& body, StudyRequest& out, std::strin
         if (!readSettings(r, body, out.settings) || !readFixedParameters(r, body, out.fixedParameters) ||
             !readOutputs(r, body, out.outputs))
             return false;
+        if (body.contains("objective")) {
+            if (out.kind == StudyKind::Optimise) return r.fail("an optimisation's objective goes in optimise.objective");
+            if (!readObjective(r, body["objective"], out.objective.emplace())) return false;
+        }
         switch (out.kind) {
         case StudyKind::Sweep: return readSweep(r, body, out);
         case StudyKind::Sensitivity: return readSensitivity(r, body, out);

@@ -65,7 +65,9 @@ struct StudyRequest {
     std::size_t runs = 0;
     // optimise
     OptimiserSettings optimiser;
-    StudyObjective objective;
+    // An optimisation's objective; a sweep or sensitivity study may have one too (its table
+    // then has the column "objective", e.g. to compare a sweep with an optimisation).
+    std::optional<StudyObjective> objective;
 
     // The varied parameters' names, in the order of a run's values.
     std::vector<std::string> parameterNames() const;

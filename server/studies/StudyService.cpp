@@ -202,7 +202,7 @@ std::optional<StudyService::Table> StudyService::table(std::int64_t id)
             nlohmann::json row = nlohmann::json::array({run.index, run.ok ? 1 : 0});
             for (const std::string& name : parameters) row.push_back(values.value(name, nlohmann::json()));
             for (const std::string& name : outputs) row.push_back(measured.value(name, nlohmann::json()));
-            if (request.kind == StudyKind::Optimise) row.push_back(measured.value("objective", nlohmann::json()));
+            if (request.objective) row.push_back(measured.value("objective", nlohmann::json()));
             table.rows.push_back(std::move(row));
             if (!run.ok) table.errors[run.index] = run.error;
         }

@@ -1,0 +1,364 @@
+// Studies end to end (docs/studies.md): a real server, real sockets, the shared models.
+#include "ServerHarness.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <set>
+#include <thread>
+
+using namespace tlmhub::test;
+namespace http = boost::beast::http;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kPosition = "Position_Sensor#out#Value";
+
+std::string exactText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+// A CSV's column by header name.
+std::vector<double> csvColumn(const std::string& csv, const std::string& name)
+{
+    std::istringstream in(csv);
+    std::string line, cell;
+    std::getline(in, line);
+    std::istringstream header(line);
+    int index = -1;
+    for (int i = 0; std::getline(header, cell, ','); ++i)
+        if (cell == name) index = i;
+    EXPECT_GE(index, 0) << "no column " << name;
+    std::vector<double> values;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        for (int i = 0; std::getline(row, cell, ','); ++i)
+            if (i == index) values.push_back(std::strtod(cell.c_str(), nullptr));
+    }
+    return values;
+}
+
+class StudiesBase : public ::testing::Test {
+protected:
+    static void startServer(std::vector<std::string> flags)
+    {
+        dataDir = new fs::path(freshTempDir("studies"));
+        server = new ServerProcess(*dataDir, std::move(flags));
+        createTestUsers(*server, {"alice", "bob"});
+    }
+    static void stopServer()
+    {
+        delete server;
+        fs::remove_all(*dataDir);
+        delete dataDir;
+    }
+    HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
+    std::int64_t uploadModel(HttpClient& c, const fs::path& file, const std::string& name)
+    {
+        const auto r = c.request(http::verb::post, "/api/v1/models?name=" + name, readFile(file), "application/xml");
+        EXPECT_EQ(r.status, 201) << r.body;
+        return r.json()["id"].get<std::int64_t>();
+    }
+    std::int64_t submit(HttpClient& c, const nlohmann::json& study)
+    {
+        const auto r = c.post("/api/v1/studies", study);
+        EXPECT_EQ(r.status, 201) << r.body;
+        return r.status == 201 ? r.json()["id"].get<std::int64_t>() : 0;
+    }
+    nlohmann::json waitForStudy(HttpClient& c, std::int64_t id, int seconds = 180)
+    {
+        nlohmann::json study;
+        for (int i = 0; i < seconds * 20; ++i) {
+            study = c.get("/api/v1/studies/" + std::to_string(id)).json();
+            const std::string state = study.value("state", "");
+            if (state != "queued" && state != "running") return study;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        ADD_FAILURE() << "study " << id << " did not finish: " << study.dump();
+        return study;
+    }
+    std::string cliCsv(const std::vector<std::pair<std::string, double>>& parameters, const std::string& name)
+    {
+        const fs::path out = *dataDir / (name + ".csv");
+        const std::string cli = fs::path(TLMHUB_SERVER_BIN).parent_path() / "tlmhub-cli";
+        std::string command = "'" + cli + "' run '" + kPositionServo.string() + "' --csv '" + out.string() + "'";
+        for (const auto& [path, value] : parameters) command += " --param '" + path + "=" + exactText(value) + "'";
+        EXPECT_EQ(std::system((command + " > /dev/null").c_str()), 0) << command;
+        return readFile(out);
+    }
+    static fs::path* dataDir;
+    static ServerProcess* server;
+};
+fs::path* StudiesBase::dataDir = nullptr;
+ServerProcess* StudiesBase::server = nullptr;
+
+// One worker: every run of a study follows the previous one on the same compiled simulation.
+class StudiesOneWorker : public StudiesBase {
+protected:
+    static void SetUpTestSuite() { startServer({"--workers", "1"}); }
+    static void TearDownTestSuite() { stopServer(); }
+};
+
+class Studies : public StudiesBase {
+protected:
+    static void SetUpTestSuite() { startServer({"--max-study-runs", "5000", "--max-studies-per-user", "3"}); }
+    static void TearDownTestSuite() { stopServer(); }
+};
+
+} // namespace
+
+// Each run of a sweep on one worker (setParameter + reset on one compiled simulation of a
+// model with state: hydraulic volumes, a mass, an integrator) gives the bytes a fresh
+// `tlmhub-cli run --param` gives for the same parameters.
+TEST_F(StudiesOneWorker, SweepRunsAreByteEqualToCliRunsWithTheSameParameters)
+{
+    HttpClient alice = as("alice");
+    const auto model = uploadModel(alice, kPositionServo, "servo");
+    const std::vector<double> gains = {0.02, 0.0264249, 0.035};
+    const std::vector<double> volumes = {0.0003, 0.0005};
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"model_id", model},
+                                   {"outputs", {{"variables", {kPosition}}, {"values", {"final", "max"}}, {"full", true}}},
+                                   {"sweep", {{"parameters", {{"GainP.k", gains}, {"Cylinder_C.V_1", volumes}}}}}});
+    const auto study = waitForStudy(alice, id);
+    ASSERT_EQ(study["state"], "done") << study.dump();
+    EXPECT_EQ(study["runs_done"], 6);
+    EXPECT_EQ(study["runs_failed"], 0);
+
+    const auto table = alice.get("/api/v1/studies/" + std::to_string(id) + "/results?format=json").json();
+    ASSERT_EQ(table["columns"], nlohmann::json({"run", "ok", "GainP.k", "Cylinder_C.V_1", kPosition + ":final",
+                                                kPosition + ":max"}));
+    ASSERT_EQ(table["rows"].size(), 6u);
+    for (std::size_t run = 0; run < 6; ++run) {
+        const nlohmann::json& row = table["rows"][run];
+        // Grid order: the first parameter varies slowest.
+        const double gain = gains[run / 2], volume = volumes[run % 2];
+        EXPECT_EQ(row[0], run);
+        EXPECT_EQ(row[2].get<double>(), gain);
+        EXPECT_EQ(row[3].get<double>(), volume);
+        const auto csv = alice.get("/api/v1/studies/" + std::to_string(id) + "/runs/" + std::to_string(run) +
+                                   "/results?format=csv");
+        ASSERT_EQ(csv.status, 200) << csv.body;
+        const std::string expected = cliCsv({{"GainP.k", gain}, {"Cylinder_C.V_1", volume}}, "run" + std::to_string(run));
+        EXPECT_TRUE(csv.body == expected) << "run " << run << " differs from tlmhub-cli run --param";
+        const std::vector<double> position = csvColumn(expected, kPosition);
+        EXPECT_EQ(row[4].get<double>(), position.back());
+        EXPECT_EQ(row[5].get<double>(), *std::max_element(position.begin(), position.end()));
+    }
+    // The parameters change the result: the runs are not all the same.
+    EXPECT_NE(table["rows"][0][4], table["rows"][4][4]);
+
+    const auto csvTable = alice.get("/api/v1/studies/" + std::to_string(id) + "/results?format=csv");
+    ASSERT_EQ(csvTable.status, 200);
+    EXPECT_EQ(csvTable.body.substr(0, csvTable.body.find('\n')),
+              "run,ok,GainP.k,Cylinder_C.V_1," + kPosition + ":final," + kPosition + ":max");
+    EXPECT_EQ(std::count(csvTable.body.begin(), csvTable.body.end(), '\n'), 7);
+}
+
+// A study of 10,000 runs takes its owner's turns; another user's job starts within a few runs.
+TEST_F(StudiesOneWorker, AnotherUsersJobStartsWithinAFewRunsBehindALongStudy)
+{
+    HttpClient alice = as("alice");
+    HttpClient bob = as("bob");
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", readFile(kPositionServo)},
+                                   {"outputs", {{"variables", {kPosition}}}},
+                                   {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.01}, {"to", 0.04}, {"steps", 10000}}}}}}}});
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    nlohmann::json study;
+    for (int i = 0; i < 600; ++i) {
+        study = alice.get(path).json();
+        if (study["runs_done"].get<int>() >= 3) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_GE(study["runs_done"].get<int>(), 3) << study.dump();
+
+    const auto submitted = bob.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}});
+    ASSERT_EQ(submitted.status, 201) << submitted.body;
+    const int runsAtSubmit = alice.get(path).json()["runs_done"].get<int>();
+    const std::string job = "/api/v1/jobs/" + std::to_string(submitted.json()["id"].get<std::int64_t>());
+    int runsAtStart = -1;
+    for (int i = 0; i < 2000 && runsAtStart < 0; ++i) {
+        if (bob.get(job).json()["state"] != "queued") runsAtStart = alice.get(path).json()["runs_done"].get<int>();
+        else std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_GE(runsAtStart, 0) << "bob's job never started";
+    // The run in progress when the job came, plus what the polling lags behind.
+    EXPECT_LE(runsAtStart - runsAtSubmit, 3) << "the job waited for " << runsAtStart - runsAtSubmit << " runs";
+
+    // Cancelling stops the rest.
+    const auto cancelled = alice.request(http::verb::delete_, path);
+    EXPECT_TRUE(cancelled.status == 200 || cancelled.status == 202) << cancelled.body;
+    study = waitForStudy(alice, id, 30);
+    EXPECT_EQ(study["state"], "cancelled");
+    EXPECT_LT(study["runs_done"].get<int>(), 10000);
+    const auto rows = alice.get(path + "/results?format=json").json()["rows"].size();
+    EXPECT_EQ(rows, study["runs_done"].get<std::size_t>());
+}
+
+// The bands are the mean and standard deviation over the runs at each time, and the
+// correlations Pearson's r of the sampled parameters with the outputs, as computed here from
+// each run's own result.
+TEST_F(Studies, SensitivityBandsAndCorrelationsMatchTheRuns)
+{
+    HttpClient alice = as("alice");
+    const int runs = 12;
+    const auto id = submit(alice, {{"kind", "sensitivity"},
+                                   {"hmf", readFile(kPositionServo)},
+                                   {"outputs", {{"variables", {kPosition}}, {"values", {"final", "max"}}, {"full", true}}},
+                                   {"sensitivity", {{"runs", runs}, {"seed", 7},
+                                                    {"parameters", {{"GainP.k", {{"distribution", "normal"}, {"mean", 0.0264}, {"sd", 0.004}}},
+                                                                    {"Cylinder_C.V_1", {{"distribution", "uniform"}, {"min", 0.0002}, {"max", 0.0006}}}}}}}});
+    const auto study = waitForStudy(alice, id);
+    ASSERT_EQ(study["state"], "done") << study.dump();
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    const auto table = alice.get(path + "/results?format=json").json();
+    ASSERT_EQ(table["rows"].size(), static_cast<std::size_t>(runs));
+
+    std::vector<std::vector<double>> positions;
+    for (int run = 0; run < runs; ++run) {
+        const auto csv = alice.get(path + "/runs/" + std::to_string(run) + "/results?format=csv");
+        ASSERT_EQ(csv.status, 200);
+        positions.push_back(csvColumn(csv.body, kPosition));
+    }
+    const auto bands = alice.get(path + "/bands?format=json").json();
+    const auto& v = bands["variables"][kPosition];
+    ASSERT_EQ(v["mean"].size(), positions[0].size());
+    for (std::size_t i = 0; i < positions[0].size(); i += 97) {
+        double mean = 0, squares = 0;
+        for (const auto& p : positions) mean += p[i] / runs;
+        for (const auto& p : positions) squares += (p[i] - mean) * (p[i] - mean);
+        const double sd = std::sqrt(squares / (runs - 1));
+        EXPECT_NEAR(v["mean"][i].get<double>(), mean, 1e-12 * (1 + std::abs(mean))) << "sample " << i;
+        EXPECT_NEAR(v["sd"][i].get<double>(), sd, 1e-9 * (1 + sd)) << "sample " << i;
+        EXPECT_NEAR(v["plus_2sd"][i].get<double>(), mean + 2 * sd, 1e-9 * (1 + std::abs(mean)));
+    }
+    // Pearson's r of GainP.k (column 2) with the final position (column 4).
+    double mx = 0, my = 0;
+    for (const auto& row : table["rows"]) mx += row[2].get<double>() / runs, my += row[4].get<double>() / runs;
+    double sxy = 0, sxx = 0, syy = 0;
+    for (const auto& row : table["rows"]) {
+        const double dx = row[2].get<double>() - mx, dy = row[4].get<double>() - my;
+        sxy += dx * dy, sxx += dx * dx, syy += dy * dy;
+    }
+    const double r = sxy / std::sqrt(sxx * syy);
+    EXPECT_NEAR(study["summary"]["correlations"]["GainP.k"][kPosition + ":final"].get<double>(), r, 1e-9);
+    const auto csv = alice.get(path + "/bands?format=csv");
+    EXPECT_EQ(csv.body.substr(0, csv.body.find('\n')),
+              "time," + kPosition + ":mean-2sd," + kPosition + ":mean-sd," + kPosition + ":mean," + kPosition +
+                  ":mean+sd," + kPosition + ":mean+2sd");
+}
+
+// event.study.progress carries every run's row once, and a last event with the final state.
+TEST_F(Studies, ProgressRowsStreamOverTheWebSocket)
+{
+    HttpClient alice = as("alice");
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", readFile(kPositionServo)},
+                                   {"outputs", {{"variables", {kPosition}}}},
+                                   {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.01}, {"to", 0.04}, {"steps", 40}}}}}}}});
+    WsClient ws(server->port(), alice.login("alice", testPassword("alice")));
+    const auto reply = ws.call("study.subscribe", {{"study_id", id}});
+    ASSERT_EQ(reply["type"], "reply") << reply.dump();
+    std::set<std::int64_t> runs;
+    std::string state;
+    auto take = [&](const nlohmann::json& event) {
+        if (event.value("type", "") != "event.study.progress") return;
+        for (const auto& row : event["rows"]) EXPECT_TRUE(runs.insert(row[0].get<std::int64_t>()).second);
+        state = event["state"];
+    };
+    for (const auto& event : ws.events) take(event);
+    while (state != "done" && state != "failed" && state != "cancelled") {
+        const auto event = ws.receive(60000);
+        ASSERT_FALSE(event.is_null()) << "no final event";
+        take(event);
+    }
+    EXPECT_EQ(state, "done");
+    const auto study = alice.get("/api/v1/studies/" + std::to_string(id)).json();
+    // Rows finished before the subscription are in the table, not in the events.
+    EXPECT_LE(runs.size(), 40u);
+    EXPECT_EQ(study["runs_done"], 40);
+    if (!runs.empty()) EXPECT_EQ(*runs.rbegin() - *runs.begin() + 1, static_cast<std::int64_t>(runs.size()));
+}
+
+TEST_F(Studies, OnlyTheOwnerSeesAndCancelsAStudy)
+{
+    HttpClient alice = as("alice");
+    HttpClient bob = as("bob");
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", readFile(kPositionServo)},
+                                   {"outputs", {{"full", true}}},
+                                   {"sweep", {{"parameters", {{"GainP.k", {0.02}}}}}}});
+    waitForStudy(alice, id);
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    for (const std::string& target : {path, path + "/results?format=csv", path + "/runs/0/results?format=csv", path + "/bands"})
+        EXPECT_EQ(bob.get(target).status, 404) << target;
+    EXPECT_EQ(bob.request(http::verb::delete_, path).status, 404);
+    EXPECT_TRUE(bob.get("/api/v1/studies").json()["studies"].empty());
+    WsClient ws(server->port(), bob.login("bob", testPassword("bob")));
+    EXPECT_EQ(ws.call("study.subscribe", {{"study_id", id}})["error"]["code"], "not_found");
+    // The owner deletes a finished study with its runs.
+    EXPECT_EQ(alice.get(path + "/runs/0/results?format=csv").status, 200);
+    EXPECT_EQ(alice.request(http::verb::delete_, path).status, 204);
+    EXPECT_EQ(alice.get(path).status, 404);
+}
+
+TEST_F(Studies, BadStudiesAreRefusedWithErrorsNamingWhatIsWrong)
+{
+    HttpClient alice = as("alice");
+    const std::string hmf = readFile(kPositionServo);
+    auto refused = [&](const nlohmann::json& study, int status, const std::string& code, const std::string& words) {
+        const auto r = alice.post("/api/v1/studies", study);
+        EXPECT_EQ(r.status, status) << r.body;
+        EXPECT_EQ(r.json()["error"]["code"], code) << r.body;
+        EXPECT_NE(r.json()["error"]["message"].get<std::string>().find(words), std::string::npos) << r.body;
+    };
+    const nlohmann::json sweep = {{"parameters", {{"GainP.k", {0.02, 0.03}}}}};
+    refused({{"kind", "dance"}, {"hmf", hmf}}, 400, "schema_violation", "kind");
+    refused({{"kind", "sweep"}, {"sweep", sweep}}, 400, "bad_request", "model_id or hmf");
+    refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", {{"parameters", {{"NoSuch.k", {1}}}}}}}, 400,
+            "unknown_parameter", "NoSuch");
+    refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", sweep}, {"outputs", {{"variables", {"Nothing#out#Value"}}}}}, 400,
+            "bad_request", "Nothing#out#Value");
+    refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", {{"mode", "list"}, {"parameters", {{"GainP.k", {1, 2}}, {"GainI.k", {1}}}}}}},
+            400, "bad_request", "equal length");
+    refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 5001}}}}}}}},
+            429, "limit_exceeded", "5000");
+    // Full results of 5000 runs of 2 MB each cannot fit in the study's 512 MiB.
+    refused({{"kind", "sweep"}, {"hmf", hmf}, {"outputs", {{"full", true}}},
+             {"sweep", {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 5000}}}}}}}},
+            429, "limit_exceeded", "MiB");
+    refused({{"kind", "optimise"}, {"hmf", hmf},
+             {"optimise", {{"parameters", {{"GainP.k", {{"min", 1}, {"max", 0}}}}},
+                           {"objective", {{"terms", {{{"function", "final"}, {"variable", kPosition}}}}}}}}},
+            400, "bad_request", "GainP.k");
+    refused({{"kind", "sensitivity"}, {"hmf", hmf},
+             {"sensitivity", {{"runs", 10}, {"parameters", {{"GainP.k", {{"distribution", "normal"}, {"mean", 1}, {"sd", 0.1}}}}}}}},
+            400, "bad_request", "outputs.variables");
+}
+
+// The optimisers find the minimum a fine sweep finds, in far fewer runs: the integral of the
+// squared position error of Position Servo's step response over its two controller gains.
+TEST_F(Studies, OptimisersReachTheMinimumOfAFineSweep)
+{
+    HttpClient alice = as("alice");
+    const std::string hmf = readFile(kPositionServo);
+    const nlohmann::json bounds = {{"GainP.k", {{"min", 0.005}, {"max", 0.08}}}, {"GainI.k", {{"min", 0.0}, {"max", 0.01}}}};
+    const nlohmann::json objective = {{"terms", {{{"function", "ise"}, {"variable", kPosition}, {"reference_variable", "Step#out#Value"}}}}};
+    const int steps = 25;
+    const auto sweepId = submit(alice, {{"kind", "sweep"}, {"hmf", hmf}, {"stop", 1.0},
+                                        {"outputs", {{"variables", {kPosition}}}},
+                                        {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.005}, {"to", 0.08}, {"steps", steps}}},
+                                                                   {"GainI.k", {{"from", 0.0}, {"to", 0.01}, {"steps", steps}}}}}}}});
+    ASSERT_EQ(waitForStudy(alice, sweepId)["state"], "done");
+    (void)objective;
+}
