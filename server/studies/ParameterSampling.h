@@ -55,7 +55,8 @@ std::uint64_t splitMix64(std::uint64_t x);
 std::mt19937_64 indexedGenerator(std::uint64_t seed, std::size_t index);
 // Uniform in [0, 1): the top 53 bits of one output.
 double uniformUnit(std::mt19937_64& random);
-// Standard normal (Box-Muller, two uniform draws).
+// Standard normal (Box-Muller, two uniform draws; its last bits depend on std::log and
+// std::cos).
 double standardNormal(std::mt19937_64& random);
 
 } // namespace tlmhub::server
