@@ -14,9 +14,11 @@
 // evaluated (a failed run) is told as +infinity.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,9 @@ using Point = std::vector<double>;
 struct ParameterBounds {
     std::string name;
     double min = 0.0, max = 1.0;
-    std::optional<double> start;   // a starting point (Nelder-Mead's first vertex), within bounds
+    // A starting value within bounds: Nelder-Mead's first vertex, Complex-RF's first point,
+    // the swarm's first particle (the middle of the bounds, or random, when absent).
+    std::optional<double> start;
 };
 
 enum class OptimiserAlgorithm { ComplexRF, NelderMead, ParticleSwarm };
@@ -44,9 +48,10 @@ struct OptimiserSettings {
     // below this (relative to their magnitude), or the parameter spread below it (relative
     // to the bounds).
     double tolerance = 1e-4;
-    // Algorithm options by name (unknown names are refused by validateOptimiserSettings):
+    // Algorithm options by name (unknown names are refused by validateOptimiserSettings);
+    // docs/optimisation.md says what each does:
     //   complex-rf: "alpha" (reflection, 1.3), "randomisation" (0.3), "forgetting" (0.0),
-    //               "points" (complex size, 2 × parameters)
+    //               "points" (complex size, 2 × parameters and at least 3)
     //   nelder-mead: "alpha" (1), "gamma" (2), "rho" (0.5), "sigma" (0.5)
     //   particle-swarm: "particles" (20), "omega" (0.7), "c1" (1.5), "c2" (1.5)
     std::map<std::string, double> options;
@@ -60,7 +65,8 @@ public:
     virtual ~Optimiser() = default;
     // The next batch; empty when finished (or, never in practice, while a batch is untold).
     virtual std::vector<Point> ask() = 0;
-    // The objective values of the batch the last ask() returned, in its order.
+    // The objective values of the batch the last ask() returned, in its order (NaN counts as
+    // +infinity). Throws std::invalid_argument when no batch is untold or the sizes differ.
     virtual void tell(const std::vector<double>& values) = 0;
     // Converged or out of evaluations.
     virtual bool finished() const = 0;
@@ -74,5 +80,40 @@ public:
 
 // Requires validateOptimiserSettings(settings) to be empty.
 std::unique_ptr<Optimiser> makeOptimiser(const OptimiserSettings& settings);
+
+// ---- Building blocks the algorithms share (Optimiser.cpp) ----
+
+// The option `name`, or `fallback` when it is not set.
+double optionOr(const OptimiserSettings& settings, const std::string& name, double fallback);
+// `point` with each value moved into its parameter's [min, max].
+Point clampIntoBounds(Point point, const std::vector<ParameterBounds>& parameters);
+// Each value uniform in its parameter's bounds, except that a parameter's `start` is used
+// when `useStart` is set.
+Point randomPointInBounds(std::mt19937_64& random, const std::vector<ParameterBounds>& parameters,
+                          bool useStart);
+// The largest spread (max - min over `points`) of any parameter, relative to its range.
+double relativeParameterSpread(const std::vector<Point>& points, const std::vector<ParameterBounds>& parameters);
+// Whether max - min of `values` is at most `tolerance` times their largest magnitude; false
+// while any value is not finite (a failed run is never "converged" on).
+bool objectiveSpreadWithin(const std::vector<double>& values, double tolerance);
+// The convergence rule of all three algorithms (OptimiserSettings::tolerance).
+bool convergedWithin(const std::vector<Point>& points, const std::vector<double>& values,
+                     const std::vector<ParameterBounds>& parameters, double tolerance);
+
+// The best point told so far and the number of evaluations: what every algorithm reports.
+class EvaluationRecord {
+public:
+    // Records a told batch (NaN as +infinity) and returns its values as the algorithm uses
+    // them; throws std::invalid_argument when the sizes differ.
+    std::vector<double> record(const std::vector<Point>& batch, const std::vector<double>& values);
+    const Point& best() const { return mBest; }
+    double bestValue() const { return mBestValue; }
+    std::size_t evaluations() const { return mEvaluations; }
+
+private:
+    Point mBest;
+    double mBestValue = std::numeric_limits<double>::infinity();
+    std::size_t mEvaluations = 0;
+};
 
 } // namespace tlmhub::server
