@@ -124,6 +124,16 @@ paths = {
         "downloads a browser starts itself; the only REST use of the query string for authentication",
         {**ok("The link", "DownloadLink"), **errors("400", "401")}, body=json_body("DownloadLinkRequest"),
         tag="auth")},
+    "/tokens": {
+        "get": op("The caller's API tokens, newest first (never their text)",
+                  {**ok("Tokens", "TokenList"), **errors("401")}, tag="auth"),
+        "post": op("Create a personal API token for scripts (Authorization: Bearer tlmh_...; never in a URL); "
+                   "the response is the only time its text is shown; at most 50 per user",
+                   {**ok("Created", "TokenCreated", "201"), **errors("400", "401", "429")},
+                   body=json_body("TokenCreate"), tag="auth")},
+    "/tokens/{id}": {
+        "delete": op("Revoke one of the caller's API tokens at once (its open WebSockets end)",
+                     {"204": {"description": "Revoked"}, **errors("401", "404")}, params=[ID], tag="auth")},
     "/stats": {"get": op("Transport gauges (admin)", {**ok("Gauges", "ServerStats"), **errors("401", "403")},
                          tag="meta")},
     "/models": {
@@ -213,8 +223,9 @@ paths = {
          **errors("400", "401", "404", "409")},
         params=[ID, {"name": "format", "in": "query", "required": False,
                      "schema": {"type": "string", "enum": ["csv", "json"]}}], tag="studies")},
-    "/ws": {"get": op("WebSocket upgrade for the tlmhub.v1 protocol (see protocol/README.md); the token "
-                      "comes as ?token= (browsers) or Authorization: Bearer",
+    "/ws": {"get": op("WebSocket upgrade for the tlmhub.v1 protocol (see protocol/README.md); a login token "
+                      "comes as ?token= (browsers) or Authorization: Bearer, an API token only as "
+                      "Authorization: Bearer",
                       {"101": {"description": "Switching protocols"}, **errors("401")},
                       params=[{"name": "token", "in": "query", "required": False, "schema": {"type": "string"}}],
                       tag="websocket")},

@@ -2,6 +2,7 @@
 // What every REST route handler works with: the services, the authenticated call, and
 // helpers for JSON bodies and the protocol's error shape.
 #include "server/auth/Accounts.h"
+#include "server/auth/ApiTokens.h"
 #include "server/auth/DownloadLinks.h"
 #include "server/auth/LiveSessions.h"
 #include "server/auth/LoginRateLimiter.h"
@@ -32,6 +33,7 @@ struct Services {
     Accounts& users;
     ModelStore& models;
     TokenService& tokens;
+    ApiTokens& apiTokens;               // personal tokens for scripts
     LoginRateLimiter& loginLimiter;     // failures per user name
     LoginRateLimiter& addressLimiter;   // failures per client address (looser: a lab shares one)
     JobQueue& queue;
@@ -47,7 +49,7 @@ struct Call {
     const std::string& clientAddress;
     RouteParams params;
     std::optional<User> user;   // set on every route that needs authentication
-    std::string token;          // the bearer token it was authenticated with
+    std::string token;          // the bearer token it was authenticated with (login or API)
     const User& who() const { return *user; }
 };
 
@@ -100,6 +102,7 @@ void addAuthRoutes(std::vector<RouteSpec>& routes);
 void addUserRoutes(std::vector<RouteSpec>& routes);
 void addModelRoutes(std::vector<RouteSpec>& routes);
 void addJobRoutes(std::vector<RouteSpec>& routes);
+void addTokenRoutes(std::vector<RouteSpec>& routes);
 void addCatalogueRoutes(std::vector<RouteSpec>& routes);
 void addStudyRoutes(std::vector<RouteSpec>& routes);
 

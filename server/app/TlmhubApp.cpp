@@ -29,6 +29,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mStorage = openStorage(storageConfig(mOptions));
     mUsers = std::make_unique<Accounts>(mStorage->users());
     mTokens = std::make_unique<TokenService>(mStorage->sessions(), mStorage->users(), mOptions.tokenTtl);
+    mApiTokens = std::make_unique<ApiTokens>(mStorage->apiTokens(), mStorage->users());
     mLoginLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures, mOptions.loginWindow);
     mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures * 10, mOptions.loginWindow);
     // A job still marked running was cut off by a crash or kill: say so, keep its input.
@@ -40,13 +41,15 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mStudies = std::make_unique<StudyService>(mStorage->studies(), mStorage->results(), *mQueue, *mStudyHub,
                                               mOptions.limits, mOptions.studyLimits, workers);
     if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(mStorage->jobs(), mOptions.resultTtl);
-    mLiveSessions = std::make_unique<LiveSessions>(*mTokens, kLoginCheckPeriod);
+    mLiveSessions = std::make_unique<LiveSessions>(
+        [this](const std::string& token) { return bearerUser(token).has_value(); }, kLoginCheckPeriod);
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
                                             kHashingQueueLimit);
-    mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mLoginLimiter, *mAddressLimiter,
-                                 *mQueue, *mStreams, *mStudies, *mLiveSessions, *mDownloadLinks, *mPools});
+    mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
+                                 *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLiveSessions, *mDownloadLinks,
+                                 *mPools});
 
     std::vector<RouteSpec> routes;
     addCatalogueRoutes(routes);
@@ -55,6 +58,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     addModelRoutes(routes);
     addJobRoutes(routes);
     addStudyRoutes(routes);
+    addTokenRoutes(routes);
     for (RouteSpec& r : routes)
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
 }
@@ -86,6 +90,11 @@ void TlmhubApp::shutdown()
     if (mQueue) mQueue->shutdown();
 }
 
+std::optional<User> TlmhubApp::bearerUser(const std::string& token)
+{
+    return ApiTokens::isApiToken(token) ? mApiTokens->authenticate(token) : mTokens->validate(token);
+}
+
 std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteParams& params,
                                             std::string& token, bool queryToken)
 {
@@ -93,8 +102,10 @@ std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteP
     const std::string bearer = "Bearer ";
     if (header.rfind(bearer, 0) == 0) {
         token = header.substr(bearer.size());
-        return mTokens->validate(token);
+        return bearerUser(token);
     }
+    // Login sessions only: an API token lives for months, and URLs end up in logs and
+    // browser histories.
     if (queryToken) {
         const auto q = params.query.find("token");
         if (q == params.query.end()) return std::nullopt;

@@ -42,15 +42,18 @@ private:
     };
     // Authenticates where the route needs it, then runs it; errors become error responses.
     Response callRoute(const Route& route, Call& call);
-    // Bearer header; or, where `queryToken` allows (the WebSocket upgrade), ?token=; or, on
-    // GET, a signed download link.
+    // Bearer header (a login token or an API token); or, where `queryToken` allows (the
+    // WebSocket upgrade), ?token= (a login token only); or, on GET, a signed download link.
     std::optional<User> authenticate(const Request& request, const RouteParams& params,
                                      std::string& token, bool queryToken);
+    // The user of a Bearer token, told apart by its form: API tokens have their prefix.
+    std::optional<User> bearerUser(const std::string& token);
 
     ServerOptions mOptions;
     std::unique_ptr<Storage> mStorage;
     std::unique_ptr<Accounts> mUsers;
     std::unique_ptr<TokenService> mTokens;
+    std::unique_ptr<ApiTokens> mApiTokens;
     std::unique_ptr<LoginRateLimiter> mLoginLimiter;
     std::unique_ptr<LoginRateLimiter> mAddressLimiter;
     std::unique_ptr<StreamHub> mStreams;

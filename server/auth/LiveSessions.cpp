@@ -1,11 +1,12 @@
 #include "server/auth/LiveSessions.h"
 
+#include <utility>
 #include <vector>
 
 namespace tlmhub::server {
 
-LiveSessions::LiveSessions(TokenService& tokens, std::chrono::milliseconds period)
-    : mTokens(tokens), mPeriod(period), mThread([this] { loop(); }) {}
+LiveSessions::LiveSessions(TokenCheck stillValid, std::chrono::milliseconds period)
+    : mStillValid(std::move(stillValid)), mPeriod(period), mThread([this] { loop(); }) {}
 
 LiveSessions::~LiveSessions()
 {
@@ -42,7 +43,7 @@ int LiveSessions::sweep()
     // Validation reads the database: outside our lock, so add/remove never wait on it.
     int closed = 0;
     for (const auto& [id, entry] : entries) {
-        if (mTokens.validate(entry.token)) continue;
+        if (mStillValid(entry.token)) continue;
         if (auto sender = entry.sender.lock()) sender->close("login ended: log in again");
         remove(id);
         ++closed;

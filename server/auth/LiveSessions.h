@@ -1,14 +1,15 @@
 #pragma once
-// The open WebSocket connections and the login token each was opened with, so a connection
-// ends when its login does: logout, password change, expiry, or a disabled account. Checked
-// on a thread of its own every `period` (expiry needs a clock anyway) and at once by the
-// routes that end logins, so a socket closes well within a second.
-#include "server/auth/TokenService.h"
+// The open WebSocket connections and the token each was opened with (a login's or an API
+// token), so a connection ends when its token does: logout, password change, expiry, a
+// revoked API token, or a disabled account. Checked on a thread of its own every `period`
+// (expiry needs a clock anyway) and at once by the routes that end tokens, so a socket closes
+// well within a second.
 #include "server/http/HttpApplication.h"
 
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -19,7 +20,9 @@ namespace tlmhub::server {
 
 class LiveSessions {
 public:
-    LiveSessions(TokenService& tokens, std::chrono::milliseconds period);
+    // Whether `token` still lets its user in (read fresh: a disabled account's does not).
+    using TokenCheck = std::function<bool(const std::string& token)>;
+    LiveSessions(TokenCheck stillValid, std::chrono::milliseconds period);
     ~LiveSessions();
     LiveSessions(const LiveSessions&) = delete;
     LiveSessions& operator=(const LiveSessions&) = delete;
@@ -40,7 +43,7 @@ private:
     };
     void loop();
 
-    TokenService& mTokens;
+    const TokenCheck mStillValid;
     const std::chrono::milliseconds mPeriod;
     std::mutex mMutex;
     std::map<std::uint64_t, Entry> mEntries;

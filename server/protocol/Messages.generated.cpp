@@ -351,6 +351,70 @@ void to_json(nlohmann::json& j, const LoginResponse& v)
     j["user"] = v.user;
 }
 
+void from_json(const nlohmann::json& j, TokenCreate& v)
+{
+    j.at("name").get_to(v.name);
+    if (const auto x = j.find("expires_in_days"); x != j.end()) v.expiresInDays = x->get<std::int64_t>();
+}
+
+void to_json(nlohmann::json& j, const TokenCreate& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    if (v.expiresInDays) j["expires_in_days"] = *v.expiresInDays;
+}
+
+void from_json(const nlohmann::json& j, TokenCreated& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("name").get_to(v.name);
+    j.at("token").get_to(v.token);
+    j.at("created_at").get_to(v.createdAt);
+    if (const nlohmann::json& x = j.at("expires_at"); !x.is_null()) v.expiresAt = x.get<std::int64_t>();
+    if (const nlohmann::json& x = j.at("last_used_at"); !x.is_null()) v.lastUsedAt = x.get<std::int64_t>();
+}
+
+void to_json(nlohmann::json& j, const TokenCreated& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["name"] = v.name;
+    j["token"] = v.token;
+    j["created_at"] = v.createdAt;
+    j["expires_at"] = v.expiresAt ? nlohmann::json(*v.expiresAt) : nlohmann::json(nullptr);
+    j["last_used_at"] = v.lastUsedAt ? nlohmann::json(*v.lastUsedAt) : nlohmann::json(nullptr);
+}
+
+void from_json(const nlohmann::json& j, TokenInfo& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("name").get_to(v.name);
+    j.at("created_at").get_to(v.createdAt);
+    if (const nlohmann::json& x = j.at("expires_at"); !x.is_null()) v.expiresAt = x.get<std::int64_t>();
+    if (const nlohmann::json& x = j.at("last_used_at"); !x.is_null()) v.lastUsedAt = x.get<std::int64_t>();
+}
+
+void to_json(nlohmann::json& j, const TokenInfo& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["name"] = v.name;
+    j["created_at"] = v.createdAt;
+    j["expires_at"] = v.expiresAt ? nlohmann::json(*v.expiresAt) : nlohmann::json(nullptr);
+    j["last_used_at"] = v.lastUsedAt ? nlohmann::json(*v.lastUsedAt) : nlohmann::json(nullptr);
+}
+
+void from_json(const nlohmann::json& j, TokenList& v)
+{
+    j.at("tokens").get_to(v.tokens);
+}
+
+void to_json(nlohmann::json& j, const TokenList& v)
+{
+    j = nlohmann::json::object();
+    j["tokens"] = v.tokens;
+}
+
 void from_json(const nlohmann::json& j, PasswordChange& v)
 {
     j.at("old_password").get_to(v.oldPassword);

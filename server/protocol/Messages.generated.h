@@ -96,6 +96,10 @@ struct SysParamRemoveRequest;
 struct SysParamSetRequest;
 struct System;
 struct SystemPort;
+struct TokenCreate;
+struct TokenCreated;
+struct TokenInfo;
+struct TokenList;
 struct User;
 struct UserCreate;
 struct UserRef;
@@ -297,6 +301,44 @@ struct LoginResponse {
 };
 void from_json(const nlohmann::json& j, LoginResponse& v);
 void to_json(nlohmann::json& j, const LoginResponse& v);
+
+// JSON body of POST /tokens: a personal API token for scripts.
+struct TokenCreate {
+    std::string name{};
+    std::optional<std::int64_t> expiresInDays;
+};
+void from_json(const nlohmann::json& j, TokenCreate& v);
+void to_json(nlohmann::json& j, const TokenCreate& v);
+
+// A new API token; the only time `token` (tlmh_ and 43 characters of base64url) is shown.
+struct TokenCreated {
+    std::int64_t id{};
+    std::string name{};
+    std::string token{};
+    std::int64_t createdAt{};
+    std::optional<std::int64_t> expiresAt;
+    std::optional<std::int64_t> lastUsedAt;
+};
+void from_json(const nlohmann::json& j, TokenCreated& v);
+void to_json(nlohmann::json& j, const TokenCreated& v);
+
+// An API token as listed (never its text).
+struct TokenInfo {
+    std::int64_t id{};
+    std::string name{};
+    std::int64_t createdAt{};
+    std::optional<std::int64_t> expiresAt;
+    std::optional<std::int64_t> lastUsedAt;
+};
+void from_json(const nlohmann::json& j, TokenInfo& v);
+void to_json(nlohmann::json& j, const TokenInfo& v);
+
+// GET /tokens: the caller's API tokens, newest first.
+struct TokenList {
+    std::vector<TokenInfo> tokens;
+};
+void from_json(const nlohmann::json& j, TokenList& v);
+void to_json(nlohmann::json& j, const TokenList& v);
 
 struct PasswordChange {
     std::string oldPassword{};
@@ -1039,6 +1081,10 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<SysParamSetRequest>("SysParamSetRequest");
     visit.template operator()<System>("System");
     visit.template operator()<SystemPort>("SystemPort");
+    visit.template operator()<TokenCreate>("TokenCreate");
+    visit.template operator()<TokenCreated>("TokenCreated");
+    visit.template operator()<TokenInfo>("TokenInfo");
+    visit.template operator()<TokenList>("TokenList");
     visit.template operator()<User>("User");
     visit.template operator()<UserCreate>("UserCreate");
     visit.template operator()<UserRef>("UserRef");

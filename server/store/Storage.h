@@ -1,9 +1,9 @@
 #pragma once
 // The server's storage: one object per back end that hands out the stores of every aggregate
-// (users, sessions, models, jobs, results, meta facts). Opening it applies the schema
-// migrations the database lacks, so every store finds the current schema. No SQLite or
-// PostgreSQL type appears in this header or in any store interface; the back ends live in
-// server/store/sqlite/ and server/store/postgres/.
+// (users, sessions, models, jobs, results, meta facts, API tokens, studies). Opening it
+// applies the schema migrations the database lacks, so every store finds the current schema.
+// No SQLite or PostgreSQL type appears in this header or in any store interface; the back
+// ends live in server/store/sqlite/ and server/store/postgres/.
 //
 // Every store method may be called from any thread at the same time.
 #include "server/store/ApiTokenStore.h"
@@ -63,7 +63,7 @@ public:
 
 // The newest schema version this build knows. Both back ends keep their migrations in an
 // array of this size, so a migration added to one and not the other does not compile.
-inline constexpr int kSchemaVersion = 2;
+inline constexpr int kSchemaVersion = 3;
 
 // Opens the back end `config.database` names and migrates its schema. Throws StoreError
 // (Unavailable when it cannot be reached or opened, Corrupt when its schema is newer than

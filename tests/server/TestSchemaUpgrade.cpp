@@ -174,10 +174,18 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         EXPECT_EQ(result->columns.size(), 58u);
 
         EXPECT_EQ(storage->meta().get("seeded:pressure-build-up.hmf"), std::optional<std::string>("1796288184"));
+
+        // Version 3's tables take rows of the old accounts and models.
+        const auto token = storage->apiTokens().insert(2, "bob's script", "hash of bob's token", kFixtureTime, std::nullopt);
+        ASSERT_TRUE(token);
+        EXPECT_EQ(storage->apiTokens().use("hash of bob's token", kFixtureTime)->userId, 2);
+        const auto study = storage->studies().create(2, 2, "sweep", "pump size", "{}", 4);
+        ASSERT_TRUE(study);
+        EXPECT_EQ(storage->studies().info(*study)->modelId, std::optional<std::int64_t>(2));
     }
 
-    // The migrations are recorded, version 2's indexes exist, and opening again applies
-    // nothing more.
+    // The migrations are recorded, version 2's and 3's indexes exist, and opening again
+    // applies nothing more.
     const auto applied = migrationsOf(file);
     ASSERT_EQ(applied.size(), static_cast<std::size_t>(kSchemaVersion));
     for (int v = 1; v <= kSchemaVersion; ++v) EXPECT_EQ(applied[static_cast<std::size_t>(v - 1)].first, v);
@@ -186,6 +194,8 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         const auto indexes = indexesOf(raw, "sessions");
         EXPECT_EQ(indexes.count("sessions_user"), 1u);
         EXPECT_EQ(indexes.count("sessions_expiry"), 1u);
+        EXPECT_EQ(indexesOf(raw, "api_tokens").count("api_tokens_user"), 1u);
+        EXPECT_EQ(indexesOf(raw, "studies").count("studies_owner"), 1u);
     }
     {
         const auto again = openStorage({.database = file.string()});

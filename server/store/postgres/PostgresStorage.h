@@ -21,6 +21,8 @@ public:
     JobStore& jobs() override { return mJobs; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
+    ApiTokenStore& apiTokens() override { return mApiTokens; }
+    StudyStore& studies() override { return mStudies; }
     int schemaVersion() override;
     std::string describe() const override;
     // Always throws: a PostgreSQL database is backed up with pg_dump.
@@ -34,6 +36,8 @@ private:
     PostgresJobStore mJobs{mDb};
     PostgresResultStore mResults{mDb};
     PostgresMetaStore mMeta{mDb};
+    PostgresApiTokenStore mApiTokens{mDb};
+    PostgresStudyStore mStudies{mDb};
 };
 
 std::unique_ptr<Storage> openPostgresStorage(const StorageConfig& config);

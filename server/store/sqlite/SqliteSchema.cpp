@@ -77,8 +77,50 @@ void indexSessions(SQLite::Database& db)
     db.exec("CREATE INDEX sessions_expiry ON sessions(expires_at)");
 }
 
+// Version 3: personal API tokens and studies. A user's tokens and studies go with the user, a
+// study's runs with the study; the model is not a foreign key, as for jobs.
+void createTokensAndStudies(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE api_tokens ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " name TEXT NOT NULL,"
+            " token_hash TEXT UNIQUE NOT NULL,"
+            " created_at INTEGER NOT NULL,"
+            " expires_at INTEGER,"
+            " last_used_at INTEGER)");
+    db.exec("CREATE INDEX api_tokens_user ON api_tokens(user_id)");
+    db.exec("CREATE TABLE studies ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " owner_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " model_id INTEGER,"
+            " kind TEXT NOT NULL,"
+            " name TEXT NOT NULL,"
+            " state TEXT NOT NULL,"
+            " runs_total INTEGER NOT NULL,"
+            " runs_done INTEGER NOT NULL DEFAULT 0,"
+            " runs_failed INTEGER NOT NULL DEFAULT 0,"
+            " error TEXT NOT NULL DEFAULT '',"
+            " created_at INTEGER NOT NULL,"
+            " started_at INTEGER NOT NULL DEFAULT 0,"
+            " finished_at INTEGER NOT NULL DEFAULT 0,"
+            " request TEXT NOT NULL,"
+            " summary TEXT NOT NULL DEFAULT '')");
+    db.exec("CREATE INDEX studies_owner ON studies(owner_id)");
+    db.exec("CREATE INDEX studies_state ON studies(state)");
+    db.exec("CREATE TABLE study_runs ("
+            " study_id INTEGER NOT NULL REFERENCES studies(id) ON DELETE CASCADE,"
+            " run_index INTEGER NOT NULL,"
+            " ok INTEGER NOT NULL,"
+            " parameters TEXT NOT NULL,"
+            " outputs TEXT NOT NULL,"
+            " error TEXT NOT NULL DEFAULT '',"
+            " result BLOB,"
+            " PRIMARY KEY (study_id, run_index))");
+}
+
 using Migration = void (*)(SQLite::Database&);
-constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions};
+constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies};
 
 } // namespace
 

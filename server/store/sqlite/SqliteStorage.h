@@ -19,6 +19,8 @@ public:
     JobStore& jobs() override { return mJobs; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
+    ApiTokenStore& apiTokens() override { return mApiTokens; }
+    StudyStore& studies() override { return mStudies; }
     int schemaVersion() override;
     std::string describe() const override;
     void backup(const std::filesystem::path& file) override;
@@ -31,6 +33,8 @@ private:
     SqliteJobStore mJobs{mDb};
     SqliteResultStore mResults{mDb};
     SqliteMetaStore mMeta{mDb};
+    SqliteApiTokenStore mApiTokens{mDb};
+    SqliteStudyStore mStudies{mDb};
 };
 
 // Replaces the database at `databasePath` with the snapshot `backupFile` (written by

@@ -1,11 +1,13 @@
 #pragma once
 // The SQLite implementations of the store interfaces, one per aggregate (each in its own
 // .cpp), all on one SqliteDatabase.
+#include "server/store/ApiTokenStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
 #include "server/store/SessionStore.h"
+#include "server/store/StudyStore.h"
 #include "server/store/UserStore.h"
 #include "server/store/sqlite/SqliteDatabase.h"
 
@@ -96,6 +98,44 @@ public:
     explicit SqliteMetaStore(SqliteDatabase& db) : mDb(db) {}
     std::optional<std::string> get(const std::string& key) override;
     void set(const std::string& key, const std::string& value) override;
+
+private:
+    SqliteDatabase& mDb;
+};
+
+class SqliteApiTokenStore final : public ApiTokenStore {
+public:
+    explicit SqliteApiTokenStore(SqliteDatabase& db) : mDb(db) {}
+    std::optional<std::int64_t> insert(std::int64_t userId, const std::string& name, const std::string& tokenHash,
+                                       std::int64_t createdAt, std::optional<std::int64_t> expiresAt) override;
+    std::optional<ApiTokenInfo> use(const std::string& tokenHash, std::int64_t now) override;
+    std::vector<ApiTokenInfo> list(std::int64_t userId) override;
+    std::size_t count(std::int64_t userId) override;
+    bool remove(std::int64_t userId, std::int64_t id) override;
+
+private:
+    SqliteDatabase& mDb;
+};
+
+class SqliteStudyStore final : public StudyStore {
+public:
+    explicit SqliteStudyStore(SqliteDatabase& db) : mDb(db) {}
+    std::optional<std::int64_t> create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
+                                       const std::string& kind, const std::string& name,
+                                       const std::string& request, std::int64_t runsTotal) override;
+    std::optional<StudyInfo> info(std::int64_t id) override;
+    std::optional<std::string> request(std::int64_t id) override;
+    std::vector<StudyInfo> listForOwner(std::int64_t ownerId) override;
+    std::vector<StudyInfo> listInState(JobState state) override;
+    bool markRunning(std::int64_t id) override;
+    bool addRun(std::int64_t studyId, const StudyRun& run, const std::string* resultBlob) override;
+    void setSummary(std::int64_t id, const std::string& summary) override;
+    bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) override;
+    int markRunningInterrupted() override;
+    std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) override;
+    std::optional<std::string> runResult(std::int64_t studyId, std::int64_t index) override;
+    std::size_t storedBytes(std::int64_t ownerId) override;
+    bool remove(std::int64_t id) override;
 
 private:
     SqliteDatabase& mDb;

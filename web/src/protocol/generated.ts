@@ -128,6 +128,10 @@ export interface ProtocolDefinitions {
     HealthResponse?: HealthResponse;
     LoginRequest?: LoginRequest;
     LoginResponse?: LoginResponse;
+    TokenCreate?: TokenCreate;
+    TokenCreated?: TokenCreated;
+    TokenInfo?: TokenInfo;
+    TokenList?: TokenList;
     PasswordChange?: PasswordChange;
     UserCreate?: UserCreate;
     UserUpdate?: UserUpdate;
@@ -373,6 +377,61 @@ export interface LoginResponse {
      */
     expires_at: number;
     user: User;
+}
+/**
+ * JSON body of POST /tokens: a personal API token for scripts.
+ */
+export interface TokenCreate {
+    name: string;
+    /**
+     * Absent: the token lasts until it is deleted.
+     */
+    expires_in_days?: number;
+}
+/**
+ * A new API token; the only time `token` (tlmh_ and 43 characters of base64url) is shown.
+ */
+export interface TokenCreated {
+    id: number;
+    name: string;
+    token: string;
+    /**
+     * Unix seconds.
+     */
+    created_at: number;
+    /**
+     * Unix seconds; null when unset.
+     */
+    expires_at: number | null;
+    /**
+     * Unix seconds; null when unset.
+     */
+    last_used_at: number | null;
+}
+/**
+ * An API token as listed (never its text).
+ */
+export interface TokenInfo {
+    id: number;
+    name: string;
+    /**
+     * Unix seconds.
+     */
+    created_at: number;
+    /**
+     * Unix seconds; null when unset.
+     */
+    expires_at: number | null;
+    /**
+     * Unix seconds; null when unset.
+     */
+    last_used_at: number | null;
+}
+/**
+ * GET /tokens: the caller's API tokens, newest first.
+ */
+export interface TokenList {
+    tokens: TokenInfo[];
 }
 export interface PasswordChange {
     old_password: string;

@@ -1,0 +1,242 @@
+#include "server/store/UnixTime.h"
+#include "server/store/sqlite/SqliteStores.h"
+
+#include <SQLiteCpp/Transaction.h>
+#include <sqlite3.h>
+
+namespace tlmhub::server {
+
+namespace {
+
+// The columns readInfo reads, in its order; one full text per query so each is prepared once.
+#define TLMHUB_STUDY_INFO                                                                       \
+    "SELECT id, owner_id, model_id, kind, name, state, runs_total, runs_done, runs_failed,"    \
+    " error, created_at, started_at, finished_at, summary FROM studies"
+constexpr const char* kInfoById = TLMHUB_STUDY_INFO " WHERE id = ?";
+constexpr const char* kInfoByOwner = TLMHUB_STUDY_INFO " WHERE owner_id = ? ORDER BY id DESC";
+constexpr const char* kInfoByState = TLMHUB_STUDY_INFO " WHERE state = ? ORDER BY id ASC";
+#undef TLMHUB_STUDY_INFO
+
+StudyInfo readInfo(SQLite::Statement& q)
+{
+    StudyInfo s;
+    s.id = q.getColumn(0).getInt64();
+    s.ownerId = q.getColumn(1).getInt64();
+    if (!q.getColumn(2).isNull()) s.modelId = q.getColumn(2).getInt64();
+    s.kind = q.getColumn(3).getString();
+    s.name = q.getColumn(4).getString();
+    jobStateFromName(q.getColumn(5).getString(), s.state);
+    s.runsTotal = q.getColumn(6).getInt64();
+    s.runsDone = q.getColumn(7).getInt64();
+    s.runsFailed = q.getColumn(8).getInt64();
+    s.error = q.getColumn(9).getString();
+    s.createdAt = q.getColumn(10).getInt64();
+    s.startedAt = q.getColumn(11).getInt64();
+    s.finishedAt = q.getColumn(12).getInt64();
+    s.summary = q.getColumn(13).getString();
+    return s;
+}
+
+std::vector<StudyInfo> readInfos(SqliteConnection::Statement& q)
+{
+    std::vector<StudyInfo> out;
+    while (q->executeStep()) out.push_back(readInfo(*q));
+    return out;
+}
+
+} // namespace
+
+std::optional<std::int64_t> SqliteStudyStore::create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
+                                                      const std::string& kind, const std::string& name,
+                                                      const std::string& request, std::int64_t runsTotal)
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) -> std::optional<std::int64_t> {
+        auto insert = c.prepared("INSERT INTO studies(owner_id, model_id, kind, name, state, runs_total,"
+                                 " created_at, request) VALUES(?, ?, ?, ?, ?, ?, ?, ?)");
+        insert->bind(1, ownerId);
+        if (modelId) insert->bind(2, *modelId);
+        else insert->bind(2);
+        insert->bind(3, kind);
+        insert->bind(4, name);
+        insert->bind(5, jobStateName(JobState::Queued));
+        insert->bind(6, runsTotal);
+        insert->bind(7, now);
+        insert->bind(8, request);
+        try {
+            insert->exec();
+        } catch (const SQLite::Exception& e) {
+            if (e.getExtendedErrorCode() == SQLITE_CONSTRAINT_FOREIGNKEY) return std::nullopt;
+            throw;
+        }
+        return c.db().getLastInsertRowid();
+    });
+}
+
+std::optional<StudyInfo> SqliteStudyStore::info(std::int64_t id)
+{
+    return mDb.run([&](SqliteConnection& c) -> std::optional<StudyInfo> {
+        auto q = c.prepared(kInfoById);
+        q->bind(1, id);
+        if (!q->executeStep()) return std::nullopt;
+        return readInfo(*q);
+    });
+}
+
+std::optional<std::string> SqliteStudyStore::request(std::int64_t id)
+{
+    return mDb.run([&](SqliteConnection& c) -> std::optional<std::string> {
+        auto q = c.prepared("SELECT request FROM studies WHERE id = ?");
+        q->bind(1, id);
+        if (!q->executeStep()) return std::nullopt;
+        return q->getColumn(0).getString();
+    });
+}
+
+std::vector<StudyInfo> SqliteStudyStore::listForOwner(std::int64_t ownerId)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared(kInfoByOwner);
+        q->bind(1, ownerId);
+        return readInfos(q);
+    });
+}
+
+std::vector<StudyInfo> SqliteStudyStore::listInState(JobState state)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared(kInfoByState);
+        q->bind(1, jobStateName(state));
+        return readInfos(q);
+    });
+}
+
+bool SqliteStudyStore::markRunning(std::int64_t id)
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET state = 'running', started_at = ? WHERE id = ? AND state = 'queued'");
+        q->bind(1, now);
+        q->bind(2, id);
+        return q->exec() == 1;
+    });
+}
+
+bool SqliteStudyStore::addRun(std::int64_t studyId, const StudyRun& run, const std::string* resultBlob)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        {
+            auto count = c.prepared("UPDATE studies SET runs_done = runs_done + ?, runs_failed = runs_failed + ?"
+                                    " WHERE id = ? AND state = 'running'");
+            count->bind(1, run.ok ? 1 : 0);
+            count->bind(2, run.ok ? 0 : 1);
+            count->bind(3, studyId);
+            if (count->exec() != 1) return false;
+        }
+        // A run index taken already inserts nothing; the count above is rolled back with it.
+        auto insert = c.prepared("INSERT INTO study_runs(study_id, run_index, ok, parameters, outputs, error, result)"
+                                 " VALUES(?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING");
+        insert->bind(1, studyId);
+        insert->bind(2, run.index);
+        insert->bind(3, run.ok ? 1 : 0);
+        insert->bind(4, run.parameters);
+        insert->bind(5, run.outputs);
+        insert->bind(6, run.error);
+        if (resultBlob) insert->bindNoCopy(7, resultBlob->data(), static_cast<int>(resultBlob->size()));
+        else insert->bind(7);
+        if (insert->exec() != 1) return false;
+        transaction.commit();
+        return true;
+    });
+}
+
+void SqliteStudyStore::setSummary(std::int64_t id, const std::string& summary)
+{
+    mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET summary = ? WHERE id = ? AND state IN ('queued', 'running')");
+        q->bind(1, summary);
+        q->bind(2, id);
+        q->exec();
+    });
+}
+
+bool SqliteStudyStore::finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary)
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET state = ?, error = ?, summary = ?, finished_at = ?"
+                            " WHERE id = ? AND state IN ('queued', 'running')");
+        q->bind(1, jobStateName(state));
+        q->bind(2, error);
+        q->bind(3, summary);
+        q->bind(4, now);
+        q->bind(5, id);
+        return q->exec() == 1;
+    });
+}
+
+int SqliteStudyStore::markRunningInterrupted()
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET state = 'interrupted', finished_at = ?,"
+                            " error = 'the server stopped while the study was running'"
+                            " WHERE state = 'running'");
+        q->bind(1, now);
+        return q->exec();
+    });
+}
+
+std::vector<StudyRun> SqliteStudyStore::runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL FROM study_runs"
+                            " WHERE study_id = ? AND run_index >= ? ORDER BY run_index LIMIT ?");
+        q->bind(1, studyId);
+        q->bind(2, fromIndex);
+        q->bind(3, static_cast<std::int64_t>(limit));
+        std::vector<StudyRun> out;
+        while (q->executeStep())
+            out.push_back(StudyRun{q->getColumn(0).getInt64(), q->getColumn(1).getInt() != 0,
+                                   q->getColumn(2).getString(), q->getColumn(3).getString(),
+                                   q->getColumn(4).getString(), q->getColumn(5).getInt() != 0});
+        return out;
+    });
+}
+
+std::optional<std::string> SqliteStudyStore::runResult(std::int64_t studyId, std::int64_t index)
+{
+    return mDb.run([&](SqliteConnection& c) -> std::optional<std::string> {
+        auto q = c.prepared("SELECT result FROM study_runs WHERE study_id = ? AND run_index = ? AND result IS NOT NULL");
+        q->bind(1, studyId);
+        q->bind(2, index);
+        if (!q->executeStep()) return std::nullopt;
+        const SQLite::Column data = q->getColumn(0);
+        return std::string(static_cast<const char*>(data.getBlob()), static_cast<std::size_t>(data.getBytes()));
+    });
+}
+
+std::size_t SqliteStudyStore::storedBytes(std::int64_t ownerId)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("SELECT COALESCE(SUM(length(r.result)), 0) FROM study_runs r"
+                            " JOIN studies s ON s.id = r.study_id WHERE s.owner_id = ?");
+        q->bind(1, ownerId);
+        return q->executeStep() ? static_cast<std::size_t>(q->getColumn(0).getInt64()) : std::size_t(0);
+    });
+}
+
+bool SqliteStudyStore::remove(std::int64_t id)
+{
+    // The runs go with their study (ON DELETE CASCADE), in the same statement.
+    const bool removed = mDb.runFreeingSpace([&](SqliteConnection& c) {
+        auto q = c.prepared("DELETE FROM studies WHERE id = ?");
+        q->bind(1, id);
+        return q->exec() == 1;
+    });
+    mDb.restoreReserve();
+    return removed;
+}
+
+} // namespace tlmhub::server
