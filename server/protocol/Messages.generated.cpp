@@ -1369,6 +1369,7 @@ void from_json(const nlohmann::json& j, StudyCreate& v)
     if (const auto x = j.find("sweep"); x != j.end()) v.sweep = x->get<nlohmann::json>();
     if (const auto x = j.find("sensitivity"); x != j.end()) v.sensitivity = x->get<nlohmann::json>();
     if (const auto x = j.find("optimise"); x != j.end()) v.optimise = x->get<nlohmann::json>();
+    if (const auto x = j.find("objective"); x != j.end()) v.objective = x->get<nlohmann::json>();
 }
 
 void to_json(nlohmann::json& j, const StudyCreate& v)
@@ -1387,6 +1388,7 @@ void to_json(nlohmann::json& j, const StudyCreate& v)
     if (v.sweep) j["sweep"] = *v.sweep;
     if (v.sensitivity) j["sensitivity"] = *v.sensitivity;
     if (v.optimise) j["optimise"] = *v.optimise;
+    if (v.objective) j["objective"] = *v.objective;
 }
 
 void from_json(const nlohmann::json& j, StudyCreated& v)

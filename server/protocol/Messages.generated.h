@@ -922,6 +922,7 @@ struct StudyCreate {
     std::optional<nlohmann::json> sweep;
     std::optional<nlohmann::json> sensitivity;
     std::optional<nlohmann::json> optimise;
+    std::optional<nlohmann::json> objective;
 };
 void from_json(const nlohmann::json& j, StudyCreate& v);
 void to_json(nlohmann::json& j, const StudyCreate& v);

@@ -19,7 +19,8 @@ public:
     // The stored bytes of a job's result; nullopt when it has none.
     virtual std::optional<std::string> blob(std::int64_t jobId) = 0;
     virtual bool has(std::int64_t jobId) = 0;
-    // Bytes of stored results of all of an owner's jobs (the storage quota).
+    // Bytes of stored results of all of an owner's jobs and of the runs their studies keep
+    // (the storage quota).
     virtual std::size_t storedBytes(std::int64_t ownerId) = 0;
 
     // The result with the columns `variables` names (empty: all); only those are

@@ -114,7 +114,7 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
                     "keeping every run's result needs up to " + mebibytes(static_cast<std::size_t>(total)) +
                         "; a study may keep " + mebibytes(mLimits.maxStoredBytes) +
                         " (fewer runs or log_samples, or outputs.full false)"};
-        const std::size_t stored = mResults.storedBytes(ownerId) + mStore.storedBytes(ownerId);
+        const std::size_t stored = mResults.storedBytes(ownerId);
         if (static_cast<double>(stored) + total > static_cast<double>(mJobLimits.maxStoredBytesPerUser))
             return {std::nullopt, 0, "limit_exceeded",
                     "keeping every run's result needs up to " + mebibytes(static_cast<std::size_t>(total)) +

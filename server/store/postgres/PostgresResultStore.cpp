@@ -7,8 +7,10 @@ namespace {
 constexpr PgStatement kBlob{"results_blob", "SELECT data FROM job_results WHERE job_id = $1"};
 constexpr PgStatement kHas{"results_has", "SELECT 1 FROM job_results WHERE job_id = $1"};
 constexpr PgStatement kStoredBytes{"results_stored_bytes",
-                                   "SELECT COALESCE(SUM(octet_length(r.data)), 0)::BIGINT FROM job_results r"
-                                   " JOIN jobs j ON j.id = r.job_id WHERE j.owner_id = $1"};
+                                   "SELECT ((SELECT COALESCE(SUM(octet_length(r.data)), 0) FROM job_results r"
+                                   "         JOIN jobs j ON j.id = r.job_id WHERE j.owner_id = $1)"
+                                   "      + (SELECT COALESCE(SUM(octet_length(r.result)), 0) FROM study_runs r"
+                                   "         JOIN studies s ON s.id = r.study_id WHERE s.owner_id = $1))::BIGINT"};
 
 } // namespace
 

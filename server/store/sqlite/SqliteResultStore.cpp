@@ -25,8 +25,10 @@ bool SqliteResultStore::has(std::int64_t jobId)
 std::size_t SqliteResultStore::storedBytes(std::int64_t ownerId)
 {
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("SELECT COALESCE(SUM(length(r.data)), 0) FROM job_results r"
-                            " JOIN jobs j ON j.id = r.job_id WHERE j.owner_id = ?");
+        auto q = c.prepared("SELECT (SELECT COALESCE(SUM(length(r.data)), 0) FROM job_results r"
+                            "        JOIN jobs j ON j.id = r.job_id WHERE j.owner_id = ?1)"
+                            "     + (SELECT COALESCE(SUM(length(r.result)), 0) FROM study_runs r"
+                            "        JOIN studies s ON s.id = r.study_id WHERE s.owner_id = ?1)");
         q->bind(1, ownerId);
         return q->executeStep() ? static_cast<std::size_t>(q->getColumn(0).getInt64()) : std::size_t(0);
     });

@@ -235,6 +235,9 @@ TEST_P(StudyStoreConformance, RunResultsComeBackByteForByteAndCountForTheirOwner
     const std::string jobBlob = "job result";
     addFinishedJob(bob.id, &jobBlob);
     EXPECT_EQ(store().studies().storedBytes(bob.id), 0u);
+    // The quota (ResultStore::storedBytes) counts both.
+    EXPECT_EQ(store().results().storedBytes(alice.id), everyByte.size() + large.size());
+    EXPECT_EQ(store().results().storedBytes(bob.id), jobBlob.size());
 }
 
 TEST_P(StudyStoreConformance, SetSummaryReplacesItWhileTheStudyIsNotFinished)

@@ -992,6 +992,10 @@ export interface StudyCreate {
      * {algorithm, parameters: {name: {min, max, start?}}, objective: {goal, terms}, max_evaluations, seed, tolerance, options}
      */
     optimise?: {};
+    /**
+     * A sweep's or sensitivity study's objective, as optimise.objective: its table gets the column objective.
+     */
+    objective?: {};
 }
 export interface StudyCreated {
     id: number;
