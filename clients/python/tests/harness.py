@@ -10,6 +10,7 @@ skips them:
                       tests follow what is installed)"""
 from __future__ import annotations
 
+import importlib.util
 import os
 import shutil
 import signal
@@ -44,11 +45,7 @@ def expectation(name: str, module: str) -> bool:
     value = os.environ.get(name)
     if value in ("0", "1"):
         return value == "1"
-    try:
-        __import__(module)
-        return True
-    except ImportError:
-        return False
+    return importlib.util.find_spec(module) is not None
 
 
 class _Process:

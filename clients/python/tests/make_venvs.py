@@ -59,6 +59,10 @@ def main() -> None:
     shutil.copytree(SOURCE, src, ignore=shutil.ignore_patterns(
         "tests", "build", "*.egg-info", "__pycache__"))
 
+    # Making a venv (ensurepip) takes most of the time: make the isolated one meanwhile.
+    isolated = root / "isolated"
+    print("+", args.python, "-m venv --clear", isolated, "(in the background)", flush=True)
+    making_isolated = subprocess.Popen([args.python, "-m", "venv", "--clear", str(isolated)])
     system = root / "system"
     run(args.python, "-m", "venv", "--clear", "--system-site-packages", system)
     run(system / "bin" / "pip", "install", "--no-index", "--no-build-isolation", src)
@@ -68,8 +72,8 @@ def main() -> None:
     shutil.rmtree(wheels, ignore_errors=True)
     run(system / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-deps",
         "-w", wheels, src)
-    isolated = root / "isolated"
-    run(args.python, "-m", "venv", "--clear", isolated)
+    if making_isolated.wait() != 0:
+        sys.exit(f"{args.python} -m venv {isolated} failed")
     run(isolated / "bin" / "pip", "install", "--no-index", *sorted(wheels.glob("tlmhub-*.whl")))
     check(isolated / "bin" / "python", numpy=False, websocket=False)
 

@@ -1,6 +1,7 @@
 """Columns are NumPy arrays where NumPy is installed and lists of floats where it is not; the
 ctest of each venv says which it must be (TLMHUB_EXPECT_NUMPY), so a venv that lost or gained
 NumPy fails instead of testing the other case twice."""
+import importlib.util
 import unittest
 
 import tlmhub
@@ -26,11 +27,7 @@ class Columns(unittest.TestCase):
         cls.result = cls.client.run(shared_model(), stop=0.3, log_samples=100)
 
     def test_the_environment_is_the_expected_one(self):
-        try:
-            import numpy  # noqa: F401
-            installed = True
-        except ImportError:
-            installed = False
+        installed = importlib.util.find_spec("numpy") is not None
         self.assertEqual(installed, HAVE_NUMPY)
 
     @unittest.skipUnless(HAVE_NUMPY, "columns as NumPy arrays: the venv with NumPy")

@@ -1,5 +1,6 @@
 """Live frames of a running job over the WebSocket (websocket-client), authenticated by the
 Authorization header of the upgrade, and the clear error where websocket-client is missing."""
+import importlib.util
 import unittest
 from unittest import mock
 
@@ -27,11 +28,7 @@ class Stream(unittest.TestCase):
         cls.model = cls.client.models.upload(shared_model())
 
     def test_the_environment_is_the_expected_one(self):
-        try:
-            import websocket  # noqa: F401
-            installed = True
-        except ImportError:
-            installed = False
+        installed = importlib.util.find_spec("websocket") is not None
         self.assertEqual(installed, HAVE_WEBSOCKET)
 
     @unittest.skipUnless(HAVE_WEBSOCKET, "streaming: the venv with websocket-client")
