@@ -8,6 +8,7 @@ from __future__ import annotations
 import itertools
 import json
 import math
+import time
 from typing import Any, Iterator
 
 from ._http import Transport
@@ -42,10 +43,16 @@ class Socket:
         except websocket.WebSocketBadStatusException as error:
             raise ApiError(error.status_code, "unauthorized" if error.status_code == 401
                            else "http_error", f"WebSocket upgrade refused: {error}") from None
+        except websocket.WebSocketException as error:
+            raise ApiError(0, "websocket_error", f"WebSocket to {url}: {error}") from None
         self._ids = itertools.count(1)
         self.pending: list[dict[str, Any]] = []
-        hello = self.receive()
+        hello = None
+        deadline = time.monotonic() + 30
+        while hello is None and time.monotonic() < deadline:
+            hello = self.receive()
         if hello is None or hello.get("type") != "hello":
+            self.close()
             raise ApiError(0, "bad_reply", f"expected hello, got {hello!r}")
 
     def close(self) -> None:
@@ -63,6 +70,8 @@ class Socket:
             text = self._ws.recv()
         except websocket.WebSocketTimeoutException:
             return None
+        except websocket.WebSocketConnectionClosedException:
+            text = ""
         if not text:
             raise ApiError(0, "closed", "the server closed the WebSocket")
         return json.loads(text)

@@ -61,16 +61,19 @@ class Study:
         return self
 
     def _wait_for_events(self, deadline: float | None, bar: "_ProgressBar | None") -> bool:
-        """Waits on the WebSocket; False when the server does not know `study.subscribe`.
+        """Waits on the WebSocket; False when the socket or the subscription is refused (a
+        proxy without WebSockets, a server without studies): polling then says why, or works.
         A quiet socket is still backed by a GET every few seconds, so a lost event cannot
         leave the wait hanging."""
-        with _websocket.Socket(self._client._transport, timeout=1.0) as socket:
+        try:
+            socket = _websocket.Socket(self._client._transport, timeout=1.0)
+        except (ApiError, OSError):
+            return False
+        with socket:
             try:
                 socket.call("study.subscribe", data={"study_id": self.id})
-            except ApiError as error:
-                if error.code == "unknown_message_type":
-                    return False
-                raise
+            except ApiError:
+                return False
             last_fetch = time.monotonic()
             self.refresh()
             while self.state not in FINAL_STATES:
