@@ -42,10 +42,9 @@ def model_source(model: ModelRef) -> dict[str, Any]:
         raise TypeError("model must be an id, a Model, .hmf text or the path of an .hmf file")
     if isinstance(model, int):
         return {"model_id": model}
-    text = str(model) if isinstance(model, os.PathLike) else model
-    if isinstance(text, str) and text.lstrip().startswith("<"):
-        return {"hmf": text}
-    with open(text, encoding="utf-8") as hmf:
+    if isinstance(model, str) and model.lstrip().startswith("<"):
+        return {"hmf": model}
+    with open(model, encoding="utf-8") as hmf:
         return {"hmf": hmf.read()}
 
 
@@ -155,9 +154,10 @@ class Models(_Collection):
 
 class Jobs(_Collection):
     def submit(self, model: ModelRef, parameters: Mapping[str, Any] | None = None,
-               **settings: Any) -> Job:
+               start: float | None = None, step: float | None = None,
+               stop: float | None = None, log_samples: int | None = None) -> Job:
         """Queues a job (`client.run(..., wait=False)` is the same)."""
-        body = {**model_source(model), **_settings(**settings)}
+        body = {**model_source(model), **_settings(start, step, stop, log_samples)}
         if parameters:
             body["parameters"] = dict(parameters)
         created = self._transport.json("POST", "/jobs", json_body=body)
