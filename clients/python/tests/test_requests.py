@@ -131,5 +131,19 @@ class Polling(unittest.TestCase):
         self.assertEqual((caught.exception.state, caught.exception.error), ("failed", "model broke"))
 
 
+class Cancel(unittest.TestCase):
+    def test_a_running_study_is_cancelled(self):
+        recorder = Recorder([{"id": 12, "state": "running"}, {"state": "cancelling"}])
+        study = tlmhub.Study(client_with(recorder), 12)
+        self.assertEqual(study.cancel().state, "cancelling")
+        self.assertEqual([c[:2] for c in recorder.calls], [("GET", "/studies/12"), ("DELETE", "/studies/12")])
+
+    def test_a_finished_study_is_not_deleted(self):
+        recorder = Recorder([{"id": 12, "state": "done"}])
+        study = tlmhub.Study(client_with(recorder), 12)
+        self.assertEqual(study.cancel().state, "done")
+        self.assertEqual([c[:2] for c in recorder.calls], [("GET", "/studies/12")])
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -131,8 +131,9 @@ class Waiting(unittest.TestCase):
         self.assertLess(len(study.table().rows), 400)
 
     def test_a_bad_request_is_an_api_error(self):
-        with self.assertRaises(tlmhub.ApiError) as caught:
-            self.client.sweep(self.model, parameters={"NoSuch.k": [1, 2]}, outputs=[POSITION], **SHORT)
+        with self.assertRaises(tlmhub.ApiError) as caught:   # list mode needs equal lengths
+            self.client.sweep(self.model, parameters={"GainP.k": [0.01, 0.02], "GainI.k": [0.0]},
+                              mode="list", outputs=[POSITION], **SHORT)
         self.assertEqual(caught.exception.status, 400)
 
 

@@ -126,9 +126,18 @@ class Study:
                                             query={"format": "json"})
 
     def cancel(self) -> "Study":
-        """Cancels a queued or running study (it ends `cancelled`); refreshes `info`."""
-        self._client._transport.request("DELETE", f"/studies/{self.id}")
-        return self.refresh()
+        """Cancels a queued or running study: its state becomes `cancelling`, then
+        `cancelled` (`wait()` for it). A finished study is left as it is: the same DELETE
+        would delete it, so the state is read first (only a study that ends in between
+        those two calls is deleted instead)."""
+        if self.refresh().state in FINAL_STATES:
+            return self
+        reply = self._client._transport.json("DELETE", f"/studies/{self.id}")
+        if reply and "id" in reply:
+            self.info = reply
+        elif reply:
+            self.info["state"] = reply["state"]
+        return self
 
     def delete(self) -> None:
         """Deletes a finished study with its runs."""
