@@ -71,7 +71,7 @@ class Study:
             return False
         with socket:
             try:
-                socket.call("study.subscribe", data={"study_id": self.id})
+                socket.call("study.subscribe", study_id=self.id)
             except ApiError:
                 return False
             last_fetch = time.monotonic()
