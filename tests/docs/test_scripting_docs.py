@@ -105,10 +105,14 @@ def main() -> int:
         if set(declared.group(1).split()) != set(provided):
             raise RuntimeError(f"{doc} declares {declared.group(1).split()}, "
                                f"this test provides {sorted(provided)}")
+        # The blocks call `tlmhub-cli` and `python3` by name: this one and this Python.
         # HOME and XDG_CONFIG_HOME: `tlmhub-cli remote login` writes its credentials there.
+        bin_dir = work / ".bin"
+        bin_dir.mkdir()
+        (bin_dir / "tlmhub-cli").symlink_to(cli.resolve())
+        (bin_dir / "python3").symlink_to(sys.executable)
         os.environ.update(provided, HOME=str(work), XDG_CONFIG_HOME=str(work / ".config"),
-                          PATH=os.pathsep.join([str(cli.parent), str(Path(sys.executable).parent),
-                                                os.environ["PATH"]]))
+                          PATH=os.pathsep.join([str(bin_dir), os.environ["PATH"]]))
         os.chdir(work)
         shell_state = work / ".shell-state"
         namespace: dict[str, object] = {"__name__": "__main__"}
