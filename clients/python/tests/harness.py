@@ -1,0 +1,122 @@
+"""A real tlmhub-server for the tests, started the way tests/server/ServerHarness.cpp starts
+one: any free loopback port, a fresh data directory, a known admin password, no examples.
+
+The environment names what to test against, and a missing piece fails the tests, never
+skips them:
+  TLMHUB_SERVER_BIN   the tlmhub-server binary
+  TLMHUB_SHARED_DIR   ../shared (the Hopsan models)
+  TLMHUB_EXPECT_NUMPY, TLMHUB_EXPECT_WEBSOCKET   "1" or "0": whether this environment must
+                      have NumPy / websocket-client (ctest sets them per venv; when unset the
+                      tests follow what is installed)"""
+from __future__ import annotations
+
+import importlib.util
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+ADMIN_PASSWORD = os.environ.get("TLMHUB_ADMIN_PASSWORD", "admin-secret-pw")
+REPO = Path(__file__).resolve().parents[3]
+
+
+def required_env(name: str) -> str:
+    value = os.environ.get(name)
+    if not value:
+        raise RuntimeError(f"set {name} (see clients/python/tests/harness.py)")
+    return value
+
+
+def shared_model(name: str = "Position Servo") -> Path:
+    """A model of ../shared/hopsan-models/Example Models."""
+    path = Path(required_env("TLMHUB_SHARED_DIR")) / "hopsan-models" / "Example Models" / f"{name}.hmf"
+    if not path.is_file():
+        raise RuntimeError(f"missing shared model {path}")
+    return path
+
+
+def expectation(name: str, module: str) -> bool:
+    """Whether the environment must have `module` (env `name`), else whether it has it."""
+    value = os.environ.get(name)
+    if value in ("0", "1"):
+        return value == "1"
+    return importlib.util.find_spec(module) is not None
+
+
+class _Process:
+    """A child process whose stdout is read until a line starting with `marker`; the rest of
+    its output is drained in a thread (so a full pipe never blocks it) and kept for errors."""
+
+    def __init__(self, args: list[str], marker: str, env: dict[str, str] | None = None):
+        self.output: list[str] = []
+        self.process = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                        text=True, env=env)
+        deadline = time.monotonic() + 30
+        found = threading.Event()
+        self.line = ""
+
+        def read() -> None:
+            for line in self.process.stdout:
+                self.output.append(line)
+                if not found.is_set() and line.startswith(marker):
+                    self.line = line.strip()
+                    found.set()
+
+        threading.Thread(target=read, daemon=True).start()
+        while not found.wait(0.05):
+            if self.process.poll() is not None or time.monotonic() > deadline:
+                self.stop()
+                raise RuntimeError(f"{args[0]} did not start:\n" + "".join(self.output))
+
+    def stop(self) -> None:
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGTERM)
+            try:
+                self.process.wait(15)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait()
+
+
+class Server:
+    """`Server.start()` ... `server.stop()`; `server.url` is `http://127.0.0.1:PORT`."""
+
+    def __init__(self) -> None:
+        binary = required_env("TLMHUB_SERVER_BIN")
+        if not os.access(binary, os.X_OK):
+            raise RuntimeError(f"TLMHUB_SERVER_BIN={binary} is not an executable")
+        self.directory = Path(tempfile.mkdtemp(prefix="tlmhub-python-"))
+        (self.directory / "examples").mkdir()
+        env = {**os.environ, "TLMHUB_ADMIN_PASSWORD": ADMIN_PASSWORD}
+        self._process = _Process(
+            [binary, "--listen", "127.0.0.1:0", "--data-dir", str(self.directory / "data"),
+             "--workers", "2", "--examples-dir", str(self.directory / "examples"),
+             "--web-root", str(self.directory / "no-web")],
+            "tlmhub-server listening on ", env)
+        self.url = self._process.line.rsplit(" ", 1)[1]
+        self._proxies: list[_Process] = []
+
+    def tls_proxy(self) -> tuple[str, str]:
+        """An https:// URL in front of this server (tests/tools/tls_proxy.py) and the
+        certificate file to trust."""
+        cert_dir = self.directory / f"tls-{len(self._proxies)}"
+        cert_dir.mkdir()
+        backend = self.url.removeprefix("http://")
+        proxy = _Process([sys.executable, str(REPO / "tests" / "tools" / "tls_proxy.py"),
+                          "--backend", backend, "--cert-dir", str(cert_dir)], "listening ")
+        self._proxies.append(proxy)
+        return f"https://127.0.0.1:{proxy.line.split()[1]}", str(cert_dir / "cert.pem")
+
+    def stop(self) -> None:
+        for proxy in self._proxies:
+            proxy.stop()
+        self._process.stop()
+        shutil.rmtree(self.directory, ignore_errors=True)
+
+    def output(self) -> str:
+        return "".join(self._process.output)

@@ -1,0 +1,16 @@
+"""Python client for tlmhub: run simulations, sweeps, sensitivity studies and optimisations
+on a tlmhub server from scripts.
+
+    import tlmhub
+    client = tlmhub.Client("https://tlmhub.example.org", token)
+    result = client.run("Position Servo.hmf", parameters={"GainP.k": 0.03})
+    print(result["Mass#P2#Position"][-1])
+
+REST uses only the standard library; `client.stream` and live study progress need
+websocket-client (`tlmhub[stream]`), NumPy columns need NumPy (`tlmhub[numpy]`)."""
+from .client import Client, Job, Model
+from .errors import ApiError, SimulationFailed
+from .results import Result, Table
+from .studies import Study
+
+__all__ = ["ApiError", "Client", "Job", "Model", "Result", "SimulationFailed", "Study", "Table"]

@@ -1,0 +1,76 @@
+"""The REST transport: one small wrapper over urllib so that every call sends the token the
+same way and every failure becomes the same ApiError."""
+from __future__ import annotations
+
+import json
+import ssl
+import urllib.error
+import urllib.parse
+import urllib.request
+from typing import Any, Mapping
+
+from .errors import ApiError
+
+
+def api_base(url: str) -> str:
+    """The API root for a server URL given with or without its `/api/v1` suffix."""
+    url = url.rstrip("/")
+    if url.endswith("/api/v1"):
+        url = url[: -len("/api/v1")]
+    scheme = urllib.parse.urlsplit(url).scheme
+    if scheme not in ("http", "https"):
+        raise ValueError(f"tlmhub URL must start with http:// or https://, got {url!r}")
+    return url + "/api/v1"
+
+
+class Transport:
+    """Sends requests below `/api/v1` with `Authorization: Bearer TOKEN`.
+
+    https uses `ssl.create_default_context()`: the system's trust store, or the file
+    `SSL_CERT_FILE` names (OpenSSL reads that variable), unless a context is given."""
+
+    def __init__(self, url: str, token: str | None, *, timeout: float = 60.0,
+                 ssl_context: ssl.SSLContext | None = None):
+        self.base = api_base(url)
+        self.token = token
+        self.timeout = timeout
+        self.ssl_context = ssl_context or (ssl.create_default_context()
+                                           if self.base.startswith("https:") else None)
+
+    def request(self, method: str, path: str, *, query: Mapping[str, Any] | None = None,
+                json_body: Any = None, body: bytes | None = None,
+                content_type: str | None = None) -> tuple[int, bytes]:
+        """The status and raw body of a successful (2xx) answer; raises ApiError otherwise."""
+        url = self.base + path
+        if query:
+            url += "?" + urllib.parse.urlencode({k: v for k, v in query.items() if v is not None})
+        headers = {"Accept": "application/json"}
+        if self.token:
+            headers["Authorization"] = "Bearer " + self.token
+        if json_body is not None:
+            body = json.dumps(json_body).encode()
+            content_type = "application/json"
+        if content_type:
+            headers["Content-Type"] = content_type
+        request = urllib.request.Request(url, data=body, headers=headers, method=method)
+        try:
+            with urllib.request.urlopen(request, timeout=self.timeout,
+                                        context=self.ssl_context) as response:
+                return response.status, response.read()
+        except urllib.error.HTTPError as error:
+            raise _api_error(error.code, error.read()) from None
+
+    def json(self, method: str, path: str, **kwargs: Any) -> Any:
+        """The decoded JSON answer, or None for an empty one (204)."""
+        _, data = self.request(method, path, **kwargs)
+        return json.loads(data) if data else None
+
+
+def _api_error(status: int, data: bytes) -> ApiError:
+    """The ApiError of an error body; a body that is not the server's (a proxy's page, say)
+    keeps its text as the message."""
+    try:
+        error = json.loads(data)["error"]
+        return ApiError(status, str(error["code"]), str(error["message"]))
+    except (ValueError, KeyError, TypeError):
+        return ApiError(status, "http_error", data.decode(errors="replace").strip()[:500])

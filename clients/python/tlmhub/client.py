@@ -1,0 +1,354 @@
+"""The client: one object per server and identity, with the API's collections as attributes
+(`client.models`, `client.jobs`, ...) and the common tasks (`run`, `sweep`, ...) as methods."""
+from __future__ import annotations
+
+import os
+import ssl
+import time
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Mapping, Sequence, Union
+
+from . import _websocket
+from ._http import Transport
+from .errors import SimulationFailed
+from .results import Result, variables_query
+from .studies import Study
+
+JOB_FINAL_STATES = ("done", "failed", "cancelled", "interrupted")
+
+
+@dataclass
+class Model:
+    """A stored model: `info` is the server's summary (or, from `models.get`, its detail
+    with the model structure)."""
+    id: int
+    name: str
+    info: dict[str, Any] = field(default_factory=dict, repr=False)
+
+    @classmethod
+    def from_json(cls, info: dict[str, Any]) -> "Model":
+        return cls(int(info["id"]), str(info.get("name", "")), info)
+
+
+ModelRef = Union[int, str, "os.PathLike[str]", Model]
+
+
+def model_source(model: ModelRef) -> dict[str, Any]:
+    """The request fields naming a model: a stored one by id or Model, else the text of an
+    .hmf file (sent inline, so a script's runs leave no models behind)."""
+    if isinstance(model, Model):
+        return {"model_id": model.id}
+    if isinstance(model, bool):
+        raise TypeError("model must be an id, a Model, .hmf text or the path of an .hmf file")
+    if isinstance(model, int):
+        return {"model_id": model}
+    if isinstance(model, str) and model.lstrip().startswith("<"):
+        return {"hmf": model}
+    with open(model, encoding="utf-8") as hmf:
+        return {"hmf": hmf.read()}
+
+
+def _settings(start: float | None, step: float | None, stop: float | None,
+              log_samples: int | None) -> dict[str, Any]:
+    """Simulation settings for a request; absent ones are the model's own."""
+    values = {"start": start, "step": step, "stop": stop, "log_samples": log_samples}
+    return {k: v for k, v in values.items() if v is not None}
+
+
+class Job:
+    """A simulation job. `info` is its last fetched JobInfo."""
+
+    def __init__(self, client: "Client", info: dict[str, Any]):
+        self._client = client
+        self.id = int(info["id"])
+        self.info = info
+
+    @property
+    def state(self) -> str:
+        return str(self.info.get("state"))
+
+    def refresh(self) -> "Job":
+        self.info = self._client.jobs.get(self.id).info
+        return self
+
+    def wait(self, timeout: float | None = None) -> "Job":
+        """Polls until the job ends; raises SimulationFailed unless it ended `done`."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        interval = 0.02
+        while self.refresh().state not in JOB_FINAL_STATES:
+            if deadline is not None and time.monotonic() > deadline:
+                raise TimeoutError(f"job {self.id} did not finish in time")
+            time.sleep(interval)
+            interval = min(interval * 2, 0.5)
+        if self.state != "done":
+            raise SimulationFailed("job", self.id, self.state, self.info.get("error") or "")
+        return self
+
+    def results(self, variables: Sequence[str] | str | None = None) -> Result:
+        return self._client.jobs.results(self.id, variables)
+
+    def cancel(self) -> "Job":
+        self.info = self._client.jobs.cancel(self.id).info
+        return self
+
+    def __repr__(self) -> str:
+        return f"<Job {self.id} {self.state}>"
+
+
+class _Collection:
+    def __init__(self, client: "Client"):
+        self._client = client
+        self._transport = client._transport
+
+
+class Tokens(_Collection):
+    """Personal API tokens (docs/studies.md, "API tokens")."""
+
+    def create(self, name: str, expires_in_days: int | None = None) -> dict[str, Any]:
+        """A new token: `{id, name, token, created_at, expires_at, last_used_at}`; this is
+        the only time the server shows `token`."""
+        body: dict[str, Any] = {"name": name}
+        if expires_in_days is not None:
+            body["expires_in_days"] = expires_in_days
+        return self._transport.json("POST", "/tokens", json_body=body)
+
+    def list(self) -> list[dict[str, Any]]:
+        """The caller's tokens (without their secret), newest first."""
+        return self._transport.json("GET", "/tokens")["tokens"]
+
+    def delete(self, id: int) -> None:
+        """Revokes a token at once (its open WebSockets end too)."""
+        self._transport.request("DELETE", f"/tokens/{id}")
+
+
+class Models(_Collection):
+    def upload(self, path_or_text: str | bytes | os.PathLike[str], name: str | None = None) -> Model:
+        """Stores an .hmf, given as a file path or as its text. A file is named after the
+        file (as `tlmhub-cli remote` names it), text after its root system, unless `name`."""
+        if isinstance(path_or_text, bytes):
+            data = path_or_text
+        elif isinstance(path_or_text, str) and path_or_text.lstrip().startswith("<"):
+            data = path_or_text.encode()
+        else:
+            with open(path_or_text, "rb") as hmf:
+                data = hmf.read()
+            if name is None:
+                name = os.path.splitext(os.path.basename(os.fspath(path_or_text)))[0]
+        return Model.from_json(self._transport.json(
+            "POST", "/models", query={"name": name}, body=data, content_type="application/xml"))
+
+    def list(self) -> list[Model]:
+        """The caller's models and the examples."""
+        return [Model.from_json(m) for m in self._transport.json("GET", "/models")]
+
+    def get(self, id: int) -> Model:
+        return Model.from_json(self._transport.json("GET", f"/models/{id}"))
+
+    def hmf(self, id: int) -> str:
+        """The model's .hmf text as stored."""
+        return self._transport.request("GET", f"/models/{id}", query={"format": "hmf"})[1].decode()
+
+    def delete(self, id: int) -> None:
+        self._transport.request("DELETE", f"/models/{id}")
+
+
+class Jobs(_Collection):
+    def submit(self, model: ModelRef, parameters: Mapping[str, Any] | None = None,
+               start: float | None = None, step: float | None = None,
+               stop: float | None = None, log_samples: int | None = None) -> Job:
+        """Queues a job (`client.run(..., wait=False)` is the same)."""
+        body = {**model_source(model), **_settings(start, step, stop, log_samples)}
+        if parameters:
+            body["parameters"] = dict(parameters)
+        created = self._transport.json("POST", "/jobs", json_body=body)
+        return Job(self._client, created)
+
+    def list(self) -> list[Job]:
+        return [Job(self._client, info) for info in self._transport.json("GET", "/jobs")]
+
+    def get(self, id: int) -> Job:
+        return Job(self._client, self._transport.json("GET", f"/jobs/{id}"))
+
+    def cancel(self, id: int) -> Job:
+        """Cancels a queued or running job; a finished one is returned as it is. (The same
+        DELETE deletes a finished job, so its state is read first: only a job that ends in
+        between those two calls is deleted instead.)"""
+        job = self.get(id)
+        if job.state in JOB_FINAL_STATES:
+            return job
+        info = self._transport.json("DELETE", f"/jobs/{id}")
+        return Job(self._client, info) if info else job
+
+    def delete(self, id: int) -> None:
+        """Deletes a finished job and its results (frees the owner's stored bytes)."""
+        self._transport.request("DELETE", f"/jobs/{id}")
+
+    def results(self, id: int, variables: Sequence[str] | str | None = None) -> Result:
+        _, csv = self._transport.request(
+            "GET", f"/jobs/{id}/results",
+            query={"format": "csv", "variables": variables_query(variables)})
+        return Result(csv)
+
+
+class Studies(_Collection):
+    def list(self) -> list[Study]:
+        return [Study(self._client, int(s["id"]), s)
+                for s in self._transport.json("GET", "/studies")["studies"]]
+
+    def get(self, id: int) -> Study:
+        return Study(self._client, id).refresh()
+
+    def create(self, request: Mapping[str, Any]) -> Study:
+        """A study from a request exactly as docs/studies.md gives it."""
+        created = self._transport.json("POST", "/studies", json_body=dict(request))
+        return Study(self._client, int(created["id"]), {**created, "state": "queued"})
+
+
+class Client:
+    """A tlmhub server, as one user.
+
+    `Client(url, token)` with an API token (`tlmh_...`), or `Client.login(url, user,
+    password)` for a login session. `url` is the server's address (`http://host:8080`),
+    with or without `/api/v1`."""
+
+    def __init__(self, url: str, token: str, *, timeout: float = 60.0,
+                 ssl_context: ssl.SSLContext | None = None):
+        self._transport = Transport(url, token, timeout=timeout, ssl_context=ssl_context)
+        self.tokens = Tokens(self)
+        self.models = Models(self)
+        self.jobs = Jobs(self)
+        self.studies = Studies(self)
+
+    @classmethod
+    def login(cls, url: str, username: str, password: str, **options: Any) -> "Client":
+        """A client on a login session (it expires; scripts that run unattended should use
+        an API token instead)."""
+        reply = Transport(url, None, **options).json(
+            "POST", "/auth/login", json_body={"username": username, "password": password})
+        return cls(url, reply["token"], **options)
+
+    @property
+    def url(self) -> str:
+        return self._transport.base
+
+    def me(self) -> dict[str, Any]:
+        return self._transport.json("GET", "/auth/me")
+
+    def logout(self) -> None:
+        """Ends a login session (an API token is revoked with `tokens.delete` instead)."""
+        self._transport.request("POST", "/auth/logout")
+
+    def run(self, model: ModelRef, parameters: Mapping[str, Any] | None = None,
+            start: float | None = None, step: float | None = None, stop: float | None = None,
+            log_samples: int | None = None, wait: bool = True) -> Result | Job:
+        """Runs a model once: its Result, or with `wait=False` the queued Job.
+        `parameters` override values for this run (`"GainP.k": 0.03`)."""
+        job = self.jobs.submit(model, parameters, start=start, step=step, stop=stop,
+                               log_samples=log_samples)
+        return job.wait().results() if wait else job
+
+    def stream(self, job_id: int, variables: Sequence[str] | None = None) -> Iterator[dict[str, list[float]]]:
+        """The frames of a job while it runs (needs websocket-client): each a dict of `time`
+        and each variable to the samples logged since the previous frame, floats. All
+        logged variables when `variables` is None (the server streams at most 16)."""
+        if not _websocket.available():
+            raise ImportError("Client.stream " + _websocket.WEBSOCKET_MISSING)
+
+        def rest(seen: int) -> dict[str, list[float]]:
+            result = self.jobs.results(job_id, variables)
+            return {name: list(result[name])[seen:] for name in ["time"] + result.names}
+
+        return _websocket.job_frames(self._transport, job_id,
+                                     list(variables) if variables is not None else None, rest)
+
+    def sweep(self, model: ModelRef, parameters: Mapping[str, Any], mode: str = "grid",
+              outputs: Sequence[str] = (), values: Sequence[str] = ("final",), full: bool = False,
+              fixed: Mapping[str, Any] | None = None, samples: int | None = None,
+              seed: int | None = None, name: str | None = None, start: float | None = None,
+              step: float | None = None, stop: float | None = None,
+              log_samples: int | None = None, wait: bool = True) -> Study:
+        """A parameter sweep. `parameters` maps each swept parameter to a list of values or
+        `{"from": a, "to": b, "steps": n}`; `mode` is `grid` (every combination), `list`
+        (the i-th values together) or `random` (`samples` runs, `seed`). Each of `outputs`
+        (result variables) gives a table column per `values` entry (`final`, `min`, `max`,
+        `mean`); `full=True` keeps each run's whole result (`Study.run_result`)."""
+        swept = {k: v if isinstance(v, Mapping) else [float(x) for x in v]
+                 for k, v in parameters.items()}
+        sweep: dict[str, Any] = {"mode": mode, "parameters": swept}
+        if samples is not None:
+            sweep["samples"] = samples
+        if seed is not None:
+            sweep["seed"] = seed
+        return self._study("sweep", sweep, model, name, fixed, outputs, values, full,
+                           _settings(start, step, stop, log_samples), wait)
+
+    def sensitivity(self, model: ModelRef, parameters: Mapping[str, Any], runs: int,
+                    outputs: Sequence[str], seed: int | None = None,
+                    values: Sequence[str] = ("final",), full: bool = False,
+                    fixed: Mapping[str, Any] | None = None, name: str | None = None,
+                    start: float | None = None, step: float | None = None,
+                    stop: float | None = None, log_samples: int | None = None,
+                    wait: bool = True) -> Study:
+        """A Monte Carlo sensitivity analysis of `runs` runs. `parameters` maps names to
+        `("normal", mean, sd)` or `("uniform", min, max)`. Results: `Study.bands()` and the
+        correlations in `study.summary["correlations"]`."""
+        sensitivity: dict[str, Any] = {
+            "runs": runs, "parameters": {k: _distribution(k, v) for k, v in parameters.items()}}
+        if seed is not None:
+            sensitivity["seed"] = seed
+        return self._study("sensitivity", sensitivity, model, name, fixed, outputs, values, full,
+                           _settings(start, step, stop, log_samples), wait)
+
+    def optimise(self, model: ModelRef, parameters: Mapping[str, Sequence[float]],
+                 objective: Sequence[Mapping[str, Any]], algorithm: str = "complex-rf",
+                 goal: str = "minimise", max_evaluations: int = 200, seed: int = 1,
+                 tolerance: float | None = None, options: Mapping[str, Any] | None = None,
+                 outputs: Sequence[str] = (), values: Sequence[str] = ("final",),
+                 fixed: Mapping[str, Any] | None = None, name: str | None = None,
+                 start: float | None = None, step: float | None = None,
+                 stop: float | None = None, log_samples: int | None = None,
+                 wait: bool = True) -> Study:
+        """An optimisation: `parameters` maps names to `(min, max)` or `(min, max, start)`;
+        `objective` is a list of terms as docs/studies.md gives them, e.g.
+        `{"function": "ise", "variable": "Mass#P2#Position", "reference_variable":
+        "Step#out#Value"}`. The best run: `study.best`."""
+        bounds = {}
+        for key, bound in parameters.items():
+            if len(bound) not in (2, 3):
+                raise ValueError(f"{key}: give (min, max) or (min, max, start)")
+            bounds[key] = dict(zip(("min", "max", "start"), (float(b) for b in bound)))
+        optimise: dict[str, Any] = {
+            "algorithm": algorithm, "parameters": bounds,
+            "objective": {"goal": goal, "terms": [dict(t) for t in objective]},
+            "max_evaluations": max_evaluations, "seed": seed}
+        if tolerance is not None:
+            optimise["tolerance"] = tolerance
+        if options:
+            optimise["options"] = dict(options)
+        return self._study("optimise", optimise, model, name, fixed, outputs, values, False,
+                           _settings(start, step, stop, log_samples), wait)
+
+    def _study(self, kind: str, spec: dict[str, Any], model: ModelRef, name: str | None,
+               fixed: Mapping[str, Any] | None, outputs: Sequence[str], values: Sequence[str],
+               full: bool, settings: dict[str, Any], wait: bool) -> Study:
+        request: dict[str, Any] = {"kind": kind, "name": name or f"{kind} (python)",
+                                   **model_source(model), **settings, kind: spec}
+        if fixed:
+            request["parameters"] = dict(fixed)
+        if outputs or full:
+            request["outputs"] = {"variables": list(outputs), "values": list(values), "full": full}
+        study = self.studies.create(request)
+        return study.wait() if wait else study
+
+
+def _distribution(name: str, spec: Any) -> dict[str, Any]:
+    """`("normal", mean, sd)` or `("uniform", min, max)` as the request's object (a dict
+    passes as it is)."""
+    if isinstance(spec, Mapping):
+        return dict(spec)
+    kind, a, b = spec
+    if kind == "normal":
+        return {"distribution": "normal", "mean": float(a), "sd": float(b)}
+    if kind == "uniform":
+        return {"distribution": "uniform", "min": float(a), "max": float(b)}
+    raise ValueError(f"{name}: distribution must be 'normal' or 'uniform', not {kind!r}")
