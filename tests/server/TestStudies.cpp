@@ -274,7 +274,7 @@ TEST_F(Studies, ProgressRowsStreamOverTheWebSocket)
     auto take = [&](const nlohmann::json& event) {
         if (event.value("type", "") != "event.study.progress") return;
         for (const auto& row : event["rows"]) EXPECT_TRUE(runs.insert(row[0].get<std::int64_t>()).second);
-        state = event["state"];
+        state = event["state"].get<std::string>();
     };
     for (const auto& event : ws.events) take(event);
     while (state != "done" && state != "failed" && state != "cancelled") {
