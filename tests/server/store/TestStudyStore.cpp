@@ -3,6 +3,8 @@
 
 #include "server/store/UnixTime.h"
 
+#include <atomic>
+
 using namespace tlmhub::server;
 
 namespace tlmhub::test {
@@ -193,6 +195,22 @@ TEST_P(StudyStoreConformance, AddRunRefusesATakenIndexAndCountsNothing)
     EXPECT_TRUE(runs[0].ok) << "the first run was replaced";
     EXPECT_FALSE(store().studies().runResult(id, 0));
     EXPECT_EQ(store().studies().storedBytes(alice.id), 0u);
+}
+
+TEST_P(StudyStoreConformance, RunsAddedAtOnceAreEachStoredAndCountedOnce)
+{
+    const User alice = addUser("alice");
+    const auto id = addRunningStudy(alice.id);
+    // Four workers race to add the same twenty runs: each index goes in once, counted once.
+    constexpr int kRuns = 20;
+    std::atomic<int> added = 0;
+    runAtOnce(4, [&](int) {
+        for (int index = 0; index < kRuns; ++index)
+            if (store().studies().addRun(id, okRun(index), nullptr)) added.fetch_add(1);
+    });
+    EXPECT_EQ(added.load(), kRuns);
+    EXPECT_EQ(store().studies().info(id)->runsDone, kRuns);
+    EXPECT_EQ(store().studies().runs(id, 0, 100).size(), static_cast<std::size_t>(kRuns));
 }
 
 TEST_P(StudyStoreConformance, RunsComeInIndexOrderFromAnIndexUpToALimit)

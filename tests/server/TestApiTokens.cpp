@@ -1,0 +1,319 @@
+// Personal API tokens end to end (docs/studies.md, "API tokens"): created and shown once,
+// used as a Bearer token on REST and on the WebSocket upgrade (never in the URL), revoked,
+// expired and refused with their account, and limited per user.
+#include "ServerHarness.h"
+
+#include "core/Sha256.h"
+#include "server/store/Storage.h"
+#include "server/store/UnixTime.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <optional>
+#include <regex>
+
+namespace tlmhub::test {
+namespace {
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+namespace net = boost::asio;
+namespace fs = std::filesystem;
+using tcp = net::ip::tcp;
+
+// A WebSocket opened with 'Authorization: Bearer <token>' on the upgrade request (WsClient
+// sends ?token=, which an API token may not use).
+class BearerSocket {
+public:
+    BearerSocket(unsigned short port, const std::string& token) : mWs(mIoc)
+    {
+        mWs.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+        mWs.set_option(websocket::stream_base::decorator(
+            [token](websocket::request_type& request) { request.set(http::field::authorization, "Bearer " + token); }));
+        beast::error_code ec;
+        mWs.handshake("127.0.0.1", "/api/v1/ws", ec);
+        accepted = !ec;
+        declined = ec == websocket::error::upgrade_declined;
+        if (accepted) hello = receive();
+    }
+    // The next message, or null when none comes within `timeoutMs` or the connection ended.
+    nlohmann::json receive(int timeoutMs = 10000)
+    {
+        beast::flat_buffer buffer;
+        bool done = false;
+        mWs.async_read(buffer, [&](beast::error_code ec, std::size_t) {
+            mLastError = ec;
+            done = true;
+        });
+        mIoc.restart();
+        mIoc.run_for(std::chrono::milliseconds(timeoutMs));
+        if (!done) {
+            beast::error_code ignored;
+            mWs.next_layer().cancel(ignored);
+            mIoc.restart();
+            mIoc.run();
+            mLastError = net::error::timed_out;
+        }
+        if (mLastError) return nlohmann::json();
+        return nlohmann::json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
+    }
+    bool pings()
+    {
+        mWs.text(true);
+        mWs.write(net::buffer(std::string(R"({"id": 1, "type": "ping"})")));
+        const nlohmann::json reply = receive();
+        return reply.is_object() && reply.value("ok", false);
+    }
+    // Whether the server closes the connection within a second.
+    bool closesWithinASecond()
+    {
+        const auto start = std::chrono::steady_clock::now();
+        while (!receive(1500).is_null()) {}
+        const auto waited = std::chrono::steady_clock::now() - start;
+        const bool closed = mLastError == websocket::error::closed || mLastError == net::error::eof ||
+                            mLastError == net::error::connection_reset;
+        return closed && waited < std::chrono::seconds(1);
+    }
+
+    bool accepted = false;   // the upgrade was accepted (101)
+    bool declined = false;   // the server answered the upgrade with an error status
+    nlohmann::json hello;
+
+private:
+    net::io_context mIoc;
+    websocket::stream<tcp::socket> mWs;
+    beast::error_code mLastError;
+};
+
+// One server for every test; each test has users of its own where it counts tokens or
+// disables an account.
+class ApiTokens : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        dataDir = new fs::path(freshTempDir("apitokens"));
+        server = new ServerProcess(*dataDir);
+        createTestUsers(*server, {"alice", "bob", "dora", "erin", "fred"});
+    }
+    static void TearDownTestSuite()
+    {
+        delete server;
+        fs::remove_all(*dataDir);
+        delete dataDir;
+    }
+    unsigned short port() const { return server->port(); }
+    HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
+    HttpClient withToken(const std::string& token)
+    {
+        HttpClient c(port());
+        c.setToken(token);
+        return c;
+    }
+    static HttpReply create(HttpClient c, const nlohmann::json& body) { return c.post("/api/v1/tokens", body); }
+    // A new token of `c`'s user; fails the test when refused.
+    static std::pair<std::int64_t, std::string> newToken(HttpClient& c, const std::string& name = "script")
+    {
+        const HttpReply r = create(c, {{"name", name}});
+        EXPECT_EQ(r.status, 201) << r.body;
+        const auto json = r.json();
+        return {json.value("id", std::int64_t{0}), json.value("token", std::string())};
+    }
+    // The caller's tokens as GET /tokens lists them.
+    static nlohmann::json tokensOf(HttpClient c) { return c.get("/api/v1/tokens").json()["tokens"]; }
+    static HttpReply revoke(HttpClient c, std::int64_t id)
+    {
+        return c.request(http::verb::delete_, "/api/v1/tokens/" + std::to_string(id));
+    }
+
+    static fs::path* dataDir;
+    static ServerProcess* server;
+};
+fs::path* ApiTokens::dataDir = nullptr;
+ServerProcess* ApiTokens::server = nullptr;
+
+TEST_F(ApiTokens, ATokenIsShownOnceWhenCreatedAndNeverListed)
+{
+    HttpClient alice = as("alice");
+    const long long before = server::unixNow();
+    const HttpReply created = create(alice, {{"name", "nightly sweep"}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const auto token = created.json();
+    const std::string text = token["token"].get<std::string>();
+    EXPECT_TRUE(std::regex_match(text, std::regex("tlmh_[A-Za-z0-9_-]{43}"))) << text;
+    EXPECT_EQ(token["name"], "nightly sweep");
+    EXPECT_GE(token["created_at"].get<long long>(), before);
+    EXPECT_TRUE(token["expires_at"].is_null()) << "no expires_in_days: lasts until deleted";
+    EXPECT_TRUE(token["last_used_at"].is_null());
+
+    const HttpReply listed = alice.get("/api/v1/tokens");
+    ASSERT_EQ(listed.status, 200);
+    EXPECT_EQ(listed.body.find(text), std::string::npos) << "the list shows the token's text";
+    EXPECT_EQ(listed.body.find(text.substr(5, 20)), std::string::npos);
+    const auto tokens = listed.json()["tokens"];
+    ASSERT_FALSE(tokens.empty());
+    EXPECT_EQ(tokens[0]["id"], token["id"]) << "newest first";
+    EXPECT_EQ(tokens[0]["name"], "nightly sweep");
+    EXPECT_FALSE(tokens[0].contains("token"));
+
+    const HttpReply expiring = create(alice, {{"name", "for a month"}, {"expires_in_days", 30}});
+    ASSERT_EQ(expiring.status, 201) << expiring.body;
+    EXPECT_EQ(expiring.json()["expires_at"].get<long long>(), expiring.json()["created_at"].get<long long>() + 30 * 86400);
+    EXPECT_NE(expiring.json()["token"], text) << "two tokens, one text";
+}
+
+TEST_F(ApiTokens, ABearerTokenWorksOnRestAndRecordsItsUse)
+{
+    HttpClient alice = as("alice");
+    const auto [id, token] = newToken(alice);
+    HttpClient script = withToken(token);
+    const HttpReply me = script.get("/api/v1/auth/me");
+    ASSERT_EQ(me.status, 200) << me.body;
+    EXPECT_EQ(me.json()["username"], "alice");
+    EXPECT_EQ(script.get("/api/v1/jobs").status, 200);
+    for (const auto& t : tokensOf(alice)) {
+        if (t["id"] == id) {
+            EXPECT_FALSE(t["last_used_at"].is_null()) << "its use is not recorded";
+        }
+    }
+    // A token that looks like one but was never issued.
+    EXPECT_EQ(withToken("tlmh_" + std::string(43, 'A')).get("/api/v1/auth/me").status, 401);
+    EXPECT_EQ(withToken(token + "x").get("/api/v1/auth/me").status, 401);
+}
+
+TEST_F(ApiTokens, ABearerTokenOpensAWebSocketInTheUpgradeHeader)
+{
+    HttpClient alice = as("alice");
+    const auto [id, token] = newToken(alice);
+    BearerSocket ws(port(), token);
+    ASSERT_TRUE(ws.accepted);
+    EXPECT_TRUE(ws.pings());
+    EXPECT_TRUE(BearerSocket(port(), "tlmh_" + std::string(43, 'B')).declined);
+}
+
+TEST_F(ApiTokens, ATokenInTheUrlIsRefused)
+{
+    HttpClient alice = as("alice");
+    const auto [id, token] = newToken(alice);
+    EXPECT_THROW(WsClient(port(), token), boost::system::system_error) << "/ws?token= took an API token";
+    // A login token still opens a WebSocket there (browsers cannot set the header).
+    WsClient browser(port(), alice.login("alice", testPassword("alice")));
+    EXPECT_EQ(browser.call("ping")["ok"], true);
+}
+
+TEST_F(ApiTokens, ARevokedTokenIsRefusedAtOnceAndItsWebSocketEnds)
+{
+    HttpClient alice = as("alice");
+    const auto [id, token] = newToken(alice, "leaked");
+    const auto [otherId, other] = newToken(alice, "kept");
+    BearerSocket ws(port(), token);
+    BearerSocket otherWs(port(), other);
+    ASSERT_TRUE(ws.accepted);
+    ASSERT_TRUE(ws.pings());
+    ASSERT_EQ(withToken(token).get("/api/v1/auth/me").status, 200);
+
+    EXPECT_EQ(revoke(alice, id).status, 204);
+    EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
+    EXPECT_TRUE(ws.closesWithinASecond()) << "the socket of the revoked token stays open";
+    EXPECT_TRUE(otherWs.pings()) << "another token of the same user is not affected";
+    EXPECT_EQ(withToken(other).get("/api/v1/auth/me").status, 200);
+    for (const auto& t : tokensOf(alice)) EXPECT_NE(t["id"], id);
+    EXPECT_EQ(revoke(alice, id).status, 404) << "revoked already";
+}
+
+TEST_F(ApiTokens, AnExpiredTokenIsRefused)
+{
+    HttpClient alice = as("alice");
+    const auto aliceId = alice.get("/api/v1/auth/me").json()["id"].get<std::int64_t>();
+    // Stored past the server, as it would be after its days ran out (SQLite allows a second
+    // connection to the running server's file).
+    const std::string token = "tlmh_" + std::string(42, 'e') + "1";
+    Sha256 sha;
+    sha.update(token);
+    const auto now = static_cast<std::int64_t>(server::unixNow());
+    {
+        const auto storage = server::openStorage({.database = (*dataDir / "tlmhub.sqlite").string()});
+        ASSERT_TRUE(storage->apiTokens().insert(aliceId, "expired", sha.hexDigest(), now - 86400, now - 1));
+    }
+    EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
+    EXPECT_TRUE(BearerSocket(port(), token).declined);
+    bool listed = false;
+    for (const auto& t : tokensOf(alice))
+        if (t["name"] == "expired") listed = t["expires_at"] == now - 1;
+    EXPECT_TRUE(listed) << "an expired token stays listed until it is deleted";
+}
+
+TEST_F(ApiTokens, AnotherUserCanNeitherListNorDeleteIt)
+{
+    HttpClient alice = as("alice");
+    HttpClient bob = as("bob");
+    const auto [id, token] = newToken(alice, "alice's");
+    for (const auto& t : tokensOf(bob)) EXPECT_NE(t["id"], id);
+    const HttpReply stolen = revoke(bob, id);
+    EXPECT_EQ(stolen.status, 404) << stolen.body;
+    EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 200) << "bob revoked alice's token";
+    // Neither can an administrator through this route: the tokens are the caller's own.
+    EXPECT_EQ(revoke(as("admin"), id).status, 404);
+    EXPECT_EQ(alice.request(http::verb::delete_, "/api/v1/tokens/not-a-number").status, 404);
+    EXPECT_EQ(HttpClient(port()).get("/api/v1/tokens").status, 401);
+}
+
+TEST_F(ApiTokens, ADisabledAccountsTokensAreRefused)
+{
+    HttpClient erin = as("erin");
+    const auto [id, token] = newToken(erin);
+    BearerSocket ws(port(), token);
+    ASSERT_TRUE(ws.accepted);
+    HttpClient admin = as("admin");
+    const auto erinId = erin.get("/api/v1/auth/me").json()["id"].get<std::int64_t>();
+    ASSERT_EQ(admin.request(http::verb::patch, "/api/v1/users/" + std::to_string(erinId), R"({"disabled": true})").status,
+              200);
+    EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
+    EXPECT_TRUE(BearerSocket(port(), token).declined);
+    EXPECT_TRUE(ws.closesWithinASecond());
+}
+
+TEST_F(ApiTokens, AUserHasAtMostFiftyTokens)
+{
+    HttpClient dora = as("dora");
+    std::int64_t first = 0;
+    for (int i = 0; i < 50; ++i) {
+        const auto [id, token] = newToken(dora, "token " + std::to_string(i));
+        if (i == 0) first = id;
+    }
+    const HttpReply refused = create(dora, {{"name", "one too many"}});
+    EXPECT_EQ(refused.status, 429) << refused.body;
+    EXPECT_EQ(refused.json()["error"]["code"], "limit_exceeded");
+    EXPECT_EQ(tokensOf(dora).size(), 50u);
+    // Others are not limited by dora's tokens; deleting one makes room.
+    EXPECT_EQ(create(as("bob"), {{"name", "bob's"}}).status, 201);
+    ASSERT_EQ(revoke(dora, first).status, 204);
+    EXPECT_EQ(create(dora, {{"name", "in its place"}}).status, 201);
+}
+
+TEST_F(ApiTokens, NameAndExpiryAreChecked)
+{
+    HttpClient fred = as("fred");
+    const auto refused = [&](const nlohmann::json& body) { return create(fred, body).status == 400; };
+    EXPECT_TRUE(refused({{"name", ""}}));
+    EXPECT_TRUE(refused({{"name", std::string(101, 'n')}}));
+    EXPECT_TRUE(refused(nlohmann::json::object()));
+    EXPECT_TRUE(refused({{"name", 7}}));
+    EXPECT_TRUE(refused({{"name", "x"}, {"expires_in_days", 0}}));
+    EXPECT_TRUE(refused({{"name", "x"}, {"expires_in_days", 3651}}));
+    EXPECT_TRUE(refused({{"name", "x"}, {"expires_in_days", 1.5}}));
+    EXPECT_TRUE(refused({{"name", "x"}, {"scope", "all"}}));
+    EXPECT_EQ(fred.request(http::verb::post, "/api/v1/tokens", "{not json").status, 400);
+    EXPECT_TRUE(tokensOf(fred).empty()) << "a refused token was stored";
+
+    EXPECT_EQ(create(fred, {{"name", std::string(100, 'n')}}).status, 201);
+    std::string umlauts;
+    for (int i = 0; i < 100; ++i) umlauts += "\xc3\xb6";   // 100 characters, 200 bytes
+    EXPECT_EQ(create(fred, {{"name", umlauts}}).status, 201);
+    EXPECT_EQ(create(fred, {{"name", "x"}, {"expires_in_days", 1}}).status, 201);
+    EXPECT_EQ(create(fred, {{"name", "x"}, {"expires_in_days", 3650}}).status, 201);
+}
+
+} // namespace
+} // namespace tlmhub::test
