@@ -10,10 +10,19 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
 using namespace tlmhub::server;
+
+namespace tlmhub::server {
+// Names the algorithm in GoogleTest's messages (found by argument-dependent lookup).
+void PrintTo(OptimiserAlgorithm algorithm, std::ostream* out)
+{
+    *out << optimiserAlgorithmName(algorithm);
+}
+} // namespace tlmhub::server
 
 namespace {
 
