@@ -87,7 +87,7 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
     const std::vector<std::string> names = request.parameterNames();
     for (const ParameterBounds& bounds : request.optimiser.parameters) {
         if (const Status set = simulation.setParameter(bounds.name, std::to_string(bounds.min)); !set)
-            return {std::nullopt, 0, "invalid_parameter", bounds.name + ": " + set.message()};
+            return {std::nullopt, 0, protocolErrorCode(set.code()), bounds.name + ": " + set.message()};
     }
     if (request.kind != StudyKind::Optimise) {
         StudyPlan plan(request);
@@ -96,9 +96,12 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
             char text[32];
             std::snprintf(text, sizeof text, "%.17g", first->values[i]);
             if (const Status set = simulation.setParameter(names[i], text); !set)
-                return {std::nullopt, 0, "invalid_parameter", names[i] + ": " + set.message()};
+                return {std::nullopt, 0, protocolErrorCode(set.code()), names[i] + ": " + set.message()};
         }
     }
+    // The logged variables are known once the logs exist (initialised; each run resets it).
+    if (const Status initialised = simulation.initialise(); !initialised)
+        return {std::nullopt, 0, protocolErrorCode(initialised.code()), initialised.message()};
     const ResultView variables(simulation.system());
     for (const std::string& name : variablesRead(request)) {
         if (!variables.indexOf(name))
