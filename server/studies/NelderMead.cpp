@@ -1,6 +1,8 @@
 #include "server/studies/NelderMead.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -13,7 +15,10 @@ NelderMead::NelderMead(const OptimiserSettings& settings)
       mAlpha(optionOr(settings, "alpha", kDefaultAlpha)),
       mGamma(optionOr(settings, "gamma", kDefaultGamma)),
       mRho(optionOr(settings, "rho", kDefaultRho)),
-      mSigma(optionOr(settings, "sigma", kDefaultSigma))
+      mSigma(optionOr(settings, "sigma", kDefaultSigma)),
+      mBestAtLastRestart(std::numeric_limits<double>::infinity()),
+      mRandomRestartsLeft(static_cast<std::size_t>(optionOr(settings, "restarts", kDefaultRestarts))),
+      mRandom(settings.seed)
 {
     const std::size_t n = mParameters.size();
     Point first(n);
@@ -22,14 +27,7 @@ NelderMead::NelderMead(const OptimiserSettings& settings)
         first[j] = p.start ? *p.start : (p.min + p.max) / 2.0;
     }
     mVertices.push_back(first);
-    for (std::size_t j = 0; j < n; ++j) {
-        // Along axis j, or against it when that would leave the bounds.
-        const auto& p = mParameters[j];
-        const double step = kInitialStep * (p.max - p.min);
-        Point vertex = first;
-        vertex[j] = first[j] + step <= p.max ? first[j] + step : first[j] - step;
-        mVertices.push_back(std::move(vertex));
-    }
+    for (std::size_t j = 0; j < n; ++j) mVertices.push_back(axisNeighbour(first, j));
     mBatch.assign(mVertices.begin(),
                   mVertices.begin() + static_cast<std::ptrdiff_t>(std::min(mVertices.size(), mMaxEvaluations)));
 }
@@ -77,6 +75,7 @@ void NelderMead::tell(const std::vector<double>& values)
         return;
     }
     case Step::Shrink:
+    case Step::Restart:
         for (std::size_t i = 0; i < told.size(); ++i) {
             mVertices[i + 1] = mBatch[i];
             mValues[i + 1] = told[i];
@@ -102,7 +101,17 @@ void NelderMead::startIteration()
     mValues = std::move(values);
 
     if (convergedWithin(mVertices, mValues, mParameters, mTolerance)) {
-        mFinishReason = "converged";
+        const double best = mValues.front();
+        const bool improved = !std::isfinite(mBestAtLastRestart) ||
+                              mBestAtLastRestart - best > mTolerance * std::max(std::abs(best), 1e-300);
+        if (improved && std::isfinite(best)) {
+            restartAtBest();
+        } else if (mRandomRestartsLeft > 0) {
+            --mRandomRestartsLeft;
+            restartAtRandom();
+        } else {
+            mFinishReason = "converged";
+        }
         return;
     }
 
@@ -153,6 +162,39 @@ void NelderMead::shrinkTowardsBest()
     moved.resize(std::min(moved.size(), mMaxEvaluations - mRecord.evaluations()));
     mBatch = std::move(moved);
     mStep = Step::Shrink;
+}
+
+Point NelderMead::axisNeighbour(const Point& from, std::size_t j) const
+{
+    // Along axis j, or against it when that would leave the bounds.
+    const auto& p = mParameters[j];
+    const double step = kInitialStep * (p.max - p.min);
+    Point vertex = from;
+    vertex[j] = from[j] + step <= p.max ? from[j] + step : from[j] - step;
+    return vertex;
+}
+
+void NelderMead::restartAtBest()
+{
+    mBestAtLastRestart = mValues.front();
+    std::vector<Point> fresh;
+    for (std::size_t j = 0; j < mParameters.size(); ++j) fresh.push_back(axisNeighbour(mVertices.front(), j));
+    fresh.resize(std::min(fresh.size(), mMaxEvaluations - mRecord.evaluations()));
+    mBatch = std::move(fresh);
+    mStep = Step::Restart;
+}
+
+void NelderMead::restartAtRandom()
+{
+    // The best point so far stays in the record; the search goes on from elsewhere.
+    const Point start = randomPointInBounds(mRandom, mParameters, false);
+    mBestAtLastRestart = std::numeric_limits<double>::infinity();
+    std::vector<Point> fresh{start};
+    for (std::size_t j = 0; j < mParameters.size(); ++j) fresh.push_back(axisNeighbour(start, j));
+    mVertices = fresh;
+    fresh.resize(std::min(fresh.size(), mMaxEvaluations - mRecord.evaluations()));
+    mBatch = std::move(fresh);
+    mStep = Step::InitialSimplex;
 }
 
 Point NelderMead::alongLine(const Point& towards, double factor) const

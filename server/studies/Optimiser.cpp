@@ -50,6 +50,8 @@ std::string checkOption(const OptimiserSettings& settings, const std::string& na
         if (name == "gamma" && !(value > 1.0)) return prefix + "must be above 1";
         if (name == "rho" && !(value > 0.0 && value < 1.0)) return prefix + "must be between 0 and 1";
         if (name == "sigma" && !(value > 0.0 && value < 1.0)) return prefix + "must be between 0 and 1";
+        if (name == "restarts" && !(isWholeNumber(value) && value >= 0.0 && value <= 1000.0))
+            return prefix + "must be a whole number from 0 to 1000";
         return {};
     case OptimiserAlgorithm::ParticleSwarm:
         if (name == "particles" && !(isWholeNumber(value) && value >= 2 && value <= kMaxPopulation))
@@ -64,7 +66,7 @@ std::string checkOption(const OptimiserSettings& settings, const std::string& na
 const std::set<std::string>& knownOptions(OptimiserAlgorithm algorithm)
 {
     static const std::set<std::string> complexRF{"alpha", "randomisation", "forgetting", "points"};
-    static const std::set<std::string> nelderMead{"alpha", "gamma", "rho", "sigma"};
+    static const std::set<std::string> nelderMead{"alpha", "gamma", "rho", "sigma", "restarts"};
     static const std::set<std::string> particleSwarm{"particles", "omega", "c1", "c2"};
     switch (algorithm) {
     case OptimiserAlgorithm::ComplexRF: return complexRF;

@@ -52,7 +52,8 @@ struct OptimiserSettings {
     // docs/optimisation.md says what each does:
     //   complex-rf: "alpha" (reflection, 1.3), "randomisation" (0.3), "forgetting" (0.0),
     //               "points" (complex size, 2 × parameters and at least 3)
-    //   nelder-mead: "alpha" (1), "gamma" (2), "rho" (0.5), "sigma" (0.5)
+    //   nelder-mead: "alpha" (1), "gamma" (2), "rho" (0.5), "sigma" (0.5), "restarts" (3: fresh
+    //                simplices at random points after it has converged, for other valleys)
     //   particle-swarm: "particles" (20), "omega" (0.7), "c1" (1.5), "c2" (1.5)
     std::map<std::string, double> options;
 };
