@@ -44,26 +44,27 @@ class Sweep(unittest.TestCase):
             outputs=[POSITION], values=["final", "max"], full=True, **SHORT)
 
     def test_a_grid_runs_every_combination_first_parameter_slowest(self):
+        # The server takes parameters in the order of their names: GainI.k comes first.
         self.assertEqual(self.study.state, "done")
         self.assertEqual(self.study.info["runs_total"], 4)
         table = self.study.table()
-        self.assertEqual(table.columns, ["run", "ok", "GainP.k", "GainI.k",
+        self.assertEqual(table.columns, ["run", "ok", "GainI.k", "GainP.k",
                                          f"{POSITION}:final", f"{POSITION}:max"])
         self.assertEqual([row[2:4] for row in table.rows],
-                         [[0.01, 0], [0.01, 0.001], [0.03, 0], [0.03, 0.001]])
+                         [[0, 0.01], [0, 0.03], [0.001, 0.01], [0.001, 0.03]])
         self.assertTrue(all(row[1] for row in table.rows))
         self.assertEqual(len(table[f"{POSITION}:final"]), 4)
 
     def test_table_csv_is_the_servers(self):
         csv = self.study.table().to_csv()
         self.assertEqual(csv, raw_get(self.client, f"/studies/{self.study.id}/results?format=csv"))
-        self.assertTrue(csv.startswith(b"run,ok,GainP.k,GainI.k,"))
+        self.assertTrue(csv.startswith(b"run,ok,GainI.k,GainP.k,"))
 
     def test_a_runs_result_equals_a_job_with_its_parameters(self):
         table = self.study.table()
         row = table.rows[2]
         run = self.study.run_result(row[0])
-        job = self.client.run(self.model, parameters={"GainP.k": row[2], "GainI.k": row[3]}, **SHORT)
+        job = self.client.run(self.model, parameters={"GainI.k": row[2], "GainP.k": row[3]}, **SHORT)
         self.assertEqual(run.to_csv(), job.to_csv())
         self.assertEqual(run[POSITION][-1], row[table.columns.index(f"{POSITION}:final")])
         chosen = self.study.run_result(row[0], variables=[POSITION])
@@ -74,7 +75,7 @@ class Sweep(unittest.TestCase):
                                                           "GainI.k": [0.0, 0.0005, 0.001]},
                                   mode="list", outputs=[POSITION], **SHORT)
         self.assertEqual([row[2:4] for row in study.table().rows],
-                         [[0.01, 0.0], [0.02, 0.0005], [0.03, 0.001]])
+                         [[0.0, 0.01], [0.0005, 0.02], [0.001, 0.03]])
 
     def test_random_mode_takes_samples(self):
         study = self.client.sweep(self.model, parameters={"GainP.k": {"from": 0.01, "to": 0.03, "steps": 2}},

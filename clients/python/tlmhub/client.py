@@ -268,7 +268,8 @@ class Client:
               step: float | None = None, stop: float | None = None,
               log_samples: int | None = None, wait: bool = True) -> Study:
         """A parameter sweep. `parameters` maps each swept parameter to a list of values or
-        `{"from": a, "to": b, "steps": n}`; `mode` is `grid` (every combination), `list`
+        `{"from": a, "to": b, "steps": n}` (the server orders them by name, whatever the
+        dict's order); `mode` is `grid` (every combination), `list`
         (the i-th values together) or `random` (`samples` runs, `seed`). Each of `outputs`
         (result variables) gives a table column per `values` entry (`final`, `min`, `max`,
         `mean`); `full=True` keeps each run's whole result (`Study.run_result`)."""
