@@ -138,6 +138,9 @@ std::string HttpClient::Connection::tlsFailure(const beast::error_code& error) c
 {
     const long verified = SSL_get_verify_result(mSecure->native_handle());
     if (verified == X509_V_OK) return describe(error, mLimits.connect);
+    if (verified == X509_V_ERR_HOSTNAME_MISMATCH || verified == X509_V_ERR_IP_ADDRESS_MISMATCH)
+        return "the server's certificate is not for " + mServer.host + " (" + X509_verify_cert_error_string(verified) +
+               ")";
     return std::string("the server's certificate is not trusted: ") + X509_verify_cert_error_string(verified) +
            " (SSL_CERT_FILE can name a file of certificates to trust)";
 }
@@ -203,8 +206,8 @@ HttpResponse HttpClient::Connection::send(const HttpRequest& request)
         // one more try on a new connection.
         if (kept && !failure.answered && attempt == 0) continue;
         if (failure.error == http::error::body_limit)
-            throw ConnectionError("the response from " + mServer.authority() + " is larger than " +
-                                  std::to_string(mLimits.maxResponseBytes >> 20) + " MiB");
+            throw ConnectionError("the response from " + mServer.authority() + " is over the limit of " +
+                                  std::to_string(mLimits.maxResponseBytes) + " bytes");
         throw ConnectionError("connection to " + mServer.authority() + " failed while " + failure.stage + ": " +
                               describe(failure.error, mLimits.idle));
     }

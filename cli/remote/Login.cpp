@@ -45,6 +45,16 @@ std::string password(const Arguments& args, const std::string& user, const Url& 
     return *password;
 }
 
+// The login session has done its job once the token exists (or cannot be made). Were the
+// logout to fail, the session would still expire on its own.
+void endSession(ApiClient& api)
+{
+    try {
+        api.post("/auth/logout", nlohmann::json::object());
+    } catch (const std::exception&) {
+    }
+}
+
 } // namespace
 
 int login(const std::vector<std::string>& argv)
@@ -61,13 +71,15 @@ int login(const std::vector<std::string>& argv)
     ApiClient api(*url, "");
     const nlohmann::json session = api.post("/auth/login", nlohmann::json{{"username", user}, {"password", secret}});
     api.setToken(session.at("token").get<std::string>());
-    const nlohmann::json created = api.post("/tokens", nlohmann::json{{"name", tokenName}});
-    saveCredentials({url->text(), created.at("token").get<std::string>()});
-    // The session has done its job; were this to fail, it would still expire on its own.
+    std::string token;
     try {
-        api.post("/auth/logout", nlohmann::json::object());
+        token = api.post("/tokens", nlohmann::json{{"name", tokenName}}).at("token").get<std::string>();
     } catch (const std::exception&) {
+        endSession(api);
+        throw;
     }
+    endSession(api);
+    saveCredentials({url->text(), token});
     std::printf("logged in to %s as %s: API token '%s' saved in %s\n", url->text().c_str(), user.c_str(),
                 tokenName.c_str(), credentialsPath().c_str());
     return 0;
