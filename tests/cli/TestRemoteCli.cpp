@@ -196,6 +196,22 @@ TEST_F(RemoteCli, AJobOverALimitIsRefusedWithTheServersCode)
     EXPECT_EQ(run.err.rfind("error: limit_exceeded: ", 0), 0u) << run.err;
 }
 
+TEST_F(RemoteCli, AFailedJobPrintsItsErrorAndExitsOne)
+{
+    ServerProcess strict(mDir / "strict", {"--max-wall-seconds", "0.05"});
+    HttpClient admin(strict.port());
+    auto env = loggedIn();
+    env["TLMHUB_URL"] = "http://127.0.0.1:" + std::to_string(strict.port());
+    env["TLMHUB_TOKEN"] = admin.login("admin", kAdminPassword);
+    const auto csv = mDir / "never.csv";
+    const CliResult run = remote({"run", kModel, "--stop", "200", "--csv", csv.string()}, env);   // 2e6 steps
+    EXPECT_EQ(run.exitCode, 1);
+    const std::regex failed("\nerror: job [0-9]+ failed: wall time limit \\(0.05 s\\) exceeded\n$");
+    EXPECT_TRUE(std::regex_search(run.err, failed)) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
 TEST_F(RemoteCli, UsageErrorsExitTwoWithTheUsage)
 {
     const std::vector<std::vector<std::string>> cases = {
