@@ -202,8 +202,9 @@ HttpResponse HttpClient::Connection::send(const HttpRequest& request)
             mSecure ? exchange(*mSecure, message, failure) : exchange(*mPlain, message, failure);
         if (response) return std::move(*response);
         close();
-        // A kept connection that the server has closed meanwhile fails before any answer:
-        // one more try on a new connection.
+        // A kept connection that the server has closed meanwhile (its idle timeout) fails
+        // before any answer: one more try on a new connection. The server closes only
+        // connections it is not reading a request from, so this does not send a POST twice.
         if (kept && !failure.answered && attempt == 0) continue;
         if (failure.error == http::error::body_limit)
             throw ConnectionError("the response from " + mServer.authority() + " is over the limit of " +

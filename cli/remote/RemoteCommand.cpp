@@ -4,6 +4,7 @@
 #include "cli/remote/Arguments.h"
 #include "cli/remote/RemoteCommands.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace tlmhub::cli {
@@ -42,7 +43,9 @@ int dispatch(const std::string& command, const std::vector<std::string>& args)
 
 int remoteCommand(const std::vector<std::string>& args)
 {
-    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    const bool help = std::find(args.begin(), args.end(), "--help") != args.end() ||
+                      std::find(args.begin(), args.end(), "-h") != args.end();
+    if (args.empty() || help) {
         remoteUsage(args.empty() ? std::cerr : std::cout);
         return args.empty() ? 2 : 0;
     }

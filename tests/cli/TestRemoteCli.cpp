@@ -244,6 +244,9 @@ TEST_F(RemoteCli, UsageErrorsExitTwoWithTheUsage)
         EXPECT_EQ(r.exitCode, 2) << "remote" << shown << "\n" << r.err;
         EXPECT_NE(r.err.find("usage:\n  tlmhub-cli remote login URL"), std::string::npos) << "remote" << shown;
     }
+    const CliResult help = remote({"sweep", "--help"}, loggedIn());
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_EQ(help.out.rfind("usage:\n  tlmhub-cli remote login URL", 0), 0u) << help.out;
     // A job was never submitted: usage errors come before any request.
     EXPECT_EQ(mAdmin->get("/api/v1/jobs").json().size(), 0u);
 }
