@@ -45,9 +45,9 @@ nlohmann::json ApiClient::get(const std::string& path)
     return parse(call(HttpMethod::Get, path, "", ""), path);
 }
 
-nlohmann::json ApiClient::post(const std::string& path, const std::string& json)
+nlohmann::json ApiClient::post(const std::string& path, const nlohmann::json& body)
 {
-    return parse(call(HttpMethod::Post, path, json, "application/json"), path);
+    return parse(call(HttpMethod::Post, path, body.dump(), "application/json"), path);
 }
 
 nlohmann::json ApiClient::postXml(const std::string& path, const std::string& xml)

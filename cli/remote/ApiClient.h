@@ -41,8 +41,7 @@ public:
 
     // `path` below /api/v1, e.g. "/jobs/3".
     nlohmann::json get(const std::string& path);
-    nlohmann::json post(const std::string& path, const std::string& json);
-    nlohmann::json post(const std::string& path, const nlohmann::json& body) { return post(path, body.dump()); }
+    nlohmann::json post(const std::string& path, const nlohmann::json& body);
     nlohmann::json postXml(const std::string& path, const std::string& xml);
     // The body as it came (CSV), byte for byte.
     std::string getText(const std::string& path);

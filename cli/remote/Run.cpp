@@ -13,7 +13,7 @@ int run(const std::vector<std::string>& argv)
     const Arguments args(argv, {"start", "step", "stop", "csv"}, {"param"}, {});
     if (args.positional().size() != 1) throw UsageError("run needs one model file");
     const std::string& model = args.positional()[0];
-    OrderedJson job = OrderedJson::object();
+    nlohmann::json job = nlohmann::json::object();
     if (!args.values("param").empty()) job["parameters"] = parameterValues(args.values("param"));
     for (const char* setting : {"start", "step", "stop"})
         if (const std::optional<double> value = args.number(setting)) job[setting] = *value;
@@ -21,7 +21,7 @@ int run(const std::vector<std::string>& argv)
     ApiClient api = connectWithCredentials();
     const long long modelId = uploadModel(api, model);
     job["model_id"] = modelId;
-    const long long id = api.post("/jobs", job.dump()).at("id").get<long long>();
+    const long long id = api.post("/jobs", job).at("id").get<long long>();
     const std::string path = "/jobs/" + std::to_string(id);
     const nlohmann::json info = waitUntilFinished(api, path, "job " + std::to_string(id));
     const std::string state = info.at("state").get<std::string>();

@@ -17,10 +17,10 @@ std::string modelName(const std::string& path) { return std::filesystem::path(pa
 
 // Submits `request` for the model file and waits; the finished StudyInfo, or nullopt after
 // reporting a study that did not finish.
-std::optional<nlohmann::json> runStudy(ApiClient& api, const std::string& model, OrderedJson request)
+std::optional<nlohmann::json> runStudy(ApiClient& api, const std::string& model, nlohmann::json request)
 {
     request["model_id"] = uploadModel(api, model);
-    const long long id = api.post("/studies", request.dump()).at("id").get<long long>();
+    const long long id = api.post("/studies", request).at("id").get<long long>();
     nlohmann::json info = waitUntilFinished(api, "/studies/" + std::to_string(id), "study " + std::to_string(id));
     const std::string state = info.at("state").get<std::string>();
     if (state == "done") return info;
@@ -47,7 +47,7 @@ int sweep(const std::vector<std::string>& argv)
     const Arguments args(argv, {"mode", "csv"}, {"vary", "output"}, {"full"});
     if (args.positional().size() != 1) throw UsageError("sweep needs one model file");
     const std::string& model = args.positional()[0];
-    const OrderedJson request = sweepRequest(modelName(model), args);
+    const nlohmann::json request = sweepRequest(modelName(model), args);
 
     ApiClient api = connectWithCredentials();
     const std::optional<nlohmann::json> info = runStudy(api, model, request);
@@ -69,7 +69,7 @@ int optimise(const std::vector<std::string>& argv)
     const Arguments args(argv, {"algorithm", "max-evaluations", "seed", "csv"}, {"bound", "objective"}, {"maximise"});
     if (args.positional().size() != 1) throw UsageError("optimise needs one model file");
     const std::string& model = args.positional()[0];
-    const OrderedJson request = optimiseRequest(modelName(model), args);
+    const nlohmann::json request = optimiseRequest(modelName(model), args);
 
     ApiClient api = connectWithCredentials();
     const std::optional<nlohmann::json> info = runStudy(api, model, request);

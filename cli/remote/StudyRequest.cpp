@@ -35,13 +35,13 @@ double number(const std::string& option, const std::string& text, const std::str
     return *value;
 }
 
-OrderedJson numberOrText(const std::string& text)
+nlohmann::json numberOrText(const std::string& text)
 {
     const std::optional<double> value = parseNumber(text);
-    return value ? OrderedJson(*value) : OrderedJson(text);
+    return value ? nlohmann::json(*value) : nlohmann::json(text);
 }
 
-OrderedJson sweepValues(const std::string& text, const std::string& whole)
+nlohmann::json sweepValues(const std::string& text, const std::string& whole)
 {
     if (text.find(':') != std::string::npos) {
         const std::vector<std::string> range = split(text, ':');
@@ -51,15 +51,15 @@ OrderedJson sweepValues(const std::string& text, const std::string& whole)
         return {{"from", number("vary", range[0], whole)}, {"to", number("vary", range[1], whole)},
                 {"steps", static_cast<long long>(*steps)}};
     }
-    OrderedJson values = OrderedJson::array();
+    nlohmann::json values = nlohmann::json::array();
     for (const std::string& value : split(text, ',')) values.push_back(number("vary", value, whole));
     return values;
 }
 
-OrderedJson outputs(const Arguments& args)
+nlohmann::json outputs(const Arguments& args)
 {
     static const std::vector<std::string> known = {"final", "min", "max", "mean"};
-    OrderedJson variables = OrderedJson::array(), values = OrderedJson::array();
+    nlohmann::json variables = nlohmann::json::array(), values = nlohmann::json::array();
     for (const std::string& output : args.values("output")) {
         const std::size_t colon = output.rfind(':');
         if (colon == std::string::npos || colon == 0 || colon + 1 == output.size())
@@ -72,19 +72,19 @@ OrderedJson outputs(const Arguments& args)
             if (std::find(values.begin(), values.end(), value) == values.end()) values.push_back(value);
         }
     }
-    OrderedJson out = OrderedJson::object();
+    nlohmann::json out = nlohmann::json::object();
     if (!variables.empty()) out["variables"] = variables;
     if (!values.empty()) out["values"] = values;
     if (args.has("full")) out["full"] = true;
     return out;
 }
 
-OrderedJson objectiveTerm(const std::string& text)
+nlohmann::json objectiveTerm(const std::string& text)
 {
     static const std::vector<std::string> functions = {"final", "min", "max", "mean", "overshoot", "ise"};
     const std::string usage = "--objective needs FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT], got '" + text + "'";
     std::string term = text;
-    OrderedJson weight;
+    nlohmann::json weight;
     if (const std::size_t star = term.rfind('*'); star != std::string::npos) {
         weight = number("objective", term.substr(star + 1), text);
         term.erase(star);
@@ -97,7 +97,7 @@ OrderedJson objectiveTerm(const std::string& text)
     if ((function == "ise") != (parts.size() == 3))
         throw UsageError("--objective: ise needs a reference variable (ise:VARIABLE:REFERENCE), the others "
                          "none; got '" + text + "'");
-    OrderedJson out = {{"function", function}, {"variable", parts[1]}};
+    nlohmann::json out = {{"function", function}, {"variable", parts[1]}};
     if (parts.size() == 3) out["reference_variable"] = parts[2];
     if (!weight.is_null()) out["weight"] = weight;
     return out;
@@ -114,9 +114,9 @@ long long wholeNumber(const Arguments& args, const std::string& option, double l
 
 } // namespace
 
-OrderedJson parameterValues(const std::vector<std::string>& assignments)
+nlohmann::json parameterValues(const std::vector<std::string>& assignments)
 {
-    OrderedJson parameters = OrderedJson::object();
+    nlohmann::json parameters = nlohmann::json::object();
     for (const std::string& text : assignments) {
         const auto [name, value] = assignment("param", text, "Comp.P=value");
         parameters[name] = numberOrText(value);
@@ -124,31 +124,31 @@ OrderedJson parameterValues(const std::vector<std::string>& assignments)
     return parameters;
 }
 
-OrderedJson sweepRequest(const std::string& name, const Arguments& args)
+nlohmann::json sweepRequest(const std::string& name, const Arguments& args)
 {
     if (args.values("vary").empty()) throw UsageError("sweep needs at least one --vary");
     const std::string mode = args.has("mode") ? args.value("mode") : "grid";
     if (mode != "grid" && mode != "list") throw UsageError("--mode is grid or list, got '" + mode + "'");
-    OrderedJson parameters = OrderedJson::object();
+    nlohmann::json parameters = nlohmann::json::object();
     for (const std::string& vary : args.values("vary")) {
         const auto [parameter, values] = assignment("vary", vary, "Comp.P=from:to:steps or Comp.P=v1,v2,...");
         if (parameters.contains(parameter)) throw UsageError("--vary: " + parameter + " is varied twice");
         parameters[parameter] = sweepValues(values, vary);
     }
-    OrderedJson request = {{"kind", "sweep"}, {"name", name}};
-    if (OrderedJson out = outputs(args); !out.empty()) request["outputs"] = out;
+    nlohmann::json request = {{"kind", "sweep"}, {"name", name}};
+    if (nlohmann::json out = outputs(args); !out.empty()) request["outputs"] = out;
     request["sweep"] = {{"mode", mode}, {"parameters", parameters}};
     return request;
 }
 
-OrderedJson optimiseRequest(const std::string& name, const Arguments& args)
+nlohmann::json optimiseRequest(const std::string& name, const Arguments& args)
 {
     if (args.values("bound").empty()) throw UsageError("optimise needs at least one --bound");
     if (args.values("objective").empty()) throw UsageError("optimise needs at least one --objective");
     const std::string algorithm = args.has("algorithm") ? args.value("algorithm") : "complex-rf";
     if (algorithm != "complex-rf" && algorithm != "nelder-mead" && algorithm != "particle-swarm")
         throw UsageError("--algorithm is complex-rf, nelder-mead or particle-swarm, got '" + algorithm + "'");
-    OrderedJson parameters = OrderedJson::object();
+    nlohmann::json parameters = nlohmann::json::object();
     for (const std::string& bound : args.values("bound")) {
         const auto [parameter, range] = assignment("bound", bound, "Comp.P=min:max");
         const std::vector<std::string> limits = split(range, ':');
@@ -158,9 +158,9 @@ OrderedJson optimiseRequest(const std::string& name, const Arguments& args)
         if (parameters.contains(parameter)) throw UsageError("--bound: " + parameter + " is bounded twice");
         parameters[parameter] = {{"min", min}, {"max", max}};
     }
-    OrderedJson terms = OrderedJson::array();
+    nlohmann::json terms = nlohmann::json::array();
     for (const std::string& objective : args.values("objective")) terms.push_back(objectiveTerm(objective));
-    OrderedJson optimise = {{"algorithm", algorithm},
+    nlohmann::json optimise = {{"algorithm", algorithm},
                             {"parameters", parameters},
                             {"objective", {{"goal", args.has("maximise") ? "maximise" : "minimise"}, {"terms", terms}}}};
     if (args.has("max-evaluations")) optimise["max_evaluations"] = wholeNumber(args, "max-evaluations", 1);

@@ -12,19 +12,16 @@
 
 namespace tlmhub::cli::remote {
 
-// Keys keep their command-line order: a grid sweep varies its first parameter slowest.
-using OrderedJson = nlohmann::ordered_json;
-
 // "Comp.P=value"... -> {"Comp.P": value}: a number when the text is one, else the text (an
 // expression or a system parameter's name, which the server evaluates).
-OrderedJson parameterValues(const std::vector<std::string>& assignments);
+nlohmann::json parameterValues(const std::vector<std::string>& assignments);
 
 // The study requests lack "model_id": the caller adds it once the model is uploaded, after
 // the options have been checked.
 // --vary "Comp.P=1:5:10" -> {"from": 1, "to": 5, "steps": 10}; "Comp.P=1,2,3" -> [1, 2, 3].
-OrderedJson sweepRequest(const std::string& name, const Arguments& args);
+nlohmann::json sweepRequest(const std::string& name, const Arguments& args);
 
 // --bound "Comp.P=min:max", --objective "FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT]".
-OrderedJson optimiseRequest(const std::string& name, const Arguments& args);
+nlohmann::json optimiseRequest(const std::string& name, const Arguments& args);
 
 } // namespace tlmhub::cli::remote

@@ -17,23 +17,25 @@ Arguments optimiseArguments(const std::vector<std::string>& args)
     return Arguments(args, {"algorithm", "max-evaluations", "seed", "csv"}, {"bound", "objective"}, {"maximise"});
 }
 
-TEST(StudyRequest, ARangeAndAListSweepInCommandLineOrder)
+TEST(StudyRequest, ARangeAndAListSweep)
 {
-    const OrderedJson request = sweepRequest(
+    const nlohmann::json request = sweepRequest(
         "pump", sweepArguments({"m.hmf", "--vary", "Valve.Kv=1:5:10", "--vary", "Pump.Dp=1e-5,2e-5", "--output",
                                 "Mass#P1#x:final,max", "--output", "Mass#P1#v:max,mean", "--full"}));
-    EXPECT_EQ(request.dump(),
-              R"({"kind":"sweep","name":"pump","outputs":{"variables":["Mass#P1#x","Mass#P1#v"],)"
-              R"("values":["final","max","mean"],"full":true},"sweep":{"mode":"grid","parameters":)"
-              R"({"Valve.Kv":{"from":1.0,"to":5.0,"steps":10},"Pump.Dp":[1e-05,2e-05]}}})");
+    EXPECT_EQ(request, nlohmann::json::parse(R"({
+        "kind": "sweep", "name": "pump",
+        "outputs": {"variables": ["Mass#P1#x", "Mass#P1#v"], "values": ["final", "max", "mean"], "full": true},
+        "sweep": {"mode": "grid", "parameters": {"Valve.Kv": {"from": 1, "to": 5, "steps": 10},
+                                                 "Pump.Dp": [1e-5, 2e-5]}}})"));
 }
 
 TEST(StudyRequest, ListModeAndNoOutputs)
 {
-    const OrderedJson request =
+    const nlohmann::json request =
         sweepRequest("m", sweepArguments({"m.hmf", "--vary=a=1,2", "--vary", "Sub$C.p=3,4", "--mode", "list"}));
     EXPECT_FALSE(request.contains("outputs"));
-    EXPECT_EQ(request["sweep"].dump(), R"({"mode":"list","parameters":{"a":[1.0,2.0],"Sub$C.p":[3.0,4.0]}})");
+    EXPECT_EQ(request["sweep"],
+              nlohmann::json::parse(R"({"mode": "list", "parameters": {"a": [1, 2], "Sub$C.p": [3, 4]}})"));
 }
 
 TEST(StudyRequest, BadSweepOptionsAreUsageErrors)
@@ -54,22 +56,26 @@ TEST(StudyRequest, BadSweepOptionsAreUsageErrors)
 
 TEST(StudyRequest, OptimiseWithWeightedTerms)
 {
-    const OrderedJson request = optimiseRequest(
+    const nlohmann::json request = optimiseRequest(
         "servo", optimiseArguments({"m.hmf", "--bound", "Kp.k=0:0.01", "--bound", "Ki.k=0:0.1", "--objective",
                                     "ise:Mass#P1#x:Ref#out#y*0.5", "--objective", "overshoot:Mass#P1#x",
                                     "--objective", "final:Mass#P1#x*2", "--maximise", "--algorithm",
                                     "particle-swarm", "--max-evaluations", "200", "--seed", "1"}));
-    EXPECT_EQ(request.dump(),
-              R"({"kind":"optimise","name":"servo","optimise":{"algorithm":"particle-swarm","parameters":)"
-              R"({"Kp.k":{"min":0.0,"max":0.01},"Ki.k":{"min":0.0,"max":0.1}},"objective":{"goal":"maximise",)"
-              R"("terms":[{"function":"ise","variable":"Mass#P1#x","reference_variable":"Ref#out#y","weight":0.5},)"
-              R"({"function":"overshoot","variable":"Mass#P1#x"},{"function":"final","variable":"Mass#P1#x",)"
-              R"("weight":2.0}]},"max_evaluations":200,"seed":1}})");
+    EXPECT_EQ(request, nlohmann::json::parse(R"({
+        "kind": "optimise", "name": "servo",
+        "optimise": {
+          "algorithm": "particle-swarm",
+          "parameters": {"Kp.k": {"min": 0, "max": 0.01}, "Ki.k": {"min": 0, "max": 0.1}},
+          "objective": {"goal": "maximise", "terms": [
+            {"function": "ise", "variable": "Mass#P1#x", "reference_variable": "Ref#out#y", "weight": 0.5},
+            {"function": "overshoot", "variable": "Mass#P1#x"},
+            {"function": "final", "variable": "Mass#P1#x", "weight": 2}]},
+          "max_evaluations": 200, "seed": 1}})"));
 }
 
 TEST(StudyRequest, OptimiseDefaults)
 {
-    const OrderedJson request =
+    const nlohmann::json request =
         optimiseRequest("m", optimiseArguments({"m.hmf", "--bound", "a=1:2", "--objective", "mean:V"}));
     EXPECT_EQ(request["optimise"]["algorithm"], "complex-rf");
     EXPECT_EQ(request["optimise"]["objective"]["goal"], "minimise");
@@ -96,8 +102,8 @@ TEST(StudyRequest, BadOptimiseOptionsAreUsageErrors)
 
 TEST(StudyRequest, ParametersAreNumbersWhenTheyAreNumbers)
 {
-    EXPECT_EQ(parameterValues({"Gain.k=0.5", "Step.t_step=2*t0", "relief_pressure=-1e7"}).dump(),
-              R"({"Gain.k":0.5,"Step.t_step":"2*t0","relief_pressure":-10000000.0})");
+    EXPECT_EQ(parameterValues({"Gain.k=0.5", "Step.t_step=2*t0", "relief_pressure=-1e7"}),
+              nlohmann::json::parse(R"({"Gain.k": 0.5, "Step.t_step": "2*t0", "relief_pressure": -1e7})"));
     EXPECT_THROW(parameterValues({"Gain.k"}), UsageError);
     EXPECT_THROW(parameterValues({"=1"}), UsageError);
 }
