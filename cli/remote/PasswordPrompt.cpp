@@ -1,5 +1,6 @@
 #include "cli/remote/PasswordPrompt.h"
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <termios.h>
@@ -9,26 +10,56 @@ namespace tlmhub::cli::remote {
 
 namespace {
 
+termios gSaved;   // the settings from before echo was turned off (for the signal handler)
+
+// Ctrl-C at the prompt: the terminal gets its echo back before the process ends.
+extern "C" void restoreEchoAndDie(int signal)
+{
+    ::tcsetattr(STDIN_FILENO, TCSAFLUSH, &gSaved);
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
 // Echo off for its lifetime; the terminal's settings come back however the read ends.
 class EchoOff {
 public:
-    EchoOff() : mChanged(::tcgetattr(STDIN_FILENO, &mSaved) == 0)
+    EchoOff()
     {
-        if (!mChanged) return;
-        termios quiet = mSaved;
+        if (::tcgetattr(STDIN_FILENO, &gSaved) != 0) return;
+        mInterrupt = catchSignal(SIGINT);
+        mTerminate = catchSignal(SIGTERM);
+        termios quiet = gSaved;
         quiet.c_lflag &= ~static_cast<tcflag_t>(ECHO);
         mChanged = ::tcsetattr(STDIN_FILENO, TCSAFLUSH, &quiet) == 0;
+        if (!mChanged) restoreSignals();
     }
     ~EchoOff()
     {
-        if (mChanged) ::tcsetattr(STDIN_FILENO, TCSAFLUSH, &mSaved);
+        if (!mChanged) return;
+        ::tcsetattr(STDIN_FILENO, TCSAFLUSH, &gSaved);
+        restoreSignals();
     }
     EchoOff(const EchoOff&) = delete;
     EchoOff& operator=(const EchoOff&) = delete;
 
 private:
-    termios mSaved{};
-    bool mChanged;
+    using Handler = void (*)(int);
+    // A signal the process ignores stays ignored.
+    static Handler catchSignal(int signal)
+    {
+        const Handler previous = std::signal(signal, restoreEchoAndDie);
+        if (previous == SIG_IGN) std::signal(signal, SIG_IGN);
+        return previous;
+    }
+    void restoreSignals()
+    {
+        std::signal(SIGINT, mInterrupt);
+        std::signal(SIGTERM, mTerminate);
+    }
+
+    bool mChanged = false;
+    Handler mInterrupt = SIG_DFL;
+    Handler mTerminate = SIG_DFL;
 };
 
 } // namespace
