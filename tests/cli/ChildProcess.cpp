@@ -44,8 +44,15 @@ std::vector<char*> pointers(std::vector<std::string>& strings)
 CliResult runCli(const std::vector<std::string>& args, const std::map<std::string, std::string>& environment,
                  const std::string& input)
 {
-    std::vector<std::string> argvStrings = {TLMHUB_CLI_BIN};
-    argvStrings.insert(argvStrings.end(), args.begin(), args.end());
+    std::vector<std::string> argv = {TLMHUB_CLI_BIN};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return runProgram(argv, environment, input);
+}
+
+CliResult runProgram(const std::vector<std::string>& program, const std::map<std::string, std::string>& environment,
+                     const std::string& input)
+{
+    std::vector<std::string> argvStrings = program;
     std::vector<std::string> envStrings = childEnvironment(environment);
     std::vector<char*> argv = pointers(argvStrings), envp = pointers(envStrings);
     int in[2], out[2], err[2];
@@ -56,7 +63,7 @@ CliResult runCli(const std::vector<std::string>& args, const std::map<std::strin
         ::dup2(out[1], STDOUT_FILENO);
         ::dup2(err[1], STDERR_FILENO);
         for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) ::close(fd);
-        ::execve(argv[0], argv.data(), envp.data());
+        ::execvpe(argv[0], argv.data(), envp.data());
         ::_exit(127);
     }
     ::close(in[0]);

@@ -14,9 +14,14 @@ struct CliResult {
     std::string err;       // stderr
 };
 
-// Runs tlmhub-cli with `args`, feeding `input` to its stdin. Its environment is this
-// process's without the variables the remote commands read (TLMHUB_URL, TLMHUB_TOKEN,
-// HOME, XDG_CONFIG_HOME, SSL_CERT_FILE, SSL_CERT_DIR), plus `environment`. Killed after 120 s.
+// Runs `argv` (the program looked up on PATH), feeding `input` to its stdin. Its environment
+// is this process's without the variables the remote commands read (TLMHUB_URL,
+// TLMHUB_TOKEN, HOME, XDG_CONFIG_HOME, SSL_CERT_FILE, SSL_CERT_DIR), plus `environment`.
+// Killed after 120 s.
+CliResult runProgram(const std::vector<std::string>& argv, const std::map<std::string, std::string>& environment = {},
+                     const std::string& input = "");
+
+// runProgram of tlmhub-cli with `args`.
 CliResult runCli(const std::vector<std::string>& args, const std::map<std::string, std::string>& environment = {},
                  const std::string& input = "");
 

@@ -115,6 +115,17 @@ TEST_F(RemoteCli, PipedProgressIsPlainLinesEachTenPerCent)
     }
 }
 
+TEST_F(RemoteCli, OnATerminalProgressIsABarRedrawnInPlace)
+{
+    // script(1) gives the command a terminal (stdout and stderr both go to it).
+    const CliResult run =
+        runProgram({"script", "-qec", "'" + std::string(TLMHUB_CLI_BIN) + "' remote run '" + kModel + "'", "/dev/null"},
+                   loggedIn());
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    EXPECT_TRUE(std::regex_search(run.out, std::regex("\rjob [0-9]+ \\[#{30}\\] 100 % done *\r\n"))) << run.out;
+    EXPECT_EQ(run.out.find(": 100 %"), std::string::npos) << run.out;   // no plain lines
+}
+
 TEST_F(RemoteCli, JobsListsTheCallersJobs)
 {
     const CliResult run = remote({"run", kModel}, loggedIn());
