@@ -9,7 +9,8 @@ if(TARGET tlmhub-server)
   target_link_libraries(tlmhub-cli-tests PRIVATE tlmhub_cli_remote GTest::gtest GTest::gtest_main)
   target_compile_options(tlmhub-cli-tests PRIVATE ${TLMHUB_HARNESS_OPTIONS})
   target_compile_definitions(tlmhub-cli-tests PRIVATE TLMHUB_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-                             TLMHUB_SERVER_BIN="$<TARGET_FILE:tlmhub-server>" TLMHUB_CLI_BIN="$<TARGET_FILE:tlmhub-cli>")
+                             TLMHUB_SERVER_BIN="$<TARGET_FILE:tlmhub-server>"
+                             TLMHUB_CLI_BIN="$<TARGET_FILE:tlmhub-cli>")
   add_dependencies(tlmhub-cli-tests tlmhub-server tlmhub-cli)
   gtest_discover_tests(tlmhub-cli-tests DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "cli" TIMEOUT 180)
 endif()

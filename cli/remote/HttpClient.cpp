@@ -172,7 +172,8 @@ std::optional<HttpResponse> HttpClient::Connection::exchange(Stream& stream, htt
     parser.body_limit(mLimits.maxResponseBytes);
     while (!parser.is_done()) {
         tcpStream().expires_after(mLimits.idle);
-        failure.error = complete([&](auto handler) { http::async_read_some(stream, mBuffer, parser, std::move(handler)); });
+        failure.error =
+            complete([&](auto handler) { http::async_read_some(stream, mBuffer, parser, std::move(handler)); });
         if (failure.error) {
             failure.stage = "reading the response";
             failure.answered = parser.got_some();

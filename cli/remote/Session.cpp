@@ -45,8 +45,8 @@ nlohmann::json waitUntilFinished(ApiClient& api, const std::string& path, const 
         const bool final = state == "done" || state == "failed" || state == "cancelled" || state == "interrupted";
         std::string detail = state;
         if (info.contains("runs_total")) {
-            detail = std::to_string(field(info, "runs_done", 0LL)) + "/" + std::to_string(field(info, "runs_total", 0LL)) +
-                     " runs, " + state;
+            detail = std::to_string(field(info, "runs_done", 0LL)) + "/" +
+                     std::to_string(field(info, "runs_total", 0LL)) + " runs, " + state;
             if (const long long failed = field(info, "runs_failed", 0LL); failed > 0)
                 detail += ", " + std::to_string(failed) + " failed";
         }

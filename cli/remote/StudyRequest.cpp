@@ -160,9 +160,10 @@ nlohmann::json optimiseRequest(const std::string& name, const Arguments& args)
     }
     nlohmann::json terms = nlohmann::json::array();
     for (const std::string& objective : args.values("objective")) terms.push_back(objectiveTerm(objective));
+    const char* goal = args.has("maximise") ? "maximise" : "minimise";
     nlohmann::json optimise = {{"algorithm", algorithm},
-                            {"parameters", parameters},
-                            {"objective", {{"goal", args.has("maximise") ? "maximise" : "minimise"}, {"terms", terms}}}};
+                               {"parameters", parameters},
+                               {"objective", {{"goal", goal}, {"terms", terms}}}};
     if (args.has("max-evaluations")) optimise["max_evaluations"] = wholeNumber(args, "max-evaluations", 1);
     if (args.has("seed")) optimise["seed"] = wholeNumber(args, "seed", 0);
     return {{"kind", "optimise"}, {"name", name}, {"optimise", optimise}};

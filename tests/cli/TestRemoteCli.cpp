@@ -355,14 +355,16 @@ TEST_F(RemoteCli, SweepWritesTheStudysTable)
         remote({"sweep", kModel, "--vary", "pump_flow=1e-4:2e-4:3", "--csv", table.string()}, loggedIn());
     ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
     EXPECT_NE(sweep.out.find("3 runs, 0 failed, table " + table.string()), std::string::npos) << sweep.out;
-    EXPECT_EQ(readFile(table), "run,ok,pump_flow\n0,1,0.0001\n1,1,0.00015000000000000001\n2,1,0.00020000000000000001\n");
+    EXPECT_EQ(readFile(table),
+              "run,ok,pump_flow\n0,1,0.0001\n1,1,0.00015000000000000001\n2,1,0.00020000000000000001\n");
 
     // Without --csv the table goes to stdout, alone; the progress to stderr.
     const CliResult listed = remote(
         {"sweep", kModel, "--vary", "pump_flow=1e-4,2e-4", "--vary", "relief_pressure=1e7,2e7", "--mode", "list"},
         loggedIn());
     ASSERT_EQ(listed.exitCode, 0) << listed.err;
-    EXPECT_EQ(listed.out, "run,ok,pump_flow,relief_pressure\n0,1,0.0001,10000000\n1,1,0.00020000000000000001,20000000\n");
+    EXPECT_EQ(listed.out,
+              "run,ok,pump_flow,relief_pressure\n0,1,0.0001,10000000\n1,1,0.00020000000000000001,20000000\n");
     EXPECT_EQ(listed.err.find('\r'), std::string::npos);
     EXPECT_NE(listed.err.find(": 100 % 2/2 runs, done\n"), std::string::npos) << listed.err;
 }
@@ -373,7 +375,8 @@ TEST_F(RemoteCli, SweepOutputsBecomeColumns)
     const CliResult sweep =
         remote({"sweep", kModel, "--vary", "pump_flow=1e-4,2e-4", "--output", variable + ":final,max"}, loggedIn());
     ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
-    EXPECT_EQ(sweep.out.substr(0, sweep.out.find('\n')), "run,ok,pump_flow," + variable + ":final," + variable + ":max");
+    EXPECT_EQ(sweep.out.substr(0, sweep.out.find('\n')),
+              "run,ok,pump_flow," + variable + ":final," + variable + ":max");
     EXPECT_EQ(std::count(sweep.out.begin(), sweep.out.end(), '\n'), 3);
 }
 
