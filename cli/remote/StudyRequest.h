@@ -16,8 +16,9 @@ namespace tlmhub::cli::remote {
 // expression or a system parameter's name, which the server evaluates).
 nlohmann::json parameterValues(const std::vector<std::string>& assignments);
 
-// The study requests lack "model_id": the caller adds it once the model is uploaded, after
-// the options have been checked.
+// The study requests leave out "model_id": the caller adds it once the options have been
+// checked and the model is uploaded.
+
 // --vary "Comp.P=1:5:10" -> {"from": 1, "to": 5, "steps": 10}; "Comp.P=1,2,3" -> [1, 2, 3].
 nlohmann::json sweepRequest(const std::string& name, const Arguments& args);
 
