@@ -1,4 +1,5 @@
-// tlmhub-cli: run a Hopsan model, write CSV, validate an .hvc, describe models and components.
+// tlmhub-cli: run a Hopsan model, write CSV, validate an .hvc, describe models and components;
+// `remote` runs models on a tlmhub server.
 #include "cli/Commands.h"
 
 #include <cstring>
@@ -16,7 +17,8 @@ void usage(std::ostream& os)
           "  tlmhub-cli info MODEL.hmf\n"
           "  tlmhub-cli components [--json]\n"
           "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N|auto[,...]] [--vary Comp.param=a:b:n]\n"
-          "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n";
+          "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n"
+          "  tlmhub-cli remote login|run|sweep|optimise|jobs|results ...   (tlmhub-cli remote --help)\n";
 }
 
 } // namespace
@@ -36,6 +38,7 @@ int main(int argc, char** argv)
         if (command == "components") return tlmhub::cli::componentsCommand(args);
         if (command == "bench") return tlmhub::cli::benchCommand(args);
         if (command == "batch") return tlmhub::cli::batchCommand(args);
+        if (command == "remote") return tlmhub::cli::remoteCommand(args);
     } catch (const std::exception& e) {
         std::cerr << "tlmhub-cli: " << e.what() << "\n";
         return 1;

@@ -1,0 +1,94 @@
+// remote sweep and remote optimise: upload the model, submit the study, wait, and fetch its
+// table (one row per run).
+#include "cli/remote/Arguments.h"
+#include "cli/remote/RemoteCommands.h"
+#include "cli/remote/Session.h"
+#include "cli/remote/StudyRequest.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace tlmhub::cli::remote {
+
+namespace {
+
+std::string modelName(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+// Submits `request` for the model file and waits; the finished StudyInfo, or nullopt after
+// reporting a study that did not finish.
+std::optional<nlohmann::json> runStudy(ApiClient& api, const std::string& model, nlohmann::json request)
+{
+    request["model_id"] = uploadModel(api, model);
+    const long long id = api.post("/studies", request).at("id").get<long long>();
+    nlohmann::json info = waitUntilFinished(api, "/studies/" + std::to_string(id), "study " + std::to_string(id));
+    const std::string state = info.at("state").get<std::string>();
+    if (state == "done") return info;
+    const std::string reason = field(info, "error", std::string());
+    std::fprintf(stderr, "error: study %lld %s%s%s\n", id, state.c_str(), reason.empty() ? "" : ": ", reason.c_str());
+    return std::nullopt;
+}
+
+std::string table(ApiClient& api, const nlohmann::json& info)
+{
+    return api.getText("/studies/" + std::to_string(info.at("id").get<long long>()) + "/results?format=csv");
+}
+
+std::string describeRuns(const nlohmann::json& info)
+{
+    return std::to_string(field(info, "runs_done", 0LL)) + " runs, " + std::to_string(field(info, "runs_failed", 0LL)) +
+           " failed";
+}
+
+} // namespace
+
+int sweep(const std::vector<std::string>& argv)
+{
+    const Arguments args(argv, {"mode", "csv"}, {"vary", "output"}, {"full"});
+    if (args.positional().size() != 1) throw UsageError("sweep needs one model file");
+    const std::string& model = args.positional()[0];
+    const nlohmann::json request = sweepRequest(modelName(model), args);
+
+    ApiClient api = connectWithCredentials();
+    const std::optional<nlohmann::json> info = runStudy(api, model, request);
+    if (!info) return 1;
+    // Without --csv the table is the output, for a pipe.
+    const std::string csv = args.value("csv");
+    if (csv.empty()) {
+        writeStandardOutput(table(api, *info));
+        return 0;
+    }
+    writeFile(csv, table(api, *info));
+    std::printf("ok: %s: study %lld, %s, table %s\n", model.c_str(), info->at("id").get<long long>(),
+                describeRuns(*info).c_str(), csv.c_str());
+    return 0;
+}
+
+int optimise(const std::vector<std::string>& argv)
+{
+    const Arguments args(argv, {"algorithm", "max-evaluations", "seed", "csv"}, {"bound", "objective"}, {"maximise"});
+    if (args.positional().size() != 1) throw UsageError("optimise needs one model file");
+    const std::string& model = args.positional()[0];
+    const nlohmann::json request = optimiseRequest(modelName(model), args);
+
+    ApiClient api = connectWithCredentials();
+    const std::optional<nlohmann::json> info = runStudy(api, model, request);
+    if (!info) return 1;
+    const std::string csv = args.value("csv");
+    if (!csv.empty()) writeFile(csv, table(api, *info));
+    const nlohmann::json summary = info->contains("summary") ? info->at("summary") : nlohmann::json();
+    std::printf("ok: %s: study %lld, %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
+                describeRuns(*info).c_str(), csv.empty() ? "" : ", table ", csv.c_str());
+    if (!summary.is_object() || !summary.contains("best")) {
+        std::fprintf(stderr, "error: the study reports no best point\n");
+        return 1;
+    }
+    const nlohmann::json& best = summary.at("best");
+    std::printf("best: run %lld, objective %.17g\n", field(best, "run", -1LL), field(best, "objective", NAN));
+    if (best.contains("parameters") && best["parameters"].is_object())
+        for (const auto& [name, value] : best["parameters"].items())
+            std::printf("  %s = %s\n", name.c_str(), value.dump().c_str());
+    return 0;
+}
+
+} // namespace tlmhub::cli::remote
