@@ -86,6 +86,13 @@ std::optional<std::int64_t> parseId(const std::string& text)
     return id;
 }
 
+http::status submitErrorStatus(const std::string& code)
+{
+    if (code == "limit_exceeded") return http::status::too_many_requests;
+    if (code == "not_found") return http::status::not_found;
+    return http::status::bad_request;
+}
+
 std::vector<std::string> commaSeparated(const std::string& text)
 {
     std::vector<std::string> out;

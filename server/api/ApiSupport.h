@@ -75,6 +75,8 @@ Response apiError(http::status status, const std::string& code, const std::strin
 // The protocol's error code for a failure of the database: storage_full (disk full), busy
 // (unreachable or contended: try again), internal (the rest).
 const char* storeErrorCode(const StoreError& e);
+// The HTTP status of a refused job or study: 429 limit_exceeded, 404 not_found, else 400.
+http::status submitErrorStatus(const std::string& code);
 // 507 storage_full, 503 busy (with Retry-After) or 500 internal.
 Response storeErrorResponse(const StoreError& e);
 

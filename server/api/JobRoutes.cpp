@@ -9,13 +9,6 @@ namespace tlmhub::server {
 
 namespace {
 
-http::status statusForSubmitError(const std::string& code)
-{
-    if (code == "limit_exceeded") return http::status::too_many_requests;
-    if (code == "not_found") return http::status::not_found;
-    return http::status::bad_request;
-}
-
 // A job the caller may see: own, or any for an admin, or a student's for a teacher.
 std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::string& idText)
 {
@@ -52,7 +45,7 @@ Response submitJob(Services& s, Call& call)
     if (body.stop) request.settings.stop = *body.stop;
     if (body.logSamples) request.settings.logSamples = static_cast<std::size_t>(*body.logSamples);
     const auto submitted = s.queue.submit(request);
-    if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
@@ -94,7 +87,7 @@ Response rerunJob(Services& s, Call& call)
     const auto request = s.queue.store().request(job->id);
     if (!request) return apiError(http::status::not_found, "not_found", "the job's input is gone");
     const auto submitted = s.queue.submit(*request);
-    if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 

@@ -13,13 +13,6 @@ namespace tlmhub::server {
 
 namespace {
 
-http::status statusForSubmitError(const std::string& code)
-{
-    if (code == "limit_exceeded") return http::status::too_many_requests;
-    if (code == "not_found") return http::status::not_found;
-    return http::status::bad_request;
-}
-
 // A study the caller may see: own, or any for an administrator.
 std::optional<StudyInfo> visibleStudy(Services& s, const User& who, const std::string& idText)
 {
@@ -52,7 +45,7 @@ Response submitStudy(Services& s, Call& call)
         hmf = body["hmf"].get<std::string>();
     }
     const auto submitted = s.studies.submit(call.who().id, body, hmf);
-    if (!submitted.id) return apiError(statusForSubmitError(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
     return jsonResponse(http::status::created, {{"id", *submitted.id}, {"runs_total", submitted.runsTotal}});
 }
 

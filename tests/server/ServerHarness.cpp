@@ -291,4 +291,12 @@ HttpClient loggedInAs(const ServerProcess& server, const std::string& user)
     return c;
 }
 
+std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, const std::string& name)
+{
+    const auto r = client.request(boost::beast::http::verb::post, "/api/v1/models?name=" + name, readFile(file),
+                                  "application/xml");
+    EXPECT_EQ(r.status, 201) << r.body;
+    return r.status == 201 ? r.json()["id"].get<std::int64_t>() : 0;
+}
+
 } // namespace tlmhub::test

@@ -112,5 +112,7 @@ std::string testPassword(const std::string& user);
 void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names);
 // A client of `server` logged in as `user`.
 HttpClient loggedInAs(const ServerProcess& server, const std::string& user);
+// Uploads the .hmf `file` as a model named `name` (the test fails if it is refused); its id.
+std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, const std::string& name);
 
 } // namespace tlmhub::test

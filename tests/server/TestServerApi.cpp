@@ -31,12 +31,6 @@ protected:
         delete dataDir;
     }
     HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
-    std::int64_t uploadModel(HttpClient& c, const fs::path& file, const std::string& name)
-    {
-        const auto r = c.request(http::verb::post, "/api/v1/models?name=" + name, readFile(file), "application/xml");
-        EXPECT_EQ(r.status, 201) << r.body;
-        return r.json()["id"].get<std::int64_t>();
-    }
     nlohmann::json waitForJob(HttpClient& c, std::int64_t id, int seconds = 120)
     {
         nlohmann::json job;
