@@ -281,10 +281,12 @@ TEST_F(Studies, ProgressRowsStreamOverTheWebSocket)
     }
     EXPECT_EQ(state, "done");
     const auto study = alice.get("/api/v1/studies/" + std::to_string(id)).json();
-    // Rows finished before the subscription are in the table, not in the events.
-    EXPECT_LE(runs.size(), 40u);
+    // Rows finished before the subscription are in the table, not in the events; each event
+    // row is one of the table's, once.
     EXPECT_EQ(study["runs_done"], 40);
-    if (!runs.empty()) EXPECT_EQ(*runs.rbegin() - *runs.begin() + 1, static_cast<std::int64_t>(runs.size()));
+    EXPECT_FALSE(runs.empty());
+    EXPECT_LE(runs.size(), 40u);
+    if (!runs.empty()) EXPECT_LT(*runs.rbegin(), 40);
 }
 
 TEST_F(Studies, OnlyTheOwnerSeesAndCancelsAStudy)
