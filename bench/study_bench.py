@@ -2,7 +2,8 @@
 """Studies against the bare engine, on a tlmhub-server this script starts itself.
 
 1. Sweep speed: paired rounds, each timing a sweep of N runs of MODEL on the server (POST
-   /api/v1/studies, from submission until GET /studies/{id} says done, polled every 10 ms) and
+   /api/v1/studies, from submission until its last event.study.progress over a WebSocket
+   subscribed before it, so that no polling takes the workers' cores) and
    `tlmhub-cli batch MODEL --copies N --threads W` (its own printed wall time: compile + run
    of N copies on W threads) in alternating order, with the server's W workers. Prints each
    round's times and ratio, and the median ratio.
@@ -13,7 +14,7 @@
    (the best objective after each run).
 
 The server runs on a free loopback port with a fresh data directory in a temporary
-directory, removed at the end. Standard library only.
+directory, removed at the end. Needs websocket-client (Debian: python3-websocket).
 
 example: bench/study_bench.py --runs 1000 --rounds 3 --optimise
 """
@@ -29,6 +30,12 @@ import subprocess
 import sys
 import tempfile
 import time
+
+try:
+    import websocket  # websocket-client
+except ImportError:  # Debian's package, when another python3 comes first on PATH
+    sys.path.append("/usr/lib/python3/dist-packages")
+    import websocket
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHARED = os.path.join(ROOT, "..", "shared", "hopsan-models", "Example Models")
@@ -84,10 +91,19 @@ def time_batch(cli, model, runs, threads):
 def time_sweep(api, hmf, runs):
     study = {"kind": "sweep", "hmf": hmf, "outputs": {"variables": [POSITION], "values": ["final"]},
              "sweep": {"parameters": {"GainP.k": {"from": 0.02, "to": 0.03, "steps": runs}}}}
+    socket = websocket.create_connection(f"ws://127.0.0.1:{api.port}/api/v1/ws",
+                                         header=["Authorization: Bearer " + api.token])
+    socket.recv()  # hello
     started = time.monotonic()
     created = api.call("POST", "/studies", study)
-    info = api.wait(created["id"])
+    socket.send(json.dumps({"id": 1, "type": "study.subscribe", "study_id": created["id"]}))
+    while True:
+        message = json.loads(socket.recv())
+        if message.get("type") == "event.study.progress" and message["state"] not in ("running", ""):
+            break
     elapsed = time.monotonic() - started
+    socket.close()
+    info = api.call("GET", f"/studies/{created['id']}")
     if info["state"] != "done" or info["runs_done"] != runs:
         raise RuntimeError(f"sweep ended {info}")
     api.call("DELETE", f"/studies/{created['id']}")
