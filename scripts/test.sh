@@ -31,7 +31,8 @@ asan_build() {
 }
 tsan_build() {
   sanitizer_config build-tsan -DTLMHUB_SANITIZE=thread
-  cmake --build build-tsan -j"$jobs" --target tlmhub-tests tlmhub-server-tests tlmhub-store-tests tlmhub-cli
+  cmake --build build-tsan -j"$jobs" --target tlmhub-tests tlmhub-server-tests tlmhub-store-tests tlmhub-cli \
+    tlmhub-cli-tests
 }
 # A race aborts the process that has it, so one in a server started by a test fails that test.
 tsan_test() {
