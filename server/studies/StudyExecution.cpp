@@ -2,25 +2,17 @@
 
 #include "server/jobs/JobRunner.h"
 #include "server/store/ResultBlob.h"
+#include "server/studies/ExactNumber.h"
 #include "server/studies/RunMeasures.h"
 
 #include "core/ResultView.h"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 namespace tlmhub::server {
 
 namespace {
-
-// Exactly the double: what setParameter evaluates gives the value back bit for bit.
-std::string exactText(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
 
 // JSON has no NaN or infinity: those become null.
 nlohmann::json number(double value)
@@ -129,7 +121,7 @@ StudyExecution::RunOutcome StudyExecution::simulate(unsigned worker, const Plann
         }
     }
     for (std::size_t i = 0; i < mParameterNames.size(); ++i) {
-        if (const Status set = simulation->setParameter(mParameterNames[i], exactText(run.values[i])); !set) {
+        if (const Status set = simulation->setParameter(mParameterNames[i], exactNumber(run.values[i])); !set) {
             outcome.error = mParameterNames[i] + ": " + set.message();
             return outcome;
         }
@@ -241,14 +233,17 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
     }
 }
 
+nlohmann::json StudyExecution::bestRun() const
+{
+    nlohmann::json parameters = nlohmann::json::object();
+    for (std::size_t i = 0; i < mParameterNames.size(); ++i) parameters[mParameterNames[i]] = mBestValues[i];
+    return {{"run", *mBestRun}, {"parameters", parameters}, {"objective", number(mBestObjective)}};
+}
+
 nlohmann::json StudyExecution::summary()
 {
     nlohmann::json s = nlohmann::json::object();
-    if (mBestRun) {
-        nlohmann::json parameters = nlohmann::json::object();
-        for (std::size_t i = 0; i < mParameterNames.size(); ++i) parameters[mParameterNames[i]] = mBestValues[i];
-        s["best"] = {{"run", *mBestRun}, {"parameters", parameters}, {"objective", number(mBestObjective)}};
-    }
+    if (mBestRun) s["best"] = bestRun();
     if (const std::string reason = mPlan.finishReason(); !reason.empty()) s["finish_reason"] = reason;
     if (mRequest.kind == StudyKind::Sensitivity && !mSampledParameters.empty()) {
         // Pearson's r of each parameter with each output column.
@@ -281,7 +276,7 @@ nlohmann::json StudyExecution::progressEvent(bool last)
                             {"columns", tableColumns(mRequest)},
                             {"rows", std::move(mPendingRows)}};
     mPendingRows.clear();
-    if (mBestRun) event["best"] = summary()["best"];
+    if (mBestRun) event["best"] = bestRun();
     return event;
 }
 

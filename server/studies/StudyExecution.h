@@ -86,6 +86,7 @@ private:
     void record(const PlannedRun& run, const RunOutcome& outcome);
     nlohmann::json progressEvent(bool last);   // caller holds mMutex; takes the pending rows
     nlohmann::json summary();                   // caller holds mMutex
+    nlohmann::json bestRun() const;             // {run, parameters, objective}; caller holds mMutex
 
     const std::int64_t mId, mOwnerId;
     const StudyRequest mRequest;

@@ -3,12 +3,12 @@
 #include "server/api/CoreErrorCodes.h"
 #include "server/jobs/ModelLimits.h"
 #include "server/jobs/PreparedJob.h"
+#include "server/studies/ExactNumber.h"
 #include "server/studies/RunMeasures.h"
 
 #include "core/ResultView.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace tlmhub::server {
 
@@ -93,9 +93,7 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
         StudyPlan plan(request);
         const auto first = plan.next();
         for (std::size_t i = 0; first && i < names.size(); ++i) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.17g", first->values[i]);
-            if (const Status set = simulation.setParameter(names[i], text); !set)
+            if (const Status set = simulation.setParameter(names[i], exactNumber(first->values[i])); !set)
                 return {std::nullopt, 0, protocolErrorCode(set.code()), names[i] + ": " + set.message()};
         }
     }
@@ -220,15 +218,11 @@ std::string StudyService::tableCsv(const Table& table)
     std::string csv;
     for (std::size_t c = 0; c < table.columns.size(); ++c) csv += (c ? "," : "") + table.columns[c];
     csv += '\n';
-    char number[32];
     for (const nlohmann::json& row : table.rows) {
         for (std::size_t c = 0; c < row.size(); ++c) {
             if (c) csv += ',';
             if (row[c].is_number_integer()) csv += std::to_string(row[c].get<std::int64_t>());
-            else if (row[c].is_number()) {
-                std::snprintf(number, sizeof number, "%.17g", row[c].get<double>());
-                csv += number;
-            }
+            else if (row[c].is_number()) csv += exactNumber(row[c].get<double>());
         }
         csv += '\n';
     }
@@ -271,16 +265,11 @@ std::optional<std::string> StudyService::bandsCsv(const StudyInfo& info)
         }
     }
     csv += '\n';
-    char number[32];
     for (std::size_t i = 0; i < time.size(); ++i) {
-        std::snprintf(number, sizeof number, "%.17g", time[i]);
-        csv += number;
+        csv += exactNumber(time[i]);
         for (const auto& column : columns) {
             csv += ',';
-            if (i < column.size() && std::isfinite(column[i])) {
-                std::snprintf(number, sizeof number, "%.17g", column[i]);
-                csv += number;
-            }
+            if (i < column.size() && std::isfinite(column[i])) csv += exactNumber(column[i]);
         }
         csv += '\n';
     }

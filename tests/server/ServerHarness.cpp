@@ -142,14 +142,41 @@ std::string HttpClient::login(const std::string& user, const std::string& passwo
     return mToken;
 }
 
-WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes) : mWs(mIoc)
+namespace {
+
+// Connects `ws` and sends the upgrade with the token where `where` says.
+void upgrade(beast::websocket::stream<tcp::socket>& ws, unsigned short port, const std::string& token, WsToken where,
+             beast::error_code& ec)
+{
+    ws.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
+    if (where == WsToken::InHeader) {
+        ws.set_option(beast::websocket::stream_base::decorator([token](beast::websocket::request_type& request) {
+            request.set(beast::http::field::authorization, "Bearer " + token);
+        }));
+    }
+    ws.handshake("127.0.0.1", where == WsToken::InQuery ? "/api/v1/ws?token=" + token : "/api/v1/ws", ec);
+}
+
+} // namespace
+
+WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes, WsToken where) : mWs(mIoc)
 {
     mWs.next_layer().open(tcp::v4());
     if (receiveBufferBytes > 0)   // before connecting: the window is agreed at the handshake
         mWs.next_layer().set_option(net::socket_base::receive_buffer_size(receiveBufferBytes));
-    mWs.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
-    mWs.handshake("127.0.0.1", "/api/v1/ws?token=" + token);
+    beast::error_code ec;
+    upgrade(mWs, port, token, where, ec);
+    if (ec) throw boost::system::system_error(ec);
     hello = receive();
+}
+
+bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsToken where)
+{
+    net::io_context ioc;
+    beast::websocket::stream<tcp::socket> ws(ioc);
+    beast::error_code ec;
+    upgrade(ws, port, token, where, ec);
+    return ec == beast::websocket::error::upgrade_declined;
 }
 
 void WsClient::sendText(const std::string& text)

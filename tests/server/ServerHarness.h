@@ -67,11 +67,17 @@ private:
     std::string mToken;
 };
 
+// Where a WebSocket client puts its token: the query string (what browsers do; login tokens
+// only) or the upgrade's 'Authorization: Bearer' header (scripts; API tokens too).
+enum class WsToken { InQuery, InHeader };
+
 class WsClient {
 public:
     // `receiveBufferBytes` > 0 fixes the socket's receive buffer (no autotuning up to
     // megabytes), so a client that stops reading soon leaves the server's frames waiting.
-    WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0);
+    // Throws boost::system::system_error when the upgrade is refused.
+    WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0,
+             WsToken where = WsToken::InQuery);
     void sendText(const std::string& text);
     // Next message, or a null json after `timeoutMs` (the connection is of no further use
     // after a timeout) or when the connection ended. A binary frame comes as the JSON
@@ -98,6 +104,9 @@ private:
 // event.frame with the same samples. Both throw on a malformed message.
 nlohmann::json binaryFrameHeader(const std::string& message);
 nlohmann::json binaryFrameAsJson(const std::string& message);
+
+// Whether the server declines the WebSocket upgrade (401) for this token there.
+bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsToken where);
 
 // Sends `bytes` as they are on a new connection and returns everything read until the server
 // closes or `timeoutMs` passes without data (for requests a client library would refuse).

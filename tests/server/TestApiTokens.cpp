@@ -18,74 +18,17 @@ namespace {
 
 namespace beast = boost::beast;
 namespace http = beast::http;
-namespace websocket = beast::websocket;
-namespace net = boost::asio;
 namespace fs = std::filesystem;
-using tcp = net::ip::tcp;
 
-// A WebSocket opened with 'Authorization: Bearer <token>' on the upgrade request (WsClient
-// sends ?token=, which an API token may not use).
-class BearerSocket {
-public:
-    BearerSocket(unsigned short port, const std::string& token) : mWs(mIoc)
-    {
-        mWs.next_layer().connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
-        mWs.set_option(websocket::stream_base::decorator(
-            [token](websocket::request_type& request) { request.set(http::field::authorization, "Bearer " + token); }));
-        beast::error_code ec;
-        mWs.handshake("127.0.0.1", "/api/v1/ws", ec);
-        accepted = !ec;
-        declined = ec == websocket::error::upgrade_declined;
-        if (accepted) hello = receive();
-    }
-    // The next message, or null when none comes within `timeoutMs` or the connection ended.
-    nlohmann::json receive(int timeoutMs = 10000)
-    {
-        beast::flat_buffer buffer;
-        bool done = false;
-        mWs.async_read(buffer, [&](beast::error_code ec, std::size_t) {
-            mLastError = ec;
-            done = true;
-        });
-        mIoc.restart();
-        mIoc.run_for(std::chrono::milliseconds(timeoutMs));
-        if (!done) {
-            beast::error_code ignored;
-            mWs.next_layer().cancel(ignored);
-            mIoc.restart();
-            mIoc.run();
-            mLastError = net::error::timed_out;
-        }
-        if (mLastError) return nlohmann::json();
-        return nlohmann::json::parse(beast::buffers_to_string(buffer.data()), nullptr, false);
-    }
-    bool pings()
-    {
-        mWs.text(true);
-        mWs.write(net::buffer(std::string(R"({"id": 1, "type": "ping"})")));
-        const nlohmann::json reply = receive();
-        return reply.is_object() && reply.value("ok", false);
-    }
-    // Whether the server closes the connection within a second.
-    bool closesWithinASecond()
-    {
-        const auto start = std::chrono::steady_clock::now();
-        while (!receive(1500).is_null()) {}
-        const auto waited = std::chrono::steady_clock::now() - start;
-        const bool closed = mLastError == websocket::error::closed || mLastError == net::error::eof ||
-                            mLastError == net::error::connection_reset;
-        return closed && waited < std::chrono::seconds(1);
-    }
+// Whether the server closes `ws` within a second.
+bool closesWithinASecond(WsClient& ws)
+{
+    const auto start = std::chrono::steady_clock::now();
+    while (!ws.receive(1500).is_null()) {}
+    return ws.closedByServer() && std::chrono::steady_clock::now() - start < std::chrono::seconds(1);
+}
 
-    bool accepted = false;   // the upgrade was accepted (101)
-    bool declined = false;   // the server answered the upgrade with an error status
-    nlohmann::json hello;
-
-private:
-    net::io_context mIoc;
-    websocket::stream<tcp::socket> mWs;
-    beast::error_code mLastError;
-};
+bool pings(WsClient& ws) { return ws.call("ping").value("ok", false); }
 
 // One server for every test; each test has users of its own where it counts tokens or
 // disables an account.
@@ -186,10 +129,9 @@ TEST_F(ApiTokens, ABearerTokenOpensAWebSocketInTheUpgradeHeader)
 {
     HttpClient alice = as("alice");
     const auto [id, token] = newToken(alice);
-    BearerSocket ws(port(), token);
-    ASSERT_TRUE(ws.accepted);
-    EXPECT_TRUE(ws.pings());
-    EXPECT_TRUE(BearerSocket(port(), "tlmh_" + std::string(43, 'B')).declined);
+    WsClient ws(port(), token, 0, WsToken::InHeader);
+    EXPECT_TRUE(pings(ws));
+    EXPECT_TRUE(websocketUpgradeDeclined(port(), "tlmh_" + std::string(43, 'B'), WsToken::InHeader));
 }
 
 TEST_F(ApiTokens, ATokenInTheUrlIsRefused)
@@ -207,16 +149,15 @@ TEST_F(ApiTokens, ARevokedTokenIsRefusedAtOnceAndItsWebSocketEnds)
     HttpClient alice = as("alice");
     const auto [id, token] = newToken(alice, "leaked");
     const auto [otherId, other] = newToken(alice, "kept");
-    BearerSocket ws(port(), token);
-    BearerSocket otherWs(port(), other);
-    ASSERT_TRUE(ws.accepted);
-    ASSERT_TRUE(ws.pings());
+    WsClient ws(port(), token, 0, WsToken::InHeader);
+    WsClient otherWs(port(), other, 0, WsToken::InHeader);
+    ASSERT_TRUE(pings(ws));
     ASSERT_EQ(withToken(token).get("/api/v1/auth/me").status, 200);
 
     EXPECT_EQ(revoke(alice, id).status, 204);
     EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
-    EXPECT_TRUE(ws.closesWithinASecond()) << "the socket of the revoked token stays open";
-    EXPECT_TRUE(otherWs.pings()) << "another token of the same user is not affected";
+    EXPECT_TRUE(closesWithinASecond(ws)) << "the socket of the revoked token stays open";
+    EXPECT_TRUE(pings(otherWs)) << "another token of the same user is not affected";
     EXPECT_EQ(withToken(other).get("/api/v1/auth/me").status, 200);
     for (const auto& t : tokensOf(alice)) EXPECT_NE(t["id"], id);
     EXPECT_EQ(revoke(alice, id).status, 404) << "revoked already";
@@ -237,7 +178,7 @@ TEST_F(ApiTokens, AnExpiredTokenIsRefused)
         ASSERT_TRUE(storage->apiTokens().insert(aliceId, "expired", sha.hexDigest(), now - 86400, now - 1));
     }
     EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
-    EXPECT_TRUE(BearerSocket(port(), token).declined);
+    EXPECT_TRUE(websocketUpgradeDeclined(port(), token, WsToken::InHeader));
     bool listed = false;
     for (const auto& t : tokensOf(alice))
         if (t["name"] == "expired") listed = t["expires_at"] == now - 1;
@@ -263,15 +204,14 @@ TEST_F(ApiTokens, ADisabledAccountsTokensAreRefused)
 {
     HttpClient erin = as("erin");
     const auto [id, token] = newToken(erin);
-    BearerSocket ws(port(), token);
-    ASSERT_TRUE(ws.accepted);
+    WsClient ws(port(), token, 0, WsToken::InHeader);
     HttpClient admin = as("admin");
     const auto erinId = erin.get("/api/v1/auth/me").json()["id"].get<std::int64_t>();
     ASSERT_EQ(admin.request(http::verb::patch, "/api/v1/users/" + std::to_string(erinId), R"({"disabled": true})").status,
               200);
     EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
-    EXPECT_TRUE(BearerSocket(port(), token).declined);
-    EXPECT_TRUE(ws.closesWithinASecond());
+    EXPECT_TRUE(websocketUpgradeDeclined(port(), token, WsToken::InHeader));
+    EXPECT_TRUE(closesWithinASecond(ws));
 }
 
 TEST_F(ApiTokens, AUserHasAtMostFiftyTokens)
