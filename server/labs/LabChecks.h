@@ -1,0 +1,59 @@
+#pragma once
+// The automatic checks of an assignment: what a check asks (its definition, as the teacher
+// writes it in JSON) and how a run is judged against it. A "curve" check compares a variable
+// over time with the teacher's reference run by the .hvc rule (core.md §7.4: relative
+// tolerance, reference interpolated at the run's times); a "scalar" check computes one measure
+// of a variable of the run (final value, min, max, overshoot in %, settling time, rise time
+// 10-90 %) and requires it within bounds.
+#include "server/store/LabStore.h"
+
+#include "core/ResultTable.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct CheckDefinition {
+    std::string kind;                    // "curve" or "scalar"
+    std::string variable;                // a result column name, e.g. "Mass#P1#x"
+    std::string measure;                 // scalar: final, min, max, overshoot, settling_time, rise_time
+    double tolerance = 0.01;             // curve: relative tolerance of the .hvc rule
+    std::optional<double> min, max;      // scalar: inclusive bounds (at least one)
+    double band = 0.02;                  // settling_time: ± band around the final value, relative
+};
+
+// Reads and checks a definition ({"kind": ..., "variable": ..., ...}); nullopt with `error`
+// naming the field that is wrong.
+std::optional<CheckDefinition> parseCheckDefinition(const nlohmann::json& json, std::string& error);
+nlohmann::json checkDefinitionJson(const CheckDefinition& definition);
+
+struct CheckOutcome {
+    std::string name;
+    bool pretest = false;
+    bool passed = false;
+    double points = 0, awarded = 0;      // awarded = points when passed, else 0
+    std::optional<double> value;         // scalar: the measure of the run
+    std::optional<double> deviation;     // curve: largest |1 - run/reference| among compared samples
+    std::optional<double> worstTime;     // curve: the time of that sample
+    std::string message;                 // why it failed ("" when passed)
+};
+
+// Judges `run` by each check (all, or only the pretests); `reference` is the teacher's
+// reference run (needed by curve checks; a curve check without it fails with a message).
+std::vector<CheckOutcome> evaluateChecks(const std::vector<AssignmentCheck>& checks, const ResultTable& run,
+                                         const ResultTable* reference, bool pretestsOnly);
+nlohmann::json outcomesJson(const std::vector<CheckOutcome>& outcomes);
+
+// Step-response measures of a logged variable (times increasing). Settling time: the first
+// time after which the variable stays within ±band·|final - initial| of its final value (0 when
+// always within). Rise time: from the first reaching of 10 % to the first reaching of 90 % of
+// the change from the first to the final value; nullopt when it does not change.
+double settlingTime(std::span<const double> time, std::span<const double> values, double band);
+std::optional<double> riseTime(std::span<const double> time, std::span<const double> values);
+
+} // namespace tlmhub::server
