@@ -1,4 +1,5 @@
-// App entry: hash routes #/login, #/models, #/model/<id>.
+// App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>], #/account,
+// #/classes, #/class/<id>, #/assignment/<id>.
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
 import { Session } from './app/Session';
@@ -6,6 +7,10 @@ import { renderLogin } from './views/LoginView';
 import { renderModelList } from './views/ModelListView';
 import { renderEditor, type EditorPage } from './views/EditorView';
 import { renderAccounts } from './views/AccountsView';
+import { renderClassList } from './labs/ClassListView';
+import { renderClass } from './labs/ClassView';
+import { renderAssignment } from './labs/AssignmentView';
+import type { LabPage } from './labs/LabPage';
 import { h } from './ui/dom';
 
 const session = new Session();
@@ -15,6 +20,7 @@ const topbar = h('header', { class: 'topbar' });
 app.replaceChildren(topbar, page);
 
 let editor: EditorPage | null = null;
+let labPage: LabPage | null = null;
 let currentHash = '';
 let ignoreNextHash = false;
 
@@ -32,6 +38,9 @@ function renderTopbar(): void {
     const user = session.user;
     topbar.replaceChildren(
         h('a', { href: '#/models', class: 'brand' }, 'tlmhub'),
+        user ? h('nav', { class: 'topnav', 'aria-label': 'Main' },
+            h('a', { href: '#/models', 'data-testid': 'nav-models' }, 'Models'),
+            h('a', { href: '#/classes', 'data-testid': 'nav-classes' }, 'Classes')) : '',
         h('span', { class: 'spacer' }),
         user ? h('a', { href: '#/account', class: 'user', 'data-testid': 'user', title: 'Your account' }, `${user.username} (${user.role})`) : '',
         user ? h('button', {
@@ -58,19 +67,23 @@ async function route(): Promise<void> {
         editor.dispose();
         editor = null;
     }
+    labPage?.dispose();
+    labPage = null;
     currentHash = hash;
     if (!session.user && !(await session.restore()) && hash !== '#/login') {
         location.hash = '#/login';
         return;
     }
     renderTopbar();
-    const model = /^#\/model\/(\d+)$/.exec(hash);
+    const model = /^#\/model\/(\d+)(?:\?assignment=(\d+))?$/.exec(hash);
+    const lab = /^#\/(class|assignment)\/(\d+)$/.exec(hash);
     if (hash === '#/login') {
         renderLogin(page, session, () => { location.hash = '#/models'; });
     } else if (hash === '#/account') {
         renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
     } else if (model) {
-        const opened = await renderEditor(page, session, Number(model[1]), navigate);
+        const back = model[2] ? { href: `#/assignment/${model[2]}`, label: 'Assignment' } : undefined;
+        const opened = await renderEditor(page, session, Number(model[1]), navigate, back);
         if (currentHash === hash) {
             editor = opened;
         } else {
@@ -78,6 +91,14 @@ async function route(): Promise<void> {
             opened.dispose();
             await route();
         }
+    } else if (hash === '#/classes') {
+        await renderClassList(page, session);
+    } else if (lab) {
+        const shown = lab[1] === 'class'
+            ? await renderClass(page, session, Number(lab[2]))
+            : await renderAssignment(page, session, Number(lab[2]));
+        if (currentHash === hash) labPage = shown;
+        else shown.dispose();
     } else {
         await renderModelList(page, session, (id) => { location.hash = `#/model/${id}`; });
     }

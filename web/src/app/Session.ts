@@ -1,11 +1,13 @@
 // The logged-in user: token kept in sessionStorage (per tab) so a reload stays logged in.
 import { RestClient } from '../api/RestClient';
+import { LabClient } from '../labs/LabClient';
 import type { User } from '../protocol/types';
 
 const TOKEN_KEY = 'tlmhub.token';
 
 export class Session {
     readonly rest = new RestClient(sessionStorage.getItem(TOKEN_KEY));
+    readonly labs = new LabClient(this.rest);
     user: User | null = null;
 
     constructor() {

@@ -20,8 +20,11 @@ let clipboard: Clipboard | null = null;
 
 export interface EditorPage { dispose(): void; dirty(): boolean }
 
+/** Where the header's back link leads (default: the model list). */
+export interface BackLink { href: string; label: string }
+
 export async function renderEditor(root: HTMLElement, session: Session, modelId: number,
-    navigate: (hash: string, replace?: boolean) => void): Promise<EditorPage> {
+    navigate: (hash: string, replace?: boolean) => void, back: BackLink = { href: '#/models', label: 'Models' }): Promise<EditorPage> {
     root.replaceChildren(h('main', { class: 'loading' }, h('p', { class: 'muted' }, 'Opening model…')));
     const rest = session.rest;
     // the summary, the catalogue and the model are asked for at once: one after the other
@@ -201,7 +204,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         if (nextHeaderKey !== headerKey) {
             headerKey = nextHeaderKey;
             header.replaceChildren(
-                h('a', { href: '#/models', class: 'back' }, '← Models'),
+                h('a', { href: back.href, class: 'back' }, `← ${back.label}`),
                 h('h1', { class: 'model-name', 'data-testid': 'model-name' }, summary.name),
                 summary.is_example ? h('span', { class: 'badge' }, 'example') : '',
                 dirtyMark, saveButton, undoButton, redoButton,
