@@ -43,7 +43,7 @@ export function dashboard(session: Session, assignment: Assignment, theClass: La
                 h('td', {}, row.handed_in_at ? (row.late ? h('span', { class: 'badge late-badge' }, 'late') : 'no') : ''),
                 h('td', { 'data-testid': 'row-score' }, formatScore(row.score, row.max_score)),
                 h('td', { 'data-testid': 'row-grade' }, formatNumber(row.grade)),
-                h('td', { class: 'actions' },
+                h('td', {}, h('div', { class: 'row-actions' },
                     row.copy_model_id ? h('a', { href: `#/model/${row.copy_model_id}?assignment=${assignment.id}`, class: 'button-link', title: 'Open the student\'s copy (read-only)' }, 'Open copy') : null,
                     row.handins > 0 ? h('button', {
                         'aria-expanded': String(shown),
@@ -52,7 +52,7 @@ export function dashboard(session: Session, assignment: Assignment, theClass: La
                             else open.add(row.student.id);
                             render(rows);
                         },
-                    }, shown ? 'Hide hand-ins' : 'Hand-ins') : null));
+                    }, shown ? 'Hide hand-ins' : 'Hand-ins') : null)));
             return shown ? [tr, detailsRow(row)] : [tr];
         }));
     };

@@ -24,7 +24,7 @@ function valueText(o: CheckOutcome): string {
     if (o.value !== undefined && o.value !== null) parts.push(`value ${formatNumber(o.value)}`);
     if (o.deviation !== undefined && o.deviation !== null) {
         parts.push(`deviation ${formatNumber(o.deviation * 100, 3)} %`);
-        if (o.worst_time !== undefined && o.worst_time !== null) parts.push(`at t = ${formatNumber(o.worst_time)} s`);
+        if (o.deviation > 0 && o.worst_time !== undefined && o.worst_time !== null) parts.push(`at t = ${formatNumber(o.worst_time)} s`);
     }
     return parts.join(', ') || '—';
 }
@@ -36,6 +36,8 @@ export interface HandInOptions {
     canGrade: boolean;
     /** archived class: read-only */
     archived: boolean;
+    /** false: the caller shows the summary line (e.g. as a <details> summary) */
+    header?: boolean;
     onChanged?: () => void;
 }
 
@@ -112,7 +114,7 @@ export function handInDetails(session: Session, handIn: HandIn, options: HandInO
     h('span', { class: 'muted' }, ' (empty clears it; the gradebook takes the grade over the score)')) : null;
 
     return h('article', { class: 'handin', 'data-handin-id': String(handIn.id), 'data-attempt': String(handIn.attempt) },
-        h('header', {}, handInSummary(handIn)),
+        options.header === false ? null : h('header', {}, handInSummary(handIn)),
         checks,
         gradeForm,
         h('div', { class: 'comment-box' }, h('h4', {}, 'Comments'), commentList, commentForm));

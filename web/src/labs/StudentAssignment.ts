@@ -7,7 +7,7 @@ import type { Session } from '../app/Session';
 import type { Assignment, Check, HandIn, LabClass } from './types';
 import { STATUS_LABELS } from './types';
 import { formatNumber, formatScore } from './format';
-import { handInDetails, outcomesTable } from './HandInDetails';
+import { handInDetails, handInSummary, outcomesTable } from './HandInDetails';
 import { section } from './LabPage';
 
 /** What a check asks, in words (students see the pretests' definitions only). */
@@ -108,9 +108,8 @@ export function studentAssignment(session: Session, assignment: Assignment, theC
         ? [h('p', { class: 'muted' }, 'Not handed in yet.')]
         : handIns.map((hi, i) => {
             const details = h('details', { open: i === 0, class: 'handin-details' },
-                h('summary', {}, `Attempt ${hi.attempt}${hi.late ? ' (late)' : ''}: ${formatScore(hi.score, hi.max_score)}`
-                    + (hi.grade !== null && hi.grade !== undefined ? `, grade ${formatNumber(hi.grade)}` : '')),
-                handInDetails(session, hi, { canComment: false, canGrade: false, archived: theClass.archived }));
+                h('summary', {}, handInSummary(hi)),
+                handInDetails(session, hi, { canComment: false, canGrade: false, archived: theClass.archived, header: false }));
             return details;
         })));
     labs.handIns(assignment.id).then(showHistory, (e) => history.replaceChildren(h('p', { class: 'form-error' }, errorText(e))));
