@@ -170,7 +170,8 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     }
 
     // ---- the teacher's dashboard: both handed in, scores, two series in the overlay
-    await teacher.goto(assignmentUrl);
+    expect(teacher.url()).toBe(assignmentUrl);
+    await teacher.reload();
     const board = teacher.getByTestId('dashboard-table');
     for (const s of STUDENTS) {
         const row = board.locator(`tr[data-student="${s.name}"]`);
