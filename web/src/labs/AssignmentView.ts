@@ -24,6 +24,20 @@ export function allowedText(a: Assignment): string {
 }
 
 export async function renderAssignment(root: HTMLElement, session: Session, assignmentId: number): Promise<LabPage> {
+    // a change on the page shows it again: the page the router holds stops whichever is shown
+    let shown: LabPage = noCleanup;
+    let left = false;
+    const show = async () => {
+        const next = await showAssignment(root, session, assignmentId, () => void show());
+        shown.dispose();
+        shown = next;
+        if (left) next.dispose();
+    };
+    await show();
+    return { dispose: () => { left = true; shown.dispose(); } };
+}
+
+async function showAssignment(root: HTMLElement, session: Session, assignmentId: number, rerender: () => void): Promise<LabPage> {
     const labs = session.labs;
     root.replaceChildren(h('main', { class: 'loading' }, h('p', { class: 'muted' }, 'Opening assignment…')));
     let assignment: Assignment;
@@ -38,7 +52,6 @@ export async function renderAssignment(root: HTMLElement, session: Session, assi
     }
     const staff = isStaff(theClass.role, session.user?.role);
     const teacher = isTeacher(theClass.role, session.user?.role);
-    const rerender = () => void renderAssignment(root, session, assignmentId);
     const now = Date.now() / 1000;
 
     const header = h('div', { class: 'lab-title' },
