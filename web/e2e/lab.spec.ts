@@ -160,6 +160,8 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
             // the solution's gain: the run equals the reference
             await expect(results.locator('tr[data-check="Position follows the reference"] td.outcome')).toHaveAttribute('data-passed', 'true');
             await expect(page.getByTestId('pretest-score')).toHaveText('2 / 2');
+            // the editor's "Saved" note may still be up: it is not part of this page
+            await page.evaluate(() => document.getElementById('toasts')?.replaceChildren());
             await page.screenshot({ path: `${docsScreenshots}lab-assignment.png`, fullPage: true });
         }
         await page.getByTestId('hand-in').click();
@@ -195,7 +197,19 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     await expect(details.getByTestId('comments')).toContainText('Well tuned');
     await teacher.getByTestId('dashboard').screenshot({ path: `${docsScreenshots}lab-dashboard.png` });
 
-    // the student reads it
+    // the teacher's grade overrides the score
+    await details.getByLabel('Grade', { exact: true }).fill('2.5');
+    await details.getByRole('button', { name: 'Set grade' }).click();
+    await expect(board.locator('tr[data-student="stan"]').getByTestId('row-grade')).toHaveText('2.5');
+
+    // a student's copy opens read-only for the teacher
+    await board.locator('tr[data-student="stella"]').getByRole('link', { name: 'Open copy' }).click();
+    await expect(teacher.locator('.canvas .component').first()).toBeVisible();
+    await expect(teacher.getByTestId('save')).toHaveText('Save as my copy');
+    await teacher.getByRole('link', { name: '← Assignment' }).click();
+    await expect(teacher.getByTestId('dashboard-table')).toBeVisible();
+
+    // the student reads the comment
     await students[0].reload();
     await expect(students[0].getByTestId('handin-history').getByTestId('comments')).toContainText('Well tuned: no overshoot to speak of.');
     await expect(students[0].getByTestId('handin-history').getByTestId('comments')).toContainText(TEACHER);
@@ -207,7 +221,7 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     const csv = readFileSync((await download.path())!, 'utf8');
     const lines = csv.trim().split(/\r?\n/);
     expect(lines[0]).toContain('Tune the servo');
-    expect(lines.some((l) => l.startsWith('stan,'))).toBe(true);
+    expect(lines.find((l) => l.startsWith('stan,'))).toContain('2.5');
     expect(lines.some((l) => l.startsWith('stella,'))).toBe(true);
 
     for (const page of [teacher, ...students]) await page.context().close();

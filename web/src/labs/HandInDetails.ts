@@ -23,8 +23,10 @@ function valueText(o: CheckOutcome): string {
     const parts: string[] = [];
     if (o.value !== undefined && o.value !== null) parts.push(`value ${formatNumber(o.value)}`);
     if (o.deviation !== undefined && o.deviation !== null) {
-        parts.push(`deviation ${formatNumber(o.deviation * 100, 3)} %`);
-        if (o.deviation > 0 && o.worst_time !== undefined && o.worst_time !== null) parts.push(`at t = ${formatNumber(o.worst_time)} s`);
+        // rounding noise of an equal run (1e-16) reads as what it is
+        const tiny = Math.abs(o.deviation) < 1e-9;
+        parts.push(tiny ? 'deviation ≈ 0 %' : `deviation ${formatNumber(o.deviation * 100, 3)} %`);
+        if (!tiny && o.worst_time !== undefined && o.worst_time !== null) parts.push(`at t = ${formatNumber(o.worst_time)} s`);
     }
     return parts.join(', ') || '—';
 }
@@ -93,7 +95,7 @@ export function handInDetails(session: Session, handIn: HandIn, options: HandInO
 
     const grade = h('input', { 'aria-label': 'Grade', inputmode: 'decimal', class: 'num', value: handIn.grade ?? '', placeholder: formatNumber(handIn.score) });
     const gradeForm = options.canGrade && writable ? h('form', {
-        class: 'grade-form', 'aria-label': 'Grade',
+        class: 'grade-form', 'aria-label': 'Grade the hand-in',
         onsubmit: async (e: Event) => {
             e.preventDefault();
             const text = grade.value.trim();
