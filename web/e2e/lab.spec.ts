@@ -226,3 +226,59 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
 
     for (const page of [teacher, ...students]) await page.context().close();
 });
+
+test('a class\'s members: import accounts, change a role, remove a student, archive', async ({ browser, request }) => {
+    const login = await request.post(`${baseUrl()}/api/v1/auth/login`, { data: { username: 'admin', password: ADMIN_PASSWORD } });
+    const { token } = await login.json() as { token: string };
+    const created = await request.post(`${baseUrl()}/api/v1/users`, {
+        headers: { Authorization: `Bearer ${token}` }, data: { username: 'terry', password: password('terry'), role: 'teacher' },
+    });
+    expect(created.status()).toBe(201);
+    const teacher = await loggedIn(browser, 'terry');
+    teacher.on('dialog', (d) => void d.accept());
+    await teacher.getByTestId('nav-classes').click();
+    await teacher.getByLabel('Class name').fill('Hydraulics 2');
+    await teacher.getByRole('button', { name: 'Create class' }).click();
+    await expect(teacher.getByTestId('class-name')).toHaveText('Hydraulics 2');
+    const joinCode = (await teacher.getByTestId('join-code').textContent())!.trim();
+
+    // a new account and an existing one (alice, from the suite's setup)
+    await teacher.getByLabel('User names to import').fill('username\nnewbie\nalice\n');
+    await teacher.getByRole('button', { name: 'Import accounts' }).click();
+    const result = teacher.getByTestId('import-result');
+    await expect(result.locator('tr[data-username="newbie"]')).toContainText('new');
+    await expect(result.locator('tr[data-username="alice"]')).toContainText('existing');
+    const newbiePassword = (await result.locator('tr[data-username="newbie"] code.password').textContent())!.trim();
+    expect(newbiePassword.length).toBeGreaterThanOrEqual(8);
+
+    // the new account logs in with the password shown once and finds the class
+    const newbieContext = await browser.newContext();
+    const newbie = await newbieContext.newPage();
+    await newbie.goto(`${baseUrl()}/#/login`);
+    await newbie.getByLabel('User name').fill('newbie');
+    await newbie.getByLabel('Password').fill(newbiePassword);
+    await newbie.getByRole('button', { name: 'Log in' }).click();
+    await expect(newbie.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    await newbie.getByTestId('nav-classes').click();
+    await expect(newbie.getByTestId('class-list').locator('tr', { hasText: 'Hydraulics 2' })).toContainText('student');
+
+    // alice assists; newbie is removed and loses the class at once
+    await result.getByRole('button', { name: 'Done' }).click();
+    const members = teacher.getByTestId('members-table');
+    await members.getByLabel('Role of alice').selectOption('assistant');
+    await expect(members.getByLabel('Role of alice')).toHaveValue('assistant');
+    await members.locator('tr[data-username="newbie"]').getByRole('button', { name: 'Remove' }).click();
+    await expect(members.locator('tr[data-username="newbie"]')).toHaveCount(0);
+    await newbie.reload();
+    await expect(newbie.getByTestId('class-list')).not.toContainText('Hydraulics 2');
+
+    // archived: read-only, no joins
+    await teacher.getByTestId('archive-toggle').click();
+    await expect(teacher.getByTestId('archived')).toBeVisible();
+    await expect(teacher.getByTestId('new-assignment')).toHaveCount(0);
+    await newbie.getByLabel('Join code').fill(joinCode);
+    await newbie.getByRole('button', { name: 'Join', exact: true }).click();
+    await expect(newbie.getByTestId('join-error')).toContainText('archived');
+    await newbieContext.close();
+    await teacher.context().close();
+});

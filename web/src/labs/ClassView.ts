@@ -185,7 +185,8 @@ function importForm(session: Session, theClass: LabClass, rerender: () => void):
                 const table = h('table', { class: 'model-table import-table' },
                     h('thead', {}, h('tr', {}, h('th', {}, 'User'), h('th', {}, 'Account'), h('th', {}, 'Password'))),
                     h('tbody', {}, ...accounts.map((a) => h('tr', { 'data-username': a.username },
-                        h('td', {}, a.username), h('td', {}, a.created ? 'new' : 'existing'),
+                        h('td', {}, a.username),
+                        h('td', { class: a.error ? 'form-error' : '' }, a.error ? `not created: ${a.error}` : a.created ? 'new' : 'existing'),
                         h('td', {}, a.password ? h('code', { class: 'password' }, a.password) : '—')))));
                 result.replaceChildren(...[
                     fresh.length ? h('p', { class: 'notice' }, 'Give each new user their password now: it is not shown again.') : null,

@@ -31,9 +31,13 @@ export interface LabClass {
 
 export interface ImportedAccount {
     username: string;
+    /** the account (absent when it could not be created) */
+    id?: number;
     /** only for a new account, only in this reply */
     password?: string;
     created: boolean;
+    /** why the account could not be created (e.g. a name the server refuses) */
+    error?: string;
 }
 
 export type EditMode = 'free' | 'parameters';
