@@ -151,7 +151,8 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
         await expect(page.getByTestId('dirty')).toHaveAttribute('data-dirty', 'false');
         await runAndWait(page);
 
-        await page.getByRole('link', { name: '← Assignment' }).click();
+        await expect(page.getByTestId('editor-note')).toContainText('GainP.k');
+        await page.getByRole('link', { name: '← Tune the servo' }).click();
         await expect(page.getByTestId('student-status')).toHaveAttribute('data-status', 'ran');
         await page.getByTestId('run-pretests').click();
         const results = page.getByTestId('pretest-results');
@@ -206,7 +207,7 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     await board.locator('tr[data-student="stella"]').getByRole('link', { name: 'Open copy' }).click();
     await expect(teacher.locator('.canvas .component').first()).toBeVisible();
     await expect(teacher.getByTestId('save')).toHaveText('Save as my copy');
-    await teacher.getByRole('link', { name: '← Assignment' }).click();
+    await teacher.getByRole('link', { name: '← Tune the servo' }).click();
     await expect(teacher.getByTestId('dashboard-table')).toBeVisible();
 
     // the student reads the comment

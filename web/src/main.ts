@@ -5,11 +5,11 @@ import './styles.css';
 import { Session } from './app/Session';
 import { renderLogin } from './views/LoginView';
 import { renderModelList } from './views/ModelListView';
-import { renderEditor, type EditorPage } from './views/EditorView';
+import { renderEditor, type BackLink, type EditorPage } from './views/EditorView';
 import { renderAccounts } from './views/AccountsView';
 import { renderClassList } from './labs/ClassListView';
 import { renderClass } from './labs/ClassView';
-import { renderAssignment } from './labs/AssignmentView';
+import { allowedText, renderAssignment } from './labs/AssignmentView';
 import type { LabPage } from './labs/LabPage';
 import { h } from './ui/dom';
 
@@ -82,7 +82,13 @@ async function route(): Promise<void> {
     } else if (hash === '#/account') {
         renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
     } else if (model) {
-        const back = model[2] ? { href: `#/assignment/${model[2]}`, label: 'Assignment' } : undefined;
+        let back: BackLink | undefined;
+        if (model[2]) {
+            // an assignment's copy: back to the assignment, with what the student may change
+            const assignment = await session.labs.getAssignment(Number(model[2])).catch(() => null);
+            back = { href: `#/assignment/${model[2]}`, label: assignment?.title ?? 'Assignment',
+                note: assignment ? `Assignment copy. ${allowedText(assignment)}` : undefined };
+        }
         const opened = await renderEditor(page, session, Number(model[1]), navigate, back);
         if (currentHash === hash) {
             editor = opened;

@@ -20,8 +20,8 @@ let clipboard: Clipboard | null = null;
 
 export interface EditorPage { dispose(): void; dirty(): boolean }
 
-/** Where the header's back link leads (default: the model list). */
-export interface BackLink { href: string; label: string }
+/** Where the header's back link leads (default: the model list); `note` says what the model is for. */
+export interface BackLink { href: string; label: string; note?: string }
 
 export async function renderEditor(root: HTMLElement, session: Session, modelId: number,
     navigate: (hash: string, replace?: boolean) => void, back: BackLink = { href: '#/models', label: 'Models' }): Promise<EditorPage> {
@@ -207,6 +207,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                 h('a', { href: back.href, class: 'back' }, `← ${back.label}`),
                 h('h1', { class: 'model-name', 'data-testid': 'model-name' }, summary.name),
                 summary.is_example ? h('span', { class: 'badge' }, 'example') : '',
+                back.note ? h('span', { class: 'editor-note', 'data-testid': 'editor-note', title: back.note }, back.note) : '',
                 dirtyMark, saveButton, undoButton, redoButton,
                 h('button', { onclick: () => canvas.zoomBy(1.25), title: 'Zoom in' }, '+'),
                 h('button', { onclick: () => canvas.zoomBy(0.8), title: 'Zoom out' }, '−'),
