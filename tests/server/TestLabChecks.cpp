@@ -1,5 +1,6 @@
-// The automatic checks of a lab assignment, without a server: runs are built as result tables
-// from analytic step responses, so the expected measures are known.
+// The automatic checks of a lab assignment and the gradebook export, without a server: runs
+// are built as result tables from analytic step responses, so the expected measures are known.
+#include "server/labs/Gradebook.h"
 #include "server/labs/LabChecks.h"
 
 #include <gtest/gtest.h>
@@ -366,4 +367,37 @@ TEST(LabChecks, DefinitionRejectionsNameTheField)
     for (double band : {0.0, 1.0, 1.5, -0.1})
         EXPECT_EQ(refusal(with(settling, "band", band)), "definition.band: must be greater than 0 and less than 1");
     EXPECT_EQ(refusal(with(settling, "band", "2 %")), "definition.band: must be a number");
+}
+
+TEST(Gradebook, CellsAreNeutralisedAndQuoted)
+{
+    EXPECT_EQ(spreadsheetSafeCell("alice"), "alice");
+    EXPECT_EQ(spreadsheetSafeCell(""), "");
+    EXPECT_EQ(spreadsheetSafeCell("=1+2"), "'=1+2");
+    EXPECT_EQ(spreadsheetSafeCell("+x"), "'+x");
+    EXPECT_EQ(spreadsheetSafeCell("-3"), "'-3");
+    EXPECT_EQ(spreadsheetSafeCell("@SUM(A1)"), "'@SUM(A1)");
+    EXPECT_EQ(spreadsheetSafeCell("\tx"), "'\tx");
+    EXPECT_EQ(spreadsheetSafeCell("\r=1"), "\"'\r=1\"");
+    EXPECT_EQ(spreadsheetSafeCell("a,b"), "\"a,b\"");
+    EXPECT_EQ(spreadsheetSafeCell("say \"hi\""), "\"say \"\"hi\"\"\"");
+    EXPECT_EQ(spreadsheetSafeCell("two\nlines"), "\"two\nlines\"");
+    EXPECT_EQ(spreadsheetSafeCell("=HYPERLINK(\"x\",1)"), "\"'=HYPERLINK(\"\"x\"\",1)\"");
+    EXPECT_EQ(spreadsheetSafeCell("a=1"), "a=1");   // only a leading sign starts a formula
+}
+
+TEST(Gradebook, WholeCsv)
+{
+    const std::vector<std::string> titles = {"Servo", "=Step, part 2"};
+    const std::vector<GradebookRow> rows = {
+        {"alice", {{2.5, false}, {std::nullopt, false}}},
+        {"-bob", {{1, true}, {0.1234567, false}}},
+        {"carol", {{std::nullopt, false}, {std::nullopt, false}}},
+    };
+    EXPECT_EQ(gradebookCsv(titles, rows),
+              "student,Servo,Servo late,\"'=Step, part 2\",\"'=Step, part 2 late\",total\n"
+              "alice,2.5,,,,2.5\n"
+              "'-bob,1,late,0.123457,,1.12346\n"
+              "carol,,,,,0\n");
+    EXPECT_EQ(gradebookCsv({}, {}), "student,total\n");
 }
