@@ -35,8 +35,12 @@ std::string spreadsheetSafeCell(const std::string& text)
 std::string gradebookCsv(const std::vector<std::string>& assignmentTitles, const std::vector<GradebookRow>& rows)
 {
     std::string csv = "student";
-    for (const std::string& title : assignmentTitles)
-        csv += "," + spreadsheetSafeCell(title) + "," + spreadsheetSafeCell(title + " late");
+    for (const std::string& title : assignmentTitles) {
+        csv += ',';
+        csv += spreadsheetSafeCell(title);
+        csv += ',';
+        csv += spreadsheetSafeCell(title + " late");
+    }
     csv += ",total\n";
     // Numbers are printed by us, never taken from a user, so they go out as numbers: only the
     // names and titles need neutralising.
@@ -51,7 +55,9 @@ std::string gradebookCsv(const std::vector<std::string>& assignmentTitles, const
             }
             csv += cell.late ? ",late" : ",";
         }
-        csv += "," + number(total) + "\n";
+        csv += ',';
+        csv += number(total);
+        csv += '\n';
     }
     return csv;
 }
