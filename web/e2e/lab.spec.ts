@@ -196,7 +196,11 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     await details.getByLabel('Comment', { exact: true }).fill('Well tuned: no overshoot to speak of.');
     await details.getByRole('button', { name: 'Comment', exact: true }).click();
     await expect(details.getByTestId('comments')).toContainText('Well tuned');
-    await teacher.getByTestId('dashboard').screenshot({ path: `${docsScreenshots}lab-dashboard.png` });
+    // the dashboard section with a margin around it
+    const box = (await teacher.getByTestId('dashboard').boundingBox())!;
+    const [scrollX, scrollY] = await teacher.evaluate(() => [window.scrollX, window.scrollY]);
+    await teacher.screenshot({ path: `${docsScreenshots}lab-dashboard.png`, fullPage: true,
+        clip: { x: box.x + scrollX - 16, y: box.y + scrollY - 12, width: box.width + 32, height: box.height + 24 } });
 
     // the teacher's grade overrides the score
     await details.getByLabel('Grade', { exact: true }).fill('2.5');

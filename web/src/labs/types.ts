@@ -23,7 +23,7 @@ export interface LabClass {
     join_code?: string;
     archived: boolean;
     created_at: number;
-    /** the caller's role in the class (an administrator who is no member: none) */
+    /** the caller's role in the class (the server gives an administrator `teacher` in every class) */
     role?: ClassRole | null;
     /** staff only, in GET /classes/{id} */
     members?: ClassMember[];
@@ -145,6 +145,8 @@ export interface DashboardRow {
     score: number | null;
     max_score: number | null;
     grade: number | null;
+    /** the latest hand-in (the server sends it; docs/labs.md does not list it) */
+    handin_id?: number | null;
 }
 
 export interface OverlaySeries { student: UserRef; job_id: number; time: number[]; values: number[] }
