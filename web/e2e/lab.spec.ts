@@ -120,6 +120,11 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     await scalar.getByLabel('Measure').selectOption('final');
     await scalar.getByLabel('Min').fill('0.65');
     await scalar.getByLabel('Max').fill('0.75');
+    // a variable the solution does not log: the server's refusal names the check
+    await curve.getByLabel('Variable').fill('Mass#P2#NoSuchVariable');
+    await checks.getByRole('button', { name: 'Save checks' }).click();
+    await expect(checks.getByTestId('checks-error')).toContainText('Position follows the reference');
+    await curve.getByLabel('Variable').fill(VARIABLE);
     await checks.getByRole('button', { name: 'Save checks' }).click();
     await expect(teacher.getByText('Saved 2 checks and the reference run')).toBeVisible({ timeout: 30_000 });
     await expect(checks.getByTestId('checks-error')).toBeEmpty();
@@ -284,6 +289,15 @@ test('a class\'s members: import accounts, change a role, remove a student, arch
     await newbie.getByLabel('Join code').fill(joinCode);
     await newbie.getByRole('button', { name: 'Join', exact: true }).click();
     await expect(newbie.getByTestId('join-error')).toContainText('archived');
+    // wrong codes: after ten the server says to wait, and the page says so
+    for (let i = 0; i < 10; i++) {
+        await newbie.getByLabel('Join code').fill(`WRONG${String(i).padStart(7, 'X')}`);
+        await newbie.getByRole('button', { name: 'Join', exact: true }).click();
+        await expect(newbie.getByRole('button', { name: 'Join', exact: true })).toBeEnabled();
+    }
+    await newbie.getByLabel('Join code').fill('WRONGCODEAGN');
+    await newbie.getByRole('button', { name: 'Join', exact: true }).click();
+    await expect(newbie.getByTestId('join-error')).toContainText('Too many wrong codes');
     await newbieContext.close();
     await teacher.context().close();
 });

@@ -52,6 +52,14 @@ export function readDefinition(fields: {
     return definition;
 }
 
+/** The server names a check by its place (`checks[0]`); the page says its name. */
+export function nameChecks(message: string, checks: Check[]): string {
+    return message.replace(/checks\[(\d+)\]/g, (whole, index: string) => {
+        const check = checks[Number(index)];
+        return check ? `Check ${Number(index) + 1} "${check.name}"` : whole;
+    });
+}
+
 export function checksEditor(options: ChecksEditorOptions): HTMLElement {
     const id = `checks-${++editorCount}`;
     const list = h('div', { class: 'check-list' });
@@ -114,12 +122,13 @@ export function checksEditor(options: ChecksEditorOptions): HTMLElement {
             message.textContent = '';
             saveButton.disabled = true;
             saveButton.textContent = 'Running the solution…';
+            let checks: Check[] = [];
             try {
-                const checks = [...list.children].map((row) => (row as HTMLElement & { read: () => Check }).read());
+                checks = [...list.children].map((row) => (row as HTMLElement & { read: () => Check }).read());
                 await options.save(checks);
                 toast(`Saved ${checks.length} check${checks.length === 1 ? '' : 's'} and the reference run`);
             } catch (err) {
-                message.textContent = errorText(err);
+                message.textContent = nameChecks(errorText(err), checks);
             } finally {
                 saveButton.disabled = false;
                 saveButton.textContent = 'Save checks';

@@ -8,7 +8,7 @@ vi.hoisted(() => {
     window.matchMedia = (() => ({ addEventListener: () => undefined, removeEventListener: () => undefined })) as unknown as typeof window.matchMedia;
 });
 
-import { readDefinition } from './ChecksEditor';
+import { nameChecks, readDefinition } from './ChecksEditor';
 import { parameterNames } from './AssignmentForm';
 import { joinErrorText } from './ClassListView';
 import { checkText } from './StudentAssignment';
@@ -29,6 +29,11 @@ describe('check definitions from the editor fields', () => {
             .toEqual({ kind: 'scalar', variable: 'Mass#P2#Position', measure: 'final', min: 0.65, max: 0.75 });
         expect(readDefinition({ ...fields, kind: 'scalar', measure: 'settling_time', max: '2', band: '0.05' }, 's'))
             .toEqual({ kind: 'scalar', variable: 'Mass#P2#Position', measure: 'settling_time', max: 2, band: 0.05 });
+    });
+    it('names a check the server refers to by its place', () => {
+        const checks = [{ name: 'Curve', points: 1, pretest: true }, { name: 'Final', points: 1, pretest: false }];
+        expect(nameChecks('checks[1]: the solution does not log X', checks)).toBe('Check 2 "Final": the solution does not log X');
+        expect(nameChecks('checks[7]: odd', checks)).toBe('checks[7]: odd');
     });
     it('names the check and the field that is wrong', () => {
         expect(() => readDefinition({ ...fields, kind: 'scalar' }, 'Final')).toThrow('Final: give min, max or both');
