@@ -224,6 +224,21 @@ test('a whole lab: class, assignment, checks, two students hand in, dashboard, o
     await expect(students[0].getByTestId('handin-history').getByTestId('comments')).toContainText('Well tuned: no overshoot to speak of.');
     await expect(students[0].getByTestId('handin-history').getByTestId('comments')).toContainText(TEACHER);
 
+    // ---- a new template: a changed copy keeps the student's work until reset
+    await teacher.goto(assignmentUrl);
+    await teacher.getByRole('button', { name: 'Edit assignment' }).click();
+    const edit = teacher.getByRole('form', { name: 'Edit assignment' });
+    await edit.getByLabel('Template model').selectOption({ label: 'Position Servo' });
+    await edit.getByRole('button', { name: 'Save changes' }).click();
+    await expect(teacher.getByText('Assignment saved')).toBeVisible();
+    const stella = students[1];
+    stella.on('dialog', (d) => void d.accept());
+    await stella.reload();
+    await expect(stella.getByTestId('outdated')).toContainText('version 2');
+    await stella.getByTestId('reset-copy').click();
+    await expect(stella.getByTestId('outdated')).toHaveCount(0);
+    await expect(stella.getByTestId('student-work')).toContainText('template version 2');
+
     // ---- the gradebook, as a file
     await teacher.goto(classUrl);
     const [download] = await Promise.all([teacher.waitForEvent('download'), teacher.getByTestId('export-gradebook').click()]);

@@ -102,11 +102,15 @@ export function assignmentForm(options: AssignmentFormOptions): HTMLElement {
         };
         if (template.value) input.template_model_id = Number(template.value);
         if (solution.value) input.solution_model_id = Number(solution.value);
+        // a time the form shows unchanged is not sent (the field holds whole minutes only)
         const opensAt = fromDatetimeLocal(opens.value);
-        if (opensAt !== undefined) input.opens_at = opensAt;
+        if (opensAt !== undefined && opens.value !== toDatetimeLocal(initial?.opens_at)) input.opens_at = opensAt;
         const dueAt = fromDatetimeLocal(due.value);
-        if (dueAt !== undefined) input.due_at = dueAt;
-        else if (initial) input.due_at = 0;   // cleared: no deadline
+        if (dueAt === undefined) {
+            if (initial?.due_at) input.due_at = 0;   // cleared: no deadline
+        } else if (due.value !== toDatetimeLocal(initial?.due_at)) {
+            input.due_at = dueAt;
+        }
         const parameters: AllowedParameter[] = [];
         if (input.edit_mode === 'parameters') {
             for (const row of rows.querySelectorAll('tr')) {
