@@ -166,6 +166,11 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                 writable = true;
                 summary = { ...summary, id: reply.model_id, name: reply.name, is_example: false, owner: { id: session.user!.id, username: session.user!.username } };
                 navigate(`#/model/${reply.model_id}`, true);
+                // the own copy is no assignment's copy any more
+                if (back.note) {
+                    back = { href: back.href, label: back.label };
+                    headerKey = '';
+                }
                 toast(`Saved as your own copy "${reply.name}"`);
             } else {
                 toast('Saved');
