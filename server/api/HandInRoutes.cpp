@@ -28,6 +28,14 @@ std::optional<HandInView> visibleHandIn(Services& s, const Call& call)
     return HandInView{std::move(*handIn), std::move(*assignment)};
 }
 
+nlohmann::json commentJson(const HandInComment& c)
+{
+    return {{"id", c.id},
+            {"author", {{"id", c.authorId}, {"username", c.authorName}}},
+            {"text", c.text},
+            {"created_at", c.createdAt}};
+}
+
 Response getHandIn(Services& s, Call& call)
 {
     const auto view = visibleHandIn(s, call);
@@ -50,11 +58,7 @@ Response listComments(Services& s, Call& call)
     const auto view = visibleHandIn(s, call);
     if (!view) return labNotFound("hand-in");
     nlohmann::json list = nlohmann::json::array();
-    for (const HandInComment& c : s.labs.store().comments(view->handIn.id))
-        list.push_back({{"id", c.id},
-                        {"author", {{"id", c.authorId}, {"username", c.authorName}}},
-                        {"text", c.text},
-                        {"created_at", c.createdAt}});
+    for (const HandInComment& c : s.labs.store().comments(view->handIn.id)) list.push_back(commentJson(c));
     return jsonResponse(http::status::ok, {{"comments", list}});
 }
 
@@ -71,11 +75,7 @@ Response addComment(Services& s, Call& call)
     const auto id = s.labs.store().addComment(view->handIn.id, call.who().id, body["text"].get<std::string>());
     if (!id) return labNotFound("hand-in");
     for (const HandInComment& c : s.labs.store().comments(view->handIn.id))
-        if (c.id == *id)
-            return jsonResponse(http::status::created, {{"id", c.id},
-                                                        {"author", {{"id", c.authorId}, {"username", c.authorName}}},
-                                                        {"text", c.text},
-                                                        {"created_at", c.createdAt}});
+        if (c.id == *id) return jsonResponse(http::status::created, commentJson(c));
     return labNotFound("comment");
 }
 
