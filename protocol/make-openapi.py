@@ -93,6 +93,9 @@ def op(summary, responses, body=None, params=None, public=False, tag=None):
 
 
 ID = {"name": "id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
+USER_ID = {"name": "user_id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
+FORMAT = {"name": "format", "in": "query", "required": False, "schema": {"type": "string", "enum": ["csv", "json"]}}
+ANY = {"type": "object"}
 HMF = {"application/xml": {"schema": {"type": "string", "description": ".hmf model file text"}}}
 
 paths = {
@@ -223,6 +226,104 @@ paths = {
          **errors("400", "401", "404", "409")},
         params=[ID, {"name": "format", "in": "query", "required": False,
                      "schema": {"type": "string", "enum": ["csv", "json"]}}], tag="studies")},
+    # Teaching labs (docs/labs.md): classes, assignments, copies, checks, hand-ins.
+    "/classes": {
+        "get": op("The caller's classes with their role in each (admin: all)", {**ok("Classes", ANY), **errors("401")},
+                  tag="labs"),
+        "post": op("Create a class (server role teacher or admin); the caller becomes its teacher",
+                   {**ok("The class with its join code", ANY, "201"), **errors("400", "401", "403")},
+                   body=json_body("ClassCreate"), tag="labs")},
+    "/classes/join": {"post": op(
+        "Join a class as a student with its code; 10 wrong codes in 10 minutes per account (100 per address): 429",
+        {**ok("The class", ANY), **errors("400", "401", "404", "409", "429")}, body=json_body("ClassJoin"), tag="labs")},
+    "/classes/{id}": {
+        "get": op("A class the caller is a member of (staff: with its members)", {**ok("The class", ANY),
+                                                                                 **errors("401", "404")},
+                  params=[ID], tag="labs"),
+        "patch": op("Rename or (un)archive a class (its teacher); an archived class is read-only",
+                    {**ok("The class", ANY), **errors("400", "401", "403", "404", "409")},
+                    body=json_body("ClassUpdate"), params=[ID], tag="labs"),
+        "delete": op("Delete a class with its assignments and hand-ins (its teacher)",
+                     {"204": {"description": "Deleted"}, **errors("401", "403", "404")}, params=[ID], tag="labs")},
+    "/classes/{id}/import": {"post": op(
+        "Add accounts as students from a list of user names (text/csv, one per line); new accounts get a "
+        "generated password shown only in this reply",
+        {**ok("{accounts: [{username, id, created, password?, error?}]}", ANY), **errors("400", "401", "403", "404", "409")},
+        body={"required": True, "content": {"text/csv": {"schema": {"type": "string"}}}}, params=[ID], tag="labs")},
+    "/classes/{id}/members/{user_id}": {
+        "put": op("Add a member or change their role (the class's teacher)",
+                  {**ok("The class", ANY), **errors("400", "401", "403", "404", "409")},
+                  body=json_body("MemberUpdate"), params=[ID, USER_ID], tag="labs"),
+        "delete": op("Remove a member; a removed student loses access at once",
+                     {"204": {"description": "Removed"}, **errors("401", "403", "404", "409")},
+                     params=[ID, USER_ID], tag="labs")},
+    "/classes/{id}/gradebook": {"get": op(
+        "The gradebook: a row per student, a column per assignment (grade, else the latest hand-in's score); CSV "
+        "cells are neutralised against formula injection",
+        {"200": {"description": "Gradebook", "content": {"text/csv": {"schema": {"type": "string"}},
+                                                         "application/json": {"schema": ANY}}},
+         **errors("400", "401", "403", "404")},
+        params=[ID, FORMAT], tag="labs")},
+    "/classes/{id}/assignments": {
+        "get": op("The class's assignments (students: the opened ones, with their status and copy)",
+                  {**ok("{assignments}", ANY), **errors("401", "404")}, params=[ID], tag="labs"),
+        "post": op("Create an assignment from a template model (and a solution model whose run is the reference)",
+                   {**ok("The assignment", ANY, "201"), **errors("400", "401", "403", "404", "409")},
+                   body=json_body("AssignmentCreate"), params=[ID], tag="labs")},
+    "/assignments/{id}": {
+        "get": op("An assignment", {**ok("The assignment", ANY), **errors("401", "404")}, params=[ID], tag="labs"),
+        "patch": op("Change an assignment; a template_model_id publishes a new template version",
+                    {**ok("The assignment", ANY), **errors("400", "401", "403", "404", "409")},
+                    body=json_body("AssignmentUpdate"), params=[ID], tag="labs"),
+        "delete": op("Delete an assignment with its hand-ins", {"204": {"description": "Deleted"},
+                                                              **errors("401", "403", "404")}, params=[ID], tag="labs")},
+    "/assignments/{id}/checks": {
+        "get": op("The checks (students: pretests in full, the others by name and points)",
+                  {**ok("{checks}", ANY), **errors("401", "404")}, params=[ID], tag="labs"),
+        "put": op("Replace the checks; curve checks need the solution's reference run",
+                  {**ok("{checks}", ANY), **errors("400", "401", "403", "404", "409")},
+                  body=json_body("ChecksUpdate"), params=[ID], tag="labs")},
+    "/assignments/{id}/open": {"post": op(
+        "The student's copy, made from the template on the first call (201)",
+        {**ok("{copy}", ANY), **ok("{copy}, made now", ANY, "201"), **errors("401", "403", "404", "409")},
+        params=[ID], tag="labs")},
+    "/assignments/{id}/reset": {"post": op(
+        "Reset the student's copy to the current template", {**ok("{copy}", ANY), **errors("401", "403", "404", "409")},
+        params=[ID], tag="labs")},
+    "/assignments/{id}/pretest": {"post": op(
+        "Run the student's copy on the server and judge it by the pretests",
+        {**ok("{checks, score, max_score}", ANY), **errors("400", "401", "403", "404", "409", "429")},
+        params=[ID], tag="labs")},
+    "/assignments/{id}/handin": {"post": op(
+        "Hand in the copy: frozen, run and judged by every check; again before the deadline, once late after it",
+        {**ok("The hand-in", ANY, "201"), **errors("400", "401", "403", "404", "409", "429")},
+        params=[ID], tag="labs")},
+    "/assignments/{id}/handins": {"get": op(
+        "Hand-ins, newest first (a student: their own; staff: all, or ?student=ID)",
+        {**ok("{handins}", ANY), **errors("400", "401", "404")},
+        params=[ID, {"name": "student", "in": "query", "required": False, "schema": {"type": "integer"}}], tag="labs")},
+    "/assignments/{id}/dashboard": {"get": op(
+        "Per student: status, latest run, latest hand-in and score (staff)",
+        {**ok("{students}", ANY), **errors("401", "403", "404")}, params=[ID], tag="labs")},
+    "/assignments/{id}/overlay": {"get": op(
+        "One variable of every student's latest finished run, at most `points` samples each (staff)",
+        {**ok("{variable, series}", ANY), **errors("400", "401", "403", "404")},
+        params=[ID, {"name": "variable", "in": "query", "required": True, "schema": {"type": "string"}},
+                {"name": "points", "in": "query", "required": False,
+                 "schema": {"type": "integer", "minimum": 2, "maximum": 10000}}], tag="labs")},
+    "/handins/{id}": {"get": op("A hand-in with its check results (its student; staff)",
+                                {**ok("The hand-in", ANY), **errors("401", "404")}, params=[ID], tag="labs")},
+    "/handins/{id}/model": {"get": op("The hand-in's frozen model", {"200": {"description": "The .hmf", "content": HMF},
+                                                                    **errors("401", "404")}, params=[ID], tag="labs")},
+    "/handins/{id}/comments": {
+        "get": op("Comments on a hand-in (its student; staff)", {**ok("{comments}", ANY), **errors("401", "404")},
+                  params=[ID], tag="labs"),
+        "post": op("Comment on a hand-in (teacher or assistant)",
+                   {**ok("The comment", ANY, "201"), **errors("400", "401", "403", "404", "409")},
+                   body=json_body("CommentCreate"), params=[ID], tag="labs")},
+    "/handins/{id}/grade": {"put": op(
+        "Set or clear the teacher's grade of a hand-in", {**ok("The hand-in", ANY), **errors("400", "401", "403", "404", "409")},
+        body=json_body("GradeUpdate"), params=[ID], tag="labs")},
     "/ws": {"get": op("WebSocket upgrade for the tlmhub.v1 protocol (see protocol/README.md); a login token "
                       "comes as ?token= (browsers) or Authorization: Bearer, an API token only as "
                       "Authorization: Bearer",

@@ -2,6 +2,8 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/http/JsonText.h"
+#include "server/labs/LabAccess.h"
+#include "server/labs/LabService.h"
 #include "server/protocol/SchemaValidator.h"
 #include "server/protocol/UntrustedJson.h"
 
@@ -134,9 +136,32 @@ nlohmann::json modelSummaryJson(const ModelSummary& m)
 std::optional<ModelSummary> readableModel(Services& s, const User& who, std::int64_t id)
 {
     auto summary = s.models.summary(id);
-    if (!summary || !canRead(who, summary->ownerId, summary->ownerRole, summary->isExample))
+    if (!summary) return std::nullopt;
+    switch (copyAccess(s.labs.store(), who, id).kind) {
+    case CopyAccess::Kind::NotACopy:
+        if (!canRead(who, summary->ownerId, summary->isExample)) return std::nullopt;
+        return summary;
+    case CopyAccess::Kind::None:
         return std::nullopt;
-    return summary;
+    case CopyAccess::Kind::Read:
+    case CopyAccess::Kind::Write:
+        return summary;
+    }
+    return std::nullopt;
+}
+
+bool writableModel(Services& s, const User& who, const ModelSummary& model)
+{
+    switch (copyAccess(s.labs.store(), who, model.id).kind) {
+    case CopyAccess::Kind::NotACopy:
+        return canWrite(who, model.ownerId, model.isExample);
+    case CopyAccess::Kind::Write:
+        return true;
+    case CopyAccess::Kind::None:
+    case CopyAccess::Kind::Read:
+        return false;
+    }
+    return false;
 }
 
 } // namespace tlmhub::server

@@ -26,6 +26,7 @@ namespace tlmhub::server {
 struct ServerOptions;
 class HandlerPools;
 class StudyService;
+class LabService;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -39,6 +40,9 @@ struct Services {
     JobQueue& queue;
     StreamHub& streams;
     StudyService& studies;
+    LabService& labs;                   // classes, assignments, copies, hand-ins
+    LoginRateLimiter& joinLimiter;          // wrong class join codes per account
+    LoginRateLimiter& joinAddressLimiter;   // and per client address (looser: a lab shares one)
     LiveSessions& liveSessions;         // open WebSockets, ended with their login
     const DownloadLinks& downloadLinks;
     HandlerPools& pools;                // where slow work goes instead of an I/O thread
@@ -57,8 +61,9 @@ using RouteHandler = std::function<Response(Services&, Call&)>;
 
 // Where a route's handler runs. Instant: on the I/O thread (no storage, microseconds: a
 // health probe must answer while everything else is busy). Storage: on the request pool.
-// PasswordHash: on the bounded hashing pool (an argon2id hash or check per call).
-enum class RouteWork { Storage, Instant, PasswordHash };
+// PasswordHash: on the bounded hashing pool (an argon2id hash or check per call). Checks: on
+// the pool that runs a lab's models (a pretest, a hand-in, a teacher's reference run).
+enum class RouteWork { Storage, Instant, PasswordHash, Checks };
 
 struct RouteSpec {
     http::verb method;
@@ -107,11 +112,19 @@ void addJobRoutes(std::vector<RouteSpec>& routes);
 void addTokenRoutes(std::vector<RouteSpec>& routes);
 void addCatalogueRoutes(std::vector<RouteSpec>& routes);
 void addStudyRoutes(std::vector<RouteSpec>& routes);
+void addClassRoutes(std::vector<RouteSpec>& routes);
+void addAssignmentRoutes(std::vector<RouteSpec>& routes);
+void addHandInRoutes(std::vector<RouteSpec>& routes);
+// Every route of the API (below /api/v1), in matching order.
+std::vector<RouteSpec> apiRoutes();
 
 // Summaries as the API shows them.
 protocol::User publicUser(const User& user);
 nlohmann::json modelSummaryJson(const ModelSummary& summary);
 // A model the caller may read, or nullopt (also when it does not exist: 404 either way).
+// A student's copy of an assignment follows the lab's rules (LabAccess).
 std::optional<ModelSummary> readableModel(Services& s, const User& who, std::int64_t id);
+// Whether the caller may change the model (a copy: its student, within the assignment's lock).
+bool writableModel(Services& s, const User& who, const ModelSummary& model);
 
 } // namespace tlmhub::server

@@ -3,22 +3,25 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/http/HeaderValues.h"
+#include "server/labs/LabAccess.h"
+#include "server/labs/LabService.h"
 
 
 namespace tlmhub::server {
 
 namespace {
 
-// A job the caller may see: own, or any for an admin, or a student's for a teacher.
+// A job the caller may see: own, or any for an admin, or a run of a student's copy for the
+// staff of its class.
 std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::string& idText)
 {
     const auto id = parseId(idText);
     if (!id) return std::nullopt;
     auto job = s.queue.store().info(*id);
     if (!job) return std::nullopt;
-    const auto owner = s.users.find(job->ownerId);
-    if (!canRead(who, job->ownerId, owner ? owner->role : std::string(), false)) return std::nullopt;
-    return job;
+    if (canRead(who, job->ownerId, false)) return job;
+    if (job->modelId && copyAccess(s.labs.store(), who, *job->modelId).kind == CopyAccess::Kind::Read) return job;
+    return std::nullopt;
 }
 
 Response submitJob(Services& s, Call& call)
@@ -40,6 +43,14 @@ Response submitJob(Services& s, Call& call)
     }
     for (const auto& [name, value] : body.parameters.value_or(std::map<std::string, nlohmann::json>{}))
         request.parameters[name] = value.is_string() ? value.get<std::string>() : value.dump();
+    // A student's copy runs with the overrides its assignment lets them change.
+    if (request.modelId) {
+        const CopyAccess access = copyAccess(s.labs.store(), call.who(), *request.modelId);
+        if (access.lock)
+            for (const auto& [name, value] : request.parameters)
+                if (const std::string problem = access.lock->valueProblem(name, value); !problem.empty())
+                    return apiError(http::status::forbidden, "locked", problem);
+    }
     if (body.start) request.settings.start = *body.start;
     if (body.step) request.settings.step = *body.step;
     if (body.stop) request.settings.stop = *body.stop;

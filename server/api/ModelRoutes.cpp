@@ -7,6 +7,8 @@
 #include "server/http/HeaderValues.h"
 #include "server/app/ServerOptions.h"
 #include "server/jobs/ModelLimits.h"
+#include "server/labs/LabAccess.h"
+#include "server/labs/LabService.h"
 #include "server/store/ModelName.h"
 
 #include "core/hmf/HmfLoader.h"
@@ -107,7 +109,7 @@ Response getModel(Services& s, Call& call)
         return res;
     }
     nlohmann::json out = modelSummaryJson(*summary);
-    out["writable"] = canWrite(call.who(), summary->ownerId, summary->isExample);
+    out["writable"] = writableModel(s, call.who(), *summary);
     LoadedModel loaded = loadHmfString(hmf, "", summary->name);
     if (loaded.root) out["model"] = describeModel(*loaded.root, summary->name);
     else out["load_error"] = loaded.firstError();
@@ -119,7 +121,7 @@ Response updateModel(Services& s, Call& call)
     const auto id = parseId(call.params.path["id"]);
     const auto summary = id ? readableModel(s, call.who(), *id) : std::nullopt;
     if (!summary) return apiError(http::status::not_found, "not_found", "no such model");
-    if (!canWrite(call.who(), summary->ownerId, summary->isExample))
+    if (!writableModel(s, call.who(), *summary))
         return apiError(http::status::forbidden, "forbidden",
                         "this model is read-only for you (duplicate it to change it)");
     Response error;
@@ -134,6 +136,15 @@ Response updateModel(Services& s, Call& call)
     }
     if (name && !acceptableName(*name, error)) return error;
     if (hmf && !checkedModel(s, *hmf, error)) return error;
+    if (const CopyAccess access = copyAccess(s.labs.store(), call.who(), summary->id); access.lock) {
+        if (name && *name != summary->name)
+            return apiError(http::status::forbidden, "locked", "an assignment's copy keeps its name");
+        if (hmf) {
+            const std::string problem = access.lock->changeProblem(s.models.hmf(summary->id).value_or(""), *hmf,
+                                                                   s.options.limits.model);
+            if (!problem.empty()) return apiError(http::status::forbidden, "locked", problem);
+        }
+    }
     s.models.update(summary->id, name, hmf);
     return jsonResponse(http::status::ok, modelSummaryJson(*s.models.summary(summary->id)));
 }
@@ -143,7 +154,10 @@ Response deleteModel(Services& s, Call& call)
     const auto id = parseId(call.params.path["id"]);
     const auto summary = id ? readableModel(s, call.who(), *id) : std::nullopt;
     if (!summary) return apiError(http::status::not_found, "not_found", "no such model");
-    if (!canWrite(call.who(), summary->ownerId, summary->isExample))
+    if (s.labs.store().copyByModel(summary->id))
+        return apiError(http::status::conflict, "assignment_copy",
+                        "this is your copy of an assignment: reset it to the template instead of deleting it");
+    if (!writableModel(s, call.who(), *summary))
         return apiError(http::status::forbidden, "forbidden", "this model is read-only for you");
     s.models.remove(summary->id);
     return noContent();

@@ -4,6 +4,9 @@
 
 #include "server/auth/AccessPolicy.h"
 #include "server/http/HeaderValues.h"
+#include "server/labs/LabAccess.h"
+#include "server/labs/LabService.h"
+#include "server/labs/StudyLock.h"
 #include "server/store/ResultBlob.h"
 #include "server/studies/StudyService.h"
 
@@ -41,6 +44,14 @@ Response submitStudy(Services& s, Call& call)
         const auto model = readableModel(s, call.who(), body["model_id"].get<std::int64_t>());
         if (!model) return apiError(http::status::not_found, "not_found", "no such model");
         hmf = s.models.hmf(model->id).value_or("");
+        // A student's copy is studied only in the parameters its assignment lets them change.
+        if (const CopyAccess access = copyAccess(s.labs.store(), call.who(), model->id); access.lock) {
+            StudyRequest request;
+            std::string why;
+            if (!parseStudyRequest(body, request, why)) return apiError(http::status::bad_request, "bad_request", why);
+            if (const std::string problem = studyLockProblem(request, *access.lock); !problem.empty())
+                return apiError(http::status::forbidden, "locked", problem);
+        }
     } else if (body.contains("hmf") && body["hmf"].is_string()) {
         hmf = body["hmf"].get<std::string>();
     }

@@ -4,6 +4,8 @@
 #include "server/api/QueuedFrame.h"
 #include "server/app/HandlerPools.h"
 #include "server/auth/AccessPolicy.h"
+#include "server/labs/LabAccess.h"
+#include "server/labs/LabService.h"
 #include "server/http/JsonText.h"
 #include "server/protocol/Messages.generated.h"
 #include "server/protocol/ProtocolConstants.generated.h"
@@ -161,7 +163,34 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
     if (type == "study.subscribe") return subscribeStudy(msg.get<protocol::StudySubscribeRequest>());
     if (type == "study.unsubscribe") return unsubscribeStudy(msg.get<protocol::StudyUnsubscribeRequest>());
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
+    if (mModelIsCopy) {
+        const std::string problem = copyEditProblem(type, msg);
+        if (!problem.empty()) return failure("locked", problem);
+    }
     return mSession.handle(msg);
+}
+
+std::string WsApi::copyEditProblem(const std::string& type, const nlohmann::json& msg)
+{
+    if (type == "parameter.get" || type == "model.get") return "";
+    const CopyAccess access = copyAccess(mServices.labs.store(), mUser, *mModelId);
+    // Read: a supervisor's or an archived class's copy; edits stay in this editor (saved as
+    // a new model), as with any read-only model.
+    if (access.kind == CopyAccess::Kind::Read) return "";
+    if (access.kind == CopyAccess::Kind::None) return "you are no longer in this assignment's class";
+    if (!access.lock) return "";
+    const auto valueText = [&msg] {
+        const nlohmann::json& value = msg.at("value");
+        return value.is_string() ? value.get<std::string>() : value.dump();
+    };
+    const std::vector<std::string> system = msg.value("system", std::vector<std::string>{});
+    if (type == "parameter.set")
+        return access.lock->valueProblem(
+            parameterPath(system, msg.at("component").get<std::string>(), msg.at("parameter").get<std::string>()),
+            valueText());
+    if (type == "sysparam.set")
+        return access.lock->valueProblem(parameterPath(system, "", msg.at("name").get<std::string>()), valueText());
+    return "this assignment lets you change only its listed parameters (" + type + " is not allowed)";
 }
 
 WsApi::Reply WsApi::openModel(const protocol::ModelOpenRequest& request)
@@ -173,8 +202,9 @@ WsApi::Reply WsApi::openModel(const protocol::ModelOpenRequest& request)
         return failure("invalid_model", error);
     mModelId = model->id;
     mModelName = model->name;
+    mModelIsCopy = mServices.labs.store().copyByModel(model->id).has_value();
     return success(protocol::ModelOpenedData{
-        .modelId = model->id, .model = mSession.model(), .writable = canWrite(mUser, model->ownerId, model->isExample)});
+        .modelId = model->id, .model = mSession.model(), .writable = writableModel(mServices, mUser, *model)});
 }
 
 WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
@@ -186,6 +216,7 @@ WsApi::Reply WsApi::createModel(const protocol::ModelCreateRequest& request)
     mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
     if (!mModelId) return failure("not_found", "the account that would own the model does not exist");
     mModelName = name;
+    mModelIsCopy = false;
     return success(protocol::ModelOpenedData{.modelId = *mModelId, .model = mSession.model(), .writable = true});
 }
 
@@ -193,8 +224,7 @@ WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
 {
     if (!mSession.isOpen() || !mModelId) return failure("not_open", "open or create a model first");
     const auto model = mServices.models.summary(*mModelId);
-    const bool asCopy = request.asCopy.value_or(false) || !model ||
-                        !canWrite(mUser, model->ownerId, model->isExample);
+    const bool asCopy = request.asCopy.value_or(false) || !model || !writableModel(mServices, mUser, *model);
     const std::string name = request.name.value_or(mModelName);
     if (const std::string problem = modelNameProblem(name); !problem.empty())
         return failure("bad_request", "model name: " + problem);
@@ -202,8 +232,10 @@ WsApi::Reply WsApi::saveModel(const protocol::ModelSaveRequest& request)
         mModelId = mServices.models.create(mUser.id, name, mSession.saveHmf(), false);
         if (!mModelId) return failure("not_found", "the account that would own the model does not exist");
     } else {
+        if (mModelIsCopy && name != mModelName) return failure("locked", "an assignment's copy keeps its name");
         mServices.models.update(*mModelId, name, mSession.saveHmf());
     }
+    mModelIsCopy = mModelIsCopy && !asCopy;
     mModelName = name;
     const auto saved = mServices.models.summary(*mModelId);
     return success(protocol::ModelSavedData{

@@ -50,6 +50,9 @@ private:
     // On the strand, once a simulate.start's job is compiled and queued (or refused).
     void finishStart(const protocol::SimulateStartRequest& start, const JobQueue::Submitted& submitted);
     bool ownsJob(std::int64_t jobId) const;
+    // "" when the open model may take this edit; else why not (a student's copy of a locked
+    // assignment, or a copy whose class the student has left).
+    std::string copyEditProblem(const std::string& type, const nlohmann::json& msg);
     void sendError(const nlohmann::json& id, const std::string& code, const std::string& message);
 
     Services& mServices;
@@ -59,6 +62,7 @@ private:
     EditSession mSession;
     std::optional<std::int64_t> mModelId;
     std::string mModelName;
+    bool mModelIsCopy = false;   // the open model is a student's copy of an assignment
     std::vector<std::uint64_t> mSubscriptions;
     std::map<std::int64_t, std::uint64_t> mStudySubscriptions;   // study -> StudyProgressHub's
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)

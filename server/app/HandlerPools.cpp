@@ -4,8 +4,9 @@
 
 namespace tlmhub::server {
 
-HandlerPools::HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit)
-    : mRequests(requestThreads), mHashing(hashingThreads), mHashingQueueLimit(hashingQueueLimit)
+HandlerPools::HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit,
+                           unsigned checkThreads)
+    : mRequests(requestThreads), mHashing(hashingThreads), mChecks(checkThreads), mHashingQueueLimit(hashingQueueLimit)
 {
 }
 
@@ -32,12 +33,19 @@ bool HandlerPools::runHashing(std::function<void()> task)
     return true;
 }
 
+void HandlerPools::runChecks(std::function<void()> task)
+{
+    boost::asio::post(mChecks, std::move(task));
+}
+
 void HandlerPools::stop()
 {
     mRequests.stop();
     mHashing.stop();
+    mChecks.stop();
     mRequests.join();
     mHashing.join();
+    mChecks.join();
 }
 
 } // namespace tlmhub::server

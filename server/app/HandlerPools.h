@@ -5,6 +5,8 @@
 // (argon2id at its interactive limits takes tens of milliseconds of CPU per call).
 // The hashing pool is bounded: forty students logging in at once queue there, while other
 // requests and health probes go on.
+// A third pool runs lab checks (a pretest or hand-in simulates the student's model): a class
+// handing in at once queues there, while the request pool stays free for everything else.
 #include <boost/asio/thread_pool.hpp>
 
 #include <atomic>
@@ -15,7 +17,8 @@ namespace tlmhub::server {
 
 class HandlerPools {
 public:
-    HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit);
+    HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit,
+                 unsigned checkThreads);
     ~HandlerPools();
     HandlerPools(const HandlerPools&) = delete;
     HandlerPools& operator=(const HandlerPools&) = delete;
@@ -23,12 +26,14 @@ public:
     void runRequest(std::function<void()> task);
     // False (and `task` not run) when `hashingQueueLimit` hashing tasks are already waiting.
     bool runHashing(std::function<void()> task);
+    void runChecks(std::function<void()> task);
     // Waits for the tasks already started; later ones do not run.
     void stop();
 
 private:
     boost::asio::thread_pool mRequests;
     boost::asio::thread_pool mHashing;
+    boost::asio::thread_pool mChecks;
     const std::size_t mHashingQueueLimit;
     std::atomic<std::size_t> mHashingPending{0};
 };

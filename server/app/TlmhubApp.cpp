@@ -18,6 +18,9 @@ constexpr auto kLoginCheckPeriod = std::chrono::milliseconds(250);
 constexpr auto kDownloadLinkTtl = std::chrono::seconds(60);
 // Logins and password changes waiting for a hashing thread; more are answered 503 at once.
 constexpr std::size_t kHashingQueueLimit = 256;
+// Wrong class join codes an account may try in the window (an address: ten times as many).
+constexpr int kJoinMaxFailures = 10;
+constexpr std::chrono::seconds kJoinWindow{600};
 } // namespace
 
 TlmhubApp::TlmhubApp(const ServerOptions& options)
@@ -46,20 +49,16 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
-                                            kHashingQueueLimit);
+                                            kHashingQueueLimit, cores);
+    mLabs = std::make_unique<LabService>(mStorage->labs(), mStorage->models(), mStorage->jobs(), mStorage->results(),
+                                         mOptions.limits);
+    mJoinLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures, kJoinWindow);
+    mJoinAddressLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures * 10, kJoinWindow);
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
-                                 *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLiveSessions, *mDownloadLinks,
-                                 *mPools});
+                                 *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
+                                 *mLiveSessions, *mDownloadLinks, *mPools});
 
-    std::vector<RouteSpec> routes;
-    addCatalogueRoutes(routes);
-    addAuthRoutes(routes);
-    addUserRoutes(routes);
-    addModelRoutes(routes);
-    addJobRoutes(routes);
-    addStudyRoutes(routes);
-    addTokenRoutes(routes);
-    for (RouteSpec& r : routes)
+    for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
 }
 
@@ -151,6 +150,8 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
         return run();
     case RouteWork::Storage:
         return mPools->runRequest(std::move(run));
+    case RouteWork::Checks:
+        return mPools->runChecks(std::move(run));
     case RouteWork::PasswordHash:
         if (!mPools->runHashing(std::move(run))) {
             Response busy = apiError(http::status::service_unavailable, "busy",

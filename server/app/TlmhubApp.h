@@ -8,6 +8,7 @@
 #include "server/http/StaticFiles.h"
 #include "server/jobs/ResultExpiry.h"
 #include "server/store/Storage.h"
+#include "server/labs/LabService.h"
 #include "server/studies/StudyService.h"
 
 #include <memory>
@@ -60,6 +61,9 @@ private:
     std::unique_ptr<JobQueue> mQueue;
     std::unique_ptr<StudyProgressHub> mStudyHub;
     std::unique_ptr<StudyService> mStudies;
+    std::unique_ptr<LabService> mLabs;
+    std::unique_ptr<LoginRateLimiter> mJoinLimiter;
+    std::unique_ptr<LoginRateLimiter> mJoinAddressLimiter;
     std::unique_ptr<ResultExpiry> mExpiry;   // only with --result-ttl
     std::unique_ptr<LiveSessions> mLiveSessions;
     std::unique_ptr<DownloadLinks> mDownloadLinks;

@@ -2,12 +2,11 @@
 
 namespace tlmhub::server {
 
-bool canRead(const User& who, std::int64_t ownerId, const std::string& ownerRole, bool isExample)
+bool canRead(const User& who, std::int64_t ownerId, bool isExample)
 {
     if (who.role == kRoleAdmin) return true;
     if (who.id == ownerId) return true;
-    if (isExample) return true;
-    return who.role == kRoleTeacher && ownerRole == kRoleUser;
+    return isExample;
 }
 
 bool canWrite(const User& who, std::int64_t ownerId, bool isExample)

@@ -4,7 +4,8 @@
 //   admin:   everything
 //   owner:   own objects
 //   example: readable by everyone, changed by admin only
-//   teacher: may also read (not change) objects owned by role "user" (lab supervision)
+//   lab supervision (a teacher or assistant reading students' copies and their runs) is
+//   decided by class membership: server/labs/LabAccess
 //   jobs:    cancelled, stopped and deleted by their owner or an admin; re-run by the owner
 //   accounts and server stats: admin only
 //   the last enabled admin account may be neither demoted nor disabled
@@ -15,7 +16,7 @@
 
 namespace tlmhub::server {
 
-bool canRead(const User& who, std::int64_t ownerId, const std::string& ownerRole, bool isExample);
+bool canRead(const User& who, std::int64_t ownerId, bool isExample);
 bool canWrite(const User& who, std::int64_t ownerId, bool isExample);
 bool canControlJob(const User& who, std::int64_t ownerId);
 bool canRerunJob(const User& who, std::int64_t ownerId);

@@ -1508,4 +1508,180 @@ void to_json(nlohmann::json& j, const StudyProgressEvent& v)
     if (v.error) j["error"] = *v.error;
 }
 
+void from_json(const nlohmann::json& j, ClassCreate& v)
+{
+    j.at("name").get_to(v.name);
+}
+
+void to_json(nlohmann::json& j, const ClassCreate& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+}
+
+void from_json(const nlohmann::json& j, ClassUpdate& v)
+{
+    if (const auto x = j.find("name"); x != j.end()) v.name = x->get<std::string>();
+    if (const auto x = j.find("archived"); x != j.end()) v.archived = x->get<bool>();
+}
+
+void to_json(nlohmann::json& j, const ClassUpdate& v)
+{
+    j = nlohmann::json::object();
+    if (v.name) j["name"] = *v.name;
+    if (v.archived) j["archived"] = *v.archived;
+}
+
+void from_json(const nlohmann::json& j, ClassJoin& v)
+{
+    j.at("code").get_to(v.code);
+}
+
+void to_json(nlohmann::json& j, const ClassJoin& v)
+{
+    j = nlohmann::json::object();
+    j["code"] = v.code;
+}
+
+void from_json(const nlohmann::json& j, MemberUpdate& v)
+{
+    j.at("role").get_to(v.role);
+}
+
+void to_json(nlohmann::json& j, const MemberUpdate& v)
+{
+    j = nlohmann::json::object();
+    j["role"] = v.role;
+}
+
+void from_json(const nlohmann::json& j, AssignmentCreate& v)
+{
+    j.at("title").get_to(v.title);
+    if (const auto x = j.find("instructions"); x != j.end()) v.instructions = x->get<std::string>();
+    j.at("template_model_id").get_to(v.templateModelId);
+    if (const auto x = j.find("solution_model_id"); x != j.end()) v.solutionModelId = x->get<std::int64_t>();
+    if (const auto x = j.find("opens_at"); x != j.end()) v.opensAt = x->get<std::int64_t>();
+    if (const auto x = j.find("due_at"); x != j.end()) v.dueAt = x->get<std::int64_t>();
+    if (const auto x = j.find("edit_mode"); x != j.end()) v.editMode = x->get<nlohmann::json>();
+    if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<std::vector<AssignmentCreateParametersItem>>();
+}
+
+void to_json(nlohmann::json& j, const AssignmentCreate& v)
+{
+    j = nlohmann::json::object();
+    j["title"] = v.title;
+    if (v.instructions) j["instructions"] = *v.instructions;
+    j["template_model_id"] = v.templateModelId;
+    if (v.solutionModelId) j["solution_model_id"] = *v.solutionModelId;
+    if (v.opensAt) j["opens_at"] = *v.opensAt;
+    if (v.dueAt) j["due_at"] = *v.dueAt;
+    if (v.editMode) j["edit_mode"] = *v.editMode;
+    if (v.parameters) j["parameters"] = *v.parameters;
+}
+
+void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v)
+{
+    j.at("name").get_to(v.name);
+    if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
+    if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
+}
+
+void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    if (v.min) j["min"] = *v.min;
+    if (v.max) j["max"] = *v.max;
+}
+
+void from_json(const nlohmann::json& j, AssignmentUpdate& v)
+{
+    if (const auto x = j.find("title"); x != j.end()) v.title = x->get<std::string>();
+    if (const auto x = j.find("instructions"); x != j.end()) v.instructions = x->get<std::string>();
+    if (const auto x = j.find("template_model_id"); x != j.end()) v.templateModelId = x->get<std::int64_t>();
+    if (const auto x = j.find("solution_model_id"); x != j.end()) v.solutionModelId = x->get<std::int64_t>();
+    if (const auto x = j.find("opens_at"); x != j.end()) v.opensAt = x->get<std::int64_t>();
+    if (const auto x = j.find("due_at"); x != j.end()) v.dueAt = x->get<std::int64_t>();
+    if (const auto x = j.find("edit_mode"); x != j.end()) v.editMode = x->get<nlohmann::json>();
+    if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<std::vector<AssignmentUpdateParametersItem>>();
+}
+
+void to_json(nlohmann::json& j, const AssignmentUpdate& v)
+{
+    j = nlohmann::json::object();
+    if (v.title) j["title"] = *v.title;
+    if (v.instructions) j["instructions"] = *v.instructions;
+    if (v.templateModelId) j["template_model_id"] = *v.templateModelId;
+    if (v.solutionModelId) j["solution_model_id"] = *v.solutionModelId;
+    if (v.opensAt) j["opens_at"] = *v.opensAt;
+    if (v.dueAt) j["due_at"] = *v.dueAt;
+    if (v.editMode) j["edit_mode"] = *v.editMode;
+    if (v.parameters) j["parameters"] = *v.parameters;
+}
+
+void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v)
+{
+    j.at("name").get_to(v.name);
+    if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
+    if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
+}
+
+void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    if (v.min) j["min"] = *v.min;
+    if (v.max) j["max"] = *v.max;
+}
+
+void from_json(const nlohmann::json& j, ChecksUpdate& v)
+{
+    j.at("checks").get_to(v.checks);
+}
+
+void to_json(nlohmann::json& j, const ChecksUpdate& v)
+{
+    j = nlohmann::json::object();
+    j["checks"] = v.checks;
+}
+
+void from_json(const nlohmann::json& j, ChecksUpdateChecksItem& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("points").get_to(v.points);
+    if (const auto x = j.find("pretest"); x != j.end()) v.pretest = x->get<bool>();
+    j.at("definition").get_to(v.definition);
+}
+
+void to_json(nlohmann::json& j, const ChecksUpdateChecksItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["points"] = v.points;
+    if (v.pretest) j["pretest"] = *v.pretest;
+    j["definition"] = v.definition;
+}
+
+void from_json(const nlohmann::json& j, CommentCreate& v)
+{
+    j.at("text").get_to(v.text);
+}
+
+void to_json(nlohmann::json& j, const CommentCreate& v)
+{
+    j = nlohmann::json::object();
+    j["text"] = v.text;
+}
+
+void from_json(const nlohmann::json& j, GradeUpdate& v)
+{
+    if (const nlohmann::json& x = j.at("grade"); !x.is_null()) v.grade = x.get<double>();
+}
+
+void to_json(nlohmann::json& j, const GradeUpdate& v)
+{
+    j = nlohmann::json::object();
+    j["grade"] = v.grade ? nlohmann::json(*v.grade) : nlohmann::json(nullptr);
+}
+
 } // namespace tlmhub::server::protocol

@@ -12,11 +12,21 @@
 
 namespace tlmhub::server::protocol {
 
+struct AssignmentCreate;
+struct AssignmentCreateParametersItem;
+struct AssignmentUpdate;
+struct AssignmentUpdateParametersItem;
 struct BinaryFrameHeader;
 struct BinaryFrameHeaderVariablesItem;
 struct CatalogueEntry;
 struct CatalogueParameter;
 struct CataloguePort;
+struct ChecksUpdate;
+struct ChecksUpdateChecksItem;
+struct ClassCreate;
+struct ClassJoin;
+struct ClassUpdate;
+struct CommentCreate;
 struct Component;
 struct ComponentAddRequest;
 struct ComponentAddedData;
@@ -36,6 +46,7 @@ struct ErrorBody;
 struct ErrorDetail;
 struct ErrorReply;
 struct FrameEvent;
+struct GradeUpdate;
 struct HealthResponse;
 struct Hello;
 struct JobCreated;
@@ -45,6 +56,7 @@ struct JobSettings;
 struct LogSubscribeRequest;
 struct LoginRequest;
 struct LoginResponse;
+struct MemberUpdate;
 struct Model;
 struct ModelCreate;
 struct ModelCreateRequest;
@@ -993,16 +1005,129 @@ struct StudyProgressEvent {
 void from_json(const nlohmann::json& j, StudyProgressEvent& v);
 void to_json(nlohmann::json& j, const StudyProgressEvent& v);
 
+// A new class (server role teacher or admin).
+struct ClassCreate {
+    std::string name{};
+};
+void from_json(const nlohmann::json& j, ClassCreate& v);
+void to_json(nlohmann::json& j, const ClassCreate& v);
+
+// Rename or (un)archive a class.
+struct ClassUpdate {
+    std::optional<std::string> name;
+    std::optional<bool> archived;
+};
+void from_json(const nlohmann::json& j, ClassUpdate& v);
+void to_json(nlohmann::json& j, const ClassUpdate& v);
+
+// Join a class as a student with its code.
+struct ClassJoin {
+    std::string code{};
+};
+void from_json(const nlohmann::json& j, ClassJoin& v);
+void to_json(nlohmann::json& j, const ClassJoin& v);
+
+// A member's role in a class.
+struct MemberUpdate {
+    nlohmann::json role{};
+};
+void from_json(const nlohmann::json& j, MemberUpdate& v);
+void to_json(nlohmann::json& j, const MemberUpdate& v);
+
+// A new assignment of a class (docs/labs.md).
+struct AssignmentCreate {
+    std::string title{};
+    std::optional<std::string> instructions;
+    std::int64_t templateModelId{};
+    std::optional<std::int64_t> solutionModelId;
+    std::optional<std::int64_t> opensAt;
+    std::optional<std::int64_t> dueAt;
+    std::optional<nlohmann::json> editMode;
+    std::optional<std::vector<AssignmentCreateParametersItem>> parameters;
+};
+void from_json(const nlohmann::json& j, AssignmentCreate& v);
+void to_json(nlohmann::json& j, const AssignmentCreate& v);
+
+struct AssignmentCreateParametersItem {
+    std::string name{};
+    std::optional<double> min;
+    std::optional<double> max;
+};
+void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v);
+void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v);
+
+// Changed fields of an assignment; a template_model_id publishes a new template version.
+struct AssignmentUpdate {
+    std::optional<std::string> title;
+    std::optional<std::string> instructions;
+    std::optional<std::int64_t> templateModelId;
+    std::optional<std::int64_t> solutionModelId;
+    std::optional<std::int64_t> opensAt;
+    std::optional<std::int64_t> dueAt;
+    std::optional<nlohmann::json> editMode;
+    std::optional<std::vector<AssignmentUpdateParametersItem>> parameters;
+};
+void from_json(const nlohmann::json& j, AssignmentUpdate& v);
+void to_json(nlohmann::json& j, const AssignmentUpdate& v);
+
+struct AssignmentUpdateParametersItem {
+    std::string name{};
+    std::optional<double> min;
+    std::optional<double> max;
+};
+void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v);
+void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v);
+
+// An assignment's checks, replacing the earlier ones (docs/labs.md).
+struct ChecksUpdate {
+    std::vector<ChecksUpdateChecksItem> checks;
+};
+void from_json(const nlohmann::json& j, ChecksUpdate& v);
+void to_json(nlohmann::json& j, const ChecksUpdate& v);
+
+struct ChecksUpdateChecksItem {
+    std::string name{};
+    double points{};
+    std::optional<bool> pretest;
+    nlohmann::json definition{};
+};
+void from_json(const nlohmann::json& j, ChecksUpdateChecksItem& v);
+void to_json(nlohmann::json& j, const ChecksUpdateChecksItem& v);
+
+// A comment on a hand-in.
+struct CommentCreate {
+    std::string text{};
+};
+void from_json(const nlohmann::json& j, CommentCreate& v);
+void to_json(nlohmann::json& j, const CommentCreate& v);
+
+// The teacher's grade of a hand-in; null clears it.
+struct GradeUpdate {
+    std::optional<double> grade;
+};
+void from_json(const nlohmann::json& j, GradeUpdate& v);
+void to_json(nlohmann::json& j, const GradeUpdate& v);
+
 // Calls visit.template operator()<T>("Name") for every struct, e.g. for a test that
 // round-trips examples through them all.
 template <typename Visitor>
 void visitDefinitions(Visitor&& visit)
 {
+    visit.template operator()<AssignmentCreate>("AssignmentCreate");
+    visit.template operator()<AssignmentCreateParametersItem>("AssignmentCreateParametersItem");
+    visit.template operator()<AssignmentUpdate>("AssignmentUpdate");
+    visit.template operator()<AssignmentUpdateParametersItem>("AssignmentUpdateParametersItem");
     visit.template operator()<BinaryFrameHeader>("BinaryFrameHeader");
     visit.template operator()<BinaryFrameHeaderVariablesItem>("BinaryFrameHeaderVariablesItem");
     visit.template operator()<CatalogueEntry>("CatalogueEntry");
     visit.template operator()<CatalogueParameter>("CatalogueParameter");
     visit.template operator()<CataloguePort>("CataloguePort");
+    visit.template operator()<ChecksUpdate>("ChecksUpdate");
+    visit.template operator()<ChecksUpdateChecksItem>("ChecksUpdateChecksItem");
+    visit.template operator()<ClassCreate>("ClassCreate");
+    visit.template operator()<ClassJoin>("ClassJoin");
+    visit.template operator()<ClassUpdate>("ClassUpdate");
+    visit.template operator()<CommentCreate>("CommentCreate");
     visit.template operator()<Component>("Component");
     visit.template operator()<ComponentAddRequest>("ComponentAddRequest");
     visit.template operator()<ComponentAddedData>("ComponentAddedData");
@@ -1022,6 +1147,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ErrorDetail>("ErrorDetail");
     visit.template operator()<ErrorReply>("ErrorReply");
     visit.template operator()<FrameEvent>("FrameEvent");
+    visit.template operator()<GradeUpdate>("GradeUpdate");
     visit.template operator()<HealthResponse>("HealthResponse");
     visit.template operator()<Hello>("Hello");
     visit.template operator()<JobCreated>("JobCreated");
@@ -1031,6 +1157,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");
     visit.template operator()<LoginResponse>("LoginResponse");
+    visit.template operator()<MemberUpdate>("MemberUpdate");
     visit.template operator()<Model>("Model");
     visit.template operator()<ModelCreate>("ModelCreate");
     visit.template operator()<ModelCreateRequest>("ModelCreateRequest");

@@ -8,7 +8,7 @@ std::vector<ModelSummary> ModelStore::listVisibleTo(const User& who)
 {
     std::vector<ModelSummary> visible;
     for (ModelSummary& s : list())
-        if (canRead(who, s.ownerId, s.ownerRole, s.isExample)) visible.push_back(std::move(s));
+        if (canRead(who, s.ownerId, s.isExample)) visible.push_back(std::move(s));
     return visible;
 }
 

@@ -1,13 +1,15 @@
 #pragma once
 // The server's storage: one object per back end that hands out the stores of every aggregate
-// (users, sessions, models, jobs, results, meta facts, API tokens, studies). Opening it
-// applies the schema migrations the database lacks, so every store finds the current schema.
+// (users, sessions, models, jobs, results, meta facts, API tokens, studies, teaching labs).
+// Opening it applies the schema migrations the database lacks, so every store finds the
+// current schema.
 // No SQLite or PostgreSQL type appears in this header or in any store interface; the back
 // ends live in server/store/sqlite/ and server/store/postgres/.
 //
 // Every store method may be called from any thread at the same time.
 #include "server/store/ApiTokenStore.h"
 #include "server/store/JobStore.h"
+#include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
@@ -50,6 +52,7 @@ public:
     virtual MetaStore& meta() = 0;
     virtual ApiTokenStore& apiTokens() = 0;
     virtual StudyStore& studies() = 0;
+    virtual LabStore& labs() = 0;
 
     // The schema version the database is at (the newest migration applied).
     virtual int schemaVersion() = 0;
@@ -63,7 +66,7 @@ public:
 
 // The newest schema version this build knows. Both back ends keep their migrations in an
 // array of this size, so a migration added to one and not the other does not compile.
-inline constexpr int kSchemaVersion = 3;
+inline constexpr int kSchemaVersion = 4;
 
 // Opens the back end `config.database` names and migrates its schema. Throws StoreError
 // (Unavailable when it cannot be reached or opened, Corrupt when its schema is newer than

@@ -52,6 +52,7 @@ class HttpClient {
 public:
     explicit HttpClient(unsigned short port) : mPort(port) {}
     void setToken(std::string token) { mToken = std::move(token); }
+    const std::string& token() const { return mToken; }
     HttpReply request(boost::beast::http::verb method, const std::string& target,
                       const std::string& body = {}, const std::string& contentType = "application/json");
     HttpReply get(const std::string& target) { return request(boost::beast::http::verb::get, target); }

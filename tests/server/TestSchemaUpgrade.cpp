@@ -182,9 +182,25 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         const auto study = storage->studies().create(2, 2, "sweep", "pump size", "{}", 4);
         ASSERT_TRUE(study);
         EXPECT_EQ(storage->studies().info(*study)->modelId, std::optional<std::int64_t>(2));
+
+        // Version 4's too: bob's class, with carol in it and a copy of hers.
+        const auto lab = storage->labs().createClass(2, "Hydraulics", "ABCDEFGHJKLM");
+        ASSERT_TRUE(lab);
+        ASSERT_TRUE(storage->labs().setMember(*lab, 3, kClassStudent));
+        AssignmentInfo assignment;
+        assignment.classId = *lab;
+        assignment.title = "Pressure build-up";
+        assignment.editMode = "free";
+        assignment.parameters = "[]";
+        const auto assignmentId = storage->labs().createAssignment(assignment, "<template/>", "");
+        ASSERT_TRUE(assignmentId);
+        const auto carolsCopy = storage->models().create(3, "Pressure build-up", "<template/>", false);
+        ASSERT_TRUE(carolsCopy);
+        ASSERT_TRUE(storage->labs().createCopy(StudentCopy{*assignmentId, 3, *carolsCopy, 1, 0}));
+        EXPECT_TRUE(storage->labs().supervisesCopy(2, *carolsCopy));
     }
 
-    // The migrations are recorded, version 2's and 3's indexes exist, and opening again
+    // The migrations are recorded, version 2's, 3's and 4's indexes exist, and opening again
     // applies nothing more.
     const auto applied = migrationsOf(file);
     ASSERT_EQ(applied.size(), static_cast<std::size_t>(kSchemaVersion));
@@ -196,11 +212,12 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         EXPECT_EQ(indexes.count("sessions_expiry"), 1u);
         EXPECT_EQ(indexesOf(raw, "api_tokens").count("api_tokens_user"), 1u);
         EXPECT_EQ(indexesOf(raw, "studies").count("studies_owner"), 1u);
+        EXPECT_EQ(indexesOf(raw, "class_members").count("class_members_user"), 1u);
     }
     {
         const auto again = openStorage({.database = file.string()});
         EXPECT_EQ(again->schemaVersion(), kSchemaVersion);
-        EXPECT_EQ(again->models().list().size(), 2u);
+        EXPECT_EQ(again->models().list().size(), 3u);   // the fixture's two and carol's copy
     }
     EXPECT_EQ(migrationsOf(file), applied);
     fs::remove_all(file.parent_path());

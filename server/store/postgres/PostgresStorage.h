@@ -23,6 +23,7 @@ public:
     MetaStore& meta() override { return mMeta; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
+    LabStore& labs() override { return mLabs; }
     int schemaVersion() override;
     std::string describe() const override;
     // Always throws: a PostgreSQL database is backed up with pg_dump.
@@ -38,6 +39,7 @@ private:
     PostgresMetaStore mMeta{mDb};
     PostgresApiTokenStore mApiTokens{mDb};
     PostgresStudyStore mStudies{mDb};
+    PostgresLabStore mLabs{mDb};
 };
 
 std::unique_ptr<Storage> openPostgresStorage(const StorageConfig& config);

@@ -3,6 +3,7 @@
 // .cpp), all on one PostgresDatabase.
 #include "server/store/ApiTokenStore.h"
 #include "server/store/JobStore.h"
+#include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
@@ -136,6 +137,53 @@ public:
     std::optional<std::string> runResult(std::int64_t studyId, std::int64_t index) override;
     std::size_t storedBytes(std::int64_t ownerId) override;
     bool remove(std::int64_t id) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresLabStore final : public LabStore {
+public:
+    explicit PostgresLabStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<std::int64_t> createClass(std::int64_t ownerId, const std::string& name,
+                                            const std::string& joinCode) override;
+    std::optional<ClassInfo> classInfo(std::int64_t id) override;
+    std::optional<ClassInfo> classByJoinCode(const std::string& code) override;
+    std::vector<ClassInfo> listClasses() override;
+    std::vector<Membership> classesOf(std::int64_t userId) override;
+    bool setArchived(std::int64_t classId, bool archived) override;
+    bool renameClass(std::int64_t classId, const std::string& name) override;
+    bool removeClass(std::int64_t classId) override;
+    bool setMember(std::int64_t classId, std::int64_t userId, const std::string& role) override;
+    bool removeMember(std::int64_t classId, std::int64_t userId) override;
+    std::optional<std::string> memberRole(std::int64_t classId, std::int64_t userId) override;
+    std::vector<ClassMember> members(std::int64_t classId) override;
+    bool supervisesCopy(std::int64_t staffId, std::int64_t modelId) override;
+    std::optional<std::int64_t> createAssignment(const AssignmentInfo& info, const std::string& templateHmf,
+                                                 const std::string& solutionHmf) override;
+    std::optional<AssignmentInfo> assignment(std::int64_t id) override;
+    std::vector<AssignmentInfo> assignmentsOf(std::int64_t classId) override;
+    bool updateAssignment(const AssignmentInfo& info) override;
+    std::optional<std::int64_t> setTemplate(std::int64_t id, const std::string& hmf) override;
+    std::optional<std::string> templateHmf(std::int64_t id) override;
+    bool setSolution(std::int64_t id, const std::string& hmf, const std::string& referenceBlob) override;
+    std::optional<std::string> solutionHmf(std::int64_t id) override;
+    std::optional<std::string> referenceResult(std::int64_t id) override;
+    bool removeAssignment(std::int64_t id) override;
+    bool replaceChecks(std::int64_t assignmentId, const std::vector<AssignmentCheck>& checks) override;
+    std::vector<AssignmentCheck> checks(std::int64_t assignmentId) override;
+    bool createCopy(const StudentCopy& copy) override;
+    std::optional<StudentCopy> copy(std::int64_t assignmentId, std::int64_t studentId) override;
+    std::optional<StudentCopy> copyByModel(std::int64_t modelId) override;
+    std::vector<StudentCopy> copies(std::int64_t assignmentId) override;
+    bool setCopyTemplateVersion(std::int64_t assignmentId, std::int64_t studentId, std::int64_t version) override;
+    std::optional<HandIn> addHandIn(const HandIn& handIn) override;
+    std::optional<HandIn> handIn(std::int64_t id) override;
+    std::vector<HandIn> handIns(std::int64_t assignmentId, std::optional<std::int64_t> studentId) override;
+    bool setGrade(std::int64_t handInId, std::optional<double> grade, std::int64_t gradedBy) override;
+    std::optional<std::int64_t> addComment(std::int64_t handInId, std::int64_t authorId,
+                                           const std::string& text) override;
+    std::vector<HandInComment> comments(std::int64_t handInId) override;
 
 private:
     PostgresDatabase& mDb;

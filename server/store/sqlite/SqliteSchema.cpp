@@ -119,8 +119,91 @@ void createTokensAndStudies(SQLite::Database& db)
             " PRIMARY KEY (study_id, run_index))");
 }
 
+// Version 4: teaching labs (server/store/LabStore.h). A class goes with everything in it; a
+// user with their memberships, copies' links, hand-ins and comments (a class they own stays,
+// ownerless, with its other teachers); a copy's model with the copy's link (the hand-ins keep
+// their own frozen text). A hand-in's job is not a foreign key: jobs are cleaned up on their own.
+void createLabs(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE classes ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " name TEXT NOT NULL,"
+            " owner_id INTEGER REFERENCES users(id) ON DELETE SET NULL,"
+            " join_code TEXT UNIQUE NOT NULL,"
+            " archived INTEGER NOT NULL DEFAULT 0,"
+            " created_at INTEGER NOT NULL)");
+    db.exec("CREATE INDEX classes_owner ON classes(owner_id)");
+    db.exec("CREATE TABLE class_members ("
+            " class_id INTEGER NOT NULL REFERENCES classes(id) ON DELETE CASCADE,"
+            " user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " role TEXT NOT NULL CHECK(role IN ('teacher','assistant','student')),"
+            " joined_at INTEGER NOT NULL,"
+            " PRIMARY KEY (class_id, user_id))");
+    db.exec("CREATE INDEX class_members_user ON class_members(user_id)");
+    db.exec("CREATE TABLE assignments ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " class_id INTEGER NOT NULL REFERENCES classes(id) ON DELETE CASCADE,"
+            " title TEXT NOT NULL,"
+            " instructions TEXT NOT NULL,"
+            " edit_mode TEXT NOT NULL,"
+            " parameters TEXT NOT NULL,"
+            " opens_at INTEGER NOT NULL,"
+            " due_at INTEGER NOT NULL DEFAULT 0,"
+            " template_hmf TEXT NOT NULL,"
+            " template_version INTEGER NOT NULL DEFAULT 1,"
+            " solution_hmf TEXT,"
+            " reference_result BLOB,"
+            " has_solution INTEGER NOT NULL DEFAULT 0,"
+            " created_at INTEGER NOT NULL,"
+            " updated_at INTEGER NOT NULL)");
+    db.exec("CREATE INDEX assignments_class ON assignments(class_id, opens_at)");
+    db.exec("CREATE TABLE assignment_checks ("
+            " assignment_id INTEGER NOT NULL REFERENCES assignments(id) ON DELETE CASCADE,"
+            " position INTEGER NOT NULL,"
+            " name TEXT NOT NULL,"
+            " pretest INTEGER NOT NULL,"
+            " points REAL NOT NULL,"
+            " definition TEXT NOT NULL,"
+            " PRIMARY KEY (assignment_id, position))");
+    db.exec("CREATE TABLE student_copies ("
+            " assignment_id INTEGER NOT NULL REFERENCES assignments(id) ON DELETE CASCADE,"
+            " student_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " model_id INTEGER UNIQUE NOT NULL REFERENCES models(id) ON DELETE CASCADE,"
+            " template_version INTEGER NOT NULL,"
+            " created_at INTEGER NOT NULL,"
+            " PRIMARY KEY (assignment_id, student_id))");
+    db.exec("CREATE INDEX student_copies_student ON student_copies(student_id)");
+    db.exec("CREATE TABLE handins ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " assignment_id INTEGER NOT NULL REFERENCES assignments(id) ON DELETE CASCADE,"
+            " student_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " attempt INTEGER NOT NULL,"
+            " hmf TEXT NOT NULL,"
+            " job_id INTEGER,"
+            " handed_in_at INTEGER NOT NULL,"
+            " late INTEGER NOT NULL,"
+            " score REAL NOT NULL,"
+            " max_score REAL NOT NULL,"
+            " check_results TEXT NOT NULL,"
+            " grade REAL,"
+            " graded_by INTEGER REFERENCES users(id) ON DELETE SET NULL,"
+            " UNIQUE (assignment_id, student_id, attempt))");
+    // The unique index finds an assignment's hand-ins and a student's; these serve deleting users.
+    db.exec("CREATE INDEX handins_student ON handins(student_id)");
+    db.exec("CREATE INDEX handins_graded_by ON handins(graded_by)");
+    db.exec("CREATE TABLE handin_comments ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " handin_id INTEGER NOT NULL REFERENCES handins(id) ON DELETE CASCADE,"
+            " author_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " text TEXT NOT NULL,"
+            " created_at INTEGER NOT NULL)");
+    db.exec("CREATE INDEX handin_comments_handin ON handin_comments(handin_id)");
+    db.exec("CREATE INDEX handin_comments_author ON handin_comments(author_id)");
+}
+
 using Migration = void (*)(SQLite::Database&);
-constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies};
+constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
+                                                             createLabs};
 
 } // namespace
 

@@ -21,6 +21,7 @@ public:
     MetaStore& meta() override { return mMeta; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
+    LabStore& labs() override { return mLabs; }
     int schemaVersion() override;
     std::string describe() const override;
     void backup(const std::filesystem::path& file) override;
@@ -35,6 +36,7 @@ private:
     SqliteMetaStore mMeta{mDb};
     SqliteApiTokenStore mApiTokens{mDb};
     SqliteStudyStore mStudies{mDb};
+    SqliteLabStore mLabs{mDb};
 };
 
 // Replaces the database at `databasePath` with the snapshot `backupFile` (written by

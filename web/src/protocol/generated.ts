@@ -35,6 +35,10 @@ export type ErrorCode =
     | 'limit_exceeded'
     | 'not_open'
     | 'simulation_failed'
+    | 'locked'
+    | 'archived'
+    | 'deadline_passed'
+    | 'assignment_copy'
     | 'storage_full'
     | 'busy'
     | 'internal';
@@ -204,6 +208,15 @@ export interface ProtocolDefinitions {
     StudySubscribeRequest?: StudySubscribeRequest;
     StudyUnsubscribeRequest?: StudyUnsubscribeRequest;
     StudyProgressEvent?: StudyProgressEvent;
+    ClassCreate?: ClassCreate;
+    ClassUpdate?: ClassUpdate;
+    ClassJoin?: ClassJoin;
+    MemberUpdate?: MemberUpdate;
+    AssignmentCreate?: AssignmentCreate;
+    AssignmentUpdate?: AssignmentUpdate;
+    ChecksUpdate?: ChecksUpdate;
+    CommentCreate?: CommentCreate;
+    GradeUpdate?: GradeUpdate;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -1025,4 +1038,113 @@ export interface StudyInfo {
 }
 export interface StudyList {
     studies: StudyInfo[];
+}
+/**
+ * A new class (server role teacher or admin).
+ */
+export interface ClassCreate {
+    name: string;
+}
+/**
+ * Rename or (un)archive a class.
+ */
+export interface ClassUpdate {
+    name?: string;
+    archived?: boolean;
+}
+/**
+ * Join a class as a student with its code.
+ */
+export interface ClassJoin {
+    code: string;
+}
+/**
+ * A member's role in a class.
+ */
+export interface MemberUpdate {
+    role: 'teacher' | 'assistant' | 'student';
+}
+/**
+ * A new assignment of a class (docs/labs.md).
+ */
+export interface AssignmentCreate {
+    title: string;
+    /**
+     * Markdown; rendered without raw HTML
+     */
+    instructions?: string;
+    template_model_id: number;
+    solution_model_id?: number;
+    /**
+     * unix s; default now
+     */
+    opens_at?: number;
+    /**
+     * unix s; 0 = no deadline
+     */
+    due_at?: number;
+    edit_mode?: 'free' | 'parameters';
+    /**
+     * @maxItems 100
+     */
+    parameters?: {
+        name: string;
+        min?: number;
+        max?: number;
+    }[];
+}
+/**
+ * Changed fields of an assignment; a template_model_id publishes a new template version.
+ */
+export interface AssignmentUpdate {
+    title?: string;
+    /**
+     * Markdown; rendered without raw HTML
+     */
+    instructions?: string;
+    template_model_id?: number;
+    solution_model_id?: number;
+    /**
+     * unix s; default now
+     */
+    opens_at?: number;
+    /**
+     * unix s; 0 = no deadline
+     */
+    due_at?: number;
+    edit_mode?: 'free' | 'parameters';
+    /**
+     * @maxItems 100
+     */
+    parameters?: {
+        name: string;
+        min?: number;
+        max?: number;
+    }[];
+}
+/**
+ * An assignment's checks, replacing the earlier ones (docs/labs.md).
+ */
+export interface ChecksUpdate {
+    /**
+     * @maxItems 100
+     */
+    checks: {
+        name: string;
+        points: number;
+        pretest?: boolean;
+        definition: {};
+    }[];
+}
+/**
+ * A comment on a hand-in.
+ */
+export interface CommentCreate {
+    text: string;
+}
+/**
+ * The teacher's grade of a hand-in; null clears it.
+ */
+export interface GradeUpdate {
+    grade: number | null;
 }

@@ -1,0 +1,21 @@
+#include "server/api/ApiSupport.h"
+
+namespace tlmhub::server {
+
+std::vector<RouteSpec> apiRoutes()
+{
+    std::vector<RouteSpec> routes;
+    addCatalogueRoutes(routes);
+    addAuthRoutes(routes);
+    addUserRoutes(routes);
+    addModelRoutes(routes);
+    addJobRoutes(routes);
+    addStudyRoutes(routes);
+    addTokenRoutes(routes);
+    addClassRoutes(routes);
+    addAssignmentRoutes(routes);
+    addHandInRoutes(routes);
+    return routes;
+}
+
+} // namespace tlmhub::server
