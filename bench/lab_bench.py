@@ -635,6 +635,13 @@ def vm_hwm_kib(pid):
     return None
 
 
+def machine_busy_seconds():
+    """CPU seconds all cores of the machine have been busy (not idle, not waiting for I/O)."""
+    with open("/proc/stat") as f:
+        fields = [int(x) for x in f.readline().split()[1:]]
+    return (sum(fields[:8]) - fields[3] - fields[4]) / CLK_TCK  # up to steal; less idle, iowait
+
+
 def assignment_main(a):
     n, r = a.students, a.runs
     postgres = Postgres() if a.postgres else None
@@ -684,12 +691,14 @@ def assignment_main(a):
         for t in threads:
             t.start()
         profiler = start_profiler(a.perf, server.proc.pid) if a.perf else None
-        cpu0, client0, wall0 = server.cpu_seconds(), os.times(), time.perf_counter()
+        load0 = os.getloadavg()[0]
+        cpu0, client0, wall0, busy0 = server.cpu_seconds(), os.times(), time.perf_counter(), machine_busy_seconds()
         go.wait()
         for t in threads:
             t.join(max(0.0, deadline - time.monotonic()) + 5)
         wall = time.perf_counter() - wall0
-        cpu1, client1 = server.cpu_seconds(), os.times()
+        cpu1, client1, busy1 = server.cpu_seconds(), os.times(), machine_busy_seconds()
+        load1 = os.getloadavg()[0]
         if profiler:
             profiler.send_signal(signal.SIGINT)
             profiler.wait()
@@ -804,6 +813,9 @@ def assignment_main(a):
         ("server peak RSS (VmHWM)", f"{peak_rss / 1024:.1f} MiB" if peak_rss else "-"),
         ("server CPU", f"{lab_cpu:.2f} s in the lab ({total_cpu:.2f} s since start)"),
         ("client CPU (this script)", f"{client_cpu:.2f} s"),
+        ("machine CPU busy in the lab", f"{busy1 - busy0:.2f} s of {wall * (os.cpu_count() or 1):.2f} s "
+                                        f"({os.cpu_count()} cores; others: {max(0.0, busy1 - busy0 - lab_cpu - client_cpu):.2f} s); "
+                                        f"load average {load0:.2f} -> {load1:.2f}"),
         ("lab wall time", f"{wall:.2f} s  (setup before it, not timed in the lab: {setup:.2f} s)"),
     ]
     width = max(len(k) for k, _ in rows)
@@ -833,7 +845,8 @@ def assignment_main(a):
             "pretest_p50": p(pretests, 50), "pretest_p99": p(pretests, 99),
             "handin_p50": p(handins, 50), "handin_p99": p(handins, 99), "retries_503": retries,
             "peak_rss_kib": peak_rss, "server_cpu": lab_cpu, "server_cpu_total": total_cpu,
-            "client_cpu": client_cpu, "wall": wall, "timed_out": timed_out, "missing": missing,
+            "client_cpu": client_cpu, "machine_busy": busy1 - busy0, "load": [load0, load1], "wall": wall,
+            "timed_out": timed_out, "missing": missing,
             "stopped": {where: len(who) for where, who in stopped.items()},
         }
         with open(a.json, "a") as f:
