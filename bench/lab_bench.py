@@ -467,14 +467,15 @@ def http_call(port, method, path, token=None, body=None, timeout=60.0):
 
 class Step:
     """A timed call: seconds, status (HTTP status or 'ok' / 'error' / 'timeout') and detail."""
-    __slots__ = ("seconds", "status", "detail", "retries")
+    __slots__ = ("start", "seconds", "status", "detail", "retries")
 
     def __init__(self):
-        self.seconds, self.status, self.detail, self.retries = None, None, "", 0
+        self.start = self.seconds = None  # start: time.perf_counter() when sent
+        self.status, self.detail, self.retries = None, "", 0
 
 
 class Round:
-    __slots__ = ("index", "value", "set", "save", "job_id", "state", "error", "t_first", "t_done", "frames",
+    __slots__ = ("index", "value", "set", "save", "job_id", "state", "error", "sent", "t_first", "t_done", "frames",
                  "samples", "pretest", "pretest_score", "handin", "handin_id", "attempt", "score", "max_score")
 
     def __init__(self, index, value):
@@ -482,7 +483,7 @@ class Round:
         self.set, self.save, self.pretest, self.handin = Step(), Step(), Step(), Step()
         self.job_id = self.state = None
         self.error = ""
-        self.t_first = self.t_done = None
+        self.sent = self.t_first = self.t_done = None
         self.frames = self.samples = 0
         self.pretest_score = self.handin_id = self.attempt = self.score = self.max_score = None
 
@@ -508,7 +509,7 @@ def student_assignment(s, port, code, assignment_id, rate, frames, go, deadline)
         return left
 
     def timed_rest(step, method, path, body=None, expect=(200,)):
-        t = time.perf_counter()
+        step.start = t = time.perf_counter()
         status, data, retries = http_call(port, method, path, s.token, body, timeout=remaining())
         step.seconds, step.status, step.retries = time.perf_counter() - t, status, retries
         if status not in expect:
@@ -574,7 +575,7 @@ def student_assignment(s, port, code, assignment_id, rate, frames, go, deadline)
             if frames != "json":
                 request["frames"] = frames
             next_id[0] += 1
-            sent = time.perf_counter()
+            rd.sent = sent = time.perf_counter()
             ws.send(json.dumps(request))
             while True:
                 ws.settimeout(remaining())
@@ -793,6 +794,28 @@ def assignment_main(a):
     max_score = next((rd.max_score for rd in rounds if rd.max_score is not None), None)
     pre_scores = [rd.pretest_score for rd in rounds if rd.pretest_score is not None]
 
+    # Where the time goes: the first frames by how many check calls (pretests and hand-ins, run
+    # on the server's checks pool) and other runs were in flight when simulate.start was sent.
+    checks_busy = [(st.start, st.start + st.seconds) for rd in rounds for st in (rd.pretest, rd.handin)
+                   if st.start is not None and st.seconds is not None]
+    runs_busy = [(rd.sent, rd.sent + rd.t_done) for rd in runs_done]
+
+    def in_flight(intervals, at):
+        return sum(1 for b, e in intervals if b <= at < e)
+
+    def by_load(intervals, bounds, itself=0):
+        groups = {}
+        for rd in runs_done:
+            if rd.t_first is None:
+                continue
+            k = in_flight(intervals, rd.sent) - itself
+            key = next(f"{lo}+" if hi is None else f"{lo}-{hi}" if hi != lo else f"{lo}"
+                       for lo, hi in bounds if lo <= k and (hi is None or k <= hi))
+            groups.setdefault(key, []).append(rd.t_first)
+        return "; ".join(f"{key}: {percentile(v, 50) * 1000:.0f} / {percentile(v, 99) * 1000:.0f} ms (n={len(v)})"
+                         for key, v in sorted(groups.items(), key=lambda kv: int(kv[0].rstrip("+").split("-")[0])))
+    wide = [(0, 0), (1, 2), (3, 5), (6, 10), (11, 20), (21, None)]
+
     label = f" [{a.label}]" if a.label else ""
     print(f"lab bench, assignment{label}: {n} students x {r} rounds (parameter.set, model.save, run streaming "
           f"{POSITION} at {a.rate:g}/s {a.frames} frames, pretest, hand-in), server {a.server}")
@@ -807,6 +830,10 @@ def assignment_main(a):
         ("join; open p50 / p99 / max", f"{stat([s.join.seconds for s in students])};  {stat([s.open.seconds for s in students])}"),
         ("parameter.set; model.save", f"{stat([rd.set.seconds for rd in rounds])};  "
                                           f"{stat([rd.save.seconds for rd in rounds])}"),
+        ("first frame by round", "; ".join(
+            f"{k + 1}: {stat([rd.t_first for rd in runs_done if rd.index == k])}" for k in range(r))),
+        ("first frame by checks in flight", by_load(checks_busy, wide)),
+        ("first frame by other runs in flight", by_load(runs_busy, wide, itself=1)),
         ("503 retries", f"{retries}"),
         ("scores", f"pretest mean {sum(pre_scores) / max(1, len(pre_scores)):.2f}, hand-in mean "
                    f"{sum(scores) / max(1, len(scores)):.2f} of {max_score}"),
