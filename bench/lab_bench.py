@@ -475,7 +475,7 @@ class Step:
 
 
 class Round:
-    __slots__ = ("index", "value", "set", "save", "job_id", "state", "error", "sent", "t_first", "t_done", "frames",
+    __slots__ = ("index", "value", "set", "save", "job_id", "state", "error", "sent", "t_reply", "t_first", "t_done", "frames",
                  "samples", "pretest", "pretest_score", "handin", "handin_id", "attempt", "score", "max_score")
 
     def __init__(self, index, value):
@@ -483,7 +483,7 @@ class Round:
         self.set, self.save, self.pretest, self.handin = Step(), Step(), Step(), Step()
         self.job_id = self.state = None
         self.error = ""
-        self.sent = self.t_first = self.t_done = None
+        self.sent = self.t_reply = self.t_first = self.t_done = None
         self.frames = self.samples = 0
         self.pretest_score = self.handin_id = self.attempt = self.score = self.max_score = None
 
@@ -592,7 +592,7 @@ def student_assignment(s, port, code, assignment_id, rate, frames, go, deadline)
                         if kind != "reply" or not m.get("ok", False):
                             rd.state, rd.error = "error", json.dumps(m.get("error", m))[:200]
                             raise RuntimeError(f"simulate.start: {rd.error}")
-                        rd.job_id = m["data"]["job_id"]
+                        rd.job_id, rd.t_reply = m["data"]["job_id"], now - sent
                     continue
                 if m.get("job_id") != rd.job_id:
                     continue
@@ -830,6 +830,11 @@ def assignment_main(a):
         ("join; open p50 / p99 / max", f"{stat([s.join.seconds for s in students])};  {stat([s.open.seconds for s in students])}"),
         ("parameter.set; model.save", f"{stat([rd.set.seconds for rd in rounds])};  "
                                           f"{stat([rd.save.seconds for rd in rounds])}"),
+        ("simulate.start reply", stat([rd.t_reply for rd in runs_done])),
+        ("first frame after the reply", stat([rd.t_first - rd.t_reply for rd in runs_done
+                                              if rd.t_first is not None and rd.t_reply is not None])),
+        ("reply by round", "; ".join(
+            f"{k + 1}: {stat([rd.t_reply for rd in runs_done if rd.index == k])}" for k in range(r))),
         ("first frame by round", "; ".join(
             f"{k + 1}: {stat([rd.t_first for rd in runs_done if rd.index == k])}" for k in range(r))),
         ("first frame by checks in flight", by_load(checks_busy, wide)),
