@@ -732,6 +732,10 @@ def assignment_main(a):
         for hid, (si, ri) in posted.items():
             if hid not in listed:
                 missing.append(f"hand-in {hid} (student{si:03d} round {ri + 1}) answered 201 but is not listed")
+            elif listed[hid].get("job_id") != students[si].rounds[ri].job_id:
+                # A hand-in keeps the id of the copy's latest run: the run of the same round.
+                missing.append(f"hand-in {hid} (student{si:03d} round {ri + 1}): job_id {listed[hid].get('job_id')}, "
+                               f"the round ran job {students[si].rounds[ri].job_id}")
         for name, got in attempts.items():
             if sorted(x for x in got if x is not None) != list(range(1, r + 1)):
                 missing.append(f"{name}: attempts listed {sorted(got, key=lambda x: (x is None, x))}, "
