@@ -694,11 +694,13 @@ def assignment_main(a):
         profiler = start_profiler(a.perf, server.proc.pid) if a.perf else None
         load0 = os.getloadavg()[0]
         cpu0, client0, wall0, busy0 = server.cpu_seconds(), os.times(), time.perf_counter(), machine_busy_seconds()
+        pg0 = postgres.cpu_seconds() if postgres else 0.0
         go.wait()
         for t in threads:
             t.join(max(0.0, deadline - time.monotonic()) + 5)
         wall = time.perf_counter() - wall0
         cpu1, client1, busy1 = server.cpu_seconds(), os.times(), machine_busy_seconds()
+        database_cpu = postgres.cpu_seconds() - pg0 if postgres else 0.0
         load1 = os.getloadavg()[0]
         if profiler:
             profiler.send_signal(signal.SIGINT)
@@ -847,10 +849,11 @@ def assignment_main(a):
         ("scores", f"pretest mean {sum(pre_scores) / max(1, len(pre_scores)):.2f}, hand-in mean "
                    f"{sum(scores) / max(1, len(scores)):.2f} of {max_score}"),
         ("server peak RSS (VmHWM)", f"{peak_rss / 1024:.1f} MiB" if peak_rss else "-"),
-        ("server CPU", f"{lab_cpu:.2f} s in the lab ({total_cpu:.2f} s since start)"),
+        ("server CPU", f"{lab_cpu:.2f} s in the lab ({total_cpu:.2f} s since start)"
+                       + (f"; PostgreSQL's processes {database_cpu:.2f} s in the lab" if postgres else "")),
         ("client CPU (this script)", f"{client_cpu:.2f} s"),
         ("machine CPU busy in the lab", f"{busy1 - busy0:.2f} s of {wall * (os.cpu_count() or 1):.2f} s "
-                                        f"({os.cpu_count()} cores; others: {max(0.0, busy1 - busy0 - lab_cpu - client_cpu):.2f} s); "
+                                        f"({os.cpu_count()} cores; others: {max(0.0, busy1 - busy0 - lab_cpu - database_cpu - client_cpu):.2f} s); "
                                         f"load average {load0:.2f} -> {load1:.2f}"),
         ("lab wall time", f"{wall:.2f} s  (setup before it, not timed in the lab: {setup:.2f} s)"),
     ]
@@ -880,7 +883,7 @@ def assignment_main(a):
             "first_p50": p(first, 50), "first_p99": p(first, 99), "done_p50": p(dones, 50), "done_p99": p(dones, 99),
             "pretest_p50": p(pretests, 50), "pretest_p99": p(pretests, 99),
             "handin_p50": p(handins, 50), "handin_p99": p(handins, 99), "retries_503": retries,
-            "peak_rss_kib": peak_rss, "server_cpu": lab_cpu, "server_cpu_total": total_cpu,
+            "peak_rss_kib": peak_rss, "server_cpu": lab_cpu, "database_cpu": database_cpu, "server_cpu_total": total_cpu,
             "client_cpu": client_cpu, "machine_busy": busy1 - busy0, "load": [load0, load1], "wall": wall,
             "timed_out": timed_out, "missing": missing,
             "stopped": {where: len(who) for where, who in stopped.items()},
