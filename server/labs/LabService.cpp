@@ -60,6 +60,20 @@ std::string copyName(const std::string& title)
 
 nlohmann::json userRef(std::int64_t id, const std::string& name) { return {{"id", id}, {"username", name}}; }
 
+// The variables the checks (all, or the pretests) read, each once.
+std::vector<std::string> checkedVariables(const std::vector<AssignmentCheck>& checks, bool pretestsOnly)
+{
+    std::vector<std::string> variables;
+    for (const AssignmentCheck& check : checks) {
+        if (pretestsOnly && !check.pretest) continue;
+        const nlohmann::json definition = nlohmann::json::parse(check.definition, nullptr, false);
+        if (!definition.is_object() || !definition.contains("variable") || !definition["variable"].is_string()) continue;
+        const std::string name = definition["variable"].get<std::string>();
+        if (std::find(variables.begin(), variables.end(), name) == variables.end()) variables.push_back(name);
+    }
+    return variables;
+}
+
 } // namespace
 
 nlohmann::json Judgement::toJson() const
@@ -185,15 +199,22 @@ std::optional<Judgement> LabService::judge(const AssignmentInfo& assignment, con
                                            LabError& error)
 {
     const std::vector<AssignmentCheck> checks = mLabs.checks(assignment.id);
-    std::optional<ResultTable> run;
-    if (auto failed = runModel(hmf, mLimits, kCheckWallSeconds, [&](const ResultView& view) { run = ResultTable::fromView(view); })) {
+    // Only the variables the checks read are kept of the run and decoded of the reference: a
+    // class hands in at once, and the rest of a result would be copied for nothing.
+    const std::vector<std::string> variables = checkedVariables(checks, pretestsOnly);
+    ResultTable run;
+    if (auto failed = runModel(hmf, mLimits, kCheckWallSeconds, [&](const ResultView& view) {
+            run.time.assign(view.time().begin(), view.time().end());
+            for (const std::string& name : variables)
+                if (auto values = view.data(name)) run.columns.push_back({name, "", std::move(*values)});
+        })) {
         error = {failed->code, "the model does not run: " + failed->message};
         return std::nullopt;
     }
-    const auto blob = assignment.hasSolution ? mLabs.referenceResult(assignment.id) : std::nullopt;
-    const auto reference = blob ? decodeResult(*blob) : std::nullopt;
+    const auto blob = assignment.hasSolution && !variables.empty() ? mLabs.referenceResult(assignment.id) : std::nullopt;
+    const auto reference = blob ? decodeResult(*blob, variables) : std::nullopt;
     Judgement judgement;
-    judgement.outcomes = evaluateChecks(checks, *run, reference ? &*reference : nullptr, pretestsOnly);
+    judgement.outcomes = evaluateChecks(checks, run, reference ? &*reference : nullptr, pretestsOnly);
     for (const CheckOutcome& outcome : judgement.outcomes) {
         judgement.score += outcome.awarded;
         judgement.maxScore += outcome.points;

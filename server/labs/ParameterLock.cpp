@@ -23,10 +23,13 @@ std::optional<double> plainNumber(const std::string& text)
 
 std::string boundsText(const AllowedParameter& p)
 {
-    char text[96];
-    std::snprintf(text, sizeof text, "[%s, %s]", p.min ? std::to_string(*p.min).c_str() : "-inf",
-                  p.max ? std::to_string(*p.max).c_str() : "inf");
-    return text;
+    const auto bound = [](std::optional<double> value, const char* none) {
+        if (!value) return std::string(none);
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", *value);
+        return std::string(text);
+    };
+    return "[" + bound(p.min, "-inf") + ", " + bound(p.max, "inf") + "]";
 }
 
 } // namespace
