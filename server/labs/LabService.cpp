@@ -327,7 +327,8 @@ nlohmann::json LabService::overlay(const AssignmentInfo& assignment, const std::
         const std::vector<double>& values = table->column(variable)->data;
         const std::vector<double>& time = table->time;
         const std::size_t n = std::min(time.size(), values.size());
-        const std::size_t stride = n <= points ? 1 : (n + points - 1) / points;
+        // Every stride-th sample and the last one: at most `points` in all.
+        const std::size_t stride = n <= points ? 1 : (n - 1 + points - 2) / (points - 1);
         nlohmann::json t = nlohmann::json::array(), v = nlohmann::json::array();
         for (std::size_t i = 0; i < n; i += stride) {
             t.push_back(time[i]);
