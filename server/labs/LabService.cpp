@@ -257,10 +257,10 @@ std::optional<HandIn> LabService::handIn(const AssignmentInfo& assignment, const
     return stored;
 }
 
-std::optional<JobInfo> LabService::latestRun(std::int64_t studentId, std::int64_t modelId)
+std::optional<JobInfo> LabService::latestRun(std::int64_t studentId, std::int64_t modelId, bool doneOnly)
 {
     for (JobInfo& job : mJobs.listForOwner(studentId))   // newest first
-        if (job.modelId == modelId) return std::move(job);
+        if (job.modelId == modelId && (!doneOnly || job.state == JobState::Done)) return std::move(job);
     return std::nullopt;
 }
 
@@ -315,12 +315,7 @@ nlohmann::json LabService::overlay(const AssignmentInfo& assignment, const std::
         const auto copy = mLabs.copy(assignment.id, member.userId);
         if (!copy) continue;
         // The newest run that finished: a running one has no stored result yet.
-        std::optional<JobInfo> run;
-        for (JobInfo& job : mJobs.listForOwner(member.userId))
-            if (job.modelId == copy->modelId && job.state == JobState::Done) {
-                run = std::move(job);
-                break;
-            }
+        const auto run = latestRun(member.userId, copy->modelId, true);
         if (!run) continue;
         const auto table = mResults.result(run->id, {variable});
         if (!table || !table->hasColumn(variable)) continue;

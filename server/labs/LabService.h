@@ -79,8 +79,8 @@ public:
     static constexpr double kCheckWallSeconds = 60;
 
 private:
-    // The student's newest job on model `modelId` (any state), if any.
-    std::optional<JobInfo> latestRun(std::int64_t studentId, std::int64_t modelId);
+    // The student's newest job on model `modelId` (in any state, or only a finished one), if any.
+    std::optional<JobInfo> latestRun(std::int64_t studentId, std::int64_t modelId, bool doneOnly = false);
     struct GradebookData;
     GradebookData gradebook(std::int64_t classId);
 
