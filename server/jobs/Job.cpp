@@ -10,6 +10,7 @@ constexpr std::pair<JobState, const char*> kStateNames[] = {
     {JobState::Queued, "queued"},       {JobState::Running, "running"},
     {JobState::Done, "done"},           {JobState::Failed, "failed"},
     {JobState::Cancelled, "cancelled"}, {JobState::Interrupted, "interrupted"},
+    {JobState::Dead, "dead"},
 };
 
 // A time of a job, none while it has not happened (0).

@@ -12,9 +12,11 @@
 
 namespace tlmhub::server {
 
-// queued -> running -> done | failed | cancelled | interrupted; queued -> cancelled.
-// interrupted: the server stopped (shutdown or crash) while the job was running.
-enum class JobState { Queued, Running, Done, Failed, Cancelled, Interrupted };
+// queued -> running -> done | failed | cancelled | interrupted | dead; queued -> cancelled;
+// running -> queued when its node's lease expires (JobLeaseStore.h).
+// interrupted: the server stopped (shutdown) while the job was running.
+// dead: its node stopped answering (lease expired) as often as a job may be claimed.
+enum class JobState { Queued, Running, Done, Failed, Cancelled, Interrupted, Dead };
 
 const char* jobStateName(JobState state);
 // False for a name that is not a state.

@@ -1,6 +1,6 @@
 #pragma once
 // The server's storage: one object per back end that hands out the stores of every aggregate
-// (users, sessions, models, jobs, results, meta facts, API tokens, studies, teaching labs).
+// (users, sessions, models, jobs and their leases, results, meta facts, API tokens, studies, teaching labs).
 // Opening it applies the schema migrations the database lacks, so every store finds the
 // current schema.
 // No SQLite or PostgreSQL type appears in this header or in any store interface; the back
@@ -8,6 +8,7 @@
 //
 // Every store method may be called from any thread at the same time.
 #include "server/store/ApiTokenStore.h"
+#include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
@@ -48,6 +49,7 @@ public:
     virtual SessionStore& sessions() = 0;
     virtual ModelStore& models() = 0;
     virtual JobStore& jobs() = 0;
+    virtual JobLeaseStore& jobLeases() = 0;
     virtual ResultStore& results() = 0;
     virtual MetaStore& meta() = 0;
     virtual ApiTokenStore& apiTokens() = 0;

@@ -67,7 +67,7 @@ export type ParameterValue = string | number;
  * POST /jobs: a stored model (model_id) or .hmf text (hmf), not both. Omitted settings come from the model.
  */
 export type JobRequest = JobRequestForModel | JobRequestForHmf;
-export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled' | 'interrupted';
+export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled' | 'interrupted' | 'dead';
 /**
  * Any request a client may send.
  */
@@ -877,7 +877,7 @@ export interface SimulateStoppedData {
     /**
      * cancelling: the job was running and has been asked to stop; its event.done (cancelled) follows. Otherwise the job's state.
      */
-    state: 'cancelling' | 'cancelled' | 'done' | 'failed' | 'interrupted';
+    state: 'cancelling' | 'cancelled' | 'done' | 'failed' | 'interrupted' | 'dead';
 }
 /**
  * First message on every socket.
