@@ -298,12 +298,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     ws.onReconnect(async () => {
         const reopened = await ws.request('model.open', { model_id: summary.id });
         if (reopened.writable !== undefined) writable = reopened.writable;
-        if (store.dirty) {
-            // the unsaved edits lived in the lost socket's session on the server
-            store.replaceModel(reopened.model);
-            toast('The connection to the server was lost: the saved model is open again; changes since the last save are lost.', 'error');
-        } else if (JSON.stringify(reopened.model) !== JSON.stringify(store.model)) {
-            store.replaceModel(reopened.model);
+        // the unsaved edits lived in the lost socket's session on the server: they are sent again
+        if (!await store.reopen(reopened.model)) {
+            toast('The connection to the server was lost: the saved model is open again; changes since the last save could not be restored.', 'error');
         }
         renderHeader();
     });
