@@ -150,6 +150,23 @@ describe('WsClient reconnecting', () => {
         expect(h.client.status).toBe('closed');
     });
 
+    it('with a login check, a 1008 close asks it: a role change reconnects, an ended login stops', async () => {
+        let loggedIn = true;
+        const h = await connectedHarness({ shouldReconnect: () => loggedIn });
+        const reasons: string[] = [];
+        h.client.onClose((r) => reasons.push(r));
+        h.socket.drop(1008);   // role changed
+        await h.fire();
+        h.socket.hello();
+        await flush();
+        expect(h.client.status).toBe('connected');
+        loggedIn = false;
+        h.socket.drop(1008);   // logged out
+        await h.fire();
+        expect(h.sockets.length).toBe(2);
+        expect(reasons).toEqual(['auth']);
+    });
+
     it('stops when shouldReconnect says the login is gone (a refused upgrade tells the browser nothing)', async () => {
         let loggedIn = true;
         const h = await connectedHarness({ shouldReconnect: () => loggedIn });

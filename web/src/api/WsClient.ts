@@ -46,9 +46,11 @@ export interface ReconnectOptions {
     now: () => number;
     /**
      * Asked before each reconnect attempt; false stops reconnecting (e.g. the login ended,
-     * which a failed upgrade does not tell the browser). Errors count as true.
+     * which a failed upgrade does not tell the browser). Errors count as true. Without it a
+     * close with code 1008 (the login ended, or the role changed) stops reconnecting; with it,
+     * it decides (a role change reconnects with the new role).
      */
-    shouldReconnect: () => boolean | Promise<boolean>;
+    shouldReconnect?: () => boolean | Promise<boolean>;
 }
 
 export const defaultReconnect: ReconnectOptions = {
@@ -60,7 +62,6 @@ export const defaultReconnect: ReconnectOptions = {
     setTimer: (fn, ms) => setTimeout(fn, ms),
     clearTimer: (handle) => clearTimeout(handle as ReturnType<typeof setTimeout>),
     now: () => Date.now(),
-    shouldReconnect: () => true,
 };
 
 /** The delay before reconnect attempt `attempt` (0, 1, ...): full jitter over a capped doubling. */
@@ -247,13 +248,15 @@ export class WsClient {
     private onSocketClosed(greeted: boolean, code: number | undefined): void {
         this.failAll('the connection to the server was lost before the reply came');
         if (this.intentional) return;
-        const mayReconnect = this.options.enabled && this.everConnected && code !== POLICY_CLOSE;
+        const loginCheck = this.options.shouldReconnect !== undefined;
+        const mayReconnect = this.options.enabled && this.everConnected && (code !== POLICY_CLOSE || loginCheck);
         if (!mayReconnect) {
             this.setStatus('closed');
             for (const l of this.closeListeners) l(code === POLICY_CLOSE ? 'auth' : 'closed');
             return;
         }
         if (greeted && this.options.now() - this.greetedAt >= this.options.stableMs) this.attempt = 0;
+        if (code === POLICY_CLOSE) this.attempt = 0;   // the login check decides at once
         this.setStatus('reconnecting');
         this.schedule();
     }
@@ -271,7 +274,7 @@ export class WsClient {
         if (this.intentional) return;
         let go = true;
         try {
-            go = await this.options.shouldReconnect();
+            go = await (this.options.shouldReconnect?.() ?? true);
         } catch {
             go = true;
         }
