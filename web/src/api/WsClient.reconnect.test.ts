@@ -254,6 +254,23 @@ describe('WsClient reconnecting', () => {
         expect(h.socket.of('log.subscribe').map((m) => m.job_id)).toEqual([6]);
     });
 
+    it('keeps a subscription whose renewal was cut short by another drop', async () => {
+        const h = await connectedHarness();
+        const sub = h.client.request('log.subscribe', { job_id: 9 });
+        h.socket.reply(0);
+        await sub;
+        h.socket.drop();
+        await h.fire();
+        h.socket.hello();
+        h.socket.drop();   // before the reply to log.subscribe
+        await flush();
+        expect(h.client.activeSubscriptions).toEqual([9]);
+        await h.fire();
+        h.socket.hello();
+        await flush();
+        expect(h.socket.of('log.subscribe')).toMatchObject([{ job_id: 9 }]);
+    });
+
     it('forgets a subscription the server refuses after the reconnect (a deleted job)', async () => {
         const h = await connectedHarness();
         const sub = h.client.request('log.subscribe', { job_id: 9 });

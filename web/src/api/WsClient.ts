@@ -150,6 +150,7 @@ export class WsClient {
     }
 
     private send<T extends RequestType>(type: T, fields: RequestFields<T> | undefined): Promise<ReplyData<T>> {
+        if (!this.socket) return Promise.reject(new ApiError('connection_lost', `${type}: the connection to the server was lost`));
         const id = this.nextId++;
         const message = { ...fields, id, type };
         return new Promise<ReplyData<T>>((resolve, reject) => {
@@ -299,7 +300,9 @@ export class WsClient {
             const { job_id, ...rest } = sub;
             return this.send('log.subscribe', { job_id, ...rest }).catch((e: unknown) => {
                 // the job is gone (deleted) or not the user's: nothing more will come for it
-                if (!(e instanceof ApiError && e.code === 'not_connected')) this.subscriptions.delete(job_id);
+                // (a socket lost again before the reply keeps it for the next attempt)
+                const lost = e instanceof ApiError && (e.code === 'not_connected' || e.code === 'connection_lost');
+                if (!lost) this.subscriptions.delete(job_id);
                 console.warn(`tlmhub: subscribing again to job ${job_id} failed`, e);
             });
         });
