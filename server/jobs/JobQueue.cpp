@@ -600,9 +600,9 @@ void JobQueue::renewLeases()
 void JobQueue::expireLeases()
 {
     for (const ExpiredLease& expired : mLeases.expireLeases(mNode.maxAttempts, mNode.backoff, mNode.maxBackoff)) {
-        if (!expired.dead) continue;
+        if (expired.state == JobState::Queued) continue;
         const auto info = mStore.info(expired.jobId);
-        mHub.finish(expired.jobId, nullptr, JobState::Dead, info ? info->error : std::string());
+        mHub.finish(expired.jobId, nullptr, expired.state, info ? info->error : std::string());
     }
 }
 

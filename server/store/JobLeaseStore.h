@@ -44,7 +44,9 @@ struct ClaimRequest {
 // What expireLeases did to one job.
 struct ExpiredLease {
     std::int64_t jobId = 0;
-    bool dead = false;   // claimed maxAttempts times: now dead; else queued again
+    // Queued again; Dead (claimed maxAttempts times); or Cancelled, when its cancellation had
+    // been asked (a job queued again would lose that request at its next claim).
+    JobState state = JobState::Queued;
 };
 
 struct LeaseHolder {
@@ -94,7 +96,7 @@ public:
     // A held job back to queued at once, without backoff (a node that stops gracefully).
     virtual bool release(const JobLease& lease) = 0;
 
-    // Running jobs whose lease has expired: queued again, available after
+    // Running jobs whose lease has expired: cancelled if that was asked, else queued again, available after
     // backoff * 2^(claims - 1) (at most maxBackoff), or dead once claimed maxAttempts times
     // (error: "its node stopped answering N times; last node <id>", finished_at set).
     virtual std::vector<ExpiredLease> expireLeases(int maxAttempts, std::chrono::milliseconds backoff,

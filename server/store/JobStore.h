@@ -38,8 +38,6 @@ public:
     // gone; a failure writing the result leaves the job as it was.
     virtual bool finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
                         const std::string* resultBlob) = 0;
-    // Start-up after a crash: every job left running becomes interrupted. Returns how many.
-    virtual int markRunningInterrupted() = 0;
 
     // Deletes the job and its result; works on a full disk too.
     virtual bool remove(std::int64_t id) = 0;

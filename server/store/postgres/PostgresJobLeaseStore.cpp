@@ -68,8 +68,11 @@ constexpr PgStatement kRelease{"leases_release",
                                "UPDATE jobs SET state = 'queued', lease_node = NULL, lease_expires_at = 0,"
                                " available_at = 0 WHERE id = $1 AND state = 'running' AND lease = $2"};
 constexpr PgStatement kExpired{"leases_expired",
-                               "SELECT id, lease, COALESCE(lease_node, '') FROM jobs WHERE state = 'running'"
+                               "SELECT id, lease, COALESCE(lease_node, ''), cancel_requested FROM jobs WHERE state = 'running'"
                                " AND lease_expires_at > 0 AND lease_expires_at < $1 ORDER BY id FOR UPDATE SKIP LOCKED"};
+constexpr PgStatement kExpireCancelled{"leases_expire_cancelled",
+                                       "UPDATE jobs SET state = 'cancelled', finished_at = $2, lease_node = NULL,"
+                                       " lease_expires_at = 0 WHERE id = $1"};
 constexpr PgStatement kExpireDead{"leases_expire_dead",
                                   "UPDATE jobs SET state = 'dead', finished_at = $2, error = $3,"
                                   " lease_node = NULL, lease_expires_at = 0 WHERE id = $1"};
@@ -281,13 +284,18 @@ std::vector<ExpiredLease> PostgresJobLeaseStore::expireLeases(int maxAttempts, s
         for (const auto& row : c.exec(tx, kExpired, now)) {
             const auto id = row[0].as<std::int64_t>();
             const auto claims = row[1].as<std::int64_t>();
-            const bool dead = claims >= maxAttempts;
-            if (dead)
+            JobState state = JobState::Queued;
+            if (row[3].as<bool>()) {
+                state = JobState::Cancelled;
+                c.exec(tx, kExpireCancelled, id, now / 1000);
+            } else if (claims >= maxAttempts) {
+                state = JobState::Dead;
                 c.exec(tx, kExpireDead, id, now / 1000, deadLeaseError(claims, row[2].as<std::string>()));
-            else
+            } else {
                 c.exec(tx, kExpireQueued, id,
                        now + static_cast<std::int64_t>(leaseBackoff(claims, backoff, maxBackoff).count()));
-            expired.push_back(ExpiredLease{id, dead});
+            }
+            expired.push_back(ExpiredLease{id, state});
         }
         tx.commit();
         return expired;

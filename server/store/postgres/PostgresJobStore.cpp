@@ -165,15 +165,6 @@ bool PostgresJobStore::finish(std::int64_t id, JobState state, const std::string
     });
 }
 
-int PostgresJobStore::markRunningInterrupted()
-{
-    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
-        pqxx::nontransaction tx(c.raw());
-        return static_cast<int>(
-            c.exec(tx, kMarkRunningInterrupted, static_cast<std::int64_t>(unixNow())).affected_rows());
-    });
-}
-
 bool PostgresJobStore::remove(std::int64_t id)
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {

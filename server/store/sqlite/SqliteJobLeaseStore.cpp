@@ -195,18 +195,29 @@ std::vector<ExpiredLease> SqliteJobLeaseStore::expireLeases(int maxAttempts, std
         struct Expired {
             std::int64_t id, lease;
             std::string node;
+            bool cancelRequested;
         };
         std::vector<Expired> found;
         {
-            auto q = c.prepared("SELECT id, lease, COALESCE(lease_node, '') FROM jobs WHERE state = 'running'"
+            auto q = c.prepared("SELECT id, lease, COALESCE(lease_node, ''), cancel_requested FROM jobs WHERE state = 'running'"
                                 " AND lease_expires_at > 0 AND lease_expires_at < ? ORDER BY id");
             q->bind(1, now);
             while (q->executeStep())
-                found.push_back({q->getColumn(0).getInt64(), q->getColumn(1).getInt64(), q->getColumn(2).getString()});
+                found.push_back({q->getColumn(0).getInt64(), q->getColumn(1).getInt64(), q->getColumn(2).getString(),
+                                 q->getColumn(3).getInt() != 0});
         }
         std::vector<ExpiredLease> expired;
         for (const auto& job : found) {
-            if (job.lease >= maxAttempts) {
+            JobState state = JobState::Queued;
+            if (job.cancelRequested) {
+                state = JobState::Cancelled;
+                auto q = c.prepared("UPDATE jobs SET state = 'cancelled', finished_at = ?,"
+                                    " lease_node = NULL, lease_expires_at = 0 WHERE id = ?");
+                q->bind(1, nowSeconds);
+                q->bind(2, job.id);
+                q->exec();
+            } else if (job.lease >= maxAttempts) {
+                state = JobState::Dead;
                 auto q = c.prepared("UPDATE jobs SET state = 'dead', finished_at = ?, error = ?,"
                                     " lease_node = NULL, lease_expires_at = 0 WHERE id = ?");
                 q->bind(1, nowSeconds);
@@ -220,7 +231,7 @@ std::vector<ExpiredLease> SqliteJobLeaseStore::expireLeases(int maxAttempts, std
                 q->bind(2, job.id);
                 q->exec();
             }
-            expired.push_back(ExpiredLease{job.id, job.lease >= maxAttempts});
+            expired.push_back(ExpiredLease{job.id, state});
         }
         transaction.commit();
         return expired;

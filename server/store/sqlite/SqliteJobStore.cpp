@@ -173,18 +173,6 @@ bool SqliteJobStore::finish(std::int64_t id, JobState state, const std::string& 
     });
 }
 
-int SqliteJobStore::markRunningInterrupted()
-{
-    const auto now = static_cast<std::int64_t>(unixNow());
-    return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE jobs SET state = 'interrupted', finished_at = ?,"
-                            " error = 'the server stopped while the job was running'"
-                            " WHERE state = 'running'");
-        q->bind(1, now);
-        return q->exec();
-    });
-}
-
 bool SqliteJobStore::remove(std::int64_t id)
 {
     const bool removed = mDb.runFreeingSpace([&](SqliteConnection& c) {

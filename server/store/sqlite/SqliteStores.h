@@ -80,7 +80,6 @@ public:
     void setProgress(std::int64_t id, double progress) override;
     bool finish(std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
                 const std::string* resultBlob) override;
-    int markRunningInterrupted() override;
     bool remove(std::int64_t id) override;
     int removeFinishedBefore(std::int64_t unixSeconds) override;
 

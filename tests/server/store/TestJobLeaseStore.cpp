@@ -205,7 +205,7 @@ TEST_P(JobLeaseStoreConformance, OnlyTheCurrentLeaseStoresTheEnd)
     const auto expired = leases().expireLeases(5, 0ms, 0ms);
     ASSERT_EQ(expired.size(), 1u);
     EXPECT_EQ(expired[0].jobId, id);
-    EXPECT_FALSE(expired[0].dead);
+    EXPECT_EQ(expired[0].state, JobState::Queued);
     EXPECT_EQ(stateOf(id), JobState::Queued);
     const auto second = claim("node-2", 1);
     ASSERT_EQ(second.size(), 1u);
@@ -243,7 +243,7 @@ TEST_P(JobLeaseStoreConformance, AnExpiredJobWaitsItsBackoffAndDiesAfterMaxAttem
     claimAndLetExpire("node-1");
     const auto expired = leases().expireLeases(2, 400ms, 10s);
     ASSERT_EQ(expired.size(), 1u);
-    EXPECT_FALSE(expired[0].dead);
+    EXPECT_EQ(expired[0].state, JobState::Queued);
     EXPECT_EQ(stateOf(id), JobState::Queued);
     EXPECT_EQ(leases().queuedCount(1), 1);
     EXPECT_FALSE(leases().holder(id));
@@ -256,7 +256,7 @@ TEST_P(JobLeaseStoreConformance, AnExpiredJobWaitsItsBackoffAndDiesAfterMaxAttem
     EXPECT_EQ(second.lease, 2);
     const auto died = leases().expireLeases(2, 400ms, 10s);
     ASSERT_EQ(died.size(), 1u);
-    EXPECT_TRUE(died[0].dead);
+    EXPECT_EQ(died[0].state, JobState::Dead);
     const auto info = store().jobs().info(id);
     EXPECT_EQ(info->state, JobState::Dead);
     EXPECT_EQ(info->error, "its node stopped answering 2 times; last node node-2");
@@ -272,6 +272,20 @@ TEST_P(JobLeaseStoreConformance, ALeaseStillInTimeDoesNotExpire)
     addJob(1);
     ASSERT_EQ(claim("node-1", 1, 2, 60s).size(), 1u);
     EXPECT_TRUE(leases().expireLeases(1, 0ms, 0ms).empty());
+}
+
+TEST_P(JobLeaseStoreConformance, AnExpiredJobWhoseCancellationWasAskedIsCancelledNotQueued)
+{
+    const std::int64_t id = addJob(1);
+    ASSERT_EQ(claim("node-1", 1, 2, 1ms).size(), 1u);
+    EXPECT_EQ(leases().requestCancel(id), JobLeaseStore::CancelOutcome::Cancelling);
+    std::this_thread::sleep_for(20ms);   // its node died before it saw the request
+    const auto expired = leases().expireLeases(3, 0ms, 0ms);
+    ASSERT_EQ(expired.size(), 1u);
+    EXPECT_EQ(expired[0].state, JobState::Cancelled);
+    EXPECT_EQ(stateOf(id), JobState::Cancelled);
+    EXPECT_GT(store().jobs().info(id)->finishedAt, 0);
+    EXPECT_TRUE(claim("node-2", 1).empty());
 }
 
 TEST_P(JobLeaseStoreConformance, CancellingAQueuedJobEndsItAndARunningOneAsksItsNode)
@@ -495,7 +509,7 @@ TEST_P(JobLeaseStoreConformance, ADeadJobIsRemovedWithTheFinishedOnes)
     claimAndLetExpire("node-1");
     const auto expired = leases().expireLeases(1, 0ms, 0ms);
     ASSERT_EQ(expired.size(), 1u);
-    ASSERT_TRUE(expired[0].dead);
+    ASSERT_EQ(expired[0].state, JobState::Dead);
     const std::int64_t queued = addJob(1);
     waitForNextSecond();
     EXPECT_EQ(store().jobs().removeFinishedBefore(unixNow() + 1), 1);

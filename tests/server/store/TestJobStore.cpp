@@ -248,23 +248,6 @@ TEST_P(JobStoreConformance, FinishRefusesAnUnknownJob)
     EXPECT_FALSE(store().jobs().info(1000));
 }
 
-TEST_P(JobStoreConformance, MarkRunningInterruptedTakesEveryRunningJobAndNoOther)
-{
-    const std::int64_t queued = addJob(1), run1 = addJob(1), run2 = addJob(2), done = addJob(2);
-    ASSERT_TRUE(store().jobs().markRunning(run1));
-    ASSERT_TRUE(store().jobs().markRunning(run2));
-    ASSERT_TRUE(store().jobs().markRunning(done));
-    ASSERT_TRUE(store().jobs().finish(done, JobState::Done, "", 2000, nullptr));
-    EXPECT_EQ(store().jobs().markRunningInterrupted(), 2);
-    EXPECT_EQ(store().jobs().info(queued)->state, JobState::Queued);
-    EXPECT_EQ(store().jobs().info(run1)->state, JobState::Interrupted);
-    EXPECT_EQ(store().jobs().info(run2)->state, JobState::Interrupted);
-    EXPECT_EQ(store().jobs().info(done)->state, JobState::Done);
-    // Finished now, as far as removeFinishedBefore is concerned.
-    EXPECT_GT(store().jobs().info(run1)->finishedAt, 0);
-    EXPECT_EQ(store().jobs().markRunningInterrupted(), 0);
-}
-
 TEST_P(JobStoreConformance, RemoveDeletesTheJobAndItsResult)
 {
     const std::string blob(5000, 'r');
