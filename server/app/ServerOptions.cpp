@@ -48,6 +48,9 @@ const std::string kHelp = std::string(
     "                           is full, so logging in and deleting still work (default 8388608)\n"
     "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
     "                           finish (default 0: keep them until their owner deletes them)\n"
+    "  --node-secret-file PATH  the secret this deployment's nodes share (at least 32 bytes,\n"
+    "                           readable by its owner only): a WebSocket that shows it as\n"
+    "                           'Authorization: Bearer tlmhub-node.<secret>' may follow any job\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -140,6 +143,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.model.maxDepth);
         } else if (flag == "--max-ws-queue-messages") {
             ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
+        } else if (flag == "--node-secret-file") {
+            o.nodeSecretFile = value;
         } else if (flag == "--max-ws-queue-bytes") {
             ok = parseNumber(value, o.wsQueueBytes);
         } else {
