@@ -15,7 +15,9 @@
 // once. A done from a node is checked against the store first: a node that gave the job up
 // (its lease lost) may end its subscriptions while the job goes on elsewhere.
 //
-// Runs on a thread of its own; frames are forwarded as they come, never accumulated. Every
+// Runs on a thread of its own; frames are forwarded as they come, never accumulated. The
+// subscriber's sink is called on that thread, or on the local job's thread while the job runs
+// here (as StreamHub calls it), never after stop() has returned. Every
 // network wait has a timeout, and stop() returns within about one poll of the stop flag
 // (milliseconds) unless a locate or storedResult call is in progress (they are not
 // interrupted).

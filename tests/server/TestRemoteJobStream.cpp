@@ -461,6 +461,7 @@ TEST(RemoteJobStream, AJobThatMovesFromThisNodeToAnotherContinuesWhereItWas)
     }
     ASSERT_EQ(got.dones().size(), 1u);
     EXPECT_EQ(got.dones()[0]["state"], "done");
+    EXPECT_GT(got.progressCount(), 1) << "the other node's live stream was relayed, not only the stored result";
     expectRelayedEqualsStored(got, worker.stored(job), StreamHub::kMaxFrameVariables);
 }
 
