@@ -68,12 +68,18 @@ WsApi::WsApi(Services& services, User user, const std::string& token, std::share
     mSender->send(toJsonText(protocol::Hello{.user = publicUser(mUser)}));
 }
 
+WsApi::WsApi(Services& services, NodePrincipal, std::shared_ptr<WebSocketSender> sender)
+    : mServices(services), mUser{.id = 0, .username = "tlmhub-node", .role = ""}, mSender(std::move(sender)),
+      mNode(true)
+{
+}
+
 WsApi::~WsApi() = default;
 
 void WsApi::onClose()
 {
     mClosed = true;
-    mServices.liveSessions.remove(mLiveSession);
+    if (mLiveSession) mServices.liveSessions.remove(mLiveSession);
     for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
     mSubscriptions.clear();
     for (const auto& [study, id] : mStudySubscriptions) mServices.studies.hub().unsubscribe(id);
@@ -102,6 +108,7 @@ void WsApi::handle(const std::string& text)
     std::string code, why;
     if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
     const std::string type = msg["type"].get<std::string>();
+    if (mNode && type != "log.subscribe") return sendError(id, "forbidden", "a node may only send log.subscribe");
     if (touchesStorage(type)) {
         // On the request pool; this connection's later messages wait for its reply, so the
         // open model is only ever touched by one thread and replies keep their order.
@@ -321,7 +328,7 @@ void WsApi::finishStart(const protocol::SimulateStartRequest& start, const JobQu
 bool WsApi::ownsJob(std::int64_t jobId) const
 {
     const auto job = mServices.queue.store().info(jobId);
-    return job && canControlJob(mUser, job->ownerId);
+    return job && (mNode || canControlJob(mUser, job->ownerId));
 }
 
 WsApi::Reply WsApi::stopSimulation(const protocol::SimulateStopRequest& request)

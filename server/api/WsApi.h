@@ -19,6 +19,11 @@ class WsApi : public WebSocketHandler, public std::enable_shared_from_this<WsApi
 public:
     // `token`: the login the connection was opened with; the connection ends with it.
     WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender);
+    // Another node of the deployment (TlmhubApp checked its secret): it relays jobs to its own
+    // clients, so it may log.subscribe to any job and send nothing else. It is no user's login:
+    // no hello, and no live session (its token is no user's, so the login check would close it).
+    struct NodePrincipal {};
+    WsApi(Services& services, NodePrincipal, std::shared_ptr<WebSocketSender> sender);
     ~WsApi() override;
 
     void onMessage(const std::string& text) override;
@@ -58,7 +63,8 @@ private:
     Services& mServices;
     User mUser;
     std::shared_ptr<WebSocketSender> mSender;
-    std::uint64_t mLiveSession;
+    std::uint64_t mLiveSession = 0;   // 0: none (a node)
+    bool mNode = false;
     EditSession mSession;
     std::optional<std::int64_t> mModelId;
     std::string mModelName;

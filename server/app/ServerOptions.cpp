@@ -61,6 +61,9 @@ const std::string kHelp = std::string(
     "  --node-address URL       http://host:port where other nodes reach this one\n"
     "  --lease-seconds S        a claimed job's lease, renewed every S/3 (default 10)\n"
     "  --max-attempts N         claims before a job whose node keeps stopping is dead (default 3)\n"
+    "  --node-secret-file PATH  the secret this deployment's nodes share (at least 32 bytes,\n"
+    "                           readable by its owner only): a WebSocket that shows it as\n"
+    "                           'Authorization: Bearer tlmhub-node.<secret>' may follow any job\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -153,6 +156,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.model.maxDepth);
         } else if (flag == "--max-ws-queue-messages") {
             ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
+        } else if (flag == "--node-secret-file") {
+            o.nodeSecretFile = value;
         } else if (flag == "--max-ws-queue-bytes") {
             ok = parseNumber(value, o.wsQueueBytes);
         } else if (flag == "--role") {

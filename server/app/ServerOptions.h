@@ -32,6 +32,9 @@ struct ServerOptions {
     std::size_t wsQueueLimit = 256;             // messages queued per WebSocket before frames merge
     std::size_t wsQueueBytes = 16u << 20;       // bytes per WebSocket: frames resync, then it closes
     std::size_t diskReserveBytes = 8u << 20;    // given back when the disk is full (deleting works)
+    // Non-empty: the file holding the secret nodes share (server/cluster/NodeSecret.h); a
+    // WebSocket showing it may follow any job. Empty: no node may connect.
+    std::string nodeSecretFile;
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};
     JobLimits limits;

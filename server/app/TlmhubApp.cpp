@@ -29,6 +29,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     std::error_code ec;
     std::filesystem::create_directories(mOptions.dataDir, ec);
     if (ec) throw std::runtime_error("cannot create data directory '" + mOptions.dataDir + "': " + ec.message());
+    if (!mOptions.nodeSecretFile.empty()) mNodeSecret = NodeSecret::load(mOptions.nodeSecretFile);
     mStorage = openStorage(storageConfig(mOptions));
     mUsers = std::make_unique<Accounts>(mStorage->users());
     mTokens = std::make_unique<TokenService>(mStorage->sessions(), mStorage->users(), mOptions.tokenTtl);
@@ -191,6 +192,16 @@ std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,
     const RouteParams params = parseRequestTarget(std::string(in.request.target()));
     if (params.pathOnly != kApiPrefix + "/ws") {
         refusal = errorResponse(http::status::not_found, "not_found", "WebSocket endpoint is " + kApiPrefix + "/ws");
+        return nullptr;
+    }
+    // Another node of the deployment: it follows jobs for its own clients (WsApi's node
+    // principal). Without a configured secret such a token is just an unknown token.
+    const std::string header(in.request[http::field::authorization]);
+    const std::string nodeBearer = "Bearer " + std::string(NodeSecret::kTokenPrefix);
+    if (mNodeSecret && header.rfind(nodeBearer, 0) == 0) {
+        if (mNodeSecret->matches(std::string_view(header).substr(7)))
+            return std::make_shared<WsApi>(*mServices, WsApi::NodePrincipal{}, std::move(sender));
+        refusal = errorResponse(http::status::unauthorized, "unauthorized", "wrong node secret");
         return nullptr;
     }
     std::string token;

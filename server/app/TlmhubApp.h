@@ -4,6 +4,7 @@
 #include "server/api/ApiSupport.h"
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
+#include "server/cluster/NodeSecret.h"
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
 #include "server/jobs/ResultExpiry.h"
@@ -53,6 +54,7 @@ private:
     std::optional<User> bearerUser(const std::string& token);
 
     ServerOptions mOptions;
+    std::optional<NodeSecret> mNodeSecret;   // only with --node-secret-file
     std::unique_ptr<Storage> mStorage;
     std::unique_ptr<Accounts> mUsers;
     std::unique_ptr<TokenService> mTokens;

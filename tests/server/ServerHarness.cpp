@@ -159,7 +159,9 @@ void upgrade(beast::websocket::stream<tcp::socket>& ws, unsigned short port, con
 
 } // namespace
 
-WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes, WsToken where) : mWs(mIoc)
+WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes, WsToken where,
+                   bool waitForHello)
+    : mWs(mIoc)
 {
     mWs.next_layer().open(tcp::v4());
     if (receiveBufferBytes > 0)   // before connecting: the window is agreed at the handshake
@@ -167,7 +169,7 @@ WsClient::WsClient(unsigned short port, const std::string& token, int receiveBuf
     beast::error_code ec;
     upgrade(mWs, port, token, where, ec);
     if (ec) throw boost::system::system_error(ec);
-    hello = receive();
+    if (waitForHello) hello = receive();
 }
 
 bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsToken where)

@@ -77,8 +77,9 @@ public:
     // `receiveBufferBytes` > 0 fixes the socket's receive buffer (no autotuning up to
     // megabytes), so a client that stops reading soon leaves the server's frames waiting.
     // Throws boost::system::system_error when the upgrade is refused.
+    // `waitForHello` false: a node's connection (it gets no hello).
     WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0,
-             WsToken where = WsToken::InQuery);
+             WsToken where = WsToken::InQuery, bool waitForHello = true);
     void sendText(const std::string& text);
     // Next message, or a null json after `timeoutMs` (the connection is of no further use
     // after a timeout) or when the connection ended. A binary frame comes as the JSON
