@@ -119,8 +119,16 @@ public:
     // Waits until notifyWork or `timeout`; true if woken. PostgreSQL: LISTEN on a connection
     // of its own, opened on first call and reopened after a lost connection.
     virtual bool waitForWork(std::chrono::milliseconds timeout) = 0;
-    // Ends a waitForWork in progress in this process (shutdown).
+    // Ends a waitForWork in progress in this process (shutdown); every later call returns
+    // false at once, so a wait that begins just after it does not hold shutdown up either.
     virtual void interruptWait() = 0;
 };
+
+// For both back ends' expireLeases: how long a job claimed `claims` times waits before it
+// may be claimed again (backoff * 2^(claims - 1), at most maxBackoff), and the error of a job
+// that is dead.
+std::chrono::milliseconds leaseBackoff(std::int64_t claims, std::chrono::milliseconds backoff,
+                                       std::chrono::milliseconds maxBackoff);
+std::string deadLeaseError(std::int64_t claims, const std::string& lastNode);
 
 } // namespace tlmhub::server

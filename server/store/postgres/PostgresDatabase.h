@@ -32,6 +32,8 @@ public:
 
     // "user@host:port/db", no password.
     const std::string& endpoint() const { return mEndpoint; }
+    // The URI connections are opened with (for a connection of a store's own, e.g. LISTEN).
+    const std::string& uri() const { return mUri; }
 
     // Runs `work(PostgresConnection&)` on a leased connection. A transaction `work` opens is
     // rolled back by its destructor when `work` throws; serialization failures and deadlocks

@@ -43,7 +43,7 @@ constexpr PgStatement kMarkRunningInterrupted{"jobs_mark_running_interrupted",
 constexpr PgStatement kRemove{"jobs_remove", "DELETE FROM jobs WHERE id = $1"};
 constexpr PgStatement kRemoveFinishedBefore{"jobs_remove_finished_before",
                                             "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled',"
-                                            " 'interrupted') AND finished_at < $1"};
+                                            " 'interrupted', 'dead') AND finished_at < $1"};
 
 JobInfo readInfo(const pqxx::row& row)
 {

@@ -204,9 +204,29 @@ void createLabs(pqxx::transaction_base& tx)
     tx.exec0("CREATE INDEX handin_comments_author ON handin_comments(author_id)");
 }
 
+// Version 5: the job queue shared by several nodes (server/store/JobLeaseStore.h), as SQLite's
+// version 5. Times in milliseconds of the database's clock. Expiry reads only running jobs
+// (a partial index); the claim reads queued ones by (state, available_at).
+void addJobLeases(pqxx::transaction_base& tx)
+{
+    tx.exec0("ALTER TABLE jobs"
+             " ADD COLUMN lease_node TEXT,"
+             " ADD COLUMN lease_expires_at BIGINT NOT NULL DEFAULT 0,"
+             " ADD COLUMN lease BIGINT NOT NULL DEFAULT 0,"
+             " ADD COLUMN available_at BIGINT NOT NULL DEFAULT 0,"
+             " ADD COLUMN cancel_requested BOOLEAN NOT NULL DEFAULT FALSE");
+    tx.exec0("CREATE INDEX jobs_claim ON jobs(state, available_at)");
+    tx.exec0("CREATE INDEX jobs_lease_expiry ON jobs(lease_expires_at) WHERE state = 'running'");
+    tx.exec0("CREATE TABLE nodes ("
+             " id TEXT PRIMARY KEY,"
+             " role TEXT NOT NULL,"
+             " address TEXT NOT NULL,"
+             " last_seen BIGINT NOT NULL)");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
-                                                             createLabs};
+                                                             createLabs, addJobLeases};
 
 int versionIn(pqxx::transaction_base& tx)
 {

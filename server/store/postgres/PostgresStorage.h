@@ -19,6 +19,7 @@ public:
     SessionStore& sessions() override { return mSessions; }
     ModelStore& models() override { return mModels; }
     JobStore& jobs() override { return mJobs; }
+    JobLeaseStore& jobLeases() override { return mJobLeases; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
@@ -35,6 +36,7 @@ private:
     PostgresSessionStore mSessions{mDb};
     PostgresModelStore mModels{mDb};
     PostgresJobStore mJobs{mDb};
+    PostgresJobLeaseStore mJobLeases{mDb};
     PostgresResultStore mResults{mDb};
     PostgresMetaStore mMeta{mDb};
     PostgresApiTokenStore mApiTokens{mDb};

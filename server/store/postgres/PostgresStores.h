@@ -2,6 +2,7 @@
 // The PostgreSQL implementations of the store interfaces, one per aggregate (each in its own
 // .cpp), all on one PostgresDatabase.
 #include "server/store/ApiTokenStore.h"
+#include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
@@ -11,6 +12,11 @@
 #include "server/store/StudyStore.h"
 #include "server/store/UserStore.h"
 #include "server/store/postgres/PostgresDatabase.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
 
 namespace tlmhub::server {
 
@@ -81,6 +87,53 @@ public:
 
 private:
     PostgresDatabase& mDb;
+};
+
+class PostgresJobLeaseStore final : public JobLeaseStore {
+public:
+    explicit PostgresJobLeaseStore(PostgresDatabase& db);
+    ~PostgresJobLeaseStore() override;
+    std::vector<JobLease> claim(const ClaimRequest& request) override;
+    std::vector<std::int64_t> renew(const std::string& nodeId, const std::vector<JobLease>& leases,
+                                    std::chrono::milliseconds leaseTime) override;
+    std::vector<std::int64_t> cancelRequested(const std::vector<std::int64_t>& jobIds) override;
+    CancelOutcome requestCancel(std::int64_t jobId) override;
+    bool finishLeased(const JobLease& lease, JobState state, const std::string& error, std::uint64_t steps,
+                      const std::string* resultBlob) override;
+    void setProgressLeased(const JobLease& lease, double progress) override;
+    bool release(const JobLease& lease) override;
+    std::vector<ExpiredLease> expireLeases(int maxAttempts, std::chrono::milliseconds backoff,
+                                           std::chrono::milliseconds maxBackoff) override;
+    int queuedCount(std::int64_t ownerId) override;
+    std::optional<LeaseHolder> holder(std::int64_t jobId) override;
+    std::int64_t claims(std::int64_t jobId) override;
+    void touchNode(const NodeInfo& node) override;
+    void removeNode(const std::string& nodeId) override;
+    std::vector<NodeInfo> liveNodes(std::chrono::milliseconds within) override;
+    void notifyWork() override;
+    bool waitForWork(std::chrono::milliseconds timeout) override;
+    void interruptWait() override;
+
+    // The LISTEN connection (PostgresJobLeaseStore.cpp).
+    class Listener;
+
+private:
+    // Counts a wake-up and wakes this process's waiters.
+    void wakeHere();
+
+    PostgresDatabase& mDb;
+    // Sent as the NOTIFY payload, so this store's listener skips its own notifications (its
+    // waiters were woken in process already).
+    std::string mNotifyTag;
+    // One thread at a time listens on the connection; the others wait on mWake.
+    std::mutex mListenMutex;
+    std::unique_ptr<Listener> mListener;
+    std::mutex mWakeMutex;
+    std::condition_variable mWake;
+    std::uint64_t mNotified = 0;   // wake-ups so far (this process's notifyWork and NOTIFYs heard)
+    std::uint64_t mSeen = 0;       // mNotified when a waitForWork last returned woken
+    std::atomic<bool> mInterrupted{false};
+    int mWakeFd = -1;   // eventfd: wakes the listening thread out of poll() at once
 };
 
 class PostgresResultStore final : public ResultStore {

@@ -20,9 +20,9 @@ constexpr const char* kInfoByState = TLMHUB_JOB_INFO " WHERE state = ? ORDER BY 
 // Finished states, as in isFinished().
 constexpr const char* kDeleteOldResults =
     "DELETE FROM job_results WHERE job_id IN (SELECT id FROM jobs WHERE"
-    " state IN ('done', 'failed', 'cancelled', 'interrupted') AND finished_at < ?)";
+    " state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?)";
 constexpr const char* kDeleteOldJobs =
-    "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled', 'interrupted') AND finished_at < ?";
+    "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?";
 
 JobInfo readInfo(SQLite::Statement& q)
 {

@@ -17,6 +17,7 @@ public:
     SessionStore& sessions() override { return mSessions; }
     ModelStore& models() override { return mModels; }
     JobStore& jobs() override { return mJobs; }
+    JobLeaseStore& jobLeases() override { return mJobLeases; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
@@ -32,6 +33,7 @@ private:
     SqliteSessionStore mSessions{mDb};
     SqliteModelStore mModels{mDb};
     SqliteJobStore mJobs{mDb};
+    SqliteJobLeaseStore mJobLeases{mDb};
     SqliteResultStore mResults{mDb};
     SqliteMetaStore mMeta{mDb};
     SqliteApiTokenStore mApiTokens{mDb};

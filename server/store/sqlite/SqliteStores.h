@@ -2,6 +2,7 @@
 // The SQLite implementations of the store interfaces, one per aggregate (each in its own
 // .cpp), all on one SqliteDatabase.
 #include "server/store/ApiTokenStore.h"
+#include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
@@ -11,6 +12,10 @@
 #include "server/store/StudyStore.h"
 #include "server/store/UserStore.h"
 #include "server/store/sqlite/SqliteDatabase.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
 
 namespace tlmhub::server {
 
@@ -81,6 +86,40 @@ public:
 
 private:
     SqliteDatabase& mDb;
+};
+
+class SqliteJobLeaseStore final : public JobLeaseStore {
+public:
+    explicit SqliteJobLeaseStore(SqliteDatabase& db) : mDb(db) {}
+    std::vector<JobLease> claim(const ClaimRequest& request) override;
+    std::vector<std::int64_t> renew(const std::string& nodeId, const std::vector<JobLease>& leases,
+                                    std::chrono::milliseconds leaseTime) override;
+    std::vector<std::int64_t> cancelRequested(const std::vector<std::int64_t>& jobIds) override;
+    CancelOutcome requestCancel(std::int64_t jobId) override;
+    bool finishLeased(const JobLease& lease, JobState state, const std::string& error, std::uint64_t steps,
+                      const std::string* resultBlob) override;
+    void setProgressLeased(const JobLease& lease, double progress) override;
+    bool release(const JobLease& lease) override;
+    std::vector<ExpiredLease> expireLeases(int maxAttempts, std::chrono::milliseconds backoff,
+                                           std::chrono::milliseconds maxBackoff) override;
+    int queuedCount(std::int64_t ownerId) override;
+    std::optional<LeaseHolder> holder(std::int64_t jobId) override;
+    std::int64_t claims(std::int64_t jobId) override;
+    void touchNode(const NodeInfo& node) override;
+    void removeNode(const std::string& nodeId) override;
+    std::vector<NodeInfo> liveNodes(std::chrono::milliseconds within) override;
+    // One process uses the file (other processes poll): the wake-ups are a condition variable.
+    void notifyWork() override;
+    bool waitForWork(std::chrono::milliseconds timeout) override;
+    void interruptWait() override;
+
+private:
+    SqliteDatabase& mDb;
+    std::mutex mWakeMutex;
+    std::condition_variable mWake;
+    std::uint64_t mNotified = 0;   // notifyWork calls so far
+    std::uint64_t mSeen = 0;       // mNotified when a waitForWork last returned woken
+    bool mInterrupted = false;
 };
 
 class SqliteResultStore final : public ResultStore {
