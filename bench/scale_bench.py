@@ -185,6 +185,13 @@ def run_round(a, postgres, workers, hmf, tmp):
             token = rest(api.port, "POST", "/api/v1/auth/login", body={"username": name, "password": name + "-password"})["token"]
             model = rest(api.port, "POST", "/api/v1/models?name=servo", token, hmf.encode(), "application/xml")["id"]
             users.append((token, model))
+        # Which worker claimed each job: jobs.lease_node is cleared when a job ends, so a trigger
+        # (one small insert in the claim's transaction) records it.
+        postgres.psql(db, "CREATE TABLE bench_claims (job_id BIGINT, node TEXT);"
+                          "CREATE FUNCTION bench_claim() RETURNS trigger LANGUAGE plpgsql AS $$ BEGIN"
+                          " INSERT INTO bench_claims VALUES (NEW.id, NEW.lease_node); RETURN NEW; END $$;"
+                          "CREATE TRIGGER bench_claim AFTER UPDATE ON jobs FOR EACH ROW"
+                          " WHEN (NEW.lease IS DISTINCT FROM OLD.lease) EXECUTE FUNCTION bench_claim();")
         for i in range(workers):
             nodes.append(Node(a.server, tmp, f"w{i + 1}", "worker", postgres.uri(db), secret_file,
                               ["--workers", "1"] + list(a.server_arg)))
@@ -221,7 +228,7 @@ def run_round(a, postgres, workers, hmf, tmp):
             time.sleep(0.05)
         seconds = time.monotonic() - t0
         states = dict(postgres.psql(db, "SELECT state, count(*) FROM jobs GROUP BY state"))
-        per_worker = dict(postgres.psql(db, "SELECT COALESCE(lease_node, '?'), count(*) FROM jobs GROUP BY 1"))
+        per_worker = dict(postgres.psql(db, "SELECT COALESCE(node, '?'), count(*) FROM bench_claims GROUP BY 1"))
         reclaimed = int(postgres.psql(db, "SELECT count(*) FROM jobs WHERE lease > 1")[0][0])
         cpu = {n.id: round(n.cpu_seconds() - cpu0[n.id], 2) for n in nodes}
         done = int(states.get("done", 0))

@@ -127,7 +127,6 @@ nlohmann::json waitForJob(HttpClient& client, std::int64_t job, const std::funct
     return info;
 }
 
-bool isRunning(const std::string& state) { return state == "running"; }
 bool hasEnded(const std::string& state) { return state != "queued" && state != "running" && !state.empty(); }
 
 std::int64_t submit(HttpClient& client, nlohmann::json request)
