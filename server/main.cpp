@@ -99,8 +99,7 @@ int main(int argc, char** argv)
             std::cout << "created user 'admin' with password: " << *generated
                       << "\n(shown once; set TLMHUB_ADMIN_PASSWORD on first start to choose it)\n";
         if (!seedLog.empty()) std::cout << seedLog;
-        if (app.interruptedAtStart() > 0)
-            std::cout << app.interruptedAtStart() << " job(s) were running at the last stop; marked interrupted\n";
+        std::cout << "node " << app.queueNode().id << ", role " << options.role << "\n";
 
         net::io_context ioc;
         const auto address = net::ip::make_address(options.host);
@@ -112,7 +111,7 @@ int main(int argc, char** argv)
         net::signal_set signals(ioc, SIGINT, SIGTERM);
         signals.async_wait([&](const boost::system::error_code&, int) {
             listener->stop();
-            app.shutdown();   // running jobs stop and are marked interrupted before we exit
+            app.shutdown();   // running jobs stop (interrupted, or back in the queue) before we exit
             ioc.stop();
         });
 

@@ -1,6 +1,11 @@
 #include "server/app/ServerOptions.h"
 
+#include "server/jobs/JobQueue.h"
+
+#include <unistd.h>
+
 #include <charconv>
+#include <ctime>
 #include <filesystem>
 #include <string>
 
@@ -48,6 +53,14 @@ const std::string kHelp = std::string(
     "                           is full, so logging in and deleting still work (default 8388608)\n"
     "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
     "                           finish (default 0: keep them until their owner deletes them)\n"
+    "scale-out (docs/scale-out.md):\n"
+    "  --role api|worker|all    api: serve clients, run no jobs; worker: run jobs from the\n"
+    "                           shared queue, serve only health and node connections; all:\n"
+    "                           both (default)\n"
+    "  --node-id NAME           this node's name in the nodes table (default: host-pid-time)\n"
+    "  --node-address URL       http://host:port where other nodes reach this one\n"
+    "  --lease-seconds S        a claimed job's lease, renewed every S/3 (default 10)\n"
+    "  --max-attempts N         claims before a job whose node keeps stopping is dead (default 3)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -142,6 +155,21 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
         } else if (flag == "--max-ws-queue-bytes") {
             ok = parseNumber(value, o.wsQueueBytes);
+        } else if (flag == "--role") {
+            ok = value == "api" || value == "worker" || value == "all";
+            o.role = value;
+        } else if (flag == "--node-id") {
+            ok = !value.empty() && value.size() <= 200;
+            o.nodeId = value;
+        } else if (flag == "--node-address") {
+            ok = value.starts_with("http://") || value.starts_with("https://");
+            o.nodeAddress = value;
+        } else if (flag == "--lease-seconds") {
+            double s = 0;
+            ok = parseNumber(value, s) && s >= 0.3 && s <= 3600;
+            o.leaseTime = std::chrono::milliseconds(static_cast<long long>(s * 1000));
+        } else if (flag == "--max-attempts") {
+            ok = parseNumber(value, o.maxAttempts) && o.maxAttempts >= 1;
         } else {
             error = "unknown option " + flag + " (see --help)";
             return false;
@@ -158,6 +186,30 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
     if (!examplesGiven && std::filesystem::is_directory("examples"))
         o.exampleDirs.push_back("examples");
     return true;
+}
+
+QueueNode queueNode(const ServerOptions& options, unsigned workers)
+{
+    QueueNode node;
+    node.id = options.nodeId;
+    if (node.id.empty()) {
+        char host[256] = {};
+        gethostname(host, sizeof host - 1);
+        node.id = std::string(host) + "-" + std::to_string(getpid()) + "-" + std::to_string(std::time(nullptr));
+    }
+    node.role = options.role;
+    node.address = options.nodeAddress;
+    node.runsJobs = options.role != "api";
+    node.releaseOnShutdown = options.role == "worker";
+    node.leaseTime = options.leaseTime;
+    node.maxAttempts = options.maxAttempts;
+    if (options.role == "worker") {
+        node.heldLimit = workers;
+        node.firstSliceHeldLimit = 2 * std::size_t(workers);
+    } else {
+        node.heldLimit = node.firstSliceHeldLimit = JobQueue::kMaxStartedJobs;
+    }
+    return node;
 }
 
 StorageConfig storageConfig(const ServerOptions& options)

@@ -1,6 +1,7 @@
 #pragma once
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
 #include "server/jobs/Job.h"
+#include "server/jobs/QueueNode.h"
 #include "server/protocol/ProtocolConstants.generated.h"
 #include "server/store/Storage.h"
 #include "server/studies/StudyExecution.h"
@@ -35,10 +36,22 @@ struct ServerOptions {
     std::chrono::seconds loginWindow{60};
     JobLimits limits;
     StudyLimits studyLimits;
+    // Scale-out (docs/scale-out.md): what this node does, and how it takes part in the queue
+    // the database holds for all nodes.
+    std::string role = "all";                  // api, worker or all
+    std::string nodeId;                        // default: host name, process id and time
+    std::string nodeAddress;                   // http://host:port other nodes reach it at
+    std::chrono::milliseconds leaseTime{10'000};
+    int maxAttempts = 3;
 };
 
 // Where the options say the database is: options.database, else <dataDir>/tlmhub.sqlite.
 StorageConfig storageConfig(const ServerOptions& options);
+
+// This node's part in the job queue: its role, lease settings, and how many jobs it holds
+// (one node holds as many as it time-slices; a worker among several about one per thread,
+// so that idle workers get the rest). The id defaults to host-pid-time.
+QueueNode queueNode(const ServerOptions& options, unsigned workers);
 
 // Parses argv. On a bad flag returns false with `error`; `--help` sets `helpText`.
 bool parseServerOptions(int argc, char** argv, ServerOptions& options, std::string& error,

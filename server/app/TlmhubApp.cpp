@@ -35,11 +35,11 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mApiTokens = std::make_unique<ApiTokens>(mStorage->apiTokens(), mStorage->users());
     mLoginLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures, mOptions.loginWindow);
     mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures * 10, mOptions.loginWindow);
-    // A job still marked running was cut off by a crash or kill: say so, keep its input.
-    mInterruptedAtStart = mStorage->jobs().markRunningInterrupted();
+    // A job still running in the store whose node crashed comes back when its lease expires.
     mStreams = std::make_unique<StreamHub>();
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
-    mQueue = std::make_unique<JobQueue>(mStorage->jobs(), mStorage->results(), *mStreams, mOptions.limits, workers);
+    mQueue = std::make_unique<JobQueue>(mStorage->jobs(), mStorage->jobLeases(), mStorage->results(), *mStreams,
+                                        mOptions.limits, workers, server::queueNode(mOptions, workers));
     mStudyHub = std::make_unique<StudyProgressHub>();
     mStudies = std::make_unique<StudyService>(mStorage->studies(), mStorage->results(), *mQueue, *mStudyHub,
                                               mOptions.limits, mOptions.studyLimits, workers);
@@ -122,6 +122,10 @@ std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteP
 void TlmhubApp::handle(const Incoming& in, Reply reply)
 {
     const std::string target(in.request.target());
+    if (mOptions.role == "worker" && parseRequestTarget(target).pathOnly != kApiPrefix + "/health")
+        return reply(apiError(http::status::not_found, "not_found",
+                              "this node is a worker (--role worker): it serves /api/v1/health only; "
+                              "clients connect to an API node"));
     if (target.rfind(kApiPrefix + "/", 0) != 0 && target != kApiPrefix) {
         // Static files are read from disk: not on the I/O thread either.
         mPools->runRequest([this, &request = in.request, target, reply = std::move(reply)] {

@@ -26,14 +26,16 @@ public:
     // and seeds the example models.
     std::optional<std::string> bootstrap(std::string& log);
     void startJobs();
-    void shutdown();   // stops running jobs (marked interrupted) and the workers
+    // Stops running jobs (marked interrupted; a worker node puts them back in the queue) and
+    // the workers.
+    void shutdown();
 
     void handle(const Incoming& in, Reply reply) override;
     std::shared_ptr<WebSocketHandler> acceptWebSocket(const Incoming& in,
                                                       std::shared_ptr<WebSocketSender> sender,
                                                       Response& refusal) override;
-    int interruptedAtStart() const { return mInterruptedAtStart; }
     Storage& storage() { return *mStorage; }
+    const QueueNode& queueNode() const { return mQueue->node(); }
 
 private:
     struct Route {
@@ -70,7 +72,6 @@ private:
     std::unique_ptr<Services> mServices;
     Router<Route> mRouter;
     StaticFiles mStaticFiles;
-    int mInterruptedAtStart = 0;
     // Last: destroyed first, so no handler runs on a store that is gone.
     std::unique_ptr<HandlerPools> mPools;
 };

@@ -4,8 +4,10 @@
 #include "server/jobs/PreparedJob.h"
 
 #include "core/Simulation.h"
+#include "server/store/StoreError.h"
 
 #include <algorithm>
+#include <iostream>
 
 namespace tlmhub::server {
 
@@ -14,9 +16,10 @@ unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning)
     return otherJobsQueued || otherJobsRunning ? 1 : RunOptions::autoThreads;
 }
 
-JobQueue::JobQueue(JobStore& store, ResultStore& results, StreamHub& hub, JobLimits limits, unsigned workers)
-    : mStore(store), mResults(results), mHub(hub), mLimits(limits), mRunner(store, hub, limits),
-      mWorkerCount(std::max(1u, workers))
+JobQueue::JobQueue(JobStore& store, JobLeaseStore& leases, ResultStore& results, StreamHub& hub, JobLimits limits,
+                   unsigned workers, QueueNode node)
+    : mStore(store), mLeases(leases), mResults(results), mHub(hub), mLimits(limits),
+      mRunner(store, leases, hub, limits), mWorkerCount(std::max(1u, workers)), mNode(std::move(node))
 {
 }
 
@@ -28,11 +31,10 @@ void JobQueue::start()
     if (mStarted) return;
     mStarted = true;
     mStopping = false;
-    mStore.markRunningInterrupted();
-    for (const JobInfo& job : mStore.listInState(JobState::Queued))
-        if (!isQueuedInMemory(job.id)) enqueue(job.ownerId, job.id);
-    updateWaiting();
+    mPumpPoked = true;   // claims what is queued at once
     for (unsigned i = 0; i < mWorkerCount; ++i) mWorkers.emplace_back([this, i] { workerLoop(i); });
+    mPump = std::thread([this] { pumpLoop(); });
+    mListener = std::thread([this] { listenLoop(); });
 }
 
 void JobQueue::shutdown()
@@ -41,14 +43,34 @@ void JobQueue::shutdown()
         std::lock_guard lock(mMutex);
         if (!mStarted) return;
         mStopping = true;
-        for (auto& [id, active] : mActive) active.control->requestStop(JobControl::Stop::Shutdown);
+        const auto reason = mNode.releaseOnShutdown ? JobControl::Stop::Release : JobControl::Stop::Shutdown;
+        for (auto& [id, active] : mActive) active.control->requestStop(reason);
         for (auto& [id, study] : mStudies) study->stop(JobState::Interrupted);
     }
     mWake.notify_all();
+    mPumpWake.notify_all();
+    mLeases.interruptWait();
+    mPump.join();
+    mListener.join();
     for (auto& t : mWorkers) t.join();
     std::unique_lock lock(mMutex);
     mWorkers.clear();
     mStarted = false;
+    // Claimed jobs that never started go back to the queue, for this node's next start or
+    // another node.
+    std::vector<JobLease> unstarted;
+    for (const auto& [id, lease] : mHeld) unstarted.push_back(lease);
+    mHeld.clear();
+    for (const JobLease& lease : unstarted) removeQueued(lease.jobId);
+    lock.unlock();
+    for (const JobLease& lease : unstarted) {
+        try {
+            mLeases.release(lease);
+        } catch (const std::exception&) {
+            // Its lease expires instead.
+        }
+    }
+    lock.lock();
     // Studies that have started end interrupted; the others stay queued in the store.
     std::vector<std::shared_ptr<StudyExecution>> ended;
     while (!mStudies.empty()) {
@@ -142,70 +164,110 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
                     " MiB; delete old jobs (DELETE /api/v1/jobs/{id}) first"};
     }
 
-    std::unique_lock lock(mMutex);
-    const auto waiting = mWaiting.find(request.ownerId);
-    const std::size_t alreadyQueued = waiting == mWaiting.end() ? 0 : waiting->second.queued.size();
-    if (alreadyQueued >= static_cast<std::size_t>(mLimits.maxQueuedPerUser)) {
+    // Queued on every node together; jobs claimed by a node count as running.
+    const int alreadyQueued = mLeases.queuedCount(request.ownerId);
+    if (alreadyQueued >= mLimits.maxQueuedPerUser) {
         return {std::nullopt, "limit_exceeded",
                 "you have " + std::to_string(alreadyQueued) + " jobs queued; the limit is " +
                     std::to_string(mLimits.maxQueuedPerUser)};
     }
     const std::int64_t id = mStore.create(request, resolved);
-    if (mCompiled.size() < kMaxCompiledQueued) mCompiled.emplace(id, std::move(prepared));
-    enqueue(request.ownerId, id);
-    updateWaiting();
-    lock.unlock();
-    mWake.notify_all();
+    if (mNode.runsJobs) {
+        std::lock_guard lock(mMutex);
+        keepCompiled(id, std::move(prepared));
+    }
+    mLeases.notifyWork();
+    pokePump();
     return {id, {}, {}};
+}
+
+void JobQueue::keepCompiled(std::int64_t jobId, std::unique_ptr<PreparedJob> prepared)
+{
+    // Ids of jobs that have started since are dropped from the order now and then.
+    if (mCompiledOrder.size() > 2 * kMaxCompiledQueued) {
+        std::erase_if(mCompiledOrder, [this](std::int64_t id) { return !mCompiled.count(id); });
+    }
+    while (mCompiled.size() >= kMaxCompiledQueued && !mCompiledOrder.empty()) {
+        mCompiled.erase(mCompiledOrder.front());
+        mCompiledOrder.pop_front();
+    }
+    mCompiled.emplace(jobId, std::move(prepared));
+    mCompiledOrder.push_back(jobId);
 }
 
 JobQueue::CancelRequest JobQueue::requestCancel(std::int64_t jobId)
 {
     std::unique_lock lock(mMutex);
-    if (removeQueued(jobId)) {
+    const auto held = mHeld.find(jobId);
+    if (held != mHeld.end() && removeQueued(jobId)) {
+        // Claimed here, not started.
+        const JobLease lease = held->second;
+        mHeld.erase(held);
         mCompiled.erase(jobId);
         updateWaiting();
-        mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr);
         lock.unlock();
+        const bool stored = mLeases.finishLeased(lease, JobState::Cancelled, {}, 0, nullptr);
+        pokePump();
+        if (!stored) return CancelRequest::NotActive;
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
         return CancelRequest::Cancelled;
     }
-    auto active = mActive.find(jobId);
-    if (active != mActive.end()) {
-        active->second.control->requestStop(JobControl::Stop::Cancel);
-        if (active->second.parked) {
-            // Its owner's next turn comes first and takes it: its slice ends at once.
-            const std::int64_t owner = active->second.ownerId;
-            auto& parked = mWaiting.at(owner).parked;
-            parked.erase(std::find(parked.begin(), parked.end(), jobId));
-            parked.push_front(jobId);
-            mRotation.erase(std::find(mRotation.begin(), mRotation.end(), owner));
-            mRotation.push_front(owner);
-            lock.unlock();
-            mWake.notify_one();
-        }
+    if (mActive.count(jobId)) {
+        stopStarted(jobId, JobControl::Stop::Cancel);
         return CancelRequest::Cancelling;
     }
-    // Queued in the store but not (yet) here: the queue has not been started.
-    const auto info = mStore.info(jobId);
-    if (info && info->state == JobState::Queued &&
-        mStore.finish(jobId, JobState::Cancelled, {}, 0, nullptr)) {
+    lock.unlock();
+    // Queued in the store (on no node yet), or running on another node.
+    switch (mLeases.requestCancel(jobId)) {
+    case JobLeaseStore::CancelOutcome::Cancelled:
+        lock.lock();
+        mCompiled.erase(jobId);   // a job submitted here, not claimed yet
         lock.unlock();
         mHub.finish(jobId, nullptr, JobState::Cancelled, {});
         return CancelRequest::Cancelled;
+    case JobLeaseStore::CancelOutcome::Cancelling:
+        return CancelRequest::Cancelling;
+    case JobLeaseStore::CancelOutcome::NotActive:
+        break;
     }
     return CancelRequest::NotActive;
+}
+
+void JobQueue::stopStarted(std::int64_t jobId, JobControl::Stop reason)
+{
+    Active& active = mActive.at(jobId);
+    active.control->requestStop(reason);
+    if (!active.parked) return;
+    // Its owner's next turn comes first and takes it: its slice ends at once.
+    const std::int64_t owner = active.ownerId;
+    auto& parked = mWaiting.at(owner).parked;
+    parked.erase(std::find(parked.begin(), parked.end(), jobId));
+    parked.push_front(jobId);
+    mRotation.erase(std::find(mRotation.begin(), mRotation.end(), owner));
+    mRotation.push_front(owner);
+    mWake.notify_one();
 }
 
 bool JobQueue::cancel(std::int64_t jobId)
 {
     const CancelRequest request = requestCancel(jobId);
-    if (request == CancelRequest::Cancelling) {
-        // The loop checks for a stop every step; initialize() is the longest wait.
-        std::unique_lock lock(mMutex);
-        mJobEnded.wait_for(lock, std::chrono::seconds(10), [&] { return mActive.count(jobId) == 0; });
+    if (request != CancelRequest::Cancelling) return request != CancelRequest::NotActive;
+    // The loop checks for a stop every step; initialize() is the longest wait.
+    constexpr auto kWait = std::chrono::seconds(10);
+    std::unique_lock lock(mMutex);
+    if (mActive.count(jobId)) {
+        mJobEnded.wait_for(lock, kWait, [&] { return mActive.count(jobId) == 0; });
+        return true;
     }
-    return request != CancelRequest::NotActive;
+    lock.unlock();
+    // On another node: its pump sees the request within a poll period.
+    const auto deadline = std::chrono::steady_clock::now() + kWait;
+    while (std::chrono::steady_clock::now() < deadline) {
+        const auto info = mStore.info(jobId);
+        if (!info || isFinished(info->state)) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
 }
 
 std::uint64_t JobQueue::subscribe(std::int64_t jobId, std::vector<std::string> variables, double rate,
@@ -262,9 +324,8 @@ void JobQueue::runJob(Work& work, std::unique_lock<std::mutex>& lock)
             compiled = std::move(it->second);
             mCompiled.erase(it);
         }
-        if (!mStore.markRunning(jobId)) return;   // no longer queued in the store
         auto control = std::make_shared<JobControl>();
-        job = std::make_unique<StartedJob>(jobId, std::move(compiled), control);
+        job = std::make_unique<StartedJob>(mHeld.at(jobId), std::move(compiled), control);
         mActive.emplace(jobId, Active{ownerId, std::move(control), nullptr, 0});
         ++mStartedPerOwner[ownerId];
     } else {
@@ -282,8 +343,11 @@ void JobQueue::runJob(Work& work, std::unique_lock<std::mutex>& lock)
     mActiveLogBytes -= active.logBytes;
     if (finished) {
         mActive.erase(jobId);
+        mHeld.erase(jobId);
         if (--mStartedPerOwner[ownerId] <= 0) mStartedPerOwner.erase(ownerId);
         mJobEnded.notify_all();
+        mPumpPoked = true;   // room for another claim
+        mPumpWake.notify_one();
     } else {
         active.logBytes = job->logBytes();
         mActiveLogBytes += active.logBytes;
@@ -416,11 +480,160 @@ bool JobQueue::removeQueued(std::int64_t jobId)
     return false;
 }
 
-bool JobQueue::isQueuedInMemory(std::int64_t jobId) const
+void JobQueue::pokePump()
 {
-    for (const auto& [owner, jobs] : mWaiting)
-        if (std::find(jobs.queued.begin(), jobs.queued.end(), jobId) != jobs.queued.end()) return true;
-    return false;
+    {
+        std::lock_guard lock(mMutex);
+        mPumpPoked = true;
+    }
+    mPumpWake.notify_one();
+}
+
+void JobQueue::listenLoop()
+{
+    for (;;) {
+        {
+            std::lock_guard lock(mMutex);
+            if (mStopping) return;
+        }
+        if (mLeases.waitForWork(mNode.pollPeriod)) pokePump();
+    }
+}
+
+void JobQueue::pumpLoop()
+{
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point nextRenewal = Clock::now(), nextPoll = Clock::now();
+    std::unique_lock lock(mMutex);
+    while (!mStopping) {
+        mPumpWake.wait_until(lock, std::min(nextRenewal, nextPoll), [&] { return mPumpPoked || mStopping; });
+        if (mStopping) break;
+        mPumpPoked = false;
+        lock.unlock();
+        const auto now = Clock::now();
+        if (now >= nextRenewal) {
+            pumpStep("renewing leases", [this] { renewLeases(); });
+            nextRenewal = now + mNode.leaseTime / 3;
+        }
+        if (now >= nextPoll) {
+            pumpStep("re-queuing jobs of stopped nodes", [this] { expireLeases(); });
+            nextPoll = now + mNode.pollPeriod;
+        }
+        pumpStep("checking for cancellations", [this] { applyCancels(); });
+        pumpStep("claiming jobs", [this] { claimJobs(); });
+        lock.lock();
+    }
+}
+
+void JobQueue::pumpStep(const char* what, const std::function<void()>& step)
+{
+    try {
+        step();
+        if (mPumpFailing) std::cerr << "job queue: the database answers again\n";
+        mPumpFailing = false;
+    } catch (const std::exception& e) {
+        // The database may be restarting: the next round tries again; jobs held here keep
+        // running, and their leases are renewed once it is back (if they have not expired).
+        if (!mPumpFailing) std::cerr << "job queue: " << what << " failed: " << e.what() << "\n";
+        mPumpFailing = true;
+    }
+}
+
+void JobQueue::claimJobs()
+{
+    if (!mNode.runsJobs) return;
+    std::size_t held = 0;
+    {
+        std::lock_guard lock(mMutex);
+        if (mStopping) return;
+        held = mHeld.size();
+    }
+    ClaimRequest request{mNode.id, 0, mLimits.maxRunningPerUser, mNode.leaseTime, false};
+    std::vector<JobLease> claimed;
+    // Any user's jobs while workers would otherwise be free; then the first jobs of users with
+    // nothing running anywhere (their first slice) up to the larger bound.
+    if (held < mNode.heldLimit) {
+        request.count = mNode.heldLimit - held;
+        claimed = mLeases.claim(request);
+        held += claimed.size();
+    }
+    if (held < mNode.firstSliceHeldLimit) {
+        request.count = mNode.firstSliceHeldLimit - held;
+        request.idleOwnersOnly = true;
+        for (const JobLease& lease : mLeases.claim(request)) claimed.push_back(lease);
+    }
+    if (claimed.empty()) return;
+    {
+        std::lock_guard lock(mMutex);
+        for (const JobLease& lease : claimed) {
+            mHeld.emplace(lease.jobId, lease);
+            enqueue(lease.ownerId, lease.jobId);
+        }
+        updateWaiting();
+    }
+    mWake.notify_all();
+}
+
+void JobQueue::renewLeases()
+{
+    std::vector<JobLease> held;
+    {
+        std::lock_guard lock(mMutex);
+        for (const auto& [id, lease] : mHeld) held.push_back(lease);
+    }
+    mLeases.touchNode(NodeInfo{mNode.id, mNode.role, mNode.address, 0});
+    if (held.empty()) return;
+    const std::vector<std::int64_t> lost = mLeases.renew(mNode.id, held, mNode.leaseTime);
+    std::lock_guard lock(mMutex);
+    for (const std::int64_t id : lost) {
+        if (!mHeld.count(id)) continue;   // it ended meanwhile
+        if (removeQueued(id)) {
+            mHeld.erase(id);
+            mCompiled.erase(id);
+        } else if (mActive.count(id)) {
+            stopStarted(id, JobControl::Stop::LeaseLost);
+        }
+    }
+    updateWaiting();
+}
+
+void JobQueue::expireLeases()
+{
+    for (const ExpiredLease& expired : mLeases.expireLeases(mNode.maxAttempts, mNode.backoff, mNode.maxBackoff)) {
+        if (!expired.dead) continue;
+        const auto info = mStore.info(expired.jobId);
+        mHub.finish(expired.jobId, nullptr, JobState::Dead, info ? info->error : std::string());
+    }
+}
+
+void JobQueue::applyCancels()
+{
+    std::vector<std::int64_t> held;
+    {
+        std::lock_guard lock(mMutex);
+        for (const auto& [id, lease] : mHeld) held.push_back(id);
+    }
+    if (held.empty()) return;
+    std::vector<JobLease> unstarted;
+    {
+        const std::vector<std::int64_t> cancelled = mLeases.cancelRequested(held);
+        std::lock_guard lock(mMutex);
+        for (const std::int64_t id : cancelled) {
+            const auto lease = mHeld.find(id);
+            if (lease == mHeld.end()) continue;   // it ended meanwhile
+            if (mActive.count(id)) {
+                stopStarted(id, JobControl::Stop::Cancel);
+            } else if (removeQueued(id)) {
+                unstarted.push_back(lease->second);
+                mHeld.erase(lease);
+                mCompiled.erase(id);
+            }
+        }
+        updateWaiting();
+    }
+    for (const JobLease& lease : unstarted)
+        if (mLeases.finishLeased(lease, JobState::Cancelled, {}, 0, nullptr))
+            mHub.finish(lease.jobId, nullptr, JobState::Cancelled, {});
 }
 
 } // namespace tlmhub::server

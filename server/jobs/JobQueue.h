@@ -2,7 +2,14 @@
 // The job queue: compiles and stores submitted jobs, and runs them on a pool of worker
 // threads (one worker per job; only a job alone on the server may use more, see jobThreads).
 //
-// Time slices: a worker runs a job for a slice (JobRunner::kSlice) and, when other jobs wait
+// The queue itself is in the database, shared by every node (JobLeaseStore.h): submitting
+// stores a queued job and wakes the nodes; a node that runs jobs claims them (fairly between
+// users, with the per-user running limit held across nodes), holds a lease on each that its
+// pump thread renews, and stores a job's end only while it still holds that lease. The pump
+// also re-queues jobs whose node stopped renewing, passes on cancellations asked on other
+// nodes, and claims more when workers are free. One node (role all) behaves as it always has.
+//
+// Time slices (among the jobs this node holds): a worker runs a job for a slice (JobRunner::kSlice) and, when other jobs wait
 // for a worker, parks it here and takes the next one, so every job streams its first frames
 // soon after it was submitted, not after the jobs before it have finished. A parked job
 // stays running (in the store too) and holds its log storage: at most kMaxStartedJobs are
@@ -23,6 +30,8 @@
 // user's job by at most one run.
 #include "server/jobs/Job.h"
 #include "server/jobs/JobRunner.h"
+#include "server/jobs/QueueNode.h"
+#include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/ResultStore.h"
 #include "server/jobs/PreparedJob.h"
@@ -32,6 +41,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -48,16 +58,17 @@ unsigned jobThreads(bool otherJobsQueued, bool otherJobsRunning);
 
 class JobQueue {
 public:
-    JobQueue(JobStore& store, ResultStore& results, StreamHub& hub, JobLimits limits, unsigned workers);
+    JobQueue(JobStore& store, JobLeaseStore& leases, ResultStore& results, StreamHub& hub, JobLimits limits,
+             unsigned workers, QueueNode node = {});
     ~JobQueue();   // shutdown()
     JobQueue(const JobQueue&) = delete;
     JobQueue& operator=(const JobQueue&) = delete;
 
-    // Marks jobs left running by a crash as interrupted, queues the stored queued jobs (a
-    // restart continues where the last run stopped) and starts the workers.
+    // Starts the workers and the pump, which claims the stored queued jobs (a restart continues
+    // where the last run stopped; jobs a crashed node held come back when their leases expire).
     void start();
-    // Stops started jobs, parked ones too (they become interrupted), joins the workers.
-    // Queued jobs stay queued in the store for the next start().
+    // Stops started jobs, parked ones too (they become interrupted, or go back to the queue
+    // when QueueNode::releaseOnShutdown), joins the workers. Queued jobs stay queued.
     void shutdown();
 
     struct Submitted {
@@ -71,16 +82,18 @@ public:
     Submitted submit(const JobRequest& request, Model model);
     // Queued jobs held compiled in memory (the others are compiled again when they run).
     std::size_t compiledQueued();
-    // Beyond this many, a queued job keeps only its stored request: memory stays bounded.
+    // Beyond this many, a queued job keeps only its stored request (the oldest compiled ones
+    // are dropped: they may have gone to other nodes): memory stays bounded.
     static constexpr std::size_t kMaxCompiledQueued = 256;
 
     // Never waits: a queued job is cancelled at once; a started one is asked to stop (a parked
-    // one is the next a worker takes), and its event.done (cancelled) follows when it has.
+    // one is the next a worker takes), and its event.done (cancelled) follows when it has. A
+    // job running on another node is marked; that node stops it at its pump's next round.
     // NotActive: neither queued nor started.
     enum class CancelRequest { NotActive, Cancelled, Cancelling };
     CancelRequest requestCancel(std::int64_t jobId);
-    // The same, and for a running job the call waits (a few seconds at most) until the job
-    // has reached its final state. False if the job is not queued or running.
+    // The same, and for a running job the call waits (10 s at most) until the job has
+    // reached its final state. False if the job is not queued or running.
     bool cancel(std::int64_t jobId);
 
     // Subscribe to a job's events (see StreamHub). A job that has already finished gets one
@@ -98,6 +111,8 @@ public:
     int activeStudies(std::int64_t ownerId);
 
     JobStore& store() { return mStore; }
+    JobLeaseStore& leases() { return mLeases; }
+    const QueueNode& node() const { return mNode; }
     ResultStore& results() { return mResults; }
     StreamHub& hub() { return mHub; }
     const JobLimits& limits() const { return mLimits; }
@@ -116,6 +131,21 @@ private:
         PlannedRun run;
     };
     void workerLoop(unsigned worker);
+    // The pump: renews leases, re-queues expired ones, passes on cancellations, claims jobs.
+    void pumpLoop();
+    // Wakes the pump when another node (or this one) says there is work (NOTIFY).
+    void listenLoop();
+    void pokePump();                        // caller must not hold mMutex
+    void claimJobs();
+    void renewLeases();
+    void expireLeases();
+    void applyCancels();
+    // Asks a started job to stop; a parked one is the next its owner's turn takes.
+    void stopStarted(std::int64_t jobId, JobControl::Stop reason);   // caller holds mMutex
+    // Runs `step` (store calls); a store error is reported once per series, not thrown.
+    void pumpStep(const char* what, const std::function<void()>& step);
+    // Keeps a compiled job for when this node claims it; drops the oldest beyond the bound.
+    void keepCompiled(std::int64_t jobId, std::unique_ptr<PreparedJob> prepared);   // holds mMutex
     void runJob(Work& work, std::unique_lock<std::mutex>& lock);
     void runStudy(unsigned worker, Work& work, std::unique_lock<std::mutex>& lock);
     // Next work by the fairness rule. Caller holds mMutex.
@@ -130,12 +160,11 @@ private:
     void enqueue(std::int64_t ownerId, std::int64_t jobId);     // caller holds mMutex
     void park(std::int64_t ownerId, std::int64_t jobId);        // caller holds mMutex
     bool removeQueued(std::int64_t jobId);                      // caller holds mMutex
-    bool isQueuedInMemory(std::int64_t jobId) const;            // caller holds mMutex
     Submitted queue(const JobRequest& request, std::unique_ptr<PreparedJob> prepared);
 
     // A user's jobs waiting for a worker.
     struct OwnerJobs {
-        std::deque<std::int64_t> queued;   // not started, FIFO
+        std::deque<std::int64_t> queued;   // claimed by this node, not started, FIFO
         std::deque<std::int64_t> parked;   // started, between slices, FIFO
         std::deque<std::shared_ptr<StudyExecution>> studies;   // queued or running, in turn
         bool empty() const { return queued.empty() && parked.empty() && studies.empty(); }
@@ -149,11 +178,13 @@ private:
     };
 
     JobStore& mStore;
+    JobLeaseStore& mLeases;
     ResultStore& mResults;
     StreamHub& mHub;
     JobLimits mLimits;
     JobRunner mRunner;
     unsigned mWorkerCount;
+    QueueNode mNode;
 
     std::mutex mMutex;
     std::condition_variable mWake;       // a job was queued or parked, a worker freed, or stopping
@@ -161,13 +192,19 @@ private:
     std::map<std::int64_t, OwnerJobs> mWaiting;    // owners with queued or parked jobs
     std::deque<std::int64_t> mRotation;            // those owners, next first
     std::map<std::int64_t, int> mStartedPerOwner;
+    std::map<std::int64_t, JobLease> mHeld;        // claimed here: queued here or started
     std::map<std::int64_t, Active> mActive;        // started jobs
     std::size_t mActiveLogBytes = 0;
     std::atomic<bool> mOthersWaiting{false};
     std::map<std::int64_t, std::unique_ptr<PreparedJob>> mCompiled;   // queued job -> compiled
+    std::deque<std::int64_t> mCompiledOrder;                           // oldest first
     std::map<std::int64_t, std::shared_ptr<StudyExecution>> mStudies;  // queued or running
     std::size_t mStudyRunsInFlight = 0;
     std::vector<std::thread> mWorkers;
+    std::thread mPump, mListener;
+    std::condition_variable mPumpWake;
+    bool mPumpPoked = false;
+    bool mPumpFailing = false;   // the last store call of the pump failed (reported once)
     bool mStarted = false;
     bool mStopping = false;
 };

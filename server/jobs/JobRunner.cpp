@@ -54,16 +54,16 @@ void JobControl::detach()
     mSystem = nullptr;
 }
 
-StartedJob::StartedJob(std::int64_t id, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control)
-    : mId(id), mJob(std::move(compiled)), mControl(std::move(control))
+StartedJob::StartedJob(const JobLease& lease, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control)
+    : mId(lease.jobId), mLease(lease), mJob(std::move(compiled)), mControl(std::move(control))
 {
 }
 
 // The control must not reach the System after it is gone.
 StartedJob::~StartedJob() { mControl->detach(); }
 
-JobRunner::JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits)
-    : mStore(store), mHub(hub), mLimits(limits),
+JobRunner::JobRunner(JobStore& store, JobLeaseStore& leases, StreamHub& hub, const JobLimits& limits)
+    : mStore(store), mLeases(leases), mHub(hub), mLimits(limits),
       mMaxRunTime(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.maxWallSeconds)))
 {
 }
@@ -83,7 +83,7 @@ void JobRunner::onProgress(StartedJob& job, System& root, std::size_t stepsTaken
     }
     if (now - job.mLastProgressStore >= kProgressStorePeriod) {
         job.mLastProgressStore = now;
-        mStore.setProgress(job.mId, progress);
+        mLeases.setProgressLeased(job.mLease, progress);
     }
     if (now - job.mLastFramePoll >= kFramePollPeriod) {
         job.mLastFramePoll = now;
@@ -93,11 +93,19 @@ void JobRunner::onProgress(StartedJob& job, System& root, std::size_t stepsTaken
         job.mPause.request_stop();
 }
 
-void JobRunner::finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
+void JobRunner::finish(StartedJob& job, JobState state, const std::string& error, std::uint64_t steps,
                        const Result* result)
 {
-    mStore.finish(jobId, state, error, steps, result ? &result->blob : nullptr);
-    mHub.finish(jobId, result ? &result->samples : nullptr, state, error);
+    if (mLeases.finishLeased(job.mLease, state, error, steps, result ? &result->blob : nullptr))
+        mHub.finish(job.mId, result ? &result->samples : nullptr, state, error);
+    else
+        mHub.abandon(job.mId);   // another node took the job over while this one stalled
+}
+
+void JobRunner::giveUp(StartedJob& job)
+{
+    if (job.mControl->stopReason() == JobControl::Stop::Release) mLeases.release(job.mLease);
+    mHub.abandon(job.mId);
 }
 
 bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bool>& othersWaiting)
@@ -132,7 +140,7 @@ bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bo
         finishRun(job, ok, {});
     } catch (const std::exception& e) {
         job.mControl->detach();
-        finish(job.mId, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
+        finish(job, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
     }
     return true;
 }
@@ -148,13 +156,13 @@ bool JobRunner::start(StartedJob& job)
     if (!job.mJob) {
         const auto request = mStore.request(job.mId);
         if (!request) {
-            finish(job.mId, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
+            finish(job, JobState::Failed, "the stored job request cannot be read", 0, nullptr);
             return false;
         }
         auto prepared = std::make_unique<PreparedJob>();
         PrepareError prepareError;
         if (!prepareJob(*request, mLimits, *prepared, prepareError)) {
-            finish(job.mId, JobState::Failed, prepareError.message, 0, nullptr);
+            finish(job, JobState::Failed, prepareError.message, 0, nullptr);
             return false;
         }
         job.mJob = std::move(prepared);
@@ -162,7 +170,7 @@ bool JobRunner::start(StartedJob& job)
     Simulation& sim = *job.mJob->simulation;
     System& root = sim.system();
     job.mControl->attach(&root);
-    // markRunning stored progress 0 just now; the next store is due a period later (a short
+    // The claim stored progress 0 just now; the next store is due a period later (a short
     // job's only progress write would be a wasted transaction).
     job.mLastProgressStore = job.mSliceStart;
     bool ok = sim.initialise().isOk();
@@ -193,13 +201,15 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
     Simulation& sim = *job.mJob->simulation;
     System& root = sim.system();
     const std::uint64_t steps = root.takenSteps();
+    const JobControl::Stop stop = job.mControl->stopReason();
+    if (!ran && (stop == JobControl::Stop::Release || stop == JobControl::Stop::LeaseLost)) return giveUp(job);
     JobState finalState = JobState::Done;
     std::string error;
     if (!tooLarge.empty()) {
         finalState = JobState::Failed;
         error = tooLarge;
     } else if (!ran) {
-        switch (job.mControl->stopReason()) {
+        switch (stop) {
         case JobControl::Stop::Cancel:
             finalState = JobState::Cancelled;
             break;
@@ -207,6 +217,9 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
             finalState = JobState::Interrupted;
             error = "the server stopped while the job was running";
             break;
+        case JobControl::Stop::Release:
+        case JobControl::Stop::LeaseLost:
+            break;   // handled above
         case JobControl::Stop::None:
             finalState = JobState::Failed;
             if (job.mWallTimeExceeded) {
@@ -222,7 +235,7 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
             break;
         }
     }
-    if (!tooLarge.empty()) return finish(job.mId, finalState, error, steps, nullptr);
+    if (!tooLarge.empty()) return finish(job, finalState, error, steps, nullptr);
     // Whatever was logged is kept, also for stopped runs, as long as it fits. It is stored
     // and its last frames sent straight from the log: no copy as a ResultTable.
     const ResultView logged = sim.results();
@@ -232,7 +245,7 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
             finalState = JobState::Failed;
             error = resultTooLargeMessage(bytes, mLimits.maxResultBytes);
         }
-        return finish(job.mId, finalState, error, steps, nullptr);
+        return finish(job, finalState, error, steps, nullptr);
     }
     // Each worker thread keeps its buffer: no fresh pages for every result. A rare large
     // result's memory goes back once it is stored.
@@ -241,7 +254,7 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
     encodeResult(logged, blob);
     if (!job.mLive) job.mLive.emplace(root);
     const Result result{blob, *job.mLive};
-    finish(job.mId, finalState, error, steps, &result);
+    finish(job, finalState, error, steps, &result);
     if (blob.capacity() > kKeptBufferBytes) std::string().swap(blob);
 }
 

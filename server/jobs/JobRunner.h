@@ -2,10 +2,12 @@
 // Runs jobs in time slices on the calling (worker) thread. A job's first slice initialises
 // it; each slice simulates until the job is done, or until it has run a while (kFirstSlice,
 // kSlice) while other jobs wait (the queue then parks it and runs another one: see
-// JobQueue.h); the last one stores the result and the state and publishes event.done.
+// JobQueue.h); the last one stores the result and the state and publishes event.done, if
+// this node still holds the job's lease (JobLeaseStore.h): else it stores nothing.
 // Slices give the same result as one whole run (Simulation's RunOptions::pause).
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/Job.h"
+#include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StreamHub.h"
@@ -29,7 +31,9 @@ namespace tlmhub::server {
 // arrives before (or during) initialize is seen when the run starts.
 class JobControl {
 public:
-    enum class Stop { None, Cancel, Shutdown };
+    // Shutdown: the job ends interrupted. Release: it goes back to the queue for another node
+    // (a worker node that stops). LeaseLost: another node has taken it over; nothing is stored.
+    enum class Stop { None, Cancel, Shutdown, Release, LeaseLost };
 
     void requestStop(Stop reason);
     Stop stopReason() const { return mReason.load(); }
@@ -47,9 +51,9 @@ private:
 // Only one thread at a time touches it (the worker running its slice).
 class StartedJob {
 public:
-    // `compiled`: null for a job queued before a restart, prepared again from its stored
-    // request. The job must already be marked running in the store.
-    StartedJob(std::int64_t id, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control);
+    // `compiled`: null for a job submitted on another node or before a restart, prepared again
+    // from its stored request. `lease`: this node's claim of the job (it is running in the store).
+    StartedJob(const JobLease& lease, std::unique_ptr<PreparedJob> compiled, std::shared_ptr<JobControl> control);
     ~StartedJob();
 
     std::int64_t id() const { return mId; }
@@ -61,6 +65,7 @@ private:
     using Clock = std::chrono::steady_clock;
 
     std::int64_t mId;
+    JobLease mLease;
     std::unique_ptr<PreparedJob> mJob;
     std::shared_ptr<JobControl> mControl;
     bool mInitialised = false;
@@ -79,7 +84,7 @@ private:
 
 class JobRunner {
 public:
-    JobRunner(JobStore& store, StreamHub& hub, const JobLimits& limits);
+    JobRunner(JobStore& store, JobLeaseStore& leases, StreamHub& hub, const JobLimits& limits);
 
     // Runs the job's next slice with `threads` as RunOptions::threads (see jobThreads). The
     // slice ends after kFirstSlice (the first) or kSlice at the first progress check that
@@ -120,10 +125,13 @@ private:
         const std::string& blob;
         const FrameSource& samples;
     };
-    void finish(std::int64_t jobId, JobState state, const std::string& error, std::uint64_t steps,
+    void finish(StartedJob& job, JobState state, const std::string& error, std::uint64_t steps,
                 const Result* result);
+    // A job stopped for Release or LeaseLost: back to the queue or left to its new holder.
+    void giveUp(StartedJob& job);
 
     JobStore& mStore;
+    JobLeaseStore& mLeases;
     StreamHub& mHub;
     JobLimits mLimits;
     std::chrono::steady_clock::duration mMaxRunTime;   // mLimits.maxWallSeconds

@@ -84,6 +84,18 @@ void StreamHub::finish(std::int64_t jobId, const FrameSource* source, JobState s
     mByJob.erase(first, last);
 }
 
+void StreamHub::abandon(std::int64_t jobId)
+{
+    std::lock_guard lock(mMutex);
+    auto [first, last] = mByJob.equal_range(jobId);
+    for (auto j = first; j != last; ++j) {
+        auto it = mSubscriptions.find(j->second);
+        if (it->second.sink.lost) it->second.sink.lost();
+        mSubscriptions.erase(it);
+    }
+    mByJob.erase(first, last);
+}
+
 void StreamHub::finishSubscription(std::uint64_t subscription, const FrameSource* source, JobState state,
                                    const std::string& error)
 {

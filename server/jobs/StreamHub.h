@@ -35,6 +35,9 @@ struct StreamSink {
     std::function<void(nlohmann::json event)> progress;
     std::function<void(StreamFrame frame)> frame;      // the samples of event.frame
     std::function<void(nlohmann::json event)> done;    // event.done
+    // The job stopped here without an end of its own: this node lost its lease and another
+    // node runs the job again (JobLeaseStore.h). Optional; the subscription has ended.
+    std::function<void()> lost;
 };
 
 class StreamHub {
@@ -59,7 +62,10 @@ public:
     void publishFrames(std::int64_t jobId, const FrameSource& source);
     // The remaining samples (if `source`), then event.done; the job's subscriptions end.
     void finish(std::int64_t jobId, const FrameSource* source, JobState state, const std::string& error);
-    // Same for one subscription (a subscriber arriving after the job finished); nothing if
+    // The job's subscriptions end without event.done (StreamSink::lost): its end is not this
+    // node's to tell any more.
+    void abandon(std::int64_t jobId);
+    // Same as finish for one subscription (a subscriber arriving after the job finished); nothing if
     // the subscription has already ended.
     void finishSubscription(std::uint64_t subscription, const FrameSource* source, JobState state,
                             const std::string& error);

@@ -119,8 +119,8 @@ public:
     // Waits until notifyWork or `timeout`; true if woken. PostgreSQL: LISTEN on a connection
     // of its own, opened on first call and reopened after a lost connection.
     virtual bool waitForWork(std::chrono::milliseconds timeout) = 0;
-    // Ends a waitForWork in progress in this process (shutdown); every later call returns
-    // false at once, so a wait that begins just after it does not hold shutdown up either.
+    // Ends a waitForWork in progress in this process (shutdown), or the next one if none is in
+    // progress, so that a wait beginning just after it does not hold shutdown up either.
     virtual void interruptWait() = 0;
 };
 

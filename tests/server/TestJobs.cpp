@@ -143,6 +143,7 @@ class Jobs : public ::testing::Test {
 protected:
     std::unique_ptr<Storage> storage = openStorage({.database = ":memory:"});
     JobStore& store = storage->jobs();
+    JobLeaseStore& leases = storage->jobLeases();
     ResultStore& results = storage->results();
     StreamHub hub;
 
@@ -179,7 +180,7 @@ protected:
 
 TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     queue.start();
     const auto submitted = queue.submit(request(kExample));
     ASSERT_TRUE(submitted.id) << submitted.code << ": " << submitted.message;
@@ -201,7 +202,7 @@ TEST_F(Jobs, SubmittedJobRunsToDoneWithTheResultOfADirectCoreRun)
 
 TEST_F(Jobs, AJobIsCompiledAtSubmissionAndTheWorkerRunsThatCompiledJob)
 {
-    JobQueue queue(store, results, hub, {}, 1);   // not started yet: the jobs wait in the queue
+    JobQueue queue(store, leases, results, hub, {}, 1);   // not started yet: the jobs wait in the queue
     const auto kept = queue.submit(request(kExample));
     const auto cancelled = queue.submit(request(kExample));
     ASSERT_TRUE(kept.id && cancelled.id);
@@ -219,12 +220,12 @@ TEST_F(Jobs, AJobQueuedBeforeARestartIsCompiledAgainFromItsStoredRequest)
 {
     std::int64_t id = 0;
     {
-        JobQueue queue(store, results, hub, {}, 1);
+        JobQueue queue(store, leases, results, hub, {}, 1);
         JobRequest r = request(kExample);
         r.parameters = {{"Orifice.Kc", "2e-10"}};
         id = *queue.submit(r).id;
     }   // the server stops before the job ran: its compiled form is gone
-    JobQueue restarted(store, results, hub, {}, 1);
+    JobQueue restarted(store, leases, results, hub, {}, 1);
     EXPECT_EQ(restarted.compiledQueued(), 0u);
     restarted.start();
     ASSERT_TRUE(finishes(id));
@@ -234,7 +235,7 @@ TEST_F(Jobs, AJobQueuedBeforeARestartIsCompiledAgainFromItsStoredRequest)
 
 TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(kExample);
     r.parameters = {{"Orifice.Kc", "2e-10"}, {"pump_flow", "2e-4"}};
@@ -272,7 +273,7 @@ TEST_F(Jobs, ParametersAndSettingsOverrideTheModel)
 
 TEST_F(Jobs, StoredRequestRunsAgainAsANewJob)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(kExample);
     r.modelId = 7;
@@ -289,7 +290,7 @@ TEST_F(Jobs, StoredRequestRunsAgainAsANewJob)
 
 TEST_F(Jobs, WorkersServeUsersRoundRobin)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     std::mutex mutex;
     std::vector<std::int64_t> finishedOrder;
     std::vector<std::int64_t> ids;
@@ -320,7 +321,7 @@ TEST_F(Jobs, WorkersServeUsersRoundRobin)
 
 TEST_F(Jobs, OneWorkerTakesTurnsSoASecondJobStreamsBeforeTheFirstIsDone)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     const auto first = *queue.submit(longRequest(1)).id;
     const auto second = *queue.submit(longRequest(2)).id;
     EventLog firstEvents, secondEvents;
@@ -344,7 +345,7 @@ TEST_F(Jobs, OneWorkerTakesTurnsSoASecondJobStreamsBeforeTheFirstIsDone)
 
 TEST_F(Jobs, JobsRunInSlicesStoreTheResultOfAWholeRunAndStreamIt)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     JobRequest r = request(kServo);
     r.settings.stop = 20.0;   // 200000 steps: many slices
     r.settings.logSamples = 20000;
@@ -376,7 +377,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
 {
     std::int64_t first = 0, second = 0;
     {
-        JobQueue queue(store, results, hub, {}, 1);
+        JobQueue queue(store, leases, results, hub, {}, 1);
         first = *queue.submit(longRequest(1)).id;
         second = *queue.submit(longRequest(2)).id;
         EventLog firstEvents, secondEvents;
@@ -390,7 +391,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
         EXPECT_EQ(firstEvents.snapshot().back().at("state"), "interrupted");
         EXPECT_EQ(secondEvents.snapshot().back().at("state"), "interrupted");
     }
-    JobQueue restarted(store, results, hub, {}, 1);
+    JobQueue restarted(store, leases, results, hub, {}, 1);
     restarted.start();
     EXPECT_EQ(state(first), JobState::Interrupted);
     EXPECT_EQ(state(second), JobState::Interrupted);
@@ -398,7 +399,7 @@ TEST_F(Jobs, ShutdownInterruptsParkedJobsToo)
 
 TEST_F(Jobs, AtMostSoManyJobsAreStartedAtOnceTheOthersWaitUnstarted)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     const std::size_t jobs = JobQueue::kMaxStartedJobs + 2;
     std::vector<std::int64_t> ids;
     for (std::size_t i = 0; i < jobs; ++i) ids.push_back(*queue.submit(longRequest(static_cast<std::int64_t>(i) + 1)).id);
@@ -413,14 +414,17 @@ TEST_F(Jobs, AtMostSoManyJobsAreStartedAtOnceTheOthersWaitUnstarted)
     EXPECT_TRUE(queue.cancel(ids.front()));
     ASSERT_TRUE(waitUntil([&] { return count(JobState::Queued) == 1; }));
     queue.shutdown();
-    EXPECT_EQ(count(JobState::Interrupted), JobQueue::kMaxStartedJobs);
+    // Started ones end interrupted; one claimed but not started yet goes back to the queue.
+    EXPECT_EQ(count(JobState::Running), 0u);
+    EXPECT_GE(count(JobState::Interrupted), JobQueue::kMaxStartedJobs - 1);
+    EXPECT_EQ(count(JobState::Interrupted) + count(JobState::Queued), JobQueue::kMaxStartedJobs + 1);
 }
 
 TEST_F(Jobs, UserAtRunningLimitWaitsWhileOthersRun)
 {
     JobLimits limits;
     limits.maxRunningPerUser = 1;
-    JobQueue queue(store, results, hub, limits, 2);
+    JobQueue queue(store, leases, results, hub, limits, 2);
     const auto a1 = *queue.submit(longRequest(1)).id;
     const auto a2 = *queue.submit(longRequest(1)).id;
     const auto b1 = *queue.submit(longRequest(2)).id;
@@ -441,7 +445,7 @@ TEST_F(Jobs, CancelQueuedAndRunning)
     // One started job per user: the second stays queued (not started for a time slice).
     JobLimits limits;
     limits.maxRunningPerUser = 1;
-    JobQueue queue(store, results, hub, limits, 1);
+    JobQueue queue(store, leases, results, hub, limits, 1);
     queue.start();
     const auto running = *queue.submit(longRequest()).id;
     const auto queued = *queue.submit(request(kExample)).id;
@@ -476,7 +480,7 @@ TEST_F(Jobs, LimitsAreCheckedAtSubmit)
     limits.maxSteps = 10'000;
     limits.maxLogSamples = 500;
     limits.maxQueuedPerUser = 2;
-    JobQueue queue(store, results, hub, limits, 1);   // not started: jobs stay queued
+    JobQueue queue(store, leases, results, hub, limits, 1);   // not started: jobs stay queued
 
     auto tooLong = queue.submit(request(kExample));   // 20000 steps
     EXPECT_FALSE(tooLong.id);
@@ -505,7 +509,7 @@ TEST_F(Jobs, LimitsAreCheckedAtSubmit)
 
 TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     auto submitWith = [&](const std::string& key, const std::string& value) {
         JobRequest r = request(kExample);
         r.parameters[key] = value;
@@ -537,7 +541,7 @@ TEST_F(Jobs, NestedParametersReachIntoSubsystems)
 {
     const std::string path =
         std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Example Models/Sub System Example.hmf";
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     queue.start();
     JobRequest r = request(path);
     r.parameters = {{"Servo1$Translational_Mass.m", "400"}};
@@ -558,7 +562,7 @@ TEST_F(Jobs, WallTimeLimitFailsTheJob)
 {
     JobLimits limits;
     limits.maxWallSeconds = 0.2;
-    JobQueue queue(store, results, hub, limits, 1);
+    JobQueue queue(store, leases, results, hub, limits, 1);
     queue.start();
     const auto t0 = std::chrono::steady_clock::now();
     const auto id = *queue.submit(longRequest()).id;
@@ -573,7 +577,7 @@ TEST_F(Jobs, ResultLargerThanTheLimitFailsTheJob)
 {
     JobLimits limits;
     limits.maxResultBytes = 4096;
-    JobQueue queue(store, results, hub, limits, 1);
+    JobQueue queue(store, leases, results, hub, limits, 1);
     queue.start();
     const auto id = *queue.submit(request(kExample)).id;
     ASSERT_TRUE(finishes(id));
@@ -589,7 +593,7 @@ TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
     {
         JobLimits limits;
         limits.maxRunningPerUser = 1;   // the second job stays queued (not started for a time slice)
-        JobQueue queue(store, results, hub, limits, 1);
+        JobQueue queue(store, leases, results, hub, limits, 1);
         queue.start();
         running = *queue.submit(longRequest()).id;
         queued = *queue.submit(request(kExample)).id;
@@ -598,31 +602,49 @@ TEST_F(Jobs, ShutdownInterruptsRunningJobsAndRestartRunsTheQueued)
         EXPECT_EQ(state(running), JobState::Interrupted);
         EXPECT_EQ(state(queued), JobState::Queued);
     }
-    JobQueue restarted(store, results, hub, {}, 1);
+    JobQueue restarted(store, leases, results, hub, {}, 1);
     restarted.start();
     ASSERT_TRUE(finishes(queued));
     EXPECT_EQ(state(queued), JobState::Done);
     EXPECT_EQ(state(running), JobState::Interrupted);
 }
 
-TEST_F(Jobs, JobsLeftRunningByACrashBecomeInterrupted)
+TEST_F(Jobs, AJobWhoseNodeStoppedRenewingItsLeaseRunsAgainThenIsDead)
 {
     JobInfo resolved;
     resolved.stop = 1;
     resolved.step = 0.1;
-    const auto id = store.create(request(kExample), resolved);
-    ASSERT_TRUE(store.markRunning(id));
-    EXPECT_EQ(state(id), JobState::Running);
-    JobQueue queue(store, results, hub, {}, 1);   // the server starting again
+    const auto again = store.create(request(kExample), resolved);
+    // A node that claimed it and then crashed: its lease (50 ms) is never renewed.
+    const ClaimRequest crashed{"crashed-node", 1, 2, std::chrono::milliseconds(50), false};
+    ASSERT_EQ(leases.claim(crashed).size(), 1u);
+    EXPECT_EQ(state(again), JobState::Running);
+    QueueNode node;
+    node.backoff = std::chrono::milliseconds(10);
+    node.pollPeriod = std::chrono::milliseconds(20);
+    {
+        JobQueue queue(store, leases, results, hub, {}, 1, node);   // another node, or this one restarted
+        queue.start();
+        ASSERT_TRUE(finishes(again));
+        EXPECT_EQ(state(again), JobState::Done) << store.info(again)->error;
+        EXPECT_EQ(leases.claims(again), 2);
+        EXPECT_EQ(results.result(again)->toCsv(), directRun(readFile(kExample)).toCsv());
+    }
+    // Claimed as often as a job may be: dead, with the reason.
+    const auto dead = store.create(request(kExample), resolved);
+    ASSERT_EQ(leases.claim(crashed).size(), 1u);
+    node.maxAttempts = 1;
+    JobQueue queue(store, leases, results, hub, {}, 1, node);
     queue.start();
-    EXPECT_EQ(state(id), JobState::Interrupted);
-    EXPECT_GT(store.info(id)->finishedAt, 0);
-    EXPECT_EQ(store.markRunningInterrupted(), 0);
+    ASSERT_TRUE(finishes(dead));
+    EXPECT_EQ(state(dead), JobState::Dead);
+    EXPECT_NE(store.info(dead)->error.find("crashed-node"), std::string::npos) << store.info(dead)->error;
+    EXPECT_FALSE(results.result(dead));
 }
 
 TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     JobRequest r = request(kServo);
     r.settings.stop = 60.0;   // 600000 steps: long enough for frames during the run
     r.settings.logSamples = 20000;
@@ -677,7 +699,7 @@ TEST_F(Jobs, StreamedFramesConcatenateToTheStoredResult)
 
 TEST_F(Jobs, LateSubscriberGetsEverythingAtOnce)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     queue.start();
     const auto id = *queue.submit(request(kExample)).id;
     ASSERT_TRUE(finishes(id));
@@ -699,7 +721,7 @@ TEST_F(Jobs, LateSubscriberGetsEverythingAtOnce)
 
 TEST_F(Jobs, UnsubscribedSinkHearsNothing)
 {
-    JobQueue queue(store, results, hub, {}, 1);
+    JobQueue queue(store, leases, results, hub, {}, 1);
     const auto id = *queue.submit(request(kExample)).id;
     EventLog gone, kept;
     const auto subscription = queue.subscribe(id, {}, 0, gone.sink());

@@ -198,9 +198,16 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         ASSERT_TRUE(carolsCopy);
         ASSERT_TRUE(storage->labs().createCopy(StudentCopy{*assignmentId, 3, *carolsCopy, 1, 0}));
         EXPECT_TRUE(storage->labs().supervisesCopy(2, *carolsCopy));
+
+        // Version 5's: the old job was never claimed and holds no lease; nodes register.
+        EXPECT_EQ(storage->jobLeases().claims(1), 0);
+        EXPECT_FALSE(storage->jobLeases().holder(1));
+        EXPECT_EQ(storage->jobLeases().queuedCount(2), 0);
+        storage->jobLeases().touchNode(NodeInfo{"node-1", "all", "http://127.0.0.1:8080", 0});
+        EXPECT_EQ(storage->jobLeases().liveNodes(std::chrono::seconds(60)).size(), 1u);
     }
 
-    // The migrations are recorded, version 2's, 3's and 4's indexes exist, and opening again
+    // The migrations are recorded, version 2's to 5's indexes exist, and opening again
     // applies nothing more.
     const auto applied = migrationsOf(file);
     ASSERT_EQ(applied.size(), static_cast<std::size_t>(kSchemaVersion));
@@ -213,6 +220,8 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         EXPECT_EQ(indexesOf(raw, "api_tokens").count("api_tokens_user"), 1u);
         EXPECT_EQ(indexesOf(raw, "studies").count("studies_owner"), 1u);
         EXPECT_EQ(indexesOf(raw, "class_members").count("class_members_user"), 1u);
+        EXPECT_EQ(indexesOf(raw, "jobs").count("jobs_claim"), 1u);
+        EXPECT_EQ(indexesOf(raw, "jobs").count("jobs_lease_expiry"), 1u);
     }
     {
         const auto again = openStorage({.database = file.string()});

@@ -389,7 +389,7 @@ bool PostgresJobLeaseStore::waitForWork(std::chrono::milliseconds timeout)
     for (;;) {
         {
             std::lock_guard lock(mWakeMutex);
-            if (mInterrupted.load()) return false;
+            if (mInterrupted.exchange(false)) return false;   // one interruption ends one wait
             if (mNotified != seen) {
                 mSeen = mNotified;
                 return true;

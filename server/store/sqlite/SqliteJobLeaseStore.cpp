@@ -313,7 +313,10 @@ bool SqliteJobLeaseStore::waitForWork(std::chrono::milliseconds timeout)
     // claiming when it came.
     const std::uint64_t seen = mSeen;
     const bool woken = mWake.wait_for(lock, timeout, [&] { return mInterrupted || mNotified != seen; });
-    if (!woken || mInterrupted) return false;
+    if (!woken || mInterrupted) {
+        mInterrupted = false;   // one interruption ends one wait
+        return false;
+    }
     mSeen = mNotified;
     return true;
 }

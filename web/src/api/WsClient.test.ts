@@ -18,7 +18,7 @@ const hello = { type: 'hello', protocol: 'tlmhub.v1', user: { id: 1, username: '
 
 async function connected() {
     const socket = new FakeSocket();
-    const client = new WsClient(() => socket);
+    const client = new WsClient(() => socket, { enabled: false });
     const ready = client.connect();
     socket.receive(hello);
     await ready;
@@ -75,13 +75,13 @@ describe('WsClient', () => {
         expect(seen).toEqual([{ type: 'event.progress', job_id: 3, progress: 0.5 }]);
     });
 
-    it('fails pending requests when the socket closes', async () => {
+    it('fails pending requests when the socket closes (reconnecting off)', async () => {
         const { socket, client } = await connected();
         let closed = false;
         client.onClose(() => { closed = true; });
         const p = client.request('ping');
         socket.onclose?.({});
-        await expect(p).rejects.toMatchObject({ code: 'not_connected' });
+        await expect(p).rejects.toMatchObject({ code: 'connection_lost' });
         expect(closed).toBe(true);
         await expect(client.request('ping')).rejects.toMatchObject({ code: 'not_connected' });
     });

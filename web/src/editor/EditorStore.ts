@@ -81,6 +81,30 @@ export class EditorStore {
         this.emit();
     }
 
+    /**
+     * The model was opened again on a new socket (`saved` is what the server opened): the
+     * unsaved commands are sent again on top of it, so the server's model is the one on screen
+     * again and the history stays. True when that worked; false when the history cannot tell
+     * or the server refused one: then the saved model is shown and the history starts over.
+     */
+    reopen(saved: Model): Promise<boolean> {
+        return this.enqueue(async () => {
+            const commands = this.history.sinceSaved();
+            if (commands !== null) {
+                this.current = saved;
+                try {
+                    for (const command of commands) await command.do(this.context);
+                    // the replay recomputed what the commands keep for undo from the same states
+                    return true;
+                } catch {
+                    // fall through: the saved model, a fresh history
+                }
+            }
+            this.replaceModel(saved);
+            return false;
+        });
+    }
+
     private enqueue<T>(work: () => Promise<T>): Promise<T> {
         const run = this.queue.then(work, work);
         this.queue = run.catch(() => undefined);

@@ -61,6 +61,18 @@ export class History {
     get revision(): number { return this.done.at(-1)?.revision ?? this.base; }
 
     markSaved(): void { this.saved = this.revision; }
+
+    /**
+     * The commands that lead from the saved state to the current one, oldest first; null when
+     * the history cannot tell (the saved state was undone, or lies before a command that cannot
+     * be undone). A new socket opens the saved model; these bring it back to what is on screen.
+     */
+    sinceSaved(): Command[] | null {
+        if (this.saved === this.revision) return [];
+        if (this.saved === this.base) return this.done.map((e) => e.command);
+        const at = this.done.findIndex((e) => e.revision === this.saved);
+        return at < 0 ? null : this.done.slice(at + 1).map((e) => e.command);
+    }
     get dirty(): boolean { return this.revision !== this.saved; }
 
     /** Forget everything (a new model was opened); the current state counts as saved. */

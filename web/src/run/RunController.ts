@@ -15,6 +15,8 @@ export interface RunTransport {
     request: WsClient['request'];
     onEvent: WsClient['onEvent'];
     resultsJson: RestClient['resultsJson'];
+    /** Told when a job is subscribed again after a reconnect (its stream starts over). */
+    onResubscribe?: WsClient['onResubscribe'];
 }
 
 export class RunController {
@@ -22,13 +24,22 @@ export class RunController {
     previous: RunData | null = null;
     private readonly early = new Map<number, ServerEvent[]>();
     private readonly listeners = new Set<() => void>();
-    private readonly detach: () => void;
+    private readonly detach: (() => void)[];
 
     constructor(private readonly transport: RunTransport) {
-        this.detach = transport.onEvent((event) => this.onEvent(event));
+        this.detach = [transport.onEvent((event) => this.onEvent(event))];
+        if (transport.onResubscribe) this.detach.push(transport.onResubscribe((jobId) => this.onResubscribe(jobId)));
     }
 
-    dispose(): void { this.detach(); }
+    dispose(): void { for (const d of this.detach) d(); }
+
+    /** The stream of a job starts over after a reconnect: the run keeps what it has and drops the repeat. */
+    private onResubscribe(jobId: number): void {
+        const run = this.current;
+        if (run && run.jobId === jobId) run.restartStream();
+        // events of this job held for a simulate.start reply that has not come belong to the old stream
+        this.early.delete(jobId);
+    }
 
     subscribe(listener: () => void): () => void {
         this.listeners.add(listener);

@@ -14,6 +14,13 @@ export class RunData {
     /** The server stopped streaming this run (event.resync): its stored result replaces it. */
     resynced = false;
 
+    /**
+     * After a reconnect the job is streamed again from sample 0: these many leading samples of
+     * the time vector and of each column are ones the run already has, and are dropped.
+     */
+    private skipTime = 0;
+    private readonly skipColumns = new Map<string, number>();
+
     /** Time span the run covers, when known: plots show all of it while the run fills it. */
     span: [number, number] | null = null;
 
@@ -27,15 +34,29 @@ export class RunData {
         if (frame.job_id !== this.jobId || this.resynced) return;
         if (frame.seq !== this.lastSeq + 1) this.gap = true;
         this.lastSeq = frame.seq;
-        for (const t of frame.time) this.time.push(t);
+        this.skipTime = appendAfter(this.time, frame.time, this.skipTime);
         for (const [name, values] of Object.entries(frame.variables)) {
             let column = this.columns.get(name);
             if (!column) {
                 column = [];
                 this.columns.set(name, column);
             }
-            for (const x of values) column.push(x);
+            const skip = this.skipColumns.get(name) ?? 0;
+            if (skip > 0) this.skipColumns.set(name, appendAfter(column, values, skip));
+            else for (const x of values) column.push(x);
         }
+    }
+
+    /**
+     * The job is subscribed again (a new socket): its frames start over at seq 0 and sample 0.
+     * The samples the run holds stay (plots keep them); as many leading samples of the new
+     * stream, per column, are dropped, so the run goes on exactly where it was.
+     */
+    restartStream(): void {
+        this.lastSeq = -1;
+        this.skipTime = this.time.length;
+        this.skipColumns.clear();
+        for (const [name, column] of this.columns) this.skipColumns.set(name, column.length);
     }
 
     /** event.resync: no more frames come; what was streamed stays until the stored result replaces it. */
@@ -54,6 +75,13 @@ export class RunData {
     has(name: string): boolean { return this.columns.has(name); }
 
     get finished(): boolean { return this.state !== 'queued' && this.state !== 'running'; }
+}
+
+/** Appends `values` to `target` after dropping the first `skip` of them; returns what is left to skip. */
+function appendAfter(target: number[], values: ArrayLike<number>, skip: number): number {
+    if (skip >= values.length) return skip - values.length;
+    for (let i = skip; i < values.length; ++i) target.push(values[i]);
+    return 0;
 }
 
 export interface SeriesSource { time: number[]; data: number[] }

@@ -33,6 +33,17 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         const socket = new WebSocket(socketUrl(session.token!, location));
         socket.binaryType = 'arraybuffer';   // run frames come as binary messages (RunController)
         return socket as unknown as import('../api/WsClient').SocketLike;
+    }, {
+        // A lost socket is opened again (another API node behind the proxy may answer), unless the
+        // login ended: a refused upgrade does not say why, /auth/me does (401 leads to the login page).
+        shouldReconnect: async () => {
+            try {
+                await rest.me();
+            } catch {
+                // the server cannot be reached yet: try the socket anyway
+            }
+            return session.token !== null;
+        },
     });
     const opening = Promise.all([
         rest.components(),
@@ -62,7 +73,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
 
     // An edit request carries its fields beside its type; the client sets the type itself.
     const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
-    const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest) });
+    const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
+        onResubscribe: ws.onResubscribe.bind(ws) });
     const plots = new PlotArea(runs);
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
         (changed) => store.execute(new SetSimulationSettings(changed)));
@@ -275,12 +287,35 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         e.returnValue = '';
     };
     window.addEventListener('beforeunload', onBeforeUnload);
-    ws.onClose(() => {
-        toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error');
+    ws.onClose((reason) => {
+        if (reason !== 'auth') toast('Connection to the server lost: reload the page (unsaved changes are lost).', 'error');
         // the server closes the sockets of a session it ended: then /auth/me answers 401 and the
         // session goes back to the login page
         void session.rest.me().catch(() => undefined);
     });
+
+    // ---- reconnecting: the open model is the socket's, so a new socket opens it again ----
+    ws.onReconnect(async () => {
+        const reopened = await ws.request('model.open', { model_id: summary.id });
+        if (reopened.writable !== undefined) writable = reopened.writable;
+        // the unsaved edits lived in the lost socket's session on the server: they are sent again
+        if (!await store.reopen(reopened.model)) {
+            toast('The connection to the server was lost: the saved model is open again; changes since the last save could not be restored.', 'error');
+        }
+        renderHeader();
+    });
+    const connection = h('span', { class: 'connection-status', 'data-testid': 'connection-status', 'data-state': ws.status, role: 'status' });
+    let connectionTimer: ReturnType<typeof setTimeout> | undefined;
+    const showConnection = (status: typeof ws.status) => {
+        clearTimeout(connectionTimer);
+        connection.dataset.state = status;
+        connection.textContent = status === 'reconnecting' ? 'reconnecting…' : status === 'closed' ? 'disconnected' : status === 'connected' ? 'connected' : '';
+        // "connected" is shown for a moment after a reconnect, then the status steps aside
+        if (status === 'connected') connectionTimer = setTimeout(() => { connection.textContent = ''; }, 4000);
+    };
+    connection.textContent = '';
+    const offStatus = ws.onStatus(showConnection);
+    runPanel.element.append(connection);
 
     // the browser tests' handle, only in their build (vite build --mode e2e)
     const testHandle = window as unknown as { __tlmhub?: unknown };
@@ -292,6 +327,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             document.removeEventListener('keydown', onKey);
             document.removeEventListener('pointerdown', closePicker, true);
             window.removeEventListener('beforeunload', onBeforeUnload);
+            offStatus();
+            clearTimeout(connectionTimer);
             delete testHandle.__tlmhub;
             canvas.dispose();
             plots.dispose();
