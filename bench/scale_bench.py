@@ -100,6 +100,14 @@ class Postgres:
         shutil.rmtree(self.dir, ignore_errors=True)
 
 
+def takes_node_secret(binary, cache={}):
+    """Whether the server has --node-secret-file (builds before the relay between nodes do not)."""
+    if binary not in cache:
+        text = subprocess.run([binary, "--help"], capture_output=True, text=True).stdout
+        cache[binary] = "--node-secret-file" in text
+    return cache[binary]
+
+
 class Node:
     """One tlmhub-server process of the deployment on a port chosen in advance."""
 
@@ -113,7 +121,10 @@ class Node:
         args = [binary, "--listen", f"127.0.0.1:{self.port}", "--data-dir", data,
                 "--examples-dir", os.path.join(data, "examples"), "--web-root", os.path.join(data, "no-web"),
                 "--database", database, "--role", role, "--node-id", node_id,
-                "--node-address", f"http://127.0.0.1:{self.port}", "--node-secret-file", secret_file] + extra
+                "--node-address", f"http://127.0.0.1:{self.port}"]
+        if takes_node_secret(binary):
+            args += ["--node-secret-file", secret_file]
+        args += extra
         self.proc = subprocess.Popen(args, stdout=self.log, stderr=subprocess.STDOUT,
                                      env=dict(os.environ, TLMHUB_ADMIN_PASSWORD=ADMIN_PASSWORD))
         deadline = time.monotonic() + 30

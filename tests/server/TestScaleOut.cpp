@@ -16,8 +16,10 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -50,6 +52,23 @@ pqxx::result sql(const TemporaryPostgres& postgres, const std::string& query)
     return tx.exec(query);
 }
 
+// Whether this build's server has --node-secret-file (the relay between nodes, which came
+// after the job queue's roles; without it nodes run jobs but do not stream across nodes).
+bool serverTakesNodeSecret()
+{
+    static const bool takes = [] {
+        const std::string command = std::string("'") + TLMHUB_SERVER_BIN + "' --help 2>&1";
+        FILE* help = ::popen(command.c_str(), "r");
+        if (help == nullptr) return true;
+        std::string text;
+        char buf[4096];
+        for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, help)) > 0;) text.append(buf, n);
+        ::pclose(help);
+        return text.find("--node-secret-file") != std::string::npos;
+    }();
+    return takes;
+}
+
 // A deployment: nodes (tlmhub-server processes, each with its own data directory) in roles
 // api, worker or all on one database, sharing a node secret. Nodes stop before the database.
 class Cluster {
@@ -66,7 +85,16 @@ public:
     }
     ~Cluster()
     {
-        mNodes.clear();   // every node stops (SIGTERM) before the database does
+        // Every node stops (SIGTERM) before the database does; a failed test shows what they said.
+        for (auto& [id, node] : mNodes) {
+            node->terminate();
+            if (::testing::Test::HasFailure()) {
+                const std::string& out = node->output();
+                std::cout << "---- " << id << " (last 3000 bytes of its output)\n"
+                          << (out.size() > 3000 ? out.substr(out.size() - 3000) : out) << "\n";
+            }
+        }
+        mNodes.clear();
         std::error_code ignored;
         fs::remove_all(mDir, ignored);
     }
@@ -82,8 +110,8 @@ public:
                                              "--role", role,
                                              "--node-id", id,
                                              "--node-address", "http://127.0.0.1:" + std::to_string(port),
-                                             "--node-secret-file", mSecretFile.string(),
                                              "--lease-seconds", std::to_string(kLeaseSeconds)};
+            if (serverTakesNodeSecret()) args.insert(args.end(), {"--node-secret-file", mSecretFile.string()});
             args.insert(args.end(), extra.begin(), extra.end());
             try {
                 auto node = std::make_unique<ServerProcess>(mDir / id, args);
