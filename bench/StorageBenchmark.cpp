@@ -6,6 +6,8 @@
 //   postgresql   a PostgreSQL 15 the benchmark starts on loopback, with fsync and synchronous
 //                commit on (Debian's postgresql-15 must be installed)
 // All files live in the temporary directory, so the disk under /tmp is what is measured.
+// BM_JobLease: the job queue's own work per job on each back end (claim, one lease renewal,
+// finishLeased), as a worker node of a scale-out deployment does it.
 #include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 #include "server/store/ResultBlob.h"
@@ -15,12 +17,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 using namespace tlmhub;
 using namespace tlmhub::server;
@@ -80,8 +84,54 @@ void BM_JobStorage(benchmark::State& state, Backend backend)
     state.SetItemsProcessed(state.iterations());
 }
 
+// The job queue's own work per job on a back end (server/store/JobLeaseStore.h), as a worker
+// node does it: claim the job (one queued), renew its lease once (a heartbeat; a job of up to
+// a third of the lease needs none, a longer one one per lease/3) and store its end with the
+// lease number, without a result (the result's cost is BM_JobStorage's). Creating the job is
+// not timed.
+void BM_JobLease(benchmark::State& state, Backend backend)
+{
+    TemporaryDir dir;
+    std::unique_ptr<test::TemporaryPostgres> postgres;
+    StorageConfig config{.database = (dir.path() / "tlmhub.sqlite").string(), .reserveBytes = 0,
+                         .syncEveryCommit = backend == SqliteFull};
+    if (backend == Postgres) {
+        postgres = std::make_unique<test::TemporaryPostgres>("tlmhub_bench", true);
+        config.database = postgres->uri();
+    }
+    const auto storage = openStorage(config);
+    const auto owner = storage->users().insert("bench", "", "user");
+    if (!owner) throw std::runtime_error("cannot create the benchmark's user");
+    JobRequest request;
+    request.ownerId = owner->id;
+    JobInfo resolved;
+    resolved.steps = 10000;
+    JobLeaseStore& leases = storage->jobLeases();
+    const ClaimRequest claim{.nodeId = "bench-node", .count = 1, .maxRunningPerUser = 2,
+                             .leaseTime = std::chrono::milliseconds(10'000)};
+    for (auto _ : state) {
+        state.PauseTiming();
+        storage->jobs().create(request, resolved);
+        state.ResumeTiming();
+        const std::vector<JobLease> claimed = leases.claim(claim);
+        if (claimed.size() != 1) {
+            state.SkipWithError("claim returned no job");
+            break;
+        }
+        const auto lost = leases.renew(claim.nodeId, claimed, claim.leaseTime);
+        if (!lost.empty() || !leases.finishLeased(claimed.front(), JobState::Done, "", resolved.steps, nullptr)) {
+            state.SkipWithError("the lease was lost");
+            break;
+        }
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
 } // namespace
 
+BENCHMARK_CAPTURE(BM_JobLease, sqlite, Sqlite)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_JobLease, sqlite_full, SqliteFull)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_JobLease, postgresql, Postgres)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_JobStorage, sqlite, Sqlite)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_JobStorage, sqlite_full, SqliteFull)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK_CAPTURE(BM_JobStorage, postgresql, Postgres)->Unit(benchmark::kMillisecond)->MinTime(2.0);

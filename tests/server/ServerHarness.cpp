@@ -3,9 +3,11 @@
 #include <boost/asio/connect.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <poll.h>
 #include <sstream>
@@ -32,16 +34,37 @@ std::filesystem::path freshTempDir(const std::string& name)
     return dir;
 }
 
+unsigned short freeLoopbackPort()
+{
+    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) throw std::runtime_error("freeLoopbackPort: socket failed");
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+        ::close(fd);
+        throw std::runtime_error("freeLoopbackPort: cannot bind a loopback port");
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
 ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs,
                              std::vector<std::string> launcher)
 {
     std::filesystem::create_directories(dataDir);
     int fds[2];
-    if (::pipe(fds) != 0) throw std::runtime_error("pipe failed");
-    std::vector<std::string> args = {TLMHUB_SERVER_BIN, "--listen", "127.0.0.1:0", "--data-dir",
-                                     dataDir.string(), "--workers", "2", "--examples-dir",
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
+    const auto given = [&](const char* flag) {
+        return std::find(extraArgs.begin(), extraArgs.end(), flag) != extraArgs.end();
+    };
+    std::vector<std::string> args = {TLMHUB_SERVER_BIN, "--data-dir", dataDir.string(), "--examples-dir",
                                      std::string(TLMHUB_SOURCE_DIR) + "/examples", "--web-root",
                                      (dataDir / "no-web").string()};
+    if (!given("--listen")) args.insert(args.end(), {"--listen", "127.0.0.1:0"});
+    if (!given("--workers")) args.insert(args.end(), {"--workers", "2"});
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
     args.insert(args.begin(), launcher.begin(), launcher.end());
     mPid = ::fork();
@@ -71,6 +94,14 @@ ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<s
         const auto at = mOutput.find(marker);
         if (at != std::string::npos && mOutput.find('\n', at) != std::string::npos) {
             mPort = static_cast<unsigned short>(std::stoi(mOutput.substr(at + marker.size())));
+            mDrain = std::thread([this] {
+                char chunk[4096];
+                ssize_t got;
+                while ((got = ::read(mStdout, chunk, sizeof chunk)) > 0) {
+                    std::lock_guard lock(mDrainMutex);
+                    mDrained.append(chunk, static_cast<std::size_t>(got));
+                }
+            });
             return;
         }
     }
@@ -80,26 +111,46 @@ ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<s
 ServerProcess::~ServerProcess()
 {
     if (mPid > 0) terminate();
+    collectOutput();
     if (mStdout >= 0) ::close(mStdout);
+}
+
+void ServerProcess::collectOutput()
+{
+    // The pipe's write end closed with the process: the drain thread reads to its end.
+    if (mDrain.joinable()) mDrain.join();
+    char buf[4096];
+    ssize_t n;
+    if (mStdout >= 0)
+        while ((n = ::read(mStdout, buf, sizeof buf)) > 0) mDrained.append(buf, static_cast<std::size_t>(n));
+    mOutput += mDrained;
+    mDrained.clear();
+}
+
+void ServerProcess::signal(int sig)
+{
+    if (mPid > 0) ::kill(mPid, sig);
 }
 
 void ServerProcess::kill9()
 {
+    if (mPid <= 0) return;   // ended already (kill(-1, ...) would signal every process)
     ::kill(mPid, SIGKILL);
     int status = 0;
     ::waitpid(mPid, &status, 0);
     mPid = -1;
+    collectOutput();
 }
 
 int ServerProcess::terminate()
 {
+    if (mPid <= 0) return 0;
     ::kill(mPid, SIGTERM);
+    ::kill(mPid, SIGCONT);   // a stopped process (signal(SIGSTOP)) handles SIGTERM only once resumed
     int status = 0;
     ::waitpid(mPid, &status, 0);
     mPid = -1;
-    char buf[4096];
-    ssize_t n;
-    while ((n = ::read(mStdout, buf, sizeof buf)) > 0) mOutput.append(buf, static_cast<std::size_t>(n));
+    collectOutput();
     return status;
 }
 

@@ -12,7 +12,9 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace tlmhub::test {
@@ -22,7 +24,9 @@ class ServerProcess {
 public:
     // `dataDir` is created if missing and kept (so a test can restart on the same data).
     // `launcher`: a command the server runs under (looked up on PATH), e.g. one that mounts a
-    // small file system over the data directory first.
+    // small file system over the data directory first. A `--listen` or `--workers` among
+    // `extraArgs` replaces the default one (127.0.0.1:0, 2), e.g. a port chosen in advance
+    // with freeLoopbackPort() for a node that must name its own address.
     ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs = {},
                   std::vector<std::string> launcher = {});
     ~ServerProcess();
@@ -30,15 +34,26 @@ public:
     ServerProcess& operator=(const ServerProcess&) = delete;
 
     unsigned short port() const { return mPort; }
+    int pid() const { return mPid; }   // -1 once it has ended
+    // What it printed up to "listening on", and after kill9() or terminate() everything.
     const std::string& output() const { return mOutput; }
     void kill9();          // crash: no cleanup at all
     int terminate();       // SIGTERM, wait; returns the exit status
+    // Sends `sig` without waiting (SIGSTOP and SIGCONT: a node that stalls and resumes).
+    void signal(int sig);
 
 private:
+    void collectOutput();   // after the process has ended
+
     int mPid = -1;
     int mStdout = -1;
     unsigned short mPort = 0;
     std::string mOutput;
+    // Reads stdout while the server runs, so that a server that logs a lot never blocks on a
+    // full pipe; joined (and its text appended to mOutput) once the process has ended.
+    std::thread mDrain;
+    std::mutex mDrainMutex;
+    std::string mDrained;
 };
 
 struct HttpReply {
@@ -115,6 +130,9 @@ bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsT
 std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs = 3000);
 
 std::filesystem::path freshTempDir(const std::string& name);
+// A loopback TCP port nobody listens on right now (bound to port 0, then closed): for a server
+// that must know its own port before it starts. Another process may take it in between.
+unsigned short freeLoopbackPort();
 constexpr const char* kAdminPassword = "admin-secret-pw";
 
 // Test users: `name` logs in with "<name>-password" (the admin with kAdminPassword).

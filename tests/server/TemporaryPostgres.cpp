@@ -148,7 +148,7 @@ std::string describeStatus(int status)
 
 } // namespace
 
-TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName(std::move(dbName))
+TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName(std::move(dbName)), mDurable(durable)
 {
     const std::filesystem::path bin = kBinDir;
     for (const char* tool : {"initdb", "postgres"}) {
@@ -191,42 +191,7 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName
                                      tailOf(initdbLog, 4000));
 
         // postgres, retried on another port if the one picked was taken in the meantime.
-        const auto deadline = Clock::now() + std::chrono::seconds(30);
-        for (int attempt = 1;; ++attempt) {
-            mPort = freeLoopbackPort();
-            std::vector<std::string> args{(bin / "postgres").string(), "-D", data.string(), "-h", "127.0.0.1",
-                                          "-p", std::to_string(mPort), "-k", socketDir.string(), "-c",
-                                          "max_connections=40"};
-            if (!durable)
-                for (const char* setting : {"fsync=off", "synchronous_commit=off", "full_page_writes=off"})
-                    args.insert(args.end(), {"-c", setting});
-            mPid = spawn(args, mDir / "postgres.log", mDir, who);
-            bool ready = false;
-            std::string lastError = "no connection attempt yet";
-            while (!ready) {
-                const int status = waitUntil(mPid, Clock::now());
-                if (status != -1) {
-                    mPid = -1;
-                    const std::string log = logTail(4000);
-                    if (attempt < 3 && log.find("Address already in use") != std::string::npos) break;
-                    throw std::runtime_error("TemporaryPostgres: postgres " + describeStatus(status) +
-                                             " before accepting connections on 127.0.0.1:" +
-                                             std::to_string(mPort) + "; log:\n" + log);
-                }
-                if (Clock::now() >= deadline)
-                    throw std::runtime_error("TemporaryPostgres: postgres did not accept connections on 127.0.0.1:" +
-                                             std::to_string(mPort) + " within 30 s (last error: " + lastError +
-                                             "); log:\n" + logTail(4000));
-                try {
-                    pqxx::connection probe(uri("postgres") + "?connect_timeout=2");
-                    ready = true;
-                } catch (const std::exception& e) {
-                    lastError = e.what();
-                    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-                }
-            }
-            if (ready) break;
-        }
+        start(0);
 
         pqxx::connection admin(uri("postgres") + "?connect_timeout=10");
         pqxx::nontransaction txn(admin);
@@ -237,6 +202,63 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName
         std::filesystem::remove_all(mDir, ignored);
         throw;
     }
+}
+
+void TemporaryPostgres::start(unsigned short port)
+{
+    const std::filesystem::path bin = kBinDir;
+    const RunAs who = runAs();
+    const auto data = mDir / "data";
+    const auto socketDir = mDir / "socket";
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    for (int attempt = 1;; ++attempt) {
+        mPort = port != 0 ? port : freeLoopbackPort();
+        // max_connections: PostgreSQL's default, room for a cluster of 5 nodes (each up to 8
+        // pooled connections and a LISTEN one) and the test's own.
+        std::vector<std::string> args{(bin / "postgres").string(), "-D", data.string(), "-h", "127.0.0.1",
+                                      "-p", std::to_string(mPort), "-k", socketDir.string(), "-c",
+                                      "max_connections=100"};
+        if (!mDurable)
+            for (const char* setting : {"fsync=off", "synchronous_commit=off", "full_page_writes=off"})
+                args.insert(args.end(), {"-c", setting});
+        mPid = spawn(args, mDir / "postgres.log", mDir, who);
+        bool ready = false;
+        std::string lastError = "no connection attempt yet";
+        while (!ready) {
+            const int status = waitUntil(mPid, Clock::now());
+            if (status != -1) {
+                mPid = -1;
+                const std::string log = logTail(4000);
+                // A port of our choosing may be taken in the meantime; a given one must be
+                // retried (a restart: the old server's socket may linger a moment).
+                if (attempt < 3 && log.find("Address already in use") != std::string::npos) {
+                    if (port != 0) std::this_thread::sleep_for(std::chrono::milliseconds(500));
+                    break;
+                }
+                throw std::runtime_error("TemporaryPostgres: postgres " + describeStatus(status) +
+                                         " before accepting connections on 127.0.0.1:" +
+                                         std::to_string(mPort) + "; log:\n" + log);
+            }
+            if (Clock::now() >= deadline)
+                throw std::runtime_error("TemporaryPostgres: postgres did not accept connections on 127.0.0.1:" +
+                                         std::to_string(mPort) + " within 30 s (last error: " + lastError +
+                                         "); log:\n" + logTail(4000));
+            try {
+                pqxx::connection probe(uri("postgres") + "?connect_timeout=2");
+                ready = true;
+            } catch (const std::exception& e) {
+                lastError = e.what();
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            }
+        }
+        if (ready) return;
+    }
+}
+
+void TemporaryPostgres::restart()
+{
+    stop();
+    start(mPort);
 }
 
 TemporaryPostgres::~TemporaryPostgres()

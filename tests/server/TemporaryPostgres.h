@@ -28,6 +28,9 @@ public:
     std::string uri(const std::string& dbName) const;
     unsigned short port() const { return mPort; }
     const std::filesystem::path& directory() const { return mDir; }
+    // Fast shutdown, then postgres again on the same data directory and port (every
+    // connection is lost; what was committed is kept). Throws as the constructor does.
+    void restart();
     // The last `maxBytes` of the server's log (stdout and stderr of postgres).
     std::string logTail(std::size_t maxBytes = 4000) const;
 
@@ -35,12 +38,16 @@ public:
     static constexpr const char* kUser = "tlmhub";
 
 private:
+    // Starts postgres on `port` (0: a free one, retried if taken meanwhile) and waits until it
+    // accepts connections.
+    void start(unsigned short port);
     void stop();
 
     std::filesystem::path mDir;
     std::string mDbName;
     unsigned short mPort = 0;
     int mPid = -1;
+    bool mDurable = false;
 };
 
 } // namespace tlmhub::test

@@ -76,5 +76,25 @@ TEST(TemporaryPostgres, TwoServersRunSideBySideAndCleanUp)
     EXPECT_FALSE(std::filesystem::exists(secondDir));
 }
 
+TEST(TemporaryPostgres, RestartKeepsCommittedDataOnTheSamePort)
+{
+    TemporaryPostgres pg;
+    const unsigned short port = pg.port();
+    pqxx::connection before(pg.uri() + "?connect_timeout=10");
+    {
+        pqxx::work txn(before);
+        txn.exec0("CREATE TABLE kept (x integer)");
+        txn.exec0("INSERT INTO kept VALUES (42)");
+        txn.commit();
+    }
+    pg.restart();
+    EXPECT_EQ(pg.port(), port);
+    // The old connection is gone; a new one on the same address sees the committed row.
+    EXPECT_ANY_THROW(pqxx::nontransaction(before).exec("SELECT 1"));
+    pqxx::connection after(pg.uri() + "?connect_timeout=10");
+    pqxx::read_transaction txn(after);
+    EXPECT_EQ(txn.exec1("SELECT x FROM kept")[0].as<int>(), 42);
+}
+
 } // namespace
 } // namespace tlmhub::test
