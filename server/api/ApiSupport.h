@@ -25,6 +25,7 @@ namespace tlmhub::server {
 
 struct ServerOptions;
 class HandlerPools;
+class JobStreams;
 class StudyService;
 class LabService;
 
@@ -46,6 +47,7 @@ struct Services {
     LiveSessions& liveSessions;         // open WebSockets, ended with their login
     const DownloadLinks& downloadLinks;
     HandlerPools& pools;                // where slow work goes instead of an I/O thread
+    JobStreams& jobStreams;             // log.subscribe: the local hub, or relays from other nodes
 };
 
 struct Call {

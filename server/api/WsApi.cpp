@@ -4,6 +4,7 @@
 #include "server/api/QueuedFrame.h"
 #include "server/app/HandlerPools.h"
 #include "server/auth/AccessPolicy.h"
+#include "server/cluster/JobStreams.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
 #include "server/http/JsonText.h"
@@ -80,7 +81,7 @@ void WsApi::onClose()
 {
     mClosed = true;
     if (mLiveSession) mServices.liveSessions.remove(mLiveSession);
-    for (std::uint64_t id : mSubscriptions) mServices.streams.unsubscribe(id);
+    for (std::uint64_t id : mSubscriptions) mServices.jobStreams.unsubscribe(id);
     mSubscriptions.clear();
     for (const auto& [study, id] : mStudySubscriptions) mServices.studies.hub().unsubscribe(id);
     mStudySubscriptions.clear();
@@ -276,12 +277,13 @@ void WsApi::subscribeToJob(std::int64_t jobId, std::vector<std::string> variable
     // on the request pool. The subscription is recorded on the connection's strand, or ended
     // at once if the connection is gone by then.
     mServices.pools.runRequest([weak = weak_from_this(), sender = mSender, &services = mServices, jobId,
+                                fromNode = mNode,
                                 variables = std::move(variables), rate, sink = std::move(sink)] {
-        const std::uint64_t id = services.queue.subscribe(jobId, variables, rate, sink);
-        if (weak.expired()) return services.streams.unsubscribe(id);
+        const std::uint64_t id = services.jobStreams.subscribe(jobId, variables, rate, sink, fromNode);
+        if (weak.expired()) return services.jobStreams.unsubscribe(id);
         sender->runOnConnection([weak, &services, id] {
             auto self = weak.lock();
-            if (!self || self->mClosed) return services.streams.unsubscribe(id);
+            if (!self || self->mClosed) return services.jobStreams.unsubscribe(id);
             self->mSubscriptions.push_back(id);
         });
     });

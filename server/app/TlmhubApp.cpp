@@ -41,6 +41,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
     mQueue = std::make_unique<JobQueue>(mStorage->jobs(), mStorage->jobLeases(), mStorage->results(), *mStreams,
                                         mOptions.limits, workers, server::queueNode(mOptions, workers));
+    mJobStreams = std::make_unique<JobStreams>(*mQueue, mNodeSecret);
     mStudyHub = std::make_unique<StudyProgressHub>();
     mStudies = std::make_unique<StudyService>(mStorage->studies(), mStorage->results(), *mQueue, *mStudyHub,
                                               mOptions.limits, mOptions.studyLimits, workers);
@@ -57,7 +58,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mJoinAddressLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures * 10, kJoinWindow);
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
-                                 *mLiveSessions, *mDownloadLinks, *mPools});
+                                 *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
@@ -202,6 +203,11 @@ std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,
         if (mNodeSecret->matches(std::string_view(header).substr(7)))
             return std::make_shared<WsApi>(*mServices, WsApi::NodePrincipal{}, std::move(sender));
         refusal = errorResponse(http::status::unauthorized, "unauthorized", "wrong node secret");
+        return nullptr;
+    }
+    if (mOptions.role == "worker") {
+        refusal = errorResponse(http::status::not_found, "not_found",
+                                "this node is a worker (--role worker): clients connect to an API node");
         return nullptr;
     }
     std::string token;

@@ -4,6 +4,7 @@
 #include "server/api/ApiSupport.h"
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
+#include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
@@ -63,6 +64,7 @@ private:
     std::unique_ptr<LoginRateLimiter> mAddressLimiter;
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
+    std::unique_ptr<JobStreams> mJobStreams;   // after the queue: its relays end first
     std::unique_ptr<StudyProgressHub> mStudyHub;
     std::unique_ptr<StudyService> mStudies;
     std::unique_ptr<LabService> mLabs;

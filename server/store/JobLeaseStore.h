@@ -68,7 +68,8 @@ public:
 
     // Claims queued jobs whose backoff has passed, fairly between users: a user's k-th queued
     // job (oldest first) counts as their (running + k)-th, and jobs go in the order of that
-    // count, then of id; a user never gets more than maxRunningPerUser running. Sets state
+    // count, then of the user's latest claim (the user served longest ago first: round robin),
+    // then of id; a user never gets more than maxRunningPerUser running. Sets state
     // running, started_at (first claim only), progress 0, the lease (node, expiry, number+1),
     // clears a cancel request. Returns the claimed jobs in that order.
     virtual std::vector<JobLease> claim(const ClaimRequest& request) = 0;

@@ -24,21 +24,23 @@ constexpr const char* kChannel = "tlmhub_jobs";
 constexpr PgStatement kNow{"leases_now", "SELECT " TLMHUB_NOW_MS};
 constexpr PgStatement kClaimLockStatement{"leases_claim_lock", "SELECT pg_advisory_xact_lock($1)"};
 // The claim's order (JobLeaseStore::claim): a user's k-th available queued job, oldest first,
-// is their (running + k)-th; jobs go by that place, then by id, up to the per-user limit.
+// is their (running + k)-th; jobs go by that place, then the user served longest ago first
+// (their latest claim: round robin), then by id, up to the per-user limit.
 // $3: idle owners only (place 1 is a user with nothing running and their oldest job).
 constexpr PgStatement kCandidates{
     "leases_candidates",
     "WITH running AS (SELECT owner_id, COUNT(*) AS n FROM jobs WHERE state = 'running' GROUP BY owner_id),"
     " ranked AS (SELECT j.id AS id, COALESCE(r.n, 0) + ROW_NUMBER() OVER (PARTITION BY j.owner_id ORDER BY j.id)"
-    " AS place FROM jobs j LEFT JOIN running r ON r.owner_id = j.owner_id"
+    " AS place, (SELECT MAX(s.claimed_at) FROM jobs s WHERE s.owner_id = j.owner_id) AS served"
+    " FROM jobs j LEFT JOIN running r ON r.owner_id = j.owner_id"
     " WHERE j.state = 'queued' AND j.available_at <= $1)"
-    " SELECT id FROM ranked WHERE place <= $2 AND (NOT $3::boolean OR place = 1) ORDER BY place, id LIMIT $4"};
+    " SELECT id FROM ranked WHERE place <= $2 AND (NOT $3::boolean OR place = 1) ORDER BY place, served, id LIMIT $4"};
 // Rows another transaction holds (a cancel, a delete) are skipped rather than waited for.
 constexpr PgStatement kClaim{"leases_claim",
                              "UPDATE jobs SET state = 'running',"
                              " started_at = CASE WHEN started_at = 0 THEN $2 ELSE started_at END,"
                              " progress = 0, lease_node = $3, lease_expires_at = $4, lease = lease + 1,"
-                             " cancel_requested = FALSE"
+                             " cancel_requested = FALSE, claimed_at = $5"
                              " WHERE id IN (SELECT id FROM jobs WHERE id = ANY($1::bigint[]) AND state = 'queued'"
                              " FOR UPDATE SKIP LOCKED) RETURNING id, owner_id, lease"};
 constexpr PgStatement kRenew{"leases_renew",
@@ -178,7 +180,7 @@ std::vector<JobLease> PostgresJobLeaseStore::claim(const ClaimRequest& request)
         std::vector<JobLease> claimed;
         if (!ids.empty()) {
             const auto rows = c.exec(tx, kClaim, arrayOf(ids), now / 1000, request.nodeId,
-                                     now + static_cast<std::int64_t>(request.leaseTime.count()));
+                                     now + static_cast<std::int64_t>(request.leaseTime.count()), now);
             // RETURNING comes in no particular order: put the claims in the fair order.
             for (const std::int64_t id : ids)
                 for (const auto& row : rows)

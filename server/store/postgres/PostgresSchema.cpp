@@ -214,8 +214,10 @@ void addJobLeases(pqxx::transaction_base& tx)
              " ADD COLUMN lease_expires_at BIGINT NOT NULL DEFAULT 0,"
              " ADD COLUMN lease BIGINT NOT NULL DEFAULT 0,"
              " ADD COLUMN available_at BIGINT NOT NULL DEFAULT 0,"
-             " ADD COLUMN cancel_requested BOOLEAN NOT NULL DEFAULT FALSE");
+             " ADD COLUMN cancel_requested BOOLEAN NOT NULL DEFAULT FALSE,"
+             " ADD COLUMN claimed_at BIGINT NOT NULL DEFAULT 0");
     tx.exec0("CREATE INDEX jobs_claim ON jobs(state, available_at)");
+    tx.exec0("CREATE INDEX jobs_owner_claimed ON jobs(owner_id, claimed_at)");
     tx.exec0("CREATE INDEX jobs_lease_expiry ON jobs(lease_expires_at) WHERE state = 'running'");
     tx.exec0("CREATE TABLE nodes ("
              " id TEXT PRIMARY KEY,"

@@ -15,15 +15,17 @@ std::int64_t nowMillis()
 }
 
 // The claim's order (JobLeaseStore::claim): a user's k-th available queued job, oldest first,
-// is their (running + k)-th; jobs go by that place, then by id, up to the per-user limit.
+// is their (running + k)-th; jobs go by that place, then the user served longest ago first
+// (their latest claim: round robin), then by id, up to the per-user limit.
 // ?1 now, ?2 maxRunningPerUser, ?3 idle owners only (place 1 is a user with nothing running
 // and their oldest job), ?4 count.
 constexpr const char* kCandidates =
     "WITH running AS (SELECT owner_id, COUNT(*) AS n FROM jobs WHERE state = 'running' GROUP BY owner_id),"
     " ranked AS (SELECT j.id AS id, COALESCE(r.n, 0) + ROW_NUMBER() OVER (PARTITION BY j.owner_id ORDER BY j.id)"
-    " AS place FROM jobs j LEFT JOIN running r ON r.owner_id = j.owner_id"
+    " AS place, (SELECT MAX(s.claimed_at) FROM jobs s WHERE s.owner_id = j.owner_id) AS served"
+    " FROM jobs j LEFT JOIN running r ON r.owner_id = j.owner_id"
     " WHERE j.state = 'queued' AND j.available_at <= ?1)"
-    " SELECT id FROM ranked WHERE place <= ?2 AND (?3 = 0 OR place = 1) ORDER BY place, id LIMIT ?4";
+    " SELECT id FROM ranked WHERE place <= ?2 AND (?3 = 0 OR place = 1) ORDER BY place, served, id LIMIT ?4";
 
 // Ids as a JSON array, for "id IN (SELECT value FROM json_each(?))": one prepared text for any
 // number of ids.
@@ -58,12 +60,13 @@ std::vector<JobLease> SqliteJobLeaseStore::claim(const ClaimRequest& request)
             auto q = c.prepared("UPDATE jobs SET state = 'running',"
                                 " started_at = CASE WHEN started_at = 0 THEN ? ELSE started_at END,"
                                 " progress = 0, lease_node = ?, lease_expires_at = ?, lease = lease + 1,"
-                                " cancel_requested = 0"
+                                " cancel_requested = 0, claimed_at = ?"
                                 " WHERE id = ? AND state = 'queued' RETURNING owner_id, lease");
             q->bind(1, now / 1000);
             q->bind(2, request.nodeId);
             q->bind(3, now + request.leaseTime.count());
-            q->bind(4, id);
+            q->bind(4, now);
+            q->bind(5, id);
             if (q->executeStep())
                 claimed.push_back(JobLease{id, q->getColumn(0).getInt64(), q->getColumn(1).getInt64()});
         }

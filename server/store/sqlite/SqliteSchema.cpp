@@ -204,7 +204,7 @@ void createLabs(SQLite::Database& db)
 // Version 5: the job queue shared by several nodes (server/store/JobLeaseStore.h). A job's
 // lease: the node holding it (NULL when none), when it expires and the lease number (times
 // claimed, the fencing token); when it may be claimed again (backoff, ms) and whether its
-// cancelling was asked. Times in milliseconds since the epoch. The claim reads queued jobs by
+// cancelling was asked; when it was last claimed (a user served longest ago goes first). Times in milliseconds since the epoch. The claim reads queued jobs by
 // (state, available_at), expiry the running ones by lease_expires_at.
 void addJobLeases(SQLite::Database& db)
 {
@@ -213,7 +213,9 @@ void addJobLeases(SQLite::Database& db)
     db.exec("ALTER TABLE jobs ADD COLUMN lease INTEGER NOT NULL DEFAULT 0");
     db.exec("ALTER TABLE jobs ADD COLUMN available_at INTEGER NOT NULL DEFAULT 0");
     db.exec("ALTER TABLE jobs ADD COLUMN cancel_requested INTEGER NOT NULL DEFAULT 0");
+    db.exec("ALTER TABLE jobs ADD COLUMN claimed_at INTEGER NOT NULL DEFAULT 0");
     db.exec("CREATE INDEX jobs_claim ON jobs(state, available_at)");
+    db.exec("CREATE INDEX jobs_owner_claimed ON jobs(owner_id, claimed_at)");
     db.exec("CREATE INDEX jobs_lease_expiry ON jobs(lease_expires_at) WHERE state = 'running'");
     db.exec("CREATE TABLE nodes ("
             " id TEXT PRIMARY KEY,"
