@@ -56,18 +56,27 @@ private:
 
 enum Backend { Sqlite, SqliteFull, Postgres };
 
-void BM_JobStorage(benchmark::State& state, Backend backend)
+// A fresh database of the back end: an SQLite file in `dir`, or a durable PostgreSQL that
+// `postgres` keeps running.
+std::unique_ptr<Storage> openBenchStorage(Backend backend, const TemporaryDir& dir,
+                                          std::unique_ptr<test::TemporaryPostgres>& postgres)
 {
-    const std::string blob = servoResultBlob();
-    TemporaryDir dir;
-    std::unique_ptr<test::TemporaryPostgres> postgres;
     StorageConfig config{.database = (dir.path() / "tlmhub.sqlite").string(), .reserveBytes = 0,
                          .syncEveryCommit = backend == SqliteFull};
     if (backend == Postgres) {
         postgres = std::make_unique<test::TemporaryPostgres>("tlmhub_bench", true);
         config.database = postgres->uri();
     }
-    const auto storage = openStorage(config);
+    return openStorage(config);
+}
+
+
+void BM_JobStorage(benchmark::State& state, Backend backend)
+{
+    const std::string blob = servoResultBlob();
+    TemporaryDir dir;
+    std::unique_ptr<test::TemporaryPostgres> postgres;
+    const auto storage = openBenchStorage(backend, dir, postgres);
     JobRequest request;
     request.ownerId = 1;
     JobInfo resolved;
@@ -93,13 +102,7 @@ void BM_JobLease(benchmark::State& state, Backend backend)
 {
     TemporaryDir dir;
     std::unique_ptr<test::TemporaryPostgres> postgres;
-    StorageConfig config{.database = (dir.path() / "tlmhub.sqlite").string(), .reserveBytes = 0,
-                         .syncEveryCommit = backend == SqliteFull};
-    if (backend == Postgres) {
-        postgres = std::make_unique<test::TemporaryPostgres>("tlmhub_bench", true);
-        config.database = postgres->uri();
-    }
-    const auto storage = openStorage(config);
+    const auto storage = openBenchStorage(backend, dir, postgres);
     const auto owner = storage->users().insert("bench", "", "user");
     if (!owner) throw std::runtime_error("cannot create the benchmark's user");
     JobRequest request;
