@@ -354,7 +354,8 @@ TEST(ServerRestart, SigtermStopsRunningJobsAsInterrupted)
         auto r = admin.post("/api/v1/jobs", {{"hmf", readFile(kPositionServo)}, {"stop", 3000.0}});
         ASSERT_EQ(r.status, 201) << r.body;
         job = r.json()["id"].get<std::int64_t>();
-        for (int i = 0; i < 100 && admin.get("/api/v1/jobs/" + std::to_string(job)).json()["state"] != "running"; ++i)
+        // Started, not only claimed: a claimed job that never started goes back to the queue.
+        for (int i = 0; i < 600 && admin.get("/api/v1/jobs/" + std::to_string(job)).json()["progress"] <= 0.0; ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         const int status = server.terminate();
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << server.output();
