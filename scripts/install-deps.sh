@@ -5,7 +5,7 @@
 set -euo pipefail
 packages=(build-essential cmake pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
           libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
-          libsqlitecpp-dev libsodium-dev libzstd-dev postgresql-15 libpqxx-dev libssl-dev nginx-light
+          libsqlitecpp-dev libsodium-dev libzstd-dev libzip-dev postgresql-15 libpqxx-dev libssl-dev nginx-light
           python3-venv python3-websocket python3-numpy)
 # The web app needs Node.js and npm; a machine that already has them (any install) keeps them.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
