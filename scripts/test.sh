@@ -32,7 +32,7 @@ asan_build() {
 tsan_build() {
   sanitizer_config build-tsan -DTLMHUB_SANITIZE=thread
   cmake --build build-tsan -j"$jobs" --target tlmhub-tests tlmhub-server-tests tlmhub-store-tests tlmhub-cli \
-    tlmhub-cli-tests
+    tlmhub-cli-tests tlmhub-fmu-tests
 }
 # A race aborts the process that has it, so one in a server started by a test fails that test.
 tsan_test() {

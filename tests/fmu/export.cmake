@@ -1,0 +1,1 @@
+# Export side of the FMU tests.

@@ -1,0 +1,1 @@
+# Import side of the FMU tests.
