@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Install dependencies, build, and run the whole test suite: unit tests, server tests on a
 # real server process, validation against Hopsan's reference results in ../shared, and the
-# web app's unit and browser tests (Debian's Chromium). Then the same tests (except web,
-# models, validation and the multi-process scale-out faults) and the fuzz targets under ASan+UBSan, and the same tests again
-# under TSan (the multi-threaded simulation, the job queue, and the server's I/O threads and
-# workers, in process and in the server processes the tests start). Each stage prints its
-# wall time.
+# web app's unit and browser tests (Debian's Chromium). Then the same tests and the fuzz
+# targets under ASan+UBSan, and the same tests again under TSan (the multi-threaded
+# simulation, the job queue, and the server's I/O threads and workers, in process and in the
+# server processes the tests start); the sanitizer stages leave out the web app, the shared
+# models, validation, the Python client (it drives the same routes the server tests do) and
+# the multi-process scale-out faults. Each stage prints its wall time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -37,13 +38,13 @@ tsan_build() {
 # A race aborts the process that has it, so one in a server started by a test fails that test.
 tsan_test() {
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-    ctest --test-dir build-tsan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout)$'
+    ctest --test-dir build-tsan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout|python)$'
 }
 
 stage install scripts/install-deps.sh --with-browser --with-clang
 stage build scripts/build.sh
 stage test ctest --test-dir build --output-on-failure -j"$jobs"
 stage asan-build asan_build
-stage asan-test ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout)$'
+stage asan-test ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout|python)$'
 stage tsan-build tsan_build
 stage tsan-test tsan_test
