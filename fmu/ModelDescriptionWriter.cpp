@@ -5,6 +5,7 @@
 
 #include <pugixml.hpp>
 
+#include <set>
 #include <sstream>
 
 namespace tlmhub::fmu {
@@ -107,6 +108,17 @@ std::string writeModelDescription(const ModelDescription& description)
     cs.append_attribute("canGetAndSetFMUstate") = description.canGetAndSetFMUstate;
     cs.append_attribute("canSerializeFMUstate") = description.canSerializeFMUstate;
     cs.append_attribute("providesDirectionalDerivative") = false;
+
+    // Every unit a variable names is declared (the standard requires it), without conversions.
+    std::set<std::string> units;
+    for (const ScalarVariable& variable : description.variables)
+        if (variable.type == VariableType::Real && !variable.unit.empty())
+            units.insert(variable.unit);
+    if (!units.empty()) {
+        pugi::xml_node definitions = root.append_child("UnitDefinitions");
+        for (const std::string& unit : units)
+            definitions.append_child("Unit").append_attribute("name") = unit.c_str();
+    }
 
     if (description.startTime || description.stopTime || description.tolerance || description.stepSize) {
         pugi::xml_node experiment = root.append_child("DefaultExperiment");

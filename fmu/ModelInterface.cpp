@@ -4,6 +4,7 @@
 #include "core/Node.h"
 #include "core/ParameterPath.h"
 #include "core/Port.h"
+#include "core/Simulation.h"
 
 #include <cctype>
 #include <cstdlib>
@@ -171,7 +172,7 @@ Result<ModelInterface> InterfaceBuilder::finish(ModelDescription description)
     ModelInterface result;
     for (auto* list : {&mInputs, &mOutputs, &mParameters}) {
         for (Entry& entry : *list) {
-            entry.variable.valueReference = std::uint32_t(result.description.variables.size());
+            entry.variable.valueReference = std::uint32_t(description.variables.size());
             if (entry.variable.causality == Causality::Output)
                 description.outputs.push_back(description.variables.size() + 1);
             description.variables.push_back(std::move(entry.variable));
@@ -229,6 +230,23 @@ Result<ModelInterface> describeInterface(const System& root, const InterfaceOpti
     if (Status s = builder.addTimestep(root.desiredTimestep); !s)
         return s;
     return builder.finish(std::move(description));
+}
+
+Status takeInputStartsFromInitialisation(ModelInterface& modelInterface, const Model& model)
+{
+    Result<Simulation> compiled = compile(model, {.logSamples = 0});
+    if (!compiled)
+        return compiled.status();
+    if (Status started = compiled->initialise(); !started)
+        return started;
+    const System& root = compiled->system();
+    auto& variables = modelInterface.description.variables;
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        const VariableBinding& binding = modelInterface.bindings[i];
+        if (variables[i].causality == Causality::Input && binding.kind == VariableBinding::Kind::NodeSlot)
+            variables[i].start = root.component(binding.component)->port(binding.port)->node()->value(binding.slot);
+    }
+    return Status::ok();
 }
 
 } // namespace tlmhub::fmu

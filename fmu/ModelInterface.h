@@ -12,6 +12,7 @@
 //    from initialisation on);
 //  - "tlmhub.timestep" is a fixed parameter: the model's step (default the model's own).
 // Value references count from 0 in that order: inputs, outputs, parameters, timestep.
+#include "core/Model.h"
 #include "core/Status.h"
 #include "core/System.h"
 #include "fmu/ModelDescription.h"
@@ -41,5 +42,11 @@ struct ModelInterface {
 };
 
 Result<ModelInterface> describeInterface(const System& root, const InterfaceOptions& options = {});
+
+// Sets each input's start to the value its node slot has once the model is initialised
+// (start values, the TLM copy rule applied), so that an FMU whose inputs are left alone
+// computes what a run of the model does. Compiles and initialises a copy of `model`: its
+// failure (the model does not compile or initialise) is returned.
+Status takeInputStartsFromInitialisation(ModelInterface& modelInterface, const Model& model);
 
 } // namespace tlmhub::fmu

@@ -81,7 +81,12 @@ Result<ModelInterface> FmuInstance::loadModel(const std::string& resourceDirecto
     if (loaded.hasErrors())
         return loaded.status();
     mModel = Model(std::move(loaded.root));
-    return describeInterface(mModel.root(), {parameters, {}});
+    Result<ModelInterface> described = describeInterface(mModel.root(), {parameters, {}});
+    if (!described)
+        return described;
+    if (Status started = takeInputStartsFromInitialisation(*described, mModel); !started)
+        return started;
+    return described;
 }
 
 void FmuInstance::log(fmi2Status status, const char* category, const std::string& message)
