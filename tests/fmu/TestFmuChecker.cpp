@@ -120,7 +120,8 @@ class FmuChecker : public ::testing::Test {
 protected:
     static void SetUpTestSuite()
     {
-        sDirectory = fs::temp_directory_path() / ("tlmhub-fmu-checker-" + std::to_string(::getpid()));
+        // A space in the path: the resource location must be percent-encoded.
+        sDirectory = fs::temp_directory_path() / ("tlmhub fmu checker-" + std::to_string(::getpid()));
         fs::create_directories(sDirectory);
         const fs::path fmu = sDirectory / "Interfaces.fmu";
         runCommand(quoted(TLMHUB_CLI) + " fmu " + quoted(kModel) + " -o " + quoted(fmu.string()) +
@@ -155,7 +156,13 @@ protected:
         doc.load_string(sXml.c_str());
         return doc.child("fmiModelDescription").attribute("guid").value();
     }
-    static std::string resourceUri() { return "file://" + (sDirectory / "unzipped/resources").string(); }
+    static std::string resourceUri()
+    {
+        std::string uri = "file://";
+        for (char ch : (sDirectory / "unzipped/resources").string())
+            uri += ch == ' ' ? std::string("%20") : std::string(1, ch);
+        return uri;
+    }
     static fmi2Component instantiate(const std::string& guidText)
     {
         return sApi.fmi2Instantiate("checker", fmi2CoSimulation, guidText.c_str(), resourceUri().c_str(),
