@@ -7,9 +7,10 @@
 //    visible slots (effort, flow, position...) the other; the variables are named
 //    "<component>.<slot short name>" ("P1.c", "P1.Zc", "P1.p", "P1.q");
 //    a C-type interface takes c and Zc as inputs, a Q-type one takes the others;
-//  - the root system's parameters and the component parameters the caller names
+//  - the root system's real parameters and the component parameters the caller names
 //    ("Comp.param") are parameters (causality parameter, variability fixed: they apply
-//    from initialisation on);
+//    from initialisation on); their values must be numbers, not expressions (a system
+//    parameter of another type has no FMI 2.0 real form and is left out);
 //  - "tlmhub.timestep" is a fixed parameter: the model's step (default the model's own).
 // Value references count from 0 in that order: inputs, outputs, parameters, timestep.
 #include "core/Model.h"

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace tlmhub::fmu {
@@ -150,12 +151,13 @@ fmi2Status FmuInstance::exitInitializationMode()
         return error("fmi2ExitInitializationMode: " + describe(model.status()));
     const auto& variables = mInterface.description.variables;
     double timestep = 0.0;
+    for (std::size_t i = 0; i < variables.size(); ++i)
+        if (mInterface.bindings[i].kind == VariableBinding::Kind::Timestep)
+            timestep = mValues[i];
     // System parameters first: component values may refer to them.
     for (bool systemParameters : {true, false}) {
         for (std::size_t i = 0; i < variables.size(); ++i) {
             const VariableBinding& binding = mInterface.bindings[i];
-            if (binding.kind == VariableBinding::Kind::Timestep)
-                timestep = mValues[i];
             if (binding.kind != VariableBinding::Kind::Parameter ||
                 (binding.parameterPath.find('.') == std::string::npos) != systemParameters)
                 continue;
@@ -215,7 +217,14 @@ fmi2Status FmuInstance::getReal(const fmi2ValueReference vr[], size_t nvr, fmi2R
         if (vr[k] >= mValues.size())
             return error("fmi2GetReal: no variable has value reference " + std::to_string(vr[k]));
         const ScalarVariable& variable = mInterface.description.variables[vr[k]];
-        value[k] = variable.causality == Causality::Output ? (mSlots[vr[k]] ? *mSlots[vr[k]] : 0.0) : mValues[vr[k]];
+        if (variable.causality != Causality::Output) {
+            value[k] = mValues[vr[k]];
+            continue;
+        }
+        // The model is compiled with its parameters at the end of initialisation mode.
+        if (!mSlots[vr[k]])
+            return error("fmi2GetReal: output '" + variable.name + "' is known from fmi2ExitInitializationMode on");
+        value[k] = *mSlots[vr[k]];
     }
     return fmi2OK;
 }

@@ -413,6 +413,10 @@ TEST_F(FmuChecker, UnsupportedFunctionsReturnError)
     EXPECT_EQ(sApi.fmi2GetInteger(c, &vr, 1, &integer), fmi2Error);
     fmi2Status status;
     EXPECT_EQ(sApi.fmi2GetStatus(c, fmi2PendingStatus, &status), fmi2Discard);
+    const fmi2ValueReference output = Out;
+    fmi2Real value = 0;
+    EXPECT_EQ(sApi.fmi2GetReal(c, &output, 1, &value), fmi2Error) << "an output before initialisation";
+    EXPECT_EQ(sApi.fmi2DoStep(c, 0.0, 0.001, fmi2True), fmi2Error) << "a step before initialisation";
     sApi.fmi2FreeInstance(c);
 }
 
