@@ -165,6 +165,20 @@ fmi2Status FmuInstance::exitInitializationMode()
                 return error("fmi2ExitInitializationMode: " + describe(set));
         }
     }
+    // A signal input's value as set is its node's start value, so components initialise
+    // with it as with a constant source. (A power port's node is shared with the component
+    // on the other side, whose start values stay; writeInputs() sets its inputs for the steps.)
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        const VariableBinding& binding = mInterface.bindings[i];
+        if (variables[i].causality != Causality::Input || binding.kind != VariableBinding::Kind::NodeSlot)
+            continue;
+        Port* port = model->root().component(binding.component)->port(binding.port);
+        if (port->kind() != PortKind::Write)
+            continue;
+        if (!port->hasStartNode())
+            port->createStartNode();
+        port->startValues[binding.slot] = mValues[i];
+    }
     SimulationSettings settings{mStartTime, mStopTime.value_or(mStartTime + kOpenEndedHorizon), timestep, 0};
     Result<Simulation> compiled = compile(std::move(*model), settings);
     if (!compiled)

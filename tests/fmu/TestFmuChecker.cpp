@@ -2,8 +2,10 @@
 // unzips it, checks modelDescription.xml against FMI 2.0's rules, loads the binary with
 // dlopen and co-simulates it, comparing each communication point with `tlmhub-cli run`.
 // The model (tests/fmu/models/Interfaces.hmf) has a signal input, a signal output and a
-// hydraulic C-type power port; its inputs stay at their starts, which are the values the
-// model's own initialisation gives their nodes, so a plain run of the model is the reference.
+// hydraulic C-type power port. Left at their starts (the values the model's own
+// initialisation gives their nodes), the inputs make a plain run of the model the reference;
+// for the signal input set to 1.5, the reference is the model with a SignalConstant of 1.5
+// in place of the input interface.
 #include "fmu/Fmi2.h"
 
 #include <gtest/gtest.h>
@@ -70,11 +72,12 @@ void unzipInto(const fs::path& archive, const fs::path& directory)
     zip_close(zip);
 }
 
-// `tlmhub-cli run --csv` of the model: column name -> one value per step from the start.
-std::map<std::string, std::vector<double>> referenceRun(const fs::path& directory, const std::string& extraArgs)
+// `tlmhub-cli run --csv` of a model: column name -> one value per step from the start.
+std::map<std::string, std::vector<double>> referenceRun(const fs::path& directory, const std::string& extraArgs,
+                                                        const std::string& model = kModel)
 {
     const fs::path csv = directory / "reference.csv";
-    runCommand(quoted(TLMHUB_CLI) + " run " + quoted(kModel) + " --samples 501 " + extraArgs + " --csv " +
+    runCommand(quoted(TLMHUB_CLI) + " run " + quoted(model) + " --samples 501 " + extraArgs + " --csv " +
                quoted(csv.string()));
     std::ifstream in(csv);
     std::string line;
@@ -359,6 +362,43 @@ TEST_F(FmuChecker, ParameterSetBeforeInitialisationActsAsInARunWithIt)
     expectSameAsRun(c, reference);
     EXPECT_EQ(sApi.fmi2SetReal(c, parameters, 1, values), fmi2Error) << "a fixed parameter after initialisation";
     EXPECT_NE(log().find("fixed"), std::string::npos) << log();
+    sApi.fmi2FreeInstance(c);
+}
+
+// The reference for an input set during initialisation: the model with a constant source in
+// place of the input interface (same name, so the same columns).
+std::string modelWithConstantInput(const fs::path& directory, double value)
+{
+    std::ifstream in(kModel);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string hmf = text.str();
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const std::size_t at = hmf.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        hmf.replace(at, from.size(), to);
+    };
+    replace(R"(<component typename="SignalInputInterface" name="In"/>)",
+            R"(<component typename="SignalConstant" name="In"><parameters><parameter name="y#Value" value=")" +
+                std::to_string(value) + R"(" type="double"/></parameters></component>)");
+    replace(R"(startcomponent="In" startport="out")", R"(startcomponent="In" startport="y")");
+    const fs::path path = directory / "ConstantInput.hmf";
+    std::ofstream(path) << hmf;
+    return path.string();
+}
+
+TEST_F(FmuChecker, AnInputSetInInitialisationActsAsAConstantSource)
+{
+    const auto reference = referenceRun(sDirectory, "", modelWithConstantInput(sDirectory, 1.5));
+    fmi2Component c = instantiate(guid());
+    ASSERT_NE(c, nullptr) << log();
+    ASSERT_EQ(sApi.fmi2SetupExperiment(c, fmi2False, 0, 0.0, fmi2True, 0.5), fmi2OK);
+    ASSERT_EQ(sApi.fmi2EnterInitializationMode(c), fmi2OK);
+    const fmi2ValueReference input = In;
+    const fmi2Real value = 1.5;
+    ASSERT_EQ(sApi.fmi2SetReal(c, &input, 1, &value), fmi2OK);
+    ASSERT_EQ(sApi.fmi2ExitInitializationMode(c), fmi2OK) << log();
+    expectSameAsRun(c, reference);
     sApi.fmi2FreeInstance(c);
 }
 
