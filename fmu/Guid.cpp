@@ -13,8 +13,14 @@ std::string guidOfModel(std::string_view hmfText, const std::vector<std::string>
         hash.update(path);
     }
     const std::string hex = hash.hexDigest();
-    return "{" + hex.substr(0, 8) + "-" + hex.substr(8, 4) + "-" + hex.substr(12, 4) + "-" + hex.substr(16, 4) +
-           "-" + hex.substr(20, 12) + "}";
+    std::string guid = "{";
+    for (std::size_t i = 0; i < 32; ++i) {
+        if (i == 8 || i == 12 || i == 16 || i == 20)
+            guid += '-';
+        guid += hex[i];
+    }
+    guid += '}';
+    return guid;
 }
 
 } // namespace tlmhub::fmu

@@ -190,8 +190,9 @@ protected:
             {Out, "Out#in#Value"}, {P1q, "P1#P1#Flow"}, {P1p, "P1#P1#Pressure"}};
         const double h = 0.001;
         for (int k = 0; k <= 500; ++k) {
-            if (k > 0)
+            if (k > 0) {
                 ASSERT_EQ(sApi.fmi2DoStep(c, (k - 1) * h, h, fmi2True), fmi2OK) << "step " << k << "\n" << log();
+            }
             for (const auto& [vr, column] : outputs) {
                 fmi2Real value = 0;
                 ASSERT_EQ(sApi.fmi2GetReal(c, &vr, 1, &value), fmi2OK);
@@ -258,8 +259,9 @@ TEST_F(FmuChecker, ModelDescriptionFollowsFmi2)
         EXPECT_TRUE(references.insert(variable.attribute("valueReference").as_uint()).second) << "duplicate vr";
         EXPECT_TRUE(legalCombination(causality, variability));
         ASSERT_TRUE(real) << "tlmhub's FMU variables are real";
-        if (real.attribute("unit"))
+        if (real.attribute("unit")) {
             EXPECT_TRUE(units.count(real.attribute("unit").value())) << "undeclared unit";
+        }
         // Start: required for inputs and parameters (whose initial is exact), forbidden for
         // calculated outputs.
         if (causality == "input" || causality == "parameter") {
