@@ -1,4 +1,5 @@
-// tlmhub-cli: run a Hopsan model, write CSV, validate an .hvc, describe models and components;
+// tlmhub-cli: run a Hopsan model, write CSV, validate an .hvc, describe models and components,
+// export a model as an FMU;
 // `remote` runs models on a tlmhub server.
 #include "cli/Commands.h"
 
@@ -18,6 +19,7 @@ void usage(std::ostream& os)
           "  tlmhub-cli components [--json]\n"
           "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N|auto[,...]] [--vary Comp.param=a:b:n]\n"
           "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n"
+          "  tlmhub-cli fmu MODEL.hmf -o OUT.fmu [--parameter Comp.param]... [--identifier NAME]\n"
           "  tlmhub-cli remote login|run|sweep|optimise|jobs|results ...   (tlmhub-cli remote --help)\n";
 }
 
@@ -38,6 +40,7 @@ int main(int argc, char** argv)
         if (command == "components") return tlmhub::cli::componentsCommand(args);
         if (command == "bench") return tlmhub::cli::benchCommand(args);
         if (command == "batch") return tlmhub::cli::batchCommand(args);
+        if (command == "fmu") return tlmhub::cli::fmuCommand(args, argv[0]);
         if (command == "remote") return tlmhub::cli::remoteCommand(args);
     } catch (const std::exception& e) {
         std::cerr << "tlmhub-cli: " << e.what() << "\n";

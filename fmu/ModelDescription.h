@@ -37,6 +37,15 @@ struct ScalarVariable {
 //  kind 'C': the FMU takes the wave variable and characteristic impedance and gives back
 //            effort and flow (inside it, a Q-type component meets a ...InterfaceC);
 //  kind 'Q': the FMU takes effort and flow and gives back the wave variable and impedance.
+// In modelDescription.xml, after DefaultExperiment (as the schema orders it):
+//   <VendorAnnotations><Tool name="tlmhub">
+//     <PowerPort name="P1" nodeType="NodeHydraulic" kind="C">
+//       <Input slot="c" variable="P1.c"/><Input slot="Zc" variable="P1.Zc"/>
+//       <Output slot="q" variable="P1.q"/><Output slot="p" variable="P1.p"/> ...
+//     </PowerPort> ...
+//   </Tool></VendorAnnotations>
+// `slot` is the node variable's short name (core/NodeTypes.cpp), `variable` a ScalarVariable's
+// name; inputs and outputs each in node slot order.
 struct PowerPort {
     std::string name;       // the interface component's name in the exported model
     std::string nodeType;   // "NodeHydraulic"

@@ -7,11 +7,13 @@
 //    visible slots (effort, flow, position...) the other; the variables are named
 //    "<component>.<slot short name>" ("P1.c", "P1.Zc", "P1.p", "P1.q");
 //    a C-type interface takes c and Zc as inputs, a Q-type one takes the others;
-//  - the root system's parameters and the component parameters the caller names
+//  - the root system's real parameters and the component parameters the caller names
 //    ("Comp.param") are parameters (causality parameter, variability fixed: they apply
-//    from initialisation on);
+//    from initialisation on); their values must be numbers, not expressions (a system
+//    parameter of another type has no FMI 2.0 real form and is left out);
 //  - "tlmhub.timestep" is a fixed parameter: the model's step (default the model's own).
 // Value references count from 0 in that order: inputs, outputs, parameters, timestep.
+#include "core/Model.h"
 #include "core/Status.h"
 #include "core/System.h"
 #include "fmu/ModelDescription.h"
@@ -41,5 +43,11 @@ struct ModelInterface {
 };
 
 Result<ModelInterface> describeInterface(const System& root, const InterfaceOptions& options = {});
+
+// Sets each input's start to the value its node slot has once the model is initialised
+// (start values, the TLM copy rule applied), so that an FMU whose inputs are left alone
+// computes what a run of the model does. Compiles and initialises a copy of `model`: its
+// failure (the model does not compile or initialise) is returned.
+Status takeInputStartsFromInitialisation(ModelInterface& modelInterface, const Model& model);
 
 } // namespace tlmhub::fmu
