@@ -1,0 +1,185 @@
+#include "fmu/FmuWrapper.h"
+
+#include "core/System.h"
+#include "fmu/FmuLoadPolicy.h"
+
+#include <algorithm>
+
+namespace tlmhub::fmu {
+
+FmuWrapper::FmuWrapper(CqsKind kind, char powerPortKind, const char* otherType)
+    : Component(kind), mPowerPortKind(powerPortKind), mOtherType(otherType)
+{
+}
+
+FmuWrapper::~FmuWrapper() = default;
+
+void FmuWrapper::configure()
+{
+    addConstant("path", "The FMU file (.fmu, FMI 2.0 co-simulation)", "", mPath, ParameterType::FilePath);
+}
+
+Status FmuWrapper::claimName(const std::string& name, const std::string& variable)
+{
+    if (std::find(mUsedNames.begin(), mUsedNames.end(), name) != mUsedNames.end())
+        return {StatusCode::InvalidModel,
+                "FMU variable '" + variable + "' gives the name '" + name + "', which another one has already"};
+    mUsedNames.push_back(name);
+    return Status::ok();
+}
+
+Status FmuWrapper::loadExternalDefinition()
+{
+    const Parameter* path = parameters().find("path");
+    const std::string requested = path ? path->value : std::string();
+    // Ports, once declared, have connections and bound variables: a component keeps its FMU.
+    if (mPackage) {
+        if (requested == mLoadedPath) return Status::ok();
+        return {StatusCode::InvalidParameter, "this component already wraps '" + mLoadedPath +
+                                                  "'; use a new component for another FMU", modelPath() + ".path"};
+    }
+    Result<std::filesystem::path> file = resolveFmuPath(fmuLoadPolicy(), requested, modelDirectory());
+    if (!file) return {file.status().code(), file.status().message(), modelPath() + ".path"};
+    Result<std::shared_ptr<const FmuPackage>> package = FmuPackage::open(*file);
+    if (!package) return {package.status().code(), package.status().message(), modelPath() + ".path"};
+    if (Status declared = declarePorts((*package)->description()); !declared)
+        return {declared.code(), declared.message(), modelPath()};
+    mPackage = std::move(*package);
+    mLoadedPath = requested;
+    return Status::ok();
+}
+
+Status FmuWrapper::declarePorts(const ModelDescription& description)
+{
+    mUsedNames = {"path"};
+    std::vector<const ScalarVariable*> inPowerPorts;
+    const auto variableNamed = [&](const std::string& name) -> const ScalarVariable* {
+        for (const ScalarVariable& v : description.variables)
+            if (v.name == name) return &v;
+        return nullptr;
+    };
+
+    for (const PowerPort& powerPort : description.powerPorts) {
+        if (powerPort.kind != mPowerPortKind)
+            return {StatusCode::InvalidModel, "the FMU's power port '" + powerPort.name + "' is of kind " +
+                                                  powerPort.kind + "; use " + mOtherType + " for this FMU"};
+        NodeType type = NodeType::Empty;
+        nodeTypeFromName(powerPort.nodeType, type);
+        const std::string portName = sanitizeName(powerPort.name);
+        if (Status claimed = claimName(portName, powerPort.name); !claimed) return claimed;
+        Port* port = addPowerPort(portName, type);
+        const auto slotOf = [&](const std::string& shortName) {
+            const auto& variables = nodeTypeInfo(type).variables;
+            for (std::size_t i = 0; i < variables.size(); ++i)
+                if (variables[i].shortName == shortName) return static_cast<int>(i);
+            return 0;   // the parser admits known slots only
+        };
+        for (const auto& [slot, variable] : powerPort.inputs) {
+            const ScalarVariable* v = variableNamed(variable);
+            mInputs.push_back({port, slotOf(slot), v->valueReference, nullptr});
+            inPowerPorts.push_back(v);
+        }
+        for (const auto& [slot, variable] : powerPort.outputs) {
+            const ScalarVariable* v = variableNamed(variable);
+            mOutputs.push_back({port, slotOf(slot), v->valueReference, nullptr});
+            inPowerPorts.push_back(v);
+        }
+        ++mPowerPortCount;
+    }
+
+    for (const ScalarVariable& v : description.variables) {
+        if (v.type != VariableType::Real) continue;
+        if (std::find(inPowerPorts.begin(), inPowerPorts.end(), &v) != inPowerPorts.end()) continue;
+        const std::string name = sanitizeName(v.name);
+        if (v.causality == Causality::Input) {
+            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
+            double** data = &mAutoPointers.emplace_back(nullptr);
+            Port* port = addInputVariable(name, v.description, v.unit, v.start.value_or(0.0), data);
+            mInputs.push_back({port, 0, v.valueReference, data});
+        } else if (v.causality == Causality::Output) {
+            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
+            double** data = &mAutoPointers.emplace_back(nullptr);
+            Port* port = addOutputVariable(name, v.description, v.unit, data);
+            mOutputs.push_back({port, 0, v.valueReference, data});
+        } else if (v.causality == Causality::Parameter) {
+            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
+            double& value = mParameterValues.emplace_back(v.start.value_or(0.0));
+            addConstant(name, v.description, v.unit, value, value);
+            mParameterReferences.push_back(v.valueReference);
+        }
+    }
+    for (const Binding& b : mInputs) mInputReferences.push_back(b.reference);
+    for (const Binding& b : mOutputs) mOutputReferences.push_back(b.reference);
+    mInputValues.resize(mInputs.size());
+    mOutputValues.resize(mOutputs.size());
+    mParameterBuffer.resize(mParameterReferences.size());
+    return Status::ok();
+}
+
+void FmuWrapper::logFromFmu(FmuInstance::LogLevel level, const std::string& text)
+{
+    switch (level) {
+    case FmuInstance::LogLevel::Info: addInfoMessage(text); break;
+    case FmuInstance::LogLevel::Warning: addWarningMessage(text); break;
+    case FmuInstance::LogLevel::Error: addErrorMessage(text); break;
+    }
+}
+
+void FmuWrapper::initialize()
+{
+    mInstance.reset();
+    if (!mPackage) {
+        stopSimulation("no FMU loaded (parameter path: '" + mPath + "')");
+        return;
+    }
+    const auto bindSlots = [&](const std::vector<Binding>& bindings, std::vector<double*>& data) {
+        data.clear();
+        for (const Binding& b : bindings) data.push_back(b.autoData ? *b.autoData : getSafeNodeDataPtr(b.port, b.slot));
+    };
+    bindSlots(mInputs, mInputData);
+    bindSlots(mOutputs, mOutputData);
+
+    Result<std::unique_ptr<FmuInstance>> instance = FmuInstance::create(
+        mPackage, name(), [this](FmuInstance::LogLevel level, const std::string& text) { logFromFmu(level, text); });
+    if (!instance) {
+        stopSimulation("FMU '" + mPath + "': " + instance.status().message());
+        return;
+    }
+    mInstance = std::move(*instance);
+    std::copy(mParameterValues.begin(), mParameterValues.end(), mParameterBuffer.begin());
+    for (std::size_t i = 0; i < mInputs.size(); ++i) mInputValues[i] = *mInputData[i];
+    Status status = mInstance->enterInitialization(mTime);
+    if (status && !mInstance->setReal(mParameterReferences, mParameterBuffer.data()))
+        status = {StatusCode::InitFailed, "fmi2SetReal of the parameters failed"};
+    if (status && !mInstance->setReal(mInputReferences, mInputValues.data()))
+        status = {StatusCode::InitFailed, "fmi2SetReal of the inputs failed"};
+    if (status) status = mInstance->exitInitialization();
+    if (status && !mInstance->getReal(mOutputReferences, mOutputValues.data()))
+        status = {StatusCode::InitFailed, "fmi2GetReal of the outputs failed"};
+    if (!status) {
+        stopSimulation("FMU '" + mPath + "': " + status.message());
+        return;
+    }
+    for (std::size_t i = 0; i < mOutputs.size(); ++i) *mOutputData[i] = mOutputValues[i];
+}
+
+void FmuWrapper::simulateOneTimestep()
+{
+    if (!mInstance) return;
+    for (std::size_t i = 0; i < mInputData.size(); ++i) mInputValues[i] = *mInputData[i];
+    // mTime has already advanced: the step runs from the previous communication point.
+    if (!mInstance->setReal(mInputReferences, mInputValues.data()) || !mInstance->doStep(mTime - mTimestep, mTimestep) ||
+        !mInstance->getReal(mOutputReferences, mOutputValues.data())) {
+        stopSimulation("FMU '" + mPath + "' failed at t = " + std::to_string(mTime));
+        mInstance.reset();
+        return;
+    }
+    for (std::size_t i = 0; i < mOutputData.size(); ++i) *mOutputData[i] = mOutputValues[i];
+}
+
+void FmuWrapper::finalize()
+{
+    mInstance.reset();
+}
+
+} // namespace tlmhub::fmu
