@@ -38,6 +38,8 @@ Status FmuWrapper::loadExternalDefinition()
         return {StatusCode::InvalidParameter, "this component already wraps '" + mLoadedPath +
                                                   "'; use a new component for another FMU", modelPath() + ".path"};
     }
+    // A new component has no FMU yet (initialize() says so if it never gets one).
+    if (requested.empty()) return Status::ok();
     Result<std::filesystem::path> file = resolveFmuPath(fmuLoadPolicy(), requested, modelDirectory());
     if (!file) return {file.status().code(), file.status().message(), modelPath() + ".path"};
     Result<std::shared_ptr<const FmuPackage>> package = FmuPackage::open(*file);

@@ -2,7 +2,9 @@
 // run by the core and by tlmhub-cli, against its exact discrete solution.
 #include "FmuImportTestSupport.h"
 
+#include "core/ComponentFactory.h"
 #include "core/Model.h"
+#include "core/ParameterPath.h"
 #include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 #include "fmu/FmuLoadPolicy.h"
@@ -61,6 +63,26 @@ TEST_F(FmuImport, ModelFileConnectsToTheFmusPortsAndSetsItsParameters)
     EXPECT_EQ(wrapper->parameters().find("k")->value, "3");
     EXPECT_EQ(wrapper->parameters().find("y0")->value, "0.5");
     ASSERT_TRUE(wrapper->parameters().find("u#Value"));
+}
+
+TEST_F(FmuImport, EditingThePathDeclaresThePortsOnce)
+{
+    System root;
+    root.modelDirectory = dir.path().string();
+    root.addComponent(ComponentFactory::instance().create("FMIWrapper"));
+    Component& wrapper = *root.component("FMIWrapper");
+    EXPECT_FALSE(wrapper.port("u"));
+    Parameter& path = *wrapper.parameters().find("path");
+    ASSERT_TRUE(assignParameter(wrapper, path, "integrator.fmu"));
+    EXPECT_TRUE(wrapper.port("u"));
+    EXPECT_TRUE(wrapper.port("y"));
+    EXPECT_TRUE(wrapper.parameters().find("k"));
+    // Another FMU would change the ports under their connections: refused, the path kept.
+    writeIntegratorFmu(dir.path() / "other.fmu");
+    const Status refused = assignParameter(wrapper, path, "other.fmu");
+    EXPECT_EQ(refused.code(), StatusCode::InvalidParameter);
+    EXPECT_NE(refused.message().find("use a new component"), std::string::npos) << refused.message();
+    EXPECT_EQ(path.value, "integrator.fmu");
 }
 
 TEST_F(FmuImport, RunMatchesTheExactDiscreteSolution)

@@ -98,6 +98,19 @@ TEST_F(FmuImportBroken, HostileArchive)
     EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "escape"));
 }
 
+TEST_F(FmuImportBroken, NoPathGiven)
+{
+    const std::string xml = R"(<hopsanmodelfile hmfversion="0.4" hopsancoreversion="2.20.0"><system name="M">
+        <simulationtime stop="0.01" timestep="0.001" start="0"/>
+        <objects><component typename="FMIWrapper" name="F"/></objects></system></hopsanmodelfile>)";
+    LoadedModel loaded = loadHmfString(xml, dir.path().string());
+    ASSERT_FALSE(loaded.hasErrors()) << loaded.firstError();
+    Result<Simulation> sim = compile(*loaded.root, {});
+    ASSERT_TRUE(sim) << describe(sim.status());
+    const Status ran = sim->run();
+    EXPECT_NE(describe(ran).find("no FMU loaded"), std::string::npos) << describe(ran);
+}
+
 TEST_F(FmuImportBroken, MissingFile)
 {
     expectLoadError("no FMU file 'broken.fmu'");
