@@ -19,12 +19,39 @@ void FmuWrapper::configure()
     addConstant("path", "The FMU file (.fmu, FMI 2.0 co-simulation)", "", mPath, ParameterType::FilePath);
 }
 
-Status FmuWrapper::claimName(const std::string& name, const std::string& variable)
+bool FmuWrapper::isPowerPortVariable(const ModelDescription& description, const std::string& name)
 {
-    if (std::find(mUsedNames.begin(), mUsedNames.end(), name) != mUsedNames.end())
-        return {StatusCode::InvalidModel,
-                "FMU variable '" + variable + "' gives the name '" + name + "', which another one has already"};
-    mUsedNames.push_back(name);
+    for (const PowerPort& port : description.powerPorts)
+        for (const auto* slots : {&port.inputs, &port.outputs})
+            for (const auto& [slot, variable] : *slots)
+                if (variable == name) return true;
+    return false;
+}
+
+Status FmuWrapper::checkDefinition(const ModelDescription& description) const
+{
+    for (const PowerPort& port : description.powerPorts)
+        if (port.kind != mPowerPortKind)
+            return {StatusCode::InvalidModel, "the FMU's power port '" + port.name + "' is of kind " + port.kind +
+                                                  "; use " + mOtherType + " for this FMU"};
+    // Every port and parameter name once (names become legal port names, which may clash).
+    std::vector<std::string> names{"path"};
+    const auto claim = [&](const std::string& original) -> Status {
+        const std::string name = sanitizeName(original);
+        if (std::find(names.begin(), names.end(), name) != names.end())
+            return {StatusCode::InvalidModel, "FMU variable '" + original + "' gives the name '" + name +
+                                                  "', which another one has already"};
+        names.push_back(name);
+        return Status::ok();
+    };
+    for (const PowerPort& port : description.powerPorts)
+        if (Status claimed = claim(port.name); !claimed) return claimed;
+    for (const ScalarVariable& v : description.variables) {
+        const bool declared = v.causality == Causality::Input || v.causality == Causality::Output ||
+                              v.causality == Causality::Parameter;
+        if (v.type != VariableType::Real || !declared || isPowerPortVariable(description, v.name)) continue;
+        if (Status claimed = claim(v.name); !claimed) return claimed;
+    }
     return Status::ok();
 }
 
@@ -44,67 +71,50 @@ Status FmuWrapper::loadExternalDefinition()
     if (!file) return {file.status().code(), file.status().message(), modelPath() + ".path"};
     Result<std::shared_ptr<const FmuPackage>> package = FmuPackage::open(*file);
     if (!package) return {package.status().code(), package.status().message(), modelPath() + ".path"};
-    if (Status declared = declarePorts((*package)->description()); !declared)
-        return {declared.code(), declared.message(), modelPath()};
+    if (Status checked = checkDefinition((*package)->description()); !checked)
+        return {checked.code(), checked.message(), modelPath()};
     mPackage = std::move(*package);
+    declarePorts(mPackage->description());
     mLoadedPath = requested;
     return Status::ok();
 }
 
-Status FmuWrapper::declarePorts(const ModelDescription& description)
+void FmuWrapper::declarePorts(const ModelDescription& description)
 {
-    mUsedNames = {"path"};
-    std::vector<const ScalarVariable*> inPowerPorts;
-    const auto variableNamed = [&](const std::string& name) -> const ScalarVariable* {
+    const auto variableNamed = [&](const std::string& name) -> const ScalarVariable& {
         for (const ScalarVariable& v : description.variables)
-            if (v.name == name) return &v;
-        return nullptr;
+            if (v.name == name) return v;
+        return description.variables.front();   // the parser admits known names only
     };
-
     for (const PowerPort& powerPort : description.powerPorts) {
-        if (powerPort.kind != mPowerPortKind)
-            return {StatusCode::InvalidModel, "the FMU's power port '" + powerPort.name + "' is of kind " +
-                                                  powerPort.kind + "; use " + mOtherType + " for this FMU"};
         NodeType type = NodeType::Empty;
         nodeTypeFromName(powerPort.nodeType, type);
-        const std::string portName = sanitizeName(powerPort.name);
-        if (Status claimed = claimName(portName, powerPort.name); !claimed) return claimed;
-        Port* port = addPowerPort(portName, type);
+        Port* port = addPowerPort(sanitizeName(powerPort.name), type);
         const auto slotOf = [&](const std::string& shortName) {
             const auto& variables = nodeTypeInfo(type).variables;
             for (std::size_t i = 0; i < variables.size(); ++i)
                 if (variables[i].shortName == shortName) return static_cast<int>(i);
             return 0;   // the parser admits known slots only
         };
-        for (const auto& [slot, variable] : powerPort.inputs) {
-            const ScalarVariable* v = variableNamed(variable);
-            mInputs.push_back({port, slotOf(slot), v->valueReference, nullptr});
-            inPowerPorts.push_back(v);
-        }
-        for (const auto& [slot, variable] : powerPort.outputs) {
-            const ScalarVariable* v = variableNamed(variable);
-            mOutputs.push_back({port, slotOf(slot), v->valueReference, nullptr});
-            inPowerPorts.push_back(v);
-        }
+        for (const auto& [slot, variable] : powerPort.inputs)
+            mInputs.push_back({port, slotOf(slot), variableNamed(variable).valueReference, nullptr});
+        for (const auto& [slot, variable] : powerPort.outputs)
+            mOutputs.push_back({port, slotOf(slot), variableNamed(variable).valueReference, nullptr});
         ++mPowerPortCount;
     }
 
     for (const ScalarVariable& v : description.variables) {
-        if (v.type != VariableType::Real) continue;
-        if (std::find(inPowerPorts.begin(), inPowerPorts.end(), &v) != inPowerPorts.end()) continue;
+        if (v.type != VariableType::Real || isPowerPortVariable(description, v.name)) continue;
         const std::string name = sanitizeName(v.name);
         if (v.causality == Causality::Input) {
-            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
             double** data = &mAutoPointers.emplace_back(nullptr);
             Port* port = addInputVariable(name, v.description, v.unit, v.start.value_or(0.0), data);
             mInputs.push_back({port, 0, v.valueReference, data});
         } else if (v.causality == Causality::Output) {
-            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
             double** data = &mAutoPointers.emplace_back(nullptr);
             Port* port = addOutputVariable(name, v.description, v.unit, data);
             mOutputs.push_back({port, 0, v.valueReference, data});
         } else if (v.causality == Causality::Parameter) {
-            if (Status claimed = claimName(name, v.name); !claimed) return claimed;
             double& value = mParameterValues.emplace_back(v.start.value_or(0.0));
             addConstant(name, v.description, v.unit, value, value);
             mParameterReferences.push_back(v.valueReference);
@@ -115,7 +125,6 @@ Status FmuWrapper::declarePorts(const ModelDescription& description)
     mInputValues.resize(mInputs.size());
     mOutputValues.resize(mOutputs.size());
     mParameterBuffer.resize(mParameterReferences.size());
-    return Status::ok();
 }
 
 void FmuWrapper::logFromFmu(FmuInstance::LogLevel level, const std::string& text)

@@ -46,8 +46,10 @@ private:
         double** autoData = nullptr;   // input/output variables: bound by the core
     };
 
-    Status declarePorts(const ModelDescription& description);
-    Status claimName(const std::string& name, const std::string& variable);
+    static bool isPowerPortVariable(const ModelDescription& description, const std::string& name);
+    // Refuses an FMU this type cannot wrap, before anything is declared.
+    Status checkDefinition(const ModelDescription& description) const;
+    void declarePorts(const ModelDescription& description);
     void logFromFmu(FmuInstance::LogLevel level, const std::string& text);
 
     char mPowerPortKind;
@@ -60,7 +62,6 @@ private:
 
     std::deque<double*> mAutoPointers;   // stable addresses for the core's variable binding
     std::deque<double> mParameterValues; // stable addresses for parameter evaluation
-    std::vector<std::string> mUsedNames;
 
     std::vector<Binding> mInputs, mOutputs;
     std::vector<fmi2ValueReference> mInputReferences, mOutputReferences, mParameterReferences;

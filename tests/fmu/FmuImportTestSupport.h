@@ -83,7 +83,7 @@ inline fs::path sourceDir() { return TLMHUB_SOURCE_DIR; }
 
 inline std::string integratorDescription()
 {
-    return readFile(sourceDir() / "tests/fmu/handwritten/modelDescription.xml");
+    return readFile(sourceDir() / "tests/fmu/handwritten/integrator/modelDescription.xml");
 }
 
 // integrator.fmu as an exporter would pack it; the parts may be swapped for broken ones.
