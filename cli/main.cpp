@@ -2,6 +2,7 @@
 // export a model as an FMU;
 // `remote` runs models on a tlmhub server.
 #include "cli/Commands.h"
+#include "fmu/FmuLoadPolicy.h"
 
 #include <cstring>
 #include <iostream>
@@ -32,6 +33,8 @@ int main(int argc, char** argv)
         return argc < 2 ? 2 : 0;
     }
     const std::string command = argv[1];
+    // The user runs their own models: an FMU a model names loads from wherever it is.
+    tlmhub::fmu::setFmuLoadPolicy(tlmhub::fmu::FmuLoadPolicy::anywhere());
     std::vector<std::string> args(argv + 2, argv + argc);
     try {
         if (command == "run") return tlmhub::cli::runCommand(args);

@@ -57,6 +57,11 @@ public:
     virtual void initialize() {}
     virtual void simulateOneTimestep() {}
     virtual void finalize() {}
+    // A component whose ports and parameters come from outside the model file (an imported
+    // FMU names them) declares them here. Whoever builds a model calls it once the
+    // component is in its system with its own parameters set, and before connecting it:
+    // the .hmf loader, the model copy and model editing (after a parameter change).
+    virtual Status loadExternalDefinition() { return Status::ok(); }
     // Not virtual: the step loop asks this of every component every step.
     bool isSystem() const { return mIsSystem; }
     // The batch step of this component's type: TLMHUB_REGISTER_COMPONENT sets a direct one,

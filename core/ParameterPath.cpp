@@ -66,7 +66,9 @@ Status assignParameter(Component& owner, Parameter& parameter, const std::string
 {
     const std::string previous = parameter.value;
     parameter.value = value;
-    const Status evaluated = ParameterEvaluator::evaluate(owner, parameter);
+    Status evaluated = ParameterEvaluator::evaluate(owner, parameter);
+    // A parameter may say where the component's ports come from (an FMU's path).
+    if (evaluated) evaluated = owner.loadExternalDefinition();
     if (!evaluated) {
         parameter.value = previous;
         ParameterEvaluator::evaluate(owner, parameter);   // its target holds the old value again

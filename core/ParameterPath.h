@@ -28,7 +28,9 @@ Result<ParameterRef> findParameter(System& root, const std::string& path);
 Status setParameterValue(System& root, const std::string& path, const std::string& value);
 
 // The same for a parameter already found: a refused value leaves the old string and its
-// evaluated value in place. The failure is the evaluator's, without the path.
+// evaluated value in place. The failure is the evaluator's, without the path, or the
+// component's when it cannot load its external definition with the new value
+// (Component::loadExternalDefinition: model editing declares an FMU's ports this way).
 Status assignParameter(Component& owner, Parameter& parameter, const std::string& value);
 
 } // namespace tlmhub

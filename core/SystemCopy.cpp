@@ -91,8 +91,16 @@ private:
         to->setDisabled(from.isDisabled());
         to->layout = from.layout;
         to->preservedXml = from.preservedXml;
+        Component& added = *to;
+        parent.addComponent(std::move(to));
+        // The component's own parameters first: they say where an external definition is,
+        // which brings the rest.
+        for (const auto& p : from.parameters().all())
+            if (Parameter* target = added.parameters().find(p->name)) target->value = p->value;
+        if (Status loaded = added.loadExternalDefinition(); !loaded)
+            return {loaded.code(), "copying the model: " + loaded.message(), from.modelPath()};
         for (const auto& p : from.parameters().all()) {
-            Parameter* target = to->parameters().find(p->name);
+            Parameter* target = added.parameters().find(p->name);
             if (!target)
                 return {StatusCode::InvalidModel, "copying the model: a new " + from.typeName() +
                                                       " has no parameter '" + p->name + "'",
@@ -101,12 +109,11 @@ private:
         }
         for (const Port* p : from.ports()) {
             if (p->signalQuantity.empty()) continue;
-            if (Port* q = to->port(p->name())) {
+            if (Port* q = added.port(p->name())) {
                 q->signalQuantity = p->signalQuantity;
                 if (q->node()) q->node()->signalQuantity = p->signalQuantity;
             }
         }
-        parent.addComponent(std::move(to));
         return Status::ok();
     }
 };

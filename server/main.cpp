@@ -9,6 +9,7 @@
 
 #include "core/ComponentLibrary.h"
 #include "core/FileAccess.h"
+#include "fmu/FmuLoadPolicy.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
@@ -87,6 +88,16 @@ int main(int argc, char** argv)
             return 1;
         }
         std::cout << "loaded " << added->size() << " component types from " << lib << "\n";
+    }
+    // An FMU is native code too: models import them only from the administrator's directory.
+    if (!options.fmuDir.empty()) {
+        const tlmhub::Result<tlmhub::fmu::FmuLoadPolicy> policy = tlmhub::fmu::FmuLoadPolicy::onlyUnder(options.fmuDir);
+        if (!policy) {
+            std::cerr << "tlmhub-server: " << tlmhub::describe(policy.status()) << "\n";
+            return 1;
+        }
+        tlmhub::fmu::setFmuLoadPolicy(*policy);
+        std::cout << "FMUs load from " << policy->directory.string() << "\n";
     }
     try {
         // A broken embedded schema shows now, not on the first request.

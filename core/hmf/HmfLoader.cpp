@@ -121,18 +121,24 @@ private:
         }
     }
 
-    void setComponentParameter(Component& comp, const std::string& rawName, const std::string& value,
-                               const std::string& originalType)
+    // False if the component has no such parameter (yet: an external definition may add it).
+    bool trySetComponentParameter(Component& comp, const std::string& rawName, const std::string& value,
+                                  const std::string& originalType)
     {
         std::string name = legacy::currentParameterName(originalType, rawName, mVersion);
         Parameter* p = comp.parameters().find(name);
         if (!p && name.find('#') == std::string::npos) p = comp.parameters().find(name + "#Value");
-        if (!p) {
+        if (!p) return false;
+        p->value = value;
+        return true;
+    }
+
+    void setComponentParameter(Component& comp, const std::string& rawName, const std::string& value,
+                               const std::string& originalType)
+    {
+        if (!trySetComponentParameter(comp, rawName, value, originalType))
             warning("component '" + comp.name() + "' (" + comp.typeName() + ") has no parameter '" +
                     rawName + "'; ignored, the default is kept");
-            return;
-        }
-        p->value = value;
     }
 
     // Counts one more component or subsystem; false (with the error) past the limit.
@@ -167,14 +173,23 @@ private:
         Component* raw = comp.get();
         const std::string actual = sys.addComponent(std::move(comp));
         if (actual != desired) mRenames[&sys][desired] = actual;
+        // Parameters the component lacks may come with its external definition: set them
+        // after loading it.
+        std::vector<std::pair<std::string, std::string>> later;
         for (pugi::xml_node p : node.child("parameters").children("parameter"))
-            setComponentParameter(*raw, p.attribute("name").as_string(), p.attribute("value").as_string(),
-                                  originalType);
+            if (!trySetComponentParameter(*raw, p.attribute("name").as_string(), p.attribute("value").as_string(),
+                                          originalType))
+                later.emplace_back(p.attribute("name").as_string(), p.attribute("value").as_string());
         for (pugi::xml_node sv : node.child("startvalues").children("startvalue")) {
             std::string pname = std::string(sv.attribute("portname").as_string()) + "#" +
                                 sv.attribute("variable").as_string();
-            setComponentParameter(*raw, pname, sv.attribute("value").as_string(), originalType);
+            if (!trySetComponentParameter(*raw, pname, sv.attribute("value").as_string(), originalType))
+                later.emplace_back(pname, sv.attribute("value").as_string());
         }
+        if (const Status loaded = raw->loadExternalDefinition(); !loaded)
+            error("component '" + raw->name() + "' (" + raw->typeName() + "): " + loaded.message(),
+                  loaded.code());
+        for (const auto& [name, value] : later) setComponentParameter(*raw, name, value, originalType);
         for (pugi::xml_node port : node.child("ports").children("port")) {
             if (pugi::xml_attribute q = port.attribute("signalquantity")) {
                 std::string pn = legacy::currentPortName(type, port.attribute("name").as_string(),

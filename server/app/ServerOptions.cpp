@@ -30,6 +30,8 @@ const std::string kHelp = std::string(
     "                           default ./examples)\n"
     "  --workers N              simulation worker threads (default: number of cores)\n"
     "  --component-lib PATH     load extra components from a shared library (repeatable)\n"
+    "  --fmu-dir DIR            models may import FMUs (FMIWrapper) from this directory only\n"
+    "                           (default: no FMUs)\n"
     "  --token-ttl SECONDS      login token lifetime (default 43200)\n"
     "  --max-steps N            steps per job (default 50000000)\n"
     "  --max-log-samples N      log samples per job (default 100000)\n"
@@ -116,6 +118,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             examplesGiven = true;
         } else if (flag == "--component-lib") {
             o.componentLibs.push_back(value);
+        } else if (flag == "--fmu-dir") {
+            o.fmuDir = value;
         } else if (flag == "--workers") {
             ok = parseNumber(value, o.workers);
         } else if (flag == "--token-ttl") {

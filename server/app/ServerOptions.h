@@ -24,6 +24,7 @@ struct ServerOptions {
     std::string webRoot = "web/dist";
     std::vector<std::string> exampleDirs;       // default: examples (if it exists)
     std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only
+    std::string fmuDir;                         // FMUs models may import; empty: none (fmu/FmuLoadPolicy.h)
     unsigned workers = 0;                       // simulation threads; 0 = one per core
     unsigned ioThreads = 4;                     // HTTP/WebSocket threads
     std::chrono::seconds tokenTtl{12 * 3600};
