@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <list>
-#include <memory>
 #include <sstream>
 
 namespace tlmhub::fmu {
