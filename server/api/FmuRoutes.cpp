@@ -109,6 +109,8 @@ Response getFmu(Services& s, Call& call)
     const auto described = storedInterface(s, *summary, hmf, options, error);
     if (!described) return error;
     const auto zip = fmu::exportFmu(hmf, summary->name + ".hmf", options, *runtime);
+    if (!zip && zip.status().code() == StatusCode::IoError)   // the runtime's files, not the model
+        return apiError(http::status::internal_server_error, "internal", zip.status().message());
     if (!zip) return noInterface(zip.status());
     Response res = textResponse(http::status::ok, *zip, "application/zip");
     res.set(http::field::content_disposition,
