@@ -72,8 +72,10 @@ def errors(*statuses):
              "401": "unauthorized (missing, unknown or expired token)",
              "403": "forbidden (role may not do this) or account_disabled (login of a disabled account)",
              "404": "not_found (also for objects of others the caller may not read)",
+             "422": "the model has no FMU interface: the core's code (invalid_parameter, invalid_model, ...)",
              "409": "conflict", "413": "payload_too_large", "429": "rate_limited or limit_exceeded",
-             "503": "busy (too many logins or password changes wait for a hashing thread; Retry-After: 1)",
+             "503": "busy (too many logins or password changes wait for a hashing thread; Retry-After: 1) or "
+                    "unavailable (the server lacks what the call needs, e.g. the FMU runtime library)",
              "507": "storage_full (the server's disk is full: deleting still works)"}
     return {s: {"description": texts[s], "content": {"application/json": {"schema": ref("ErrorBody")}}}
             for s in statuses}
@@ -95,6 +97,12 @@ def op(summary, responses, body=None, params=None, public=False, tag=None):
 ID = {"name": "id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
 USER_ID = {"name": "user_id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
 FORMAT = {"name": "format", "in": "query", "required": False, "schema": {"type": "string", "enum": ["csv", "json"]}}
+FMU_QUERY = [{"name": "parameters", "in": "query", "required": False,
+              "description": "Comma-separated component parameters to offer as FMU parameters (Comp.param)",
+              "schema": {"type": "string"}},
+             {"name": "identifier", "in": "query", "required": False,
+              "description": "The FMU's modelIdentifier (default: from the model name)",
+              "schema": {"type": "string"}}]
 ANY = {"type": "object"}
 HMF = {"application/xml": {"schema": {"type": "string", "description": ".hmf model file text"}}}
 
@@ -163,6 +171,17 @@ paths = {
                   params=[ID], tag="models"),
         "delete": op("Delete a model", {"204": {"description": "Deleted"}, **errors("401", "404")},
                      params=[ID], tag="models")},
+    "/models/{id}/fmu/interface": {"get": op(
+        "The interface the model's FMU would have (docs/fmu.md): variables with value references, "
+        "power ports, default experiment; 422 with the core's code when the model has none",
+        {**ok("The interface", "FmuInterface"), **errors("401", "404", "422")},
+        params=[ID, *FMU_QUERY], tag="models")},
+    "/models/{id}/fmu": {"get": op(
+        "The model as an FMI 2.0 co-simulation FMU for linux64 (application/zip, attachment "
+        "<model_identifier>.fmu); 503 unavailable when the server has no FMU runtime library",
+        {"200": {"description": "The FMU", "content": {"application/zip": {"schema": {"type": "string", "format": "binary"}}}},
+         **errors("401", "404", "422", "503")},
+        params=[ID, *FMU_QUERY], tag="models")},
     "/components": {"get": op("The component catalogue", {**ok("Catalogue", "Catalogue"), **errors("401")},
                               tag="models")},
     "/jobs": {

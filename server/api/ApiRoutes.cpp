@@ -9,6 +9,7 @@ std::vector<RouteSpec> apiRoutes()
     addAuthRoutes(routes);
     addUserRoutes(routes);
     addModelRoutes(routes);
+    addFmuRoutes(routes);
     addJobRoutes(routes);
     addStudyRoutes(routes);
     addTokenRoutes(routes);

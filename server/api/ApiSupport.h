@@ -110,6 +110,7 @@ bool wantsXml(const Call& call);
 void addAuthRoutes(std::vector<RouteSpec>& routes);
 void addUserRoutes(std::vector<RouteSpec>& routes);
 void addModelRoutes(std::vector<RouteSpec>& routes);
+void addFmuRoutes(std::vector<RouteSpec>& routes);
 void addJobRoutes(std::vector<RouteSpec>& routes);
 void addTokenRoutes(std::vector<RouteSpec>& routes);
 void addCatalogueRoutes(std::vector<RouteSpec>& routes);

@@ -683,6 +683,97 @@ void to_json(nlohmann::json& j, const ResultsJson& v)
     j["variables"] = v.variables;
 }
 
+void from_json(const nlohmann::json& j, FmuVariable& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("value_reference").get_to(v.valueReference);
+    j.at("causality").get_to(v.causality);
+    j.at("variability").get_to(v.variability);
+    j.at("type").get_to(v.type);
+    j.at("unit").get_to(v.unit);
+    j.at("description").get_to(v.description);
+    if (const nlohmann::json& x = j.at("start"); !x.is_null()) v.start = x.get<double>();
+}
+
+void to_json(nlohmann::json& j, const FmuVariable& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["value_reference"] = v.valueReference;
+    j["causality"] = v.causality;
+    j["variability"] = v.variability;
+    j["type"] = v.type;
+    j["unit"] = v.unit;
+    j["description"] = v.description;
+    j["start"] = v.start ? nlohmann::json(*v.start) : nlohmann::json(nullptr);
+}
+
+void from_json(const nlohmann::json& j, FmuPortVariable& v)
+{
+    j.at("node_variable").get_to(v.nodeVariable);
+    j.at("variable").get_to(v.variable);
+}
+
+void to_json(nlohmann::json& j, const FmuPortVariable& v)
+{
+    j = nlohmann::json::object();
+    j["node_variable"] = v.nodeVariable;
+    j["variable"] = v.variable;
+}
+
+void from_json(const nlohmann::json& j, FmuPowerPort& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("node_type").get_to(v.nodeType);
+    j.at("kind").get_to(v.kind);
+    j.at("inputs").get_to(v.inputs);
+    j.at("outputs").get_to(v.outputs);
+}
+
+void to_json(nlohmann::json& j, const FmuPowerPort& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["node_type"] = v.nodeType;
+    j["kind"] = v.kind;
+    j["inputs"] = v.inputs;
+    j["outputs"] = v.outputs;
+}
+
+void from_json(const nlohmann::json& j, FmuExperiment& v)
+{
+    if (const nlohmann::json& x = j.at("start_time"); !x.is_null()) v.startTime = x.get<double>();
+    if (const nlohmann::json& x = j.at("stop_time"); !x.is_null()) v.stopTime = x.get<double>();
+    if (const nlohmann::json& x = j.at("step_size"); !x.is_null()) v.stepSize = x.get<double>();
+}
+
+void to_json(nlohmann::json& j, const FmuExperiment& v)
+{
+    j = nlohmann::json::object();
+    j["start_time"] = v.startTime ? nlohmann::json(*v.startTime) : nlohmann::json(nullptr);
+    j["stop_time"] = v.stopTime ? nlohmann::json(*v.stopTime) : nlohmann::json(nullptr);
+    j["step_size"] = v.stepSize ? nlohmann::json(*v.stepSize) : nlohmann::json(nullptr);
+}
+
+void from_json(const nlohmann::json& j, FmuInterface& v)
+{
+    j.at("model_identifier").get_to(v.modelIdentifier);
+    j.at("model_name").get_to(v.modelName);
+    j.at("default_experiment").get_to(v.defaultExperiment);
+    j.at("variables").get_to(v.variables);
+    j.at("power_ports").get_to(v.powerPorts);
+}
+
+void to_json(nlohmann::json& j, const FmuInterface& v)
+{
+    j = nlohmann::json::object();
+    j["model_identifier"] = v.modelIdentifier;
+    j["model_name"] = v.modelName;
+    j["default_experiment"] = v.defaultExperiment;
+    j["variables"] = v.variables;
+    j["power_ports"] = v.powerPorts;
+}
+
 void from_json(const nlohmann::json& j, ModelOpenRequest& v)
 {
     if (const auto x = j.find("id"); x != j.end()) v.id = *x;

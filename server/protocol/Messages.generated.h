@@ -45,6 +45,11 @@ struct EmptyData;
 struct ErrorBody;
 struct ErrorDetail;
 struct ErrorReply;
+struct FmuExperiment;
+struct FmuInterface;
+struct FmuPortVariable;
+struct FmuPowerPort;
+struct FmuVariable;
 struct FrameEvent;
 struct GradeUpdate;
 struct HealthResponse;
@@ -510,6 +515,61 @@ struct ResultsJson {
 };
 void from_json(const nlohmann::json& j, ResultsJson& v);
 void to_json(nlohmann::json& j, const ResultsJson& v);
+
+// A scalar variable of an exported FMU (modelDescription.xml's ScalarVariable).
+struct FmuVariable {
+    std::string name{};
+    std::int64_t valueReference{};
+    std::string causality{};
+    std::string variability{};
+    std::string type{};
+    std::string unit{};
+    std::string description{};
+    std::optional<double> start;
+};
+void from_json(const nlohmann::json& j, FmuVariable& v);
+void to_json(nlohmann::json& j, const FmuVariable& v);
+
+// One TLM variable of a power port: the node variable's short name and the FMU variable
+// carrying it.
+struct FmuPortVariable {
+    std::string nodeVariable{};
+    std::string variable{};
+};
+void from_json(const nlohmann::json& j, FmuPortVariable& v);
+void to_json(nlohmann::json& j, const FmuPortVariable& v);
+
+// A power port of an exported FMU: kind C takes the wave variable and characteristic impedance
+// and gives effort and flow; kind Q the other way round.
+struct FmuPowerPort {
+    std::string name{};
+    std::string nodeType{};
+    std::string kind{};
+    std::vector<FmuPortVariable> inputs;
+    std::vector<FmuPortVariable> outputs;
+};
+void from_json(const nlohmann::json& j, FmuPowerPort& v);
+void to_json(nlohmann::json& j, const FmuPowerPort& v);
+
+// modelDescription.xml's DefaultExperiment (seconds); null where the model gives none.
+struct FmuExperiment {
+    std::optional<double> startTime;
+    std::optional<double> stopTime;
+    std::optional<double> stepSize;
+};
+void from_json(const nlohmann::json& j, FmuExperiment& v);
+void to_json(nlohmann::json& j, const FmuExperiment& v);
+
+// GET /models/{id}/fmu/interface: what the FMU of a stored model would offer.
+struct FmuInterface {
+    std::string modelIdentifier{};
+    std::string modelName{};
+    FmuExperiment defaultExperiment{};
+    std::vector<FmuVariable> variables;
+    std::vector<FmuPowerPort> powerPorts;
+};
+void from_json(const nlohmann::json& j, FmuInterface& v);
+void to_json(nlohmann::json& j, const FmuInterface& v);
 
 // Open a stored model on this socket (one at a time).
 struct ModelOpenRequest {
@@ -1146,6 +1206,11 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ErrorBody>("ErrorBody");
     visit.template operator()<ErrorDetail>("ErrorDetail");
     visit.template operator()<ErrorReply>("ErrorReply");
+    visit.template operator()<FmuExperiment>("FmuExperiment");
+    visit.template operator()<FmuInterface>("FmuInterface");
+    visit.template operator()<FmuPortVariable>("FmuPortVariable");
+    visit.template operator()<FmuPowerPort>("FmuPowerPort");
+    visit.template operator()<FmuVariable>("FmuVariable");
     visit.template operator()<FrameEvent>("FrameEvent");
     visit.template operator()<GradeUpdate>("GradeUpdate");
     visit.template operator()<HealthResponse>("HealthResponse");

@@ -56,6 +56,8 @@ const std::map<std::string, RouteCase>& routeCases()
         {"GET /models/{id}", {Case::Foreign, ""}},
         {"PUT /models/{id}", {Case::Foreign, ""}},
         {"DELETE /models/{id}", {Case::Foreign, ""}},
+        {"GET /models/{id}/fmu/interface", {Case::Foreign, ""}},
+        {"GET /models/{id}/fmu", {Case::Foreign, ""}},
         {"POST /jobs", {Case::Own, "the job is the caller's; a model_id must be readable (Foreign case below)"}},
         {"GET /jobs", {Case::Own, "lists the caller's jobs"}},
         {"GET /jobs/{id}", {Case::Foreign, ""}},

@@ -1,10 +1,13 @@
 // REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
 import { ApiError } from './ApiError';
 import type {
-    CatalogueEntry, JobInfo, Model, ModelSummary, ResultsJson, User,
+    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, ResultsJson, User,
 } from '../protocol/types';
 
 export interface LoginResult { token: string; expires_at: number; user: User }
+
+/** What an FMU export of a stored model offers beyond its interface components (docs/fmu.md). */
+export interface FmuOptions { parameters: string[]; identifier?: string }
 
 /** An account as the administrator sees it. */
 export interface Account extends User { disabled: boolean }
@@ -38,6 +41,16 @@ export class RestClient {
         if (response.status === 204 || text === '') return undefined as T;
         if (accept === 'application/json') return JSON.parse(text) as T;
         return text as T;
+    }
+
+    /** A GET of binary content (a file to offer for download). */
+    async blob(path: string, accept: string): Promise<Blob> {
+        const headers: Record<string, string> = { Accept: accept };
+        if (this.token) headers.Authorization = `Bearer ${this.token}`;
+        const response = await this.fetchFn(this.base + path, { method: 'GET', headers });
+        if (response.status === 401 && this.token) this.onUnauthorized();
+        if (!response.ok) throw errorFromResponse(response.status, await response.text());
+        return response.blob();
     }
 
     login(username: string, password: string): Promise<LoginResult> {
@@ -74,6 +87,12 @@ export class RestClient {
         return this.call('PUT', `/models/${id}`, { name });
     }
     deleteModel(id: number): Promise<void> { return this.call('DELETE', `/models/${id}`); }
+    fmuInterface(id: number, options: FmuOptions): Promise<FmuInterface> {
+        return this.call('GET', `/models/${id}/fmu/interface${fmuQuery(options)}`);
+    }
+    downloadFmu(id: number, options: FmuOptions): Promise<Blob> {
+        return this.blob(`/models/${id}/fmu${fmuQuery(options)}`, 'application/zip');
+    }
 
     components(): Promise<CatalogueEntry[]> { return this.call('GET', '/components'); }
 
@@ -86,6 +105,14 @@ export class RestClient {
         const list = variables.map(encodeURIComponent).join(',');
         return this.call('GET', `/jobs/${id}/results?format=csv&variables=${list}`, undefined, undefined, 'text/csv');
     }
+}
+
+/** ?parameters=A.x,B.y&identifier=Name, leaving out what is not set. */
+export function fmuQuery(options: FmuOptions): string {
+    const query: string[] = [];
+    if (options.parameters.length > 0) query.push(`parameters=${options.parameters.map(encodeURIComponent).join(',')}`);
+    if (options.identifier) query.push(`identifier=${encodeURIComponent(options.identifier)}`);
+    return query.length > 0 ? `?${query.join('&')}` : '';
 }
 
 function errorFromResponse(status: number, text: string): ApiError {

@@ -41,6 +41,7 @@ export type ErrorCode =
     | 'assignment_copy'
     | 'storage_full'
     | 'busy'
+    | 'unavailable'
     | 'internal';
 export type Role = 'admin' | 'teacher' | 'user';
 /**
@@ -156,6 +157,11 @@ export interface ProtocolDefinitions {
     JobInfo?: JobInfo;
     ResultVariable?: ResultVariable;
     ResultsJson?: ResultsJson;
+    FmuVariable?: FmuVariable;
+    FmuPortVariable?: FmuPortVariable;
+    FmuPowerPort?: FmuPowerPort;
+    FmuExperiment?: FmuExperiment;
+    FmuInterface?: FmuInterface;
     ModelOpenRequest?: ModelOpenRequest;
     ModelCreateRequest?: ModelCreateRequest;
     ModelSaveRequest?: ModelSaveRequest;
@@ -594,6 +600,54 @@ export interface ResultVariable {
 export interface ResultsJson {
     time: number[];
     variables: ResultVariable[];
+}
+/**
+ * A scalar variable of an exported FMU (modelDescription.xml's ScalarVariable).
+ */
+export interface FmuVariable {
+    name: string;
+    value_reference: number;
+    causality: 'parameter' | 'calculatedParameter' | 'input' | 'output' | 'local' | 'independent';
+    variability: 'constant' | 'fixed' | 'tunable' | 'discrete' | 'continuous';
+    type: 'Real' | 'Integer' | 'Boolean' | 'String';
+    unit: string;
+    description: string;
+    start: number | null;
+}
+/**
+ * One TLM variable of a power port: the node variable's short name and the FMU variable carrying it.
+ */
+export interface FmuPortVariable {
+    node_variable: string;
+    variable: string;
+}
+/**
+ * A power port of an exported FMU: kind C takes the wave variable and characteristic impedance and gives effort and flow; kind Q the other way round.
+ */
+export interface FmuPowerPort {
+    name: string;
+    node_type: string;
+    kind: 'C' | 'Q';
+    inputs: FmuPortVariable[];
+    outputs: FmuPortVariable[];
+}
+/**
+ * modelDescription.xml's DefaultExperiment (seconds); null where the model gives none.
+ */
+export interface FmuExperiment {
+    start_time: number | null;
+    stop_time: number | null;
+    step_size: number | null;
+}
+/**
+ * GET /models/{id}/fmu/interface: what the FMU of a stored model would offer.
+ */
+export interface FmuInterface {
+    model_identifier: string;
+    model_name: string;
+    default_experiment: FmuExperiment;
+    variables: FmuVariable[];
+    power_ports: FmuPowerPort[];
 }
 /**
  * Open a stored model on this socket (one at a time).

@@ -13,6 +13,7 @@ import { RunPanel } from '../run/RunPanel';
 import { portVariables, sinkVariables } from '../model/variables';
 import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
+import { openFmuDialog } from '../fmu/FmuDialog';
 import type { Session } from '../app/Session';
 import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
 
@@ -234,7 +235,12 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                         try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
                     },
                     title: 'Download the saved model as .hmf',
-                }, 'Download .hmf'));
+                }, 'Download .hmf'),
+                h('button', {
+                    onclick: () => openFmuDialog(rest, { id: summary.id, unsaved: store.dirty }),
+                    title: 'Export the saved model as an FMI 2.0 co-simulation FMU',
+                    'data-testid': 'download-fmu',
+                }, 'Download FMU…'));
         }
         const path = store.path;
         const nextBreadcrumbKey = JSON.stringify([store.model.system.name, ...path]);
