@@ -84,7 +84,7 @@ std::map<std::string, std::vector<double>> readCsv(const fs::path& path)
 
 std::map<std::string, std::vector<double>> runModel(const fs::path& model, const fs::path& csv)
 {
-    const CommandOutput run = runCommand(quoted(TLMHUB_CLI_PATH) + " run " + quoted(model) + " --csv " + quoted(csv));
+    const CommandOutput run = runCommand(quoted(TLMHUB_CLI) + " run " + quoted(model) + " --csv " + quoted(csv));
     EXPECT_EQ(run.exitCode, 0) << run.text;
     return readCsv(csv);
 }
@@ -92,7 +92,7 @@ std::map<std::string, std::vector<double>> runModel(const fs::path& model, const
 void exportFmu(const fs::path& model, const fs::path& fmu)
 {
     const CommandOutput exported =
-        runCommand(quoted(TLMHUB_CLI_PATH) + " fmu " + quoted(model) + " -o " + quoted(fmu));
+        runCommand(quoted(TLMHUB_CLI) + " fmu " + quoted(model) + " -o " + quoted(fmu));
     ASSERT_EQ(exported.exitCode, 0) << exported.text;
     ASSERT_TRUE(fs::exists(fmu)) << exported.text;
 }
@@ -217,6 +217,9 @@ TEST(FmuRoundTrip, PositionServoControllerAsAnFmuGivesTheWholeModelsResults)
     const auto whole = runModel(kServo, dir / "whole.csv");
     const auto split = runModel(dir / "plant.hmf", dir / "plant.csv");
     ASSERT_EQ(split.at("time"), whole.at("time"));
+    // The valve command comes out of the FMU.
+    ASSERT_TRUE(split.count("Controller#u#Value"));
+    EXPECT_EQ(compare(split.at("Controller#u#Value"), whole.at("Add#out#Value"), 0.01).failedSamples, 0u);
     // The variables Position Servo.hvc checks that remain in the plant, at its tolerance.
     for (const std::string name : {"Position_Sensor#out#Value", "4_3_Servo_Valve#xv#Value", "Pressure_Relief_Valve#xv#Value"}) {
         ASSERT_TRUE(split.count(name) && whole.count(name)) << name;
