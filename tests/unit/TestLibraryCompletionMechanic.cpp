@@ -5,6 +5,8 @@
 #include "core/Results.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 using namespace tlmhub;
 using namespace tlmhub::test;
@@ -115,4 +117,50 @@ TEST(LibraryCompletionMechanicSwashPlate, PistonKinematicsAndShaftTorque)
         EXPECT_NEAR(f0[k], 1000.0, 1e-12);
         EXPECT_NEAR(torque[k], (1000.0 - 400.0) * stroke * std::cos(a), 1e-7) << "t=" << t[k];
     }
+}
+
+TEST(LibraryCompletionCombustionEngine, TorqueIsThePowerOverSpeedCappedByTheCurve)
+{
+    // Shaft speed imposed by a Q source. c = limit(-in * P_max / w, 0, curve(w)), Zc = 0.
+    namespace fs = std::filesystem;
+    const fs::path curve = fs::temp_directory_path() / "tlmhub-combustion-engine-test.csv";
+    {
+        std::ofstream out(curve);
+        out << "-2000,100\n-500,300\n0,300\n";
+    }
+    auto torqueAt = [&](double w, double throttle) -> double {
+        System s;
+        add(s, "CombustionEngine", "Engine");
+        add(s, "MechanicAngularVelocityTransformer", "Shaft");
+        add(s, "SignalConstant", "Throttle");   // `in` is a required read port, as in Hopsan
+        connectOk(s, "Engine", "P1", "Shaft", "out");
+        connectOk(s, "Throttle", "y", "Engine", "in");
+        setParam(s, "Engine", "Characteristics", curve.string());
+        setParam(s, "Engine", "P_max", "1e5");
+        setParam(s, "Throttle", "y#Value", std::to_string(throttle));
+        setParam(s, "Shaft", "omega#Value", std::to_string(w));
+        if (!run(s, 0, 0.01, 1e-3, 11)) {
+            ADD_FAILURE() << "did not run";
+            return NAN;
+        }
+        EXPECT_NEAR(loggedSlot(s, "Engine", "P1", "CharImpedance").back(), 0.0, 0.0);
+        return loggedSlot(s, "Engine", "P1", "WaveVariable").back();
+    };
+    EXPECT_NEAR(torqueAt(-1000.0, 0.5), 50.0, 1e-12);             // 0.5 * 1e5 / 1000 under the cap
+    EXPECT_NEAR(torqueAt(-1250.0, 5.0), 200.0, 1e-12);            // 400 over the cap 100 + (300 - 100) * 0.5
+    EXPECT_NEAR(torqueAt(-100.0, 1.0), 300.0, 1e-12);             // 1000 capped by the curve
+    EXPECT_NEAR(torqueAt(100.0, 1.0), 0.0, 1e-12);                // never negative
+    fs::remove(curve);
+}
+
+TEST(LibraryCompletionCombustionEngine, AMissingCurveStopsTheSimulation)
+{
+    System s;
+    add(s, "CombustionEngine", "Engine");
+    add(s, "MechanicAngularVelocityTransformer", "Shaft");
+    add(s, "SignalConstant", "Throttle");
+    connectOk(s, "Engine", "P1", "Shaft", "out");
+    connectOk(s, "Throttle", "y", "Engine", "in");
+    setParam(s, "Engine", "Characteristics", "/nonexistent/tlmhub-engine.csv");
+    EXPECT_FALSE(run(s, 0, 0.01, 1e-3, 11));
 }
