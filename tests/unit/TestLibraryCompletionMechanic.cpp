@@ -164,3 +164,72 @@ TEST(LibraryCompletionCombustionEngine, AMissingCurveStopsTheSimulation)
     setParam(s, "Engine", "Characteristics", "/nonexistent/tlmhub-engine.csv");
     EXPECT_FALSE(run(s, 0, 0.01, 1e-3, 11));
 }
+
+TEST(LibraryCompletionForks, TraverseAndTiltReachTheirViscousTerminalSpeeds)
+{
+    // Constant torque on P1 (Zc = 0): the carriage is a mass m with friction B pushed by
+    // c1 / r, so v -> c1 / (r B) with time constant m / B = 0.1 s, and P1 turns at -v / r.
+    // Pistons: c3 - c2 = 100 N on the lever r2 = 0.1 (no dry friction) tilts the forks down at
+    // w -> (c2 - c3) r2 / Brot = -1 rad/s (time constant J / Brot = 0.02 s); piston speeds
+    // are -+ w r2. The inputs were 0 before the first step, so under the trapezoidal rule
+    // every response lags half a step: compared at te = t - h/2, tolerances 1e-7 (speeds,
+    // traverse) and 1e-6 (angle).
+    System s;
+    add(s, "MechanicTorqueTransformer", "Pinion");
+    add(s, "Forks", "Forks");
+    add(s, "MechanicTranslationalCSource", "Piston2");
+    add(s, "MechanicTranslationalCSource", "Piston3");
+    connectOk(s, "Pinion", "P1", "Forks", "P1");
+    connectOk(s, "Forks", "P2", "Piston2", "P1");
+    connectOk(s, "Forks", "P3", "Piston3", "P1");
+    setParam(s, "Pinion", "T#Value", "1");
+    setParam(s, "Forks", "B#Value", "1000");
+    setParam(s, "Forks", "Kfrot#Value", "0");
+    setParam(s, "Piston3", "in_c#Value", "100");
+    ASSERT_TRUE(run(s, 0, 1, 1e-3, 101));
+    const double c1 = loggedSlot(s, "Forks", "P1", "WaveVariable").back();
+    EXPECT_NEAR(std::fabs(c1), 1.0, 1e-12);
+    const double vTerminal = c1 / (0.1 * 1000.0);
+    const double w1 = loggedSlot(s, "Forks", "P1", "AngularVelocity").back();
+    const double te = 1.0 - 0.5e-3;
+    EXPECT_NEAR(w1, -vTerminal / 0.1 * (1.0 - std::exp(-te / 0.1)), 1e-7);
+    Port* xPort = s.component("Forks")->port("x");
+    const auto x = loggedData(*xPort, NodeSignal::Value, s.numLoggedSamples());
+    // Travelled distance of a first-order start from rest: v (t - tau (1 - e^{-t/tau})).
+    EXPECT_NEAR(x.back() - (-0.6), vTerminal * (te - 0.1 * (1.0 - std::exp(-te / 0.1))), 1e-7);
+    EXPECT_NEAR(loggedSlot(s, "Forks", "P3", "Velocity").back(), -0.1, 1e-7);
+    EXPECT_NEAR(loggedSlot(s, "Forks", "P2", "Velocity").back(), 0.1, 1e-7);
+    Port* aPort = s.component("Forks")->port("a");
+    const auto a = loggedData(*aPort, NodeSignal::Value, s.numLoggedSamples());
+    const double pi = 3.14159265358979323846;
+    EXPECT_NEAR(a.back(), pi / 2.0 - (te - 0.02 * (1.0 - std::exp(-te / 0.02))), 1e-6);
+    EXPECT_NEAR(loggedSlot(s, "Forks", "P3", "Position").back(), a.back() * 0.1 - 0.5, 1e-12);
+    EXPECT_NEAR(loggedSlot(s, "Forks", "P2", "Position").back(), -a.back() * 0.1 - 0.5, 1e-12);
+}
+
+TEST(LibraryCompletionForks, EndStopsHoldTheCarriage)
+{
+    // The carriage starts at x_min = -0.6. A wave c1 < 0 pushes it into the stop, where it
+    // stays with zero speed; c1 > 0 moves it away.
+    for (const char* torque : {"100", "-100"}) {
+        System s;
+        add(s, "MechanicTorqueTransformer", "Pinion");
+        add(s, "Forks", "Forks");
+        add(s, "MechanicTranslationalCSource", "Piston2");
+        add(s, "MechanicTranslationalCSource", "Piston3");
+        connectOk(s, "Pinion", "P1", "Forks", "P1");
+        connectOk(s, "Forks", "P2", "Piston2", "P1");
+        connectOk(s, "Forks", "P3", "Piston3", "P1");
+        setParam(s, "Pinion", "T#Value", torque);
+        ASSERT_TRUE(run(s, 0, 0.5, 1e-3, 51));
+        Port* xPort = s.component("Forks")->port("x");
+        const auto x = loggedData(*xPort, NodeSignal::Value, s.numLoggedSamples());
+        const double c1 = loggedSlot(s, "Forks", "P1", "WaveVariable").back();
+        if (c1 < 0.0) {
+            for (double v : x) EXPECT_DOUBLE_EQ(v, -0.6) << "T=" << torque;
+            EXPECT_DOUBLE_EQ(loggedSlot(s, "Forks", "P1", "AngularVelocity").back(), 0.0);
+        } else {
+            EXPECT_GT(x.back(), -0.6 + 0.01) << "T=" << torque;
+        }
+    }
+}
