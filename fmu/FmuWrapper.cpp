@@ -4,6 +4,7 @@
 #include "fmu/FmuLoadPolicy.h"
 
 #include <algorithm>
+#include <map>
 
 namespace tlmhub::fmu {
 
@@ -19,13 +20,13 @@ void FmuWrapper::configure()
     addConstant("path", "The FMU file (.fmu, FMI 2.0 co-simulation)", "", mPath, ParameterType::FilePath);
 }
 
-bool FmuWrapper::isPowerPortVariable(const ModelDescription& description, const std::string& name)
+std::set<std::string> FmuWrapper::powerPortVariables(const ModelDescription& description)
 {
+    std::set<std::string> names;
     for (const PowerPort& port : description.powerPorts)
         for (const auto* slots : {&port.inputs, &port.outputs})
-            for (const auto& [slot, variable] : *slots)
-                if (variable == name) return true;
-    return false;
+            for (const auto& [slot, variable] : *slots) names.insert(variable);
+    return names;
 }
 
 Status FmuWrapper::checkDefinition(const ModelDescription& description) const
@@ -35,21 +36,21 @@ Status FmuWrapper::checkDefinition(const ModelDescription& description) const
             return {StatusCode::InvalidModel, "the FMU's power port '" + port.name + "' is of kind " + port.kind +
                                                   "; use " + mOtherType + " for this FMU"};
     // Every port and parameter name once (names become legal port names, which may clash).
-    std::vector<std::string> names{"path"};
+    std::set<std::string> names{"path"};
     const auto claim = [&](const std::string& original) -> Status {
         const std::string name = sanitizeName(original);
-        if (std::find(names.begin(), names.end(), name) != names.end())
+        if (!names.insert(name).second)
             return {StatusCode::InvalidModel, "FMU variable '" + original + "' gives the name '" + name +
                                                   "', which another one has already"};
-        names.push_back(name);
         return Status::ok();
     };
+    const std::set<std::string> inPowerPorts = powerPortVariables(description);
     for (const PowerPort& port : description.powerPorts)
         if (Status claimed = claim(port.name); !claimed) return claimed;
     for (const ScalarVariable& v : description.variables) {
         const bool declared = v.causality == Causality::Input || v.causality == Causality::Output ||
                               v.causality == Causality::Parameter;
-        if (v.type != VariableType::Real || !declared || isPowerPortVariable(description, v.name)) continue;
+        if (v.type != VariableType::Real || !declared || inPowerPorts.count(v.name)) continue;
         if (Status claimed = claim(v.name); !claimed) return claimed;
     }
     return Status::ok();
@@ -81,11 +82,9 @@ Status FmuWrapper::loadExternalDefinition()
 
 void FmuWrapper::declarePorts(const ModelDescription& description)
 {
-    const auto variableNamed = [&](const std::string& name) -> const ScalarVariable& {
-        for (const ScalarVariable& v : description.variables)
-            if (v.name == name) return v;
-        return description.variables.front();   // the parser admits known names only
-    };
+    std::map<std::string, fmi2ValueReference> references;
+    for (const ScalarVariable& v : description.variables) references[v.name] = v.valueReference;
+    const std::set<std::string> inPowerPorts = powerPortVariables(description);
     for (const PowerPort& powerPort : description.powerPorts) {
         NodeType type = NodeType::Empty;
         nodeTypeFromName(powerPort.nodeType, type);
@@ -97,14 +96,14 @@ void FmuWrapper::declarePorts(const ModelDescription& description)
             return 0;   // the parser admits known slots only
         };
         for (const auto& [slot, variable] : powerPort.inputs)
-            mInputs.push_back({port, slotOf(slot), variableNamed(variable).valueReference, nullptr});
+            mInputs.push_back({port, slotOf(slot), references[variable], nullptr});
         for (const auto& [slot, variable] : powerPort.outputs)
-            mOutputs.push_back({port, slotOf(slot), variableNamed(variable).valueReference, nullptr});
+            mOutputs.push_back({port, slotOf(slot), references[variable], nullptr});
         ++mPowerPortCount;
     }
 
     for (const ScalarVariable& v : description.variables) {
-        if (v.type != VariableType::Real || isPowerPortVariable(description, v.name)) continue;
+        if (v.type != VariableType::Real || inPowerPorts.count(v.name)) continue;
         const std::string name = sanitizeName(v.name);
         if (v.causality == Causality::Input) {
             double** data = &mAutoPointers.emplace_back(nullptr);

@@ -16,6 +16,7 @@
 
 #include <deque>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,7 @@ private:
         double** autoData = nullptr;   // input/output variables: bound by the core
     };
 
-    static bool isPowerPortVariable(const ModelDescription& description, const std::string& name);
+    static std::set<std::string> powerPortVariables(const ModelDescription& description);
     // Refuses an FMU this type cannot wrap, before anything is declared.
     Status checkDefinition(const ModelDescription& description) const;
     void declarePorts(const ModelDescription& description);
