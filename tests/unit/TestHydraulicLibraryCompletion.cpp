@@ -81,3 +81,74 @@ TEST(HydraulicLibraryCompletion, PoppetValveStaysClosedBelowCrackingAndFollowsOr
         EXPECT_TRUE(allFinite(s, "Valve", {"PN", "PS", "PC"}, "Pressure"));
     }
 }
+
+namespace hydcompletion {
+
+// Reducing and drop valve between ideal sources: b2 = 0, so the spool settles at the
+// lower hysteresis edge x = (opening - p_h/2)/b1 with b1 = Cs + (p1 - p2)*Cf, and the
+// orifice passes q = x*sqrt(p1 - p2). Returns {x, q2}.
+std::pair<double, double> pressureValveBetweenSources(const std::string& type, double p1, double p2)
+{
+    System s;
+    add(s, type, "Valve");
+    source(s, "Inlet", p1, "Valve", "P1");
+    source(s, "Outlet", p2, "Valve", "P2");
+    setParam(s, "Valve", "q_nom", "0.1"); // keep the spool below its stroke limit
+    EXPECT_TRUE(run(s, 0, 0.5, 1e-4, 11));
+    return {last(s, "Valve", "xv", "Value"), last(s, "Valve", "P2", "Flow")};
+}
+
+double pressureValveStiffness(double p1, double p2)
+{
+    const double pnom = 7e6, kcs = 1e-8, kcf = 1e-8;
+    return std::sqrt(pnom) / kcs + (p1 - p2) / (kcf * std::sqrt(pnom));
+}
+
+} // namespace hydcompletion
+
+TEST(HydraulicLibraryCompletion, PressureReducingValveClosesAbovePrefAndOpensBelow)
+{
+    // p_ref 2 MPa, p_h 0.5 MPa: outlet at 3 MPa shuts the valve (x = q = 0); at 1 MPa the
+    // spool opens to (p_ref - p2 - p_h/2)/b1. Tolerance 1e-6 relative.
+    auto [xClosed, qClosed] = pressureValveBetweenSources("HydraulicPressureReducingValve", 1e7, 3e6);
+    EXPECT_EQ(xClosed, 0.0);
+    EXPECT_EQ(qClosed, 0.0);
+    auto [x, q] = pressureValveBetweenSources("HydraulicPressureReducingValve", 1e7, 1e6);
+    const double xExpected = (2e6 - 1e6 - 2.5e5) / pressureValveStiffness(1e7, 1e6);
+    EXPECT_NEAR(x, xExpected, 1e-6 * xExpected);
+    EXPECT_NEAR(q, xExpected * std::sqrt(9e6), 1e-6 * xExpected * 3e3);
+}
+
+TEST(HydraulicLibraryCompletion, PressureDropValveOpensWhenTheDropExceedsPref)
+{
+    // p_ref 2 MPa, p_h 0.5 MPa: a drop of 1.5 MPa keeps it shut; a drop of 4 MPa opens it
+    // to (p1 - p2 - p_ref - p_h/2)/b1. Tolerance 1e-6 relative.
+    auto [xClosed, qClosed] = pressureValveBetweenSources("HydraulicPressureDropValve", 2.5e6, 1e6);
+    EXPECT_EQ(xClosed, 0.0);
+    EXPECT_EQ(qClosed, 0.0);
+    auto [x, q] = pressureValveBetweenSources("HydraulicPressureDropValve", 5e6, 1e6);
+    const double xExpected = (4e6 - 2e6 - 2.5e5) / pressureValveStiffness(5e6, 1e6);
+    EXPECT_NEAR(x, xExpected, 1e-6 * xExpected);
+    EXPECT_NEAR(q, xExpected * 2e3, 1e-6 * xExpected * 2e3);
+}
+
+TEST(HydraulicLibraryCompletion, PressureReducingValveHoldsItsOutletNearPrefInAModel)
+{
+    // Supply 10 MPa -> reducing valve -> volume -> orifice -> tank: the outlet settles
+    // below p_ref (proportional droop) but well above half of it; every value finite.
+    System s;
+    add(s, "HydraulicPressureReducingValve", "Valve");
+    source(s, "Supply", 1e7, "Valve", "P1");
+    add(s, "HydraulicVolume", "Volume");
+    add(s, "HydraulicTurbulentOrifice", "Load");
+    add(s, "HydraulicTankC", "Tank");
+    connectOk(s, "Valve", "P2", "Volume", "P1");
+    connectOk(s, "Volume", "P2", "Load", "P1");
+    connectOk(s, "Load", "P2", "Tank", "P1");
+    ASSERT_TRUE(run(s, 0, 1.0, 1e-4, 101));
+    const double p2 = last(s, "Valve", "P2", "Pressure");
+    EXPECT_LT(p2, 2e6);
+    EXPECT_GT(p2, 1e6);
+    EXPECT_TRUE(allFinite(s, "Valve", {"P1", "P2"}, "Pressure"));
+    EXPECT_TRUE(allFinite(s, "Valve", {"P1", "P2"}, "Flow"));
+}
