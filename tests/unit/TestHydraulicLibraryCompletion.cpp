@@ -152,3 +152,96 @@ TEST(HydraulicLibraryCompletion, PressureReducingValveHoldsItsOutletNearPrefInAM
     EXPECT_TRUE(allFinite(s, "Valve", {"P1", "P2"}, "Pressure"));
     EXPECT_TRUE(allFinite(s, "Valve", {"P1", "P2"}, "Flow"));
 }
+
+namespace hydcompletion {
+
+struct FourPortFlows {
+    double xv, qp, qt, qa, qb;
+};
+
+// Runs a 4-port spool valve between ideal sources PP 10 MPa, PT 0.1 MPa, PA 5 MPa,
+// PB 3 MPa with a constant demand `in` until the spool has settled.
+FourPortFlows fourPortValveBetweenSources(const std::string& type, double in)
+{
+    System s;
+    add(s, type, "Valve");
+    source(s, "P", 1e7, "Valve", "PP");
+    source(s, "T", 1e5, "Valve", "PT");
+    source(s, "A", 5e6, "Valve", "PA");
+    source(s, "B", 3e6, "Valve", "PB");
+    setParam(s, "Valve", "in#Value", std::to_string(in));
+    EXPECT_TRUE(run(s, 0, 5.0, 1e-4, 11));
+    EXPECT_TRUE(allFinite(s, "Valve", {"PP", "PT", "PA", "PB"}, "Flow"));
+    return {last(s, "Valve", "xv", "Value"), last(s, "Valve", "PP", "Flow"), last(s, "Valve", "PT", "Flow"),
+            last(s, "Valve", "PA", "Flow"), last(s, "Valve", "PB", "Flow")};
+}
+
+// Orifice coefficient of a spool edge (d = 0.01 m, Cq = 0.67) opened x over fraction f.
+double edgeK(double f, double x, double rho)
+{
+    return 0.67 * f * pi * 0.01 * x * std::sqrt(2.0 / rho);
+}
+
+// Checks the port flows for edge coefficients between the sources above (all Zc = 0).
+void expectFourPortFlows(const FourPortFlows& r, double Kpa, double Kpb, double Kat, double Kbt, double Kpt)
+{
+    const double qpa = Kpa * std::sqrt(1e7 - 5e6), qpb = Kpb * std::sqrt(1e7 - 3e6);
+    const double qat = Kat * std::sqrt(5e6 - 1e5), qbt = Kbt * std::sqrt(3e6 - 1e5);
+    const double qpt = Kpt * std::sqrt(1e7 - 1e5);
+    const double tol = 1e-6 * (qpa + qpb + qat + qbt + qpt) + 1e-15;
+    EXPECT_NEAR(r.qa, qpa - qat, tol);
+    EXPECT_NEAR(r.qb, qpb - qbt, tol);
+    EXPECT_NEAR(r.qp, -qpa - qpb - qpt, tol);
+    EXPECT_NEAR(r.qt, qat + qbt + qpt, tol);
+}
+
+} // namespace hydcompletion
+
+TEST(HydraulicLibraryCompletion, Valve42OpensPAandBTOnlyWithTheSpoolOut)
+{
+    // Spool at 0: every path shut. Spool at x_vmax: P-A and B-T follow the orifice law
+    // over the full stroke; P-B and A-T stay shut. A negative demand is clipped to 0.
+    const auto rest = fourPortValveBetweenSources("Hydraulic42Valve", -0.01);
+    EXPECT_EQ(rest.xv, 0.0);
+    expectFourPortFlows(rest, 0, 0, 0, 0, 0);
+    const auto out = fourPortValveBetweenSources("Hydraulic42Valve", 0.01);
+    EXPECT_NEAR(out.xv, 0.01, 1e-9);
+    const double K = edgeK(1.0, 0.01, 890.0);
+    expectFourPortFlows(out, K, 0, 0, K, 0);
+}
+
+TEST(HydraulicLibraryCompletion, Valve42TwoSwapsPBATforPABTAcrossTheStroke)
+{
+    // rho default 870. Spool at 0: P-B and A-T fully open; at x_vmax: P-A and B-T.
+    const double K = edgeK(1.0, 0.01, 870.0);
+    const auto rest = fourPortValveBetweenSources("Hydraulic42Valve2", 0.0);
+    expectFourPortFlows(rest, 0, K, K, 0, 0);
+    const auto out = fourPortValveBetweenSources("Hydraulic42Valve2", 0.01);
+    EXPECT_NEAR(out.xv, 0.01, 1e-9);
+    expectFourPortFlows(out, K, 0, 0, K, 0);
+}
+
+TEST(HydraulicLibraryCompletion, Valve43NeutralSupplyToTankBypassesPtoTAtCentre)
+{
+    // Centre: P-T open over f_c = 0.1 with x_c = x_vmax, plus the leakage of the -1e-6 m
+    // overlaps. Fully out: the centre is shut (|xv| > p_c*x_vmax), P-A and B-T open.
+    const double rho = 890.0, leak = edgeK(1.0, 1e-6, rho);
+    const auto centre = fourPortValveBetweenSources("Hydraulic43ValveNeutralSupplyToTank", 0.0);
+    expectFourPortFlows(centre, leak, leak, leak, leak, edgeK(0.1, 0.01, rho));
+    const auto out = fourPortValveBetweenSources("Hydraulic43ValveNeutralSupplyToTank", 0.01);
+    const double K = edgeK(1.0, 0.01 + 1e-6, rho);
+    expectFourPortFlows(out, K, 0, 0, K, 0);
+}
+
+TEST(HydraulicLibraryCompletion, Valve43NeutralToTankDrainsAandBAtCentre)
+{
+    // Centre: A-T and B-T open over f_c = 0.1 (plus overlap leakage), P only leaks.
+    // Fully reversed: P-B and A-T open, the centre shut.
+    const double rho = 890.0, leak = edgeK(1.0, 1e-6, rho), Kc = edgeK(0.1, 0.01, rho);
+    const auto centre = fourPortValveBetweenSources("Hydraulic43ValveNeutralToTank", 0.0);
+    expectFourPortFlows(centre, leak, leak, leak + Kc, leak + Kc, 0);
+    const auto back = fourPortValveBetweenSources("Hydraulic43ValveNeutralToTank", -0.01);
+    EXPECT_NEAR(back.xv, -0.01, 1e-9);
+    const double K = edgeK(1.0, 0.01 + 1e-6, rho);
+    expectFourPortFlows(back, 0, K, K, 0, 0);
+}
