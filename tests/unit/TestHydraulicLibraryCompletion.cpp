@@ -245,3 +245,62 @@ TEST(HydraulicLibraryCompletion, Valve43NeutralToTankDrainsAandBAtCentre)
     const double K = edgeK(1.0, 0.01 + 1e-6, rho);
     expectFourPortFlows(back, 0, K, K, 0, 0);
 }
+
+namespace hydcompletion {
+
+struct ThreePortFlows {
+    double xv, qp, qt, qa;
+};
+
+// A 3-port valve between ideal sources PP, PT and PA 5 MPa; `in` is set when given.
+ThreePortFlows threePortValveBetweenSources(const std::string& type, const std::string& xvName, double pp,
+                                            double pt, std::optional<double> in)
+{
+    System s;
+    add(s, type, "Valve");
+    source(s, "P", pp, "Valve", "PP");
+    source(s, "T", pt, "Valve", "PT");
+    source(s, "A", 5e6, "Valve", "PA");
+    if (in) setParam(s, "Valve", "in#Value", std::to_string(*in));
+    EXPECT_TRUE(run(s, 0, 2.0, 1e-4, 11));
+    EXPECT_TRUE(allFinite(s, "Valve", {"PP", "PT", "PA"}, "Pressure"));
+    return {last(s, "Valve", xvName, "Value"), last(s, "Valve", "PP", "Flow"), last(s, "Valve", "PT", "Flow"),
+            last(s, "Valve", "PA", "Flow")};
+}
+
+} // namespace hydcompletion
+
+TEST(HydraulicLibraryCompletion, Valve33OpensPAForwardAndATBackward)
+{
+    // P 10 MPa, T 0.1 MPa, A 5 MPa, rho 870. Spool at +x_vmax: only P-A, opened
+    // x_vmax + 1e-6 (overlap -1e-6); at -x_vmax only A-T. Tolerance 1e-6 relative.
+    const double K = edgeK(1.0, 0.01 + 1e-6, 870.0);
+    const auto fwd = threePortValveBetweenSources("Hydraulic33Valve", "xv", 1e7, 1e5, 0.01);
+    const double qpa = K * std::sqrt(5e6);
+    EXPECT_NEAR(fwd.xv, 0.01, 1e-9);
+    EXPECT_NEAR(fwd.qa, qpa, 1e-6 * qpa);
+    EXPECT_NEAR(fwd.qp, -qpa, 1e-6 * qpa);
+    EXPECT_EQ(fwd.qt, 0.0);
+    const auto back = threePortValveBetweenSources("Hydraulic33Valve", "xv", 1e7, 1e5, -0.01);
+    const double qat = K * std::sqrt(4.9e6);
+    EXPECT_NEAR(back.qa, -qat, 1e-6 * qat);
+    EXPECT_NEAR(back.qt, qat, 1e-6 * qat);
+    EXPECT_EQ(back.qp, 0.0);
+}
+
+TEST(HydraulicLibraryCompletion, ShuttleValveConnectsAToTheLowerOfPAndT)
+{
+    // The higher of PP and PT pushes the spool to its end stop: P high -> xv = +x_vmax,
+    // A-T open; T high -> xv = -x_vmax, P-A open (A then fills from the lower port P).
+    const double K = edgeK(1.0, 0.01 + 1e-6, 890.0);
+    const auto pHigh = threePortValveBetweenSources("Hydraulic33ShuttleValve", "xv_out", 1e7, 1e5, std::nullopt);
+    EXPECT_DOUBLE_EQ(pHigh.xv, 0.01);
+    const double qat = K * std::sqrt(5e6 - 1e5);
+    EXPECT_NEAR(pHigh.qt, qat, 1e-6 * qat);
+    EXPECT_EQ(pHigh.qp, 0.0);
+    const auto tHigh = threePortValveBetweenSources("Hydraulic33ShuttleValve", "xv_out", 1e6, 1e7, std::nullopt);
+    EXPECT_DOUBLE_EQ(tHigh.xv, -0.01);
+    const double qpa = K * std::sqrt(5e6 - 1e6);
+    EXPECT_NEAR(tHigh.qa, -qpa, 1e-6 * qpa);
+    EXPECT_EQ(tHigh.qt, 0.0);
+}
