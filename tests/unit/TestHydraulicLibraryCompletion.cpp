@@ -304,3 +304,27 @@ TEST(HydraulicLibraryCompletion, ShuttleValveConnectsAToTheLowerOfPAndT)
     EXPECT_NEAR(tHigh.qa, -qpa, 1e-6 * qpa);
     EXPECT_EQ(tHigh.qt, 0.0);
 }
+
+TEST(HydraulicLibraryCompletion, PressureControlledValveFollowsItsPilotPressures)
+{
+    // P1 10 MPa, P2 0.1 MPa, P_CLOSE 0.1 MPa. Pilot 1 MPa < p_ref + p_close: shut. Pilot
+    // 5 MPa: x0 = (p_open - p_ref - p_close - p_h/2)/b1, b1 = Cs + Cf*(p1 - p2) (q_nom
+    // raised so the stroke limit is not reached). Tolerance 1e-6 relative.
+    for (double pOpen : {1e6, 5e6}) {
+        System s;
+        add(s, "HydraulicPressureControlledValve", "Valve");
+        source(s, "In", 1e7, "Valve", "P1");
+        source(s, "Out", 1e5, "Valve", "P2");
+        source(s, "Open", pOpen, "Valve", "P_OPEN");
+        source(s, "Close", 1e5, "Valve", "P_CLOSE");
+        setParam(s, "Valve", "q_nom", "0.1");
+        ASSERT_TRUE(run(s, 0, 0.5, 1e-4, 11));
+        const double x = last(s, "Valve", "x0", "Value");
+        const double q = last(s, "Valve", "P2", "Flow");
+        const double xExpected = std::max((pOpen - 2e6 - 1e5 - 2.5e5) / pressureValveStiffness(1e7, 1e5), 0.0);
+        EXPECT_NEAR(x, xExpected, 1e-6 * xExpected) << pOpen;
+        EXPECT_NEAR(q, xExpected * std::sqrt(9.9e6), 1e-6 * xExpected * 3.2e3) << pOpen;
+        EXPECT_EQ(last(s, "Valve", "P_OPEN", "Flow"), 0.0);
+        EXPECT_DOUBLE_EQ(last(s, "Valve", "P_OPEN", "Pressure"), pOpen);
+    }
+}
