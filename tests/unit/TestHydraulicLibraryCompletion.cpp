@@ -328,3 +328,27 @@ TEST(HydraulicLibraryCompletion, PressureControlledValveFollowsItsPilotPressures
         EXPECT_DOUBLE_EQ(last(s, "Valve", "P_OPEN", "Pressure"), pOpen);
     }
 }
+
+TEST(HydraulicLibraryCompletion, PistonHeldStillPushesWithA1p1MinusA2p2)
+{
+    // Rod held at x = 0 by a fixed position, chambers fed by pressure sources: at rest
+    // the force on the rod is A1*p1 - A2*p2 = 1e-3*10 MPa - 5e-4*2 MPa = 9 kN.
+    // Tolerance 1e-6 relative after the (damped) chamber waves have settled.
+    System s;
+    add(s, "HydraulicPiston", "Piston");
+    add(s, "HydraulicPressureSourceQ", "S1");
+    add(s, "HydraulicPressureSourceQ", "S2");
+    add(s, "MechanicFixedPosition", "Wall");
+    connectOk(s, "S1", "P1", "Piston", "P1");
+    connectOk(s, "S2", "P1", "Piston", "P2");
+    connectOk(s, "Piston", "Pm1", "Wall", "Pm1");
+    setParam(s, "S1", "p#Value", "1e7");
+    setParam(s, "S2", "p#Value", "2e6");
+    setParam(s, "Piston", "A2#Value", "5e-4");
+    setParam(s, "Piston", "alpha#Value", "0.5"); // a lossless chamber between a source and a wall rings forever
+    ASSERT_TRUE(run(s, 0, 0.1, 1e-4, 11));
+    const double F = last(s, "Piston", "Pm1", "Force");
+    EXPECT_NEAR(F, 9000.0, 9000.0 * 1e-6);
+    EXPECT_NEAR(last(s, "Piston", "P1", "Pressure"), 1e7, 1e7 * 1e-6);
+    EXPECT_TRUE(allFinite(s, "Piston", {"P1", "P2"}, "Pressure"));
+}
