@@ -352,3 +352,28 @@ TEST(HydraulicLibraryCompletion, PistonHeldStillPushesWithA1p1MinusA2p2)
     EXPECT_NEAR(last(s, "Piston", "P1", "Pressure"), 1e7, 1e7 * 1e-6);
     EXPECT_TRUE(allFinite(s, "Piston", {"P1", "P2"}, "Pressure"));
 }
+
+TEST(HydraulicLibraryCompletion, MotorJloadSettlesWhereFrictionBalancesTheNetTorque)
+{
+    // 10 MPa -> motor -> 0.1 MPa, load torque 50 Nm, Bm = 1 Nms/rad, Jm = 0.1 kg m^2:
+    // w settles at (Dm/(2 pi)*dp - T)/Bm and the flow at Dm/(2 pi)*w (no leakage).
+    // Tolerance 1e-6 relative after 30 time constants Jm/Bm.
+    System s;
+    add(s, "HydraulicMotorJload", "Motor");
+    source(s, "High", 1e7, "Motor", "P1");
+    source(s, "Low", 1e5, "Motor", "P2");
+    add(s, "MechanicTorqueTransformer", "Load");
+    connectOk(s, "Motor", "Pm1", "Load", "P1");
+    setParam(s, "Load", "T#Value", "50");
+    setParam(s, "Motor", "Bm#Value", "1");
+    ASSERT_TRUE(run(s, 0, 3.0, 1e-4, 31));
+    const double k = 5e-5 / (2.0 * pi);
+    const double w = (k * 9.9e6 - 50.0) / 1.0;
+    EXPECT_NEAR(last(s, "Motor", "Pm1", "AngularVelocity"), w, 1e-6 * w);
+    EXPECT_NEAR(last(s, "Motor", "P2", "Flow"), k * w, 1e-6 * k * w);
+    EXPECT_NEAR(last(s, "Motor", "Pm1", "Torque"), 50.0, 1e-9);
+    // The angle integrates w: after 3 s it lies between 0 and 3*w.
+    const double angle = last(s, "Motor", "Pm1", "Angle");
+    EXPECT_GT(angle, 2.5 * w);
+    EXPECT_LT(angle, 3.0 * w);
+}
