@@ -377,3 +377,29 @@ TEST(HydraulicLibraryCompletion, MotorJloadSettlesWhereFrictionBalancesTheNetTor
     EXPECT_GT(angle, 2.5 * w);
     EXPECT_LT(angle, 3.0 * w);
 }
+
+TEST(HydraulicLibraryCompletion, OrificeCheckValveGUsesOrificeOneWayAndBackValveTheOther)
+{
+    // 9 MPa across, defaults: q = 2*A*dp/D with D^2 = (Cdt^2 (dh + 96 del^2 lo)^2 visc^2
+    // + 2 del^4 dh^4 rho dp)/(Cdt^2 del^4 dh^4), A = Ao (3e-4) from Pc to Pp and Ab (1e-4)
+    // from Pp to Pc. At this drop it is within 2e-5 of the orifice law
+    // Cdt*A*sqrt(2 dp/rho). Tolerance 1e-9 relative.
+    const double Cdt = 0.67, dh = 0.3, lo = 0.001, del = 0.02, visc = 0.12, rho = 860.0, dp = 9e6;
+    const double lam = std::pow(Cdt * (dh + 96.0 * del * del * lo) * visc, 2);
+    const double scale = Cdt * Cdt * std::pow(del * dh, 4);
+    const double D = std::sqrt((lam + 2.0 * std::pow(del * dh, 4) * rho * dp) / scale);
+    for (bool forward : {true, false}) {
+        System s;
+        add(s, "HydraulicOrificeCheckValveG", "Valve");
+        source(s, "P", forward ? 1e6 : 1e7, "Valve", "Pp");
+        source(s, "C", forward ? 1e7 : 1e6, "Valve", "Pc");
+        ASSERT_TRUE(run(s, 0, 0.01, 1e-4, 11));
+        const double A = forward ? 3e-4 : 1e-4;
+        const double q = 2.0 * A * dp / D;
+        EXPECT_NEAR(q, Cdt * A * std::sqrt(2.0 * dp / rho), 2e-5 * q);
+        // qp > 0: flow leaves the valve at Pp.
+        EXPECT_NEAR(last(s, "Valve", "Pp", "Flow"), forward ? q : -q, 1e-9 * q) << forward;
+        EXPECT_NEAR(last(s, "Valve", "Pc", "Flow"), forward ? -q : q, 1e-9 * q) << forward;
+        EXPECT_TRUE(allFinite(s, "Valve", {"Pp", "Pc"}, "Pressure"));
+    }
+}
