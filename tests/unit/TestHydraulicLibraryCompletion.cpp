@@ -403,3 +403,31 @@ TEST(HydraulicLibraryCompletion, OrificeCheckValveGUsesOrificeOneWayAndBackValve
         EXPECT_TRUE(allFinite(s, "Valve", {"Pp", "Pc"}, "Pressure"));
     }
 }
+
+TEST(HydraulicLibraryCompletion, Valve43GeneratedRoutesPAandBTForwardPBandATBackward)
+{
+    // Between ideal sources (PP 10, PT 0.1, PA 5, PB 3 MPa), rho 860, no underlap:
+    // xv = +5 mm opens P-A and B-T by 5 mm, xv = -5 mm opens P-B and A-T; each edge
+    // passes K*dp/(plam^2 + dp^2)^(1/4) (-> K*sqrt(dp) far above plam = 1e4 Pa) with
+    // K = Cq*pi*Sd*x*sqrt(2/rho). Tolerance 1e-6 relative.
+    for (double xv : {0.005, -0.005}) {
+        System s;
+        add(s, "HydraulicValve43", "Valve");
+        source(s, "P", 1e7, "Valve", "Pp");
+        source(s, "T", 1e5, "Valve", "Pt");
+        source(s, "A", 5e6, "Valve", "Pa");
+        source(s, "B", 3e6, "Valve", "Pb");
+        setParam(s, "Valve", "xv#Value", std::to_string(xv));
+        ASSERT_TRUE(run(s, 0, 0.01, 1e-4, 11));
+        const double K = 1.4142135623730951 * 0.67 / std::sqrt(860.0) * 3.14159 * 0.01 * 0.005;
+        auto edge = [K](double dp) { return K * dp / std::pow(1e8 + dp * dp, 0.25); };
+        const double qa = xv > 0 ? edge(5e6) : -edge(4.9e6);
+        const double qb = xv > 0 ? -edge(2.9e6) : edge(7e6);
+        // Port flows are positive out of the valve into the node.
+        EXPECT_NEAR(last(s, "Valve", "Pa", "Flow"), qa, 1e-6 * std::fabs(qa)) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pb", "Flow"), qb, 1e-6 * std::fabs(qb)) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pp", "Flow") + last(s, "Valve", "Pt", "Flow"), -qa - qb,
+                    1e-6 * (std::fabs(qa) + std::fabs(qb)));
+        EXPECT_DOUBLE_EQ(last(s, "Valve", "Pa", "Pressure"), 5e6);
+    }
+}
