@@ -431,3 +431,32 @@ TEST(HydraulicLibraryCompletion, Valve43GeneratedRoutesPAandBTForwardPBandATBack
         EXPECT_DOUBLE_EQ(last(s, "Valve", "Pa", "Pressure"), 5e6);
     }
 }
+
+TEST(HydraulicLibraryCompletion, Valve43LSSensesTheLoadPortAndDrainsAtCentre)
+{
+    // Ideal sources PP 10, PT 0.1, PA 5, PB 3, PLS 2 MPa, defaults (overlaps 0.3 mm).
+    // xv = 5 mm: P-A opens 4.7 mm, B-T 4.7 mm, LS-A the full 0.7 mm LS stroke; the LS
+    // flow is drawn from Pls only. xv = 0: all main edges shut, LS drained to T over
+    // Xls0. Edge law K*dp/(plam^2 + dp^2)^(1/4). Tolerance 1e-6 relative.
+    const double Ks = 1.4142135623730951 * 0.67 / std::sqrt(860.0);
+    auto S = [](double dp) { return dp / std::pow(1e8 + dp * dp, 0.25); };
+    for (double xv : {0.005, 0.0}) {
+        System s;
+        add(s, "HydraulicValve43LS", "Valve");
+        source(s, "P", 1e7, "Valve", "Pp");
+        source(s, "T", 1e5, "Valve", "Pt");
+        source(s, "A", 5e6, "Valve", "Pa");
+        source(s, "B", 3e6, "Valve", "Pb");
+        source(s, "LS", 2e6, "Valve", "Pls");
+        setParam(s, "Valve", "xv#Value", std::to_string(xv));
+        ASSERT_TRUE(run(s, 0, 0.01, 1e-4, 11));
+        const double Kmain = 3.14159 * Ks * 0.01 * std::max(xv - 0.0003, 0.0);
+        const double qa = Kmain * S(5e6);
+        const double qb = -Kmain * S(2.9e6);
+        const double qls = xv > 0 ? Ks * 0.01 * 0.0007 * S(5e6 - 2e6) : -Ks * 0.01 * 0.0003 * S(1.9e6);
+        EXPECT_NEAR(last(s, "Valve", "Pa", "Flow"), qa, 1e-6 * std::fabs(qa) + 1e-15) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pb", "Flow"), qb, 1e-6 * std::fabs(qb) + 1e-15) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pls", "Flow"), qls, 1e-6 * std::fabs(qls)) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pt", "Flow"), -qb, 1e-6 * std::fabs(qb) + 1e-15) << xv;
+    }
+}

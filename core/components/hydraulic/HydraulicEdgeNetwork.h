@@ -18,6 +18,9 @@ public:
         int from; // port index; flow from -> to is positive for p_from > p_to
         int to;
         double K;
+        // A sensing edge draws on `from` only: its flow is not booked at `to` (load-sensing
+        // ports of the generated valves are modelled so).
+        bool sensing = false;
     };
 
     explicit HydraulicEdgeNetwork(int ports)
@@ -51,9 +54,10 @@ public:
                 const double f = e.K * signedSquareL(dp, plam);
                 const double df = e.K * dxSignedSquareL(dp, plam);
                 mF[e.from] += f;
-                mF[e.to] -= f;
                 mJ[e.from][mN + e.from] += df;
                 mJ[e.from][mN + e.to] -= df;
+                if (e.sensing) continue;
+                mF[e.to] -= f;
                 mJ[e.to][mN + e.from] -= df;
                 mJ[e.to][mN + e.to] += df;
             }
