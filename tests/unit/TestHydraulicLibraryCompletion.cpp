@@ -460,3 +460,32 @@ TEST(HydraulicLibraryCompletion, Valve43LSSensesTheLoadPortAndDrainsAtCentre)
         EXPECT_NEAR(last(s, "Valve", "Pt", "Flow"), -qb, 1e-6 * std::fabs(qb) + 1e-15) << xv;
     }
 }
+
+TEST(HydraulicLibraryCompletion, Valve63OCOpenCentreClosesAsTheSpoolMoves)
+{
+    // Ideal sources PP 10, PT 0.1, PA 5, PB 3, Pocp 8, Poct 0.1 MPa; Xoc0 set to 2 mm
+    // (default 0 keeps the centre shut). xv = 0: only the centre Pocp -> Poct passes,
+    // opened Xoc0; xv = 5 mm: centre shut, P-A and B-T open 5 mm (Sd 15 mm). Edge law
+    // K*dp/(plam^2 + dp^2)^(1/4). Tolerance 1e-6 relative.
+    const double k = 3.14159 * 1.4142135623730951 * 0.67 / std::sqrt(860.0) * 0.015;
+    auto S = [](double dp) { return dp / std::pow(1e8 + dp * dp, 0.25); };
+    for (double xv : {0.0, 0.005}) {
+        System s;
+        add(s, "HydraulicValve63OC", "Valve");
+        source(s, "P", 1e7, "Valve", "Pp");
+        source(s, "T", 1e5, "Valve", "Pt");
+        source(s, "A", 5e6, "Valve", "Pa");
+        source(s, "B", 3e6, "Valve", "Pb");
+        source(s, "OCP", 8e6, "Valve", "Pocp");
+        source(s, "OCT", 1e5, "Valve", "Poct");
+        setParam(s, "Valve", "xv#Value", std::to_string(xv));
+        setParam(s, "Valve", "Xoc0#Value", "0.002");
+        ASSERT_TRUE(run(s, 0, 0.01, 1e-4, 11));
+        const double qoc = xv == 0.0 ? k * 0.002 * S(7.9e6) : 0.0;
+        const double qa = k * xv * S(5e6);
+        EXPECT_NEAR(last(s, "Valve", "Poct", "Flow"), qoc, 1e-6 * qoc + 1e-15) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pocp", "Flow"), -qoc, 1e-6 * qoc + 1e-15) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pa", "Flow"), qa, 1e-6 * qa + 1e-15) << xv;
+        EXPECT_NEAR(last(s, "Valve", "Pb", "Flow"), -k * xv * S(2.9e6), 1e-6 * qa + 1e-15) << xv;
+    }
+}
