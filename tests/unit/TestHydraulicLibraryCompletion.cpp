@@ -489,3 +489,26 @@ TEST(HydraulicLibraryCompletion, Valve63OCOpenCentreClosesAsTheSpoolMoves)
         EXPECT_NEAR(last(s, "Valve", "Pb", "Flow"), -k * xv * S(2.9e6), 1e-6 * qa + 1e-15) << xv;
     }
 }
+
+TEST(HydraulicLibraryCompletion, FuelTankGHeadFallsAsFuelIsDrawnAndVanishesWhenEmpty)
+{
+    // A flow source draws 1 l/s of fuel (700 kg/m^3): 0.7 kg/s is consumed (trapezoidal,
+    // the first half step uses the start flow 0); the outlet pressure is
+    // p0 + gx*hf*(massfuel/massfuelmax)*rho. With 1 kg in the tank it runs dry after
+    // ~1.43 s and the pressure drops to 0. Tolerances 1e-9 relative.
+    for (double m0 : {1000.0, 1.0}) {
+        System s;
+        add(s, "HydraulicFuelTankG", "Tank");
+        add(s, "HydraulicFlowSourceQ", "Pump");
+        connectOk(s, "Pump", "P1", "Tank", "PT");
+        setParam(s, "Pump", "q#Value", "-1e-3");
+        setParam(s, "Tank", "massfuel0#Value", std::to_string(m0));
+        ASSERT_TRUE(run(s, 0, 2.0, 1e-3, 3));
+        const double consumed = std::min(0.7 * (2.0 - 0.0005), m0 + 1e-4);
+        const double mass = m0 - consumed;
+        EXPECT_NEAR(last(s, "Tank", "consfuel", "Value"), consumed, 1e-9 * consumed) << m0;
+        EXPECT_NEAR(last(s, "Tank", "massfuel", "Value"), mass, 1e-9 * m0) << m0;
+        const double p = mass > 0 ? 1e5 + 9.82 * 5.0 * mass / 1000.0 * 700.0 : 0.0;
+        EXPECT_NEAR(last(s, "Pump", "P1", "Pressure"), p, 1e-9 * 1e5) << m0;
+    }
+}
