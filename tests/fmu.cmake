@@ -9,7 +9,7 @@ if(TLMHUB_FMU_TEST_SOURCES)
   target_compile_definitions(tlmhub-fmu-tests PRIVATE TLMHUB_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                              TLMHUB_SHARED_DIR="${TLMHUB_SHARED_DIR}"
                              TLMHUB_CLI="$<TARGET_FILE:tlmhub-cli>")
-  # The tests export and run models through the CLI, as a user does.
+  # The tests export, import and run models through the CLI too, as a user does.
   add_dependencies(tlmhub-fmu-tests tlmhub-cli)
   gtest_discover_tests(tlmhub-fmu-tests DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "fmu" TIMEOUT 300)
   include(${CMAKE_CURRENT_SOURCE_DIR}/fmu/export.cmake)

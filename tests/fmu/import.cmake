@@ -19,9 +19,7 @@ foreach(variant integrator integrator_without_do_step pressure_source)
   add_dependencies(tlmhub-fmu-tests tlmhub-test-fmu-${variant})
 endforeach()
 target_compile_definitions(tlmhub-test-fmu-integrator_without_do_step PRIVATE TLMHUB_TEST_WITHOUT_DO_STEP)
-add_dependencies(tlmhub-fmu-tests tlmhub-cli)
 target_compile_definitions(tlmhub-fmu-tests PRIVATE
   TLMHUB_TEST_FMU_LIBRARY="$<TARGET_FILE:tlmhub-test-fmu-integrator>"
   TLMHUB_TEST_FMU_LIBRARY_WITHOUT_DO_STEP="$<TARGET_FILE:tlmhub-test-fmu-integrator_without_do_step>"
-  TLMHUB_TEST_FMU_LIBRARY_PRESSURE_SOURCE="$<TARGET_FILE:tlmhub-test-fmu-pressure_source>"
-  TLMHUB_CLI="$<TARGET_FILE:tlmhub-cli>")
+  TLMHUB_TEST_FMU_LIBRARY_PRESSURE_SOURCE="$<TARGET_FILE:tlmhub-test-fmu-pressure_source>")

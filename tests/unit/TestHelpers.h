@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers shared by the unit tests: build systems through the string API, run them.
 #include "core/ComponentFactory.h"
+#include "core/NodeTypes.h"
+#include "core/Results.h"
 #include "core/Simulation.h"
 #include "core/System.h"
 
@@ -66,6 +68,14 @@ inline std::optional<Simulation> runToStop(Result<Simulation> compiled, const Ru
     }
     EXPECT_TRUE(isOk(compiled->run(options)));
     return std::move(*compiled);
+}
+
+// The logged samples of one node variable ("Pressure") at a component's port, after a run.
+inline std::vector<double> loggedSlot(System& s, const std::string& comp, const std::string& port,
+                                      const std::string& variable)
+{
+    Port* p = s.component(comp)->port(port);
+    return loggedData(*p, nodeVariableIndex(p->nodeType(), variable), s.numLoggedSamples());
 }
 
 // The logged time, then every logged variable in list order: what two runs compare.

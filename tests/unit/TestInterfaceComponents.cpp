@@ -17,7 +17,7 @@ TEST(InterfaceComponents, EveryDomainHasACAndAQTypeWithOnePowerPort)
         {"MechanicRotational", NodeType::MechanicRotational}, {"Electric", NodeType::Electric},
         {"Pneumatic", NodeType::Pneumatic},   {"PetriNet", NodeType::PetriNet}};
     for (const auto& [domain, nodeType] : domains) {
-        for (const auto [suffix, kind] : {std::pair{"InterfaceC", CqsKind::C}, std::pair{"InterfaceQ", CqsKind::Q}}) {
+        for (const auto& [suffix, kind] : {std::pair{"InterfaceC", CqsKind::C}, std::pair{"InterfaceQ", CqsKind::Q}}) {
             const std::string type = std::string(domain) + suffix;
             auto component = ComponentFactory::instance().create(type);
             ASSERT_TRUE(component) << type;

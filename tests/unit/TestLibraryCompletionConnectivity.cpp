@@ -26,12 +26,6 @@ const Domain kDomains[] = {
     {"Pneumatic", "e2", "p2"},
 };
 
-std::vector<double> loggedSlot(System& s, const std::string& comp, const std::string& port, const std::string& var)
-{
-    Port* p = s.component(comp)->port(port);
-    return loggedData(*p, nodeVariableIndex(p->nodeType(), var), s.numLoggedSamples());
-}
-
 } // namespace lcconnectivity
 
 using namespace lcconnectivity;

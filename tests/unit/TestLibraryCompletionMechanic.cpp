@@ -11,18 +11,6 @@
 using namespace tlmhub;
 using namespace tlmhub::test;
 
-namespace lcmechanic {
-
-std::vector<double> loggedSlot(System& s, const std::string& comp, const std::string& port, const std::string& var)
-{
-    Port* p = s.component(comp)->port(port);
-    return loggedData(*p, nodeVariableIndex(p->nodeType(), var), s.numLoggedSamples());
-}
-
-} // namespace lcmechanic
-
-using namespace lcmechanic;
-
 TEST(LibraryCompletionMechanicGear, SpeedRatioAndConstantTorqueAcceleration)
 {
     // Torque sources at both shafts (Zc = 0): Jg dw2/dt = g T1 - T2 - Bg w2, w1 = -g w2.
