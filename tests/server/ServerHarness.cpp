@@ -379,4 +379,17 @@ std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, 
     return r.status == 201 ? r.json()["id"].get<std::int64_t>() : 0;
 }
 
+nlohmann::json waitForJobEnd(HttpClient& client, std::int64_t job, std::chrono::seconds timeout)
+{
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    nlohmann::json info;
+    do {
+        info = client.get("/api/v1/jobs/" + std::to_string(job)).json();
+        const std::string state = info.value("state", "");
+        if (state != "queued" && state != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    } while (std::chrono::steady_clock::now() < deadline);
+    return info;
+}
+
 } // namespace tlmhub::test

@@ -9,6 +9,7 @@
 
 #include "TestFiles.h"
 
+#include <chrono>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -143,5 +144,8 @@ void createTestUsers(const ServerProcess& server, std::initializer_list<const ch
 HttpClient loggedInAs(const ServerProcess& server, const std::string& user);
 // Uploads the .hmf `file` as a model named `name` (the test fails if it is refused); its id.
 std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, const std::string& name);
+// Polls the job until it is neither queued nor running (at most `timeout`); its last JSON.
+nlohmann::json waitForJobEnd(HttpClient& client, std::int64_t job,
+                             std::chrono::seconds timeout = std::chrono::seconds(120));
 
 } // namespace tlmhub::test
