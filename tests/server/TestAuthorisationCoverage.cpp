@@ -154,8 +154,9 @@ TEST(AuthorisationCoverage, EveryRouteAndWebSocketRequestHasACase)
     for (const server::RouteSpec& r : server::apiRoutes()) {
         routes.insert(routeName(r));
         EXPECT_TRUE(routeCases().count(routeName(r))) << routeName(r) << " has no authorisation case";
-        if (routeCases().count(routeName(r)))
+        if (routeCases().count(routeName(r))) {
             EXPECT_EQ(!r.needsAuth, routeCases().at(routeName(r)).kind == Case::Public) << routeName(r);
+        }
     }
     for (const auto& [name, c] : routeCases()) EXPECT_TRUE(routes.count(name)) << name << " is not a route any more";
     const auto types = server::SchemaValidator::protocol().requestTypes();
@@ -276,7 +277,9 @@ TEST_F(AuthorisationCases, EveryRouteRefusesStrangersAndOthersObjects)
             const auto reply = olga.request(r.method, path, body, type);
             EXPECT_EQ(reply.status, 403) << name << " by a plain user: " << reply.body;
         }
-        if (c.kind == Case::Own) EXPECT_FALSE(c.why.empty()) << name;
+        if (c.kind == Case::Own) {
+            EXPECT_FALSE(c.why.empty()) << name;
+        }
     }
     // The lists are the caller's own, and a job or study of another user's model is refused.
     EXPECT_EQ(olga.get("/api/v1/models").body.find("sam-private-model"), std::string::npos);
@@ -308,8 +311,12 @@ TEST_F(AuthorisationCases, EveryWebSocketRequestRefusesOthersObjects)
         WsClient ws(server->port(), olga.token());
         const auto reply = ws.call(type, message);
         ASSERT_FALSE(reply.is_null()) << type << ": no answer";
-        if (c == WsCase::Foreign) EXPECT_EQ(reply["error"]["code"], "not_found") << type << ": " << reply;
-        if (c == WsCase::OpenModel) EXPECT_EQ(reply["error"]["code"], "not_open") << type << ": " << reply;
+        if (c == WsCase::Foreign) {
+            EXPECT_EQ(reply["error"]["code"], "not_found") << type << ": " << reply;
+        }
+        if (c == WsCase::OpenModel) {
+            EXPECT_EQ(reply["error"]["code"], "not_open") << type << ": " << reply;
+        }
     }
 }
 

@@ -287,7 +287,9 @@ TEST_F(Studies, ProgressRowsStreamOverTheWebSocket)
     // row is one of the table's, once.
     EXPECT_EQ(study["runs_done"], 200);
     EXPECT_FALSE(runs.empty());
-    if (!runs.empty()) EXPECT_LT(*runs.rbegin(), 200);
+    if (!runs.empty()) {
+        EXPECT_LT(*runs.rbegin(), 200);
+    }
 }
 
 TEST_F(Studies, OnlyTheOwnerSeesAndCancelsAStudy)
