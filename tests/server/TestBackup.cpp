@@ -45,18 +45,6 @@ CommandResult runServerCommand(const std::vector<std::string>& args)
     return r;
 }
 
-nlohmann::json waitForJob(HttpClient& c, std::int64_t id)
-{
-    nlohmann::json job;
-    for (int i = 0; i < 1200; ++i) {
-        job = c.get("/api/v1/jobs/" + std::to_string(id)).json();
-        const std::string state = job.value("state", "");
-        if (state != "queued" && state != "running") break;
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    return job;
-}
-
 // A database at `file` with one user, `username`.
 void makeDatabase(const fs::path& file, const std::string& username)
 {
@@ -82,7 +70,7 @@ TEST(Backup, WhileTheServerRunsAndRestoredIntoAFreshDataDirectory)
         r = alice.post("/api/v1/jobs", {{"model_id", model}, {"stop", 0.5}, {"log_samples", 51}});
         ASSERT_EQ(r.status, 201) << r.body;
         job = r.json()["id"].get<std::int64_t>();
-        ASSERT_EQ(waitForJob(alice, job)["state"], "done");
+        ASSERT_EQ(waitForJobEnd(alice, job)["state"], "done");
         hmf = alice.get("/api/v1/models/" + std::to_string(model) + "?format=hmf").body;
         csv = alice.get("/api/v1/jobs/" + std::to_string(job) + "/results?format=csv").body;
         ASSERT_FALSE(csv.empty());

@@ -14,22 +14,6 @@ using namespace tlmhub::test;
 namespace fs = std::filesystem;
 namespace http = boost::beast::http;
 
-namespace {
-
-nlohmann::json waitForJob(HttpClient& c, std::int64_t id)
-{
-    nlohmann::json job;
-    for (int i = 0; i < 1200; ++i) {
-        job = c.get("/api/v1/jobs/" + std::to_string(id)).json();
-        const std::string state = job.value("state", "");
-        if (state != "queued" && state != "running") return job;
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    return job;
-}
-
-} // namespace
-
 TEST(PostgresServer, TwoServersOnOneDatabaseShareModelsJobsAndResults)
 {
     TemporaryPostgres postgres;
@@ -51,7 +35,7 @@ TEST(PostgresServer, TwoServersOnOneDatabaseShareModelsJobsAndResults)
         const auto submitted = alice.post("/api/v1/jobs", {{"model_id", model}});
         ASSERT_EQ(submitted.status, 201) << submitted.body;
         job = submitted.json()["id"].get<std::int64_t>();
-        ASSERT_EQ(waitForJob(alice, job)["state"], "done");
+        ASSERT_EQ(waitForJobEnd(alice, job)["state"], "done");
         const auto result = alice.get("/api/v1/jobs/" + std::to_string(job) + "/results?format=csv");
         ASSERT_EQ(result.status, 200) << result.body;
         csv = result.body;
