@@ -176,10 +176,10 @@ struct WorkerNode {
     }
     ~WorkerNode() { fs::remove_all(dir); }
     std::string address() const { return "http://127.0.0.1:" + std::to_string(server.port()); }
-    // A job of about a second (3 million steps, 50000 samples), or a short one.
+    // A job of about a second (3 million steps, 5000 samples), or a short one.
     std::int64_t submit(bool longRun)
     {
-        const nlohmann::json body = longRun ? nlohmann::json{{"model_id", servo}, {"stop", 300.0}, {"log_samples", 50000}}
+        const nlohmann::json body = longRun ? nlohmann::json{{"model_id", servo}, {"stop", 300.0}, {"log_samples", 5000}}
                                             : nlohmann::json{{"model_id", servo}, {"stop", 2.0}, {"log_samples", 501}};
         const auto r = admin.post("/api/v1/jobs", body);
         EXPECT_EQ(r.status, 201) << r.body;
