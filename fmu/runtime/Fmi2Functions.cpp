@@ -2,19 +2,19 @@
 // exports: see exports.map). Each checks its arguments, then calls the instance; no
 // exception leaves the library.
 #include "fmu/Fmi2.h"
-#include "fmu/runtime/FmuInstance.h"
+#include "fmu/runtime/ExportedModelInstance.h"
 
 #include <exception>
 #include <string>
 #include <type_traits>
 
-using tlmhub::fmu::FmuInstance;
+using tlmhub::fmu::ExportedModelInstance;
 
 namespace {
 
-FmuInstance* instanceOf(fmi2Component c)
+ExportedModelInstance* instanceOf(fmi2Component c)
 {
-    return static_cast<FmuInstance*>(c);
+    return static_cast<ExportedModelInstance*>(c);
 }
 
 // Runs `body` on the instance; an exception becomes fmi2Error with its text logged.
@@ -23,7 +23,7 @@ fmi2Status guarded(fmi2Component c, const char* function, Body body)
 {
     if (c == nullptr)
         return fmi2Error;
-    FmuInstance& instance = *instanceOf(c);
+    ExportedModelInstance& instance = *instanceOf(c);
     try {
         return body(instance);
     } catch (const std::exception& e) {
@@ -33,7 +33,7 @@ fmi2Status guarded(fmi2Component c, const char* function, Body body)
 
 fmi2Status notSupported(fmi2Component c, const char* function)
 {
-    return guarded(c, function, [&](FmuInstance& instance) {
+    return guarded(c, function, [&](ExportedModelInstance& instance) {
         return instance.error(std::string(function) + " is not supported by this FMU");
     });
 }
@@ -44,7 +44,7 @@ fmi2Status noVariablesOfType(fmi2Component c, const char* function, size_t nvr)
 {
     if (nvr == 0)
         return c ? fmi2OK : fmi2Error;
-    return guarded(c, function, [&](FmuInstance& instance) {
+    return guarded(c, function, [&](ExportedModelInstance& instance) {
         return instance.error(std::string(function) + ": this FMU has no variables of this type");
     });
 }
@@ -67,7 +67,7 @@ const char* fmi2GetVersion(void)
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t, const fmi2String[])
 {
-    return guarded(c, "fmi2SetDebugLogging", [&](FmuInstance& instance) {
+    return guarded(c, "fmi2SetDebugLogging", [&](ExportedModelInstance& instance) {
         instance.setDebugLogging(loggingOn != fmi2False);
         return fmi2OK;
     });
@@ -86,7 +86,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         return nullptr;
     }
     try {
-        return FmuInstance::create(instanceName, guid, resourceLocation, functions, loggingOn != fmi2False);
+        return ExportedModelInstance::create(instanceName, guid, resourceLocation, functions, loggingOn != fmi2False);
     } catch (const std::exception& e) {
         if (functions->logger)
             functions->logger(functions->componentEnvironment, instanceName, fmi2Error, "logStatusError",
@@ -103,41 +103,41 @@ void fmi2FreeInstance(fmi2Component c)
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean, fmi2Real, fmi2Real startTime,
                                fmi2Boolean stopTimeDefined, fmi2Real stopTime)
 {
-    return guarded(c, "fmi2SetupExperiment", [&](FmuInstance& instance) {
+    return guarded(c, "fmi2SetupExperiment", [&](ExportedModelInstance& instance) {
         return instance.setupExperiment(startTime, stopTimeDefined ? std::optional<double>(stopTime) : std::nullopt);
     });
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
-    return guarded(c, "fmi2EnterInitializationMode", [](FmuInstance& i) { return i.enterInitializationMode(); });
+    return guarded(c, "fmi2EnterInitializationMode", [](ExportedModelInstance& i) { return i.enterInitializationMode(); });
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
-    return guarded(c, "fmi2ExitInitializationMode", [](FmuInstance& i) { return i.exitInitializationMode(); });
+    return guarded(c, "fmi2ExitInitializationMode", [](ExportedModelInstance& i) { return i.exitInitializationMode(); });
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
-    return guarded(c, "fmi2Terminate", [](FmuInstance& i) { return i.terminate(); });
+    return guarded(c, "fmi2Terminate", [](ExportedModelInstance& i) { return i.terminate(); });
 }
 
 fmi2Status fmi2Reset(fmi2Component c)
 {
-    return guarded(c, "fmi2Reset", [](FmuInstance& i) { return i.reset(); });
+    return guarded(c, "fmi2Reset", [](ExportedModelInstance& i) { return i.reset(); });
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
-    return guarded(c, "fmi2GetReal", [&](FmuInstance& i) {
+    return guarded(c, "fmi2GetReal", [&](ExportedModelInstance& i) {
         return nvr > 0 && (!vr || !value) ? i.error("fmi2GetReal: null array") : i.getReal(vr, nvr, value);
     });
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
 {
-    return guarded(c, "fmi2SetReal", [&](FmuInstance& i) {
+    return guarded(c, "fmi2SetReal", [&](ExportedModelInstance& i) {
         return nvr > 0 && (!vr || !value) ? i.error("fmi2SetReal: null array") : i.setReal(vr, nvr, value);
     });
 }
@@ -224,7 +224,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
                       fmi2Boolean)
 {
     return guarded(c, "fmi2DoStep",
-                   [&](FmuInstance& i) { return i.doStep(currentCommunicationPoint, communicationStepSize); });
+                   [&](ExportedModelInstance& i) { return i.doStep(currentCommunicationPoint, communicationStepSize); });
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c)
@@ -234,7 +234,7 @@ fmi2Status fmi2CancelStep(fmi2Component c)
 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Status* value)
 {
-    return guarded(c, "fmi2GetStatus", [&](FmuInstance& i) {
+    return guarded(c, "fmi2GetStatus", [&](ExportedModelInstance& i) {
         if (kind != fmi2DoStepStatus || !value)
             return fmi2Discard;
         *value = i.doStepStatus();
@@ -244,7 +244,7 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Status*
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Real* value)
 {
-    return guarded(c, "fmi2GetRealStatus", [&](FmuInstance& i) {
+    return guarded(c, "fmi2GetRealStatus", [&](ExportedModelInstance& i) {
         if (kind != fmi2LastSuccessfulTime || !value)
             return fmi2Discard;
         *value = i.lastSuccessfulTime();
@@ -259,7 +259,7 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind, fmi2Integ
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Boolean* value)
 {
-    return guarded(c, "fmi2GetBooleanStatus", [&](FmuInstance& i) {
+    return guarded(c, "fmi2GetBooleanStatus", [&](ExportedModelInstance& i) {
         if (kind != fmi2Terminated || !value)
             return fmi2Discard;
         *value = i.terminated() ? fmi2True : fmi2False;

@@ -31,17 +31,6 @@ protected:
         delete dataDir;
     }
     HttpClient as(const std::string& user) { return loggedInAs(*server, user); }
-    nlohmann::json waitForJob(HttpClient& c, std::int64_t id, int seconds = 120)
-    {
-        nlohmann::json job;
-        for (int i = 0; i < seconds * 10; ++i) {
-            job = c.get("/api/v1/jobs/" + std::to_string(id)).json();
-            const std::string state = job.value("state", "");
-            if (state != "queued" && state != "running") return job;
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-        return job;
-    }
     static fs::path* dataDir;
     static ServerProcess* server;
 };
@@ -169,7 +158,7 @@ TEST_F(ServerApi, RestJobGivesTheSameCsvAsTheCli)
     const auto submitted = alice.post("/api/v1/jobs", {{"model_id", id}});
     ASSERT_EQ(submitted.status, 201) << submitted.body;
     const std::int64_t job = submitted.json()["id"].get<std::int64_t>();
-    const auto done = waitForJob(alice, job);
+    const auto done = waitForJobEnd(alice, job);
     ASSERT_EQ(done["state"], "done") << done.dump();
     EXPECT_DOUBLE_EQ(done["progress"].get<double>(), 1.0);
     const auto csv = alice.get("/api/v1/jobs/" + std::to_string(job) + "/results?format=csv");
@@ -402,7 +391,7 @@ TEST_F(ServerApi, ASlowClientDoesNotHoldUpTheJobOrOthers)
     HttpClient other = as("bob");
     // 3 million steps and about 17 MB of frames, far more than the socket buffers hold:
     // under a second in Release, about 15 s under the sanitizers.
-    const auto done = waitForJob(alice, job, 600);
+    const auto done = waitForJobEnd(alice, job, std::chrono::seconds(600));
     EXPECT_EQ(done["state"], "done");
     EXPECT_EQ(other.get("/api/v1/health").status, 200);
     // The slow client still gets its events, ending with event.done (never dropped).

@@ -1,4 +1,4 @@
-#include "fmu/runtime/FmuInstance.h"
+#include "fmu/runtime/ExportedModelInstance.h"
 
 #include "core/Node.h"
 #include "core/Parameter.h"
@@ -43,16 +43,16 @@ std::vector<std::string> linesOf(const std::string& text)
 
 } // namespace
 
-FmuInstance::FmuInstance(std::string instanceName, const fmi2CallbackFunctions& callbacks, bool loggingOn)
+ExportedModelInstance::ExportedModelInstance(std::string instanceName, const fmi2CallbackFunctions& callbacks, bool loggingOn)
     : mName(std::move(instanceName)), mCallbacks(callbacks), mDebugLogging(loggingOn)
 {
 }
 
-FmuInstance* FmuInstance::create(const std::string& instanceName, const std::string& guid,
+ExportedModelInstance* ExportedModelInstance::create(const std::string& instanceName, const std::string& guid,
                                  const std::string& resourceLocation, const fmi2CallbackFunctions* callbacks,
                                  bool loggingOn)
 {
-    auto instance = std::unique_ptr<FmuInstance>(new FmuInstance(instanceName, *callbacks, loggingOn));
+    auto instance = std::unique_ptr<ExportedModelInstance>(new ExportedModelInstance(instanceName, *callbacks, loggingOn));
     std::optional<std::string> directory = directoryOfFileUri(resourceLocation);
     if (!directory) {
         instance->error("fmi2Instantiate: the resource location '" + resourceLocation + "' is not a file:// URI");
@@ -69,7 +69,7 @@ FmuInstance* FmuInstance::create(const std::string& instanceName, const std::str
     return instance.release();
 }
 
-Result<ModelInterface> FmuInstance::loadModel(const std::string& resourceDirectory, const std::string& guid)
+Result<ModelInterface> ExportedModelInstance::loadModel(const std::string& resourceDirectory, const std::string& guid)
 {
     const std::string hmfPath = resourceDirectory + "/model.hmf";
     std::optional<std::string> hmf = readFile(hmfPath);
@@ -90,25 +90,25 @@ Result<ModelInterface> FmuInstance::loadModel(const std::string& resourceDirecto
     return described;
 }
 
-void FmuInstance::log(fmi2Status status, const char* category, const std::string& message)
+void ExportedModelInstance::log(fmi2Status status, const char* category, const std::string& message)
 {
     if (mCallbacks.logger)
         mCallbacks.logger(mCallbacks.componentEnvironment, mName.c_str(), status, category, "%s", message.c_str());
 }
 
-fmi2Status FmuInstance::error(const std::string& message)
+fmi2Status ExportedModelInstance::error(const std::string& message)
 {
     log(fmi2Error, "logStatusError", message);
     return fmi2Error;
 }
 
-void FmuInstance::info(const std::string& message)
+void ExportedModelInstance::info(const std::string& message)
 {
     if (mDebugLogging)
         log(fmi2OK, "logAll", message);
 }
 
-void FmuInstance::restoreStarts()
+void ExportedModelInstance::restoreStarts()
 {
     const auto& variables = mInterface.description.variables;
     mValues.assign(variables.size(), 0.0);
@@ -120,7 +120,7 @@ void FmuInstance::restoreStarts()
     mLastStepStatus = fmi2OK;
 }
 
-fmi2Status FmuInstance::setupExperiment(double startTime, std::optional<double> stopTime)
+fmi2Status ExportedModelInstance::setupExperiment(double startTime, std::optional<double> stopTime)
 {
     if (mState != State::Instantiated)
         return error("fmi2SetupExperiment: only allowed after fmi2Instantiate or fmi2Reset");
@@ -132,7 +132,7 @@ fmi2Status FmuInstance::setupExperiment(double startTime, std::optional<double> 
     return fmi2OK;
 }
 
-fmi2Status FmuInstance::enterInitializationMode()
+fmi2Status ExportedModelInstance::enterInitializationMode()
 {
     if (mState != State::Instantiated)
         return error("fmi2EnterInitializationMode: only allowed after fmi2Instantiate or fmi2SetupExperiment");
@@ -142,7 +142,7 @@ fmi2Status FmuInstance::enterInitializationMode()
 
 // Compiles a copy of the model with the parameters as set, initialises it at the start
 // time and writes the inputs into their nodes: from here on outputs are the model's.
-fmi2Status FmuInstance::exitInitializationMode()
+fmi2Status ExportedModelInstance::exitInitializationMode()
 {
     if (mState != State::InitializationMode)
         return error("fmi2ExitInitializationMode: not in initialisation mode");
@@ -200,7 +200,7 @@ fmi2Status FmuInstance::exitInitializationMode()
     return fmi2OK;
 }
 
-void FmuInstance::writeInputs()
+void ExportedModelInstance::writeInputs()
 {
     const auto& variables = mInterface.description.variables;
     for (std::size_t i = 0; i < variables.size(); ++i)
@@ -208,7 +208,7 @@ void FmuInstance::writeInputs()
             *mSlots[i] = mValues[i];
 }
 
-fmi2Status FmuInstance::terminate()
+fmi2Status ExportedModelInstance::terminate()
 {
     if (mState != State::Stepping && mState != State::StepFailed)
         return error("fmi2Terminate: the model was not initialised");
@@ -216,7 +216,7 @@ fmi2Status FmuInstance::terminate()
     return fmi2OK;
 }
 
-fmi2Status FmuInstance::reset()
+fmi2Status ExportedModelInstance::reset()
 {
     mState = State::Instantiated;
     mStopTime.reset();
@@ -225,7 +225,7 @@ fmi2Status FmuInstance::reset()
     return fmi2OK;
 }
 
-fmi2Status FmuInstance::getReal(const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
+fmi2Status ExportedModelInstance::getReal(const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
     for (size_t k = 0; k < nvr; ++k) {
         if (vr[k] >= mValues.size())
@@ -243,7 +243,7 @@ fmi2Status FmuInstance::getReal(const fmi2ValueReference vr[], size_t nvr, fmi2R
     return fmi2OK;
 }
 
-fmi2Status FmuInstance::setReal(const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
+fmi2Status ExportedModelInstance::setReal(const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
 {
     for (size_t k = 0; k < nvr; ++k) {
         if (vr[k] >= mValues.size())
@@ -265,7 +265,7 @@ fmi2Status FmuInstance::setReal(const fmi2ValueReference vr[], size_t nvr, const
 
 // One communication step: the inputs as set apply from its start; the step must be a whole
 // number of model steps, so communication points land on the model's own steps.
-fmi2Status FmuInstance::doStep(double currentCommunicationPoint, double communicationStepSize)
+fmi2Status ExportedModelInstance::doStep(double currentCommunicationPoint, double communicationStepSize)
 {
     if (mState != State::Stepping)
         return error("fmi2DoStep: the model is not initialised, or a step failed or it was terminated");

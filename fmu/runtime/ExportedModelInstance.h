@@ -13,12 +13,12 @@
 
 namespace tlmhub::fmu {
 
-class FmuInstance {
+class ExportedModelInstance {
 public:
     enum class State { Instantiated, InitializationMode, Stepping, StepFailed, Terminated };
 
     // Null, with the reason logged, when the resources hold no model of this GUID.
-    static FmuInstance* create(const std::string& instanceName, const std::string& guid,
+    static ExportedModelInstance* create(const std::string& instanceName, const std::string& guid,
                                const std::string& resourceLocation, const fmi2CallbackFunctions* callbacks,
                                bool loggingOn);
 
@@ -41,7 +41,7 @@ public:
     void info(const std::string& message);
 
 private:
-    FmuInstance(std::string instanceName, const fmi2CallbackFunctions& callbacks, bool loggingOn);
+    ExportedModelInstance(std::string instanceName, const fmi2CallbackFunctions& callbacks, bool loggingOn);
     void log(fmi2Status status, const char* category, const std::string& message);
     Result<ModelInterface> loadModel(const std::string& resourceDirectory, const std::string& guid);
     void restoreStarts();
