@@ -2,6 +2,7 @@
 
 #include "core/ComponentFactory.h"
 #include "core/numerics/AuxiliarySimulationFunctions.h"
+#include "core/numerics/FourWayValveFlow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,10 +64,7 @@ void Hydraulic43Valve::initialize()
 
 void Hydraulic43Valve::simulateOneTimestep()
 {
-    double cp = *mpPP_c, Zcp = *mpPP_Zc;
-    double ct = *mpPT_c, Zct = *mpPT_Zc;
-    double ca = *mpPA_c, Zca = *mpPA_Zc;
-    double cb = *mpPB_c, Zcb = *mpPB_Zc;
+    TlmWave P{*mpPP_c, *mpPP_Zc}, T{*mpPT_c, *mpPT_Zc}, A{*mpPA_c, *mpPA_Zc}, B{*mpPB_c, *mpPB_Zc};
 
     double xvin = *mpIn;
     const double Cq = *mpCq, rho = *mpRho, d = *mpD;
@@ -88,40 +86,16 @@ void Hydraulic43Valve::simulateOneTimestep()
     mQat.setFlowCoefficient(Cq * f_at * pi * d * xatnom * std::sqrt(2.0 / rho));
     mQbt.setFlowCoefficient(Cq * f_bt * pi * d * xbtnom * std::sqrt(2.0 / rho));
 
-    double qp, qt, qa, qb, pp, pt, pa, pb;
-    auto solve = [&]() {
-        const double qpa = mQpa.getFlow(cp, ca, Zcp, Zca);
-        const double qpb = mQpb.getFlow(cp, cb, Zcp, Zcb);
-        const double qat = mQat.getFlow(ca, ct, Zca, Zct);
-        const double qbt = mQbt.getFlow(cb, ct, Zcb, Zct);
-        qp = -qpa - qpb;
-        qa = qpa - qat;
-        qb = -qbt + qpb;
-        qt = qat + qbt;
-        pp = cp + qp * Zcp;
-        pt = ct + qt * Zct;
-        pa = ca + qa * Zca;
-        pb = cb + qb * Zcb;
-    };
-    solve();
+    const FourWayValveFlows q = solveFourWayValve({mQpa, mQpb, mQat, mQbt}, P, T, A, B);
 
-    // Cavitation: a port below zero is treated as a zero-pressure source and all
-    // flows are solved once more (no clamping afterwards, see reference).
-    bool cav = false;
-    if (pa < 0.0) { ca = 0.0; Zca = 0.0; cav = true; }
-    if (pb < 0.0) { cb = 0.0; Zcb = 0.0; cav = true; }
-    if (pp < 0.0) { cp = 0.0; Zcp = 0.0; cav = true; }
-    if (pt < 0.0) { ct = 0.0; Zct = 0.0; cav = true; }
-    if (cav) { solve(); }
-
-    *mpPP_p = cp + qp * Zcp;
-    *mpPP_q = qp;
-    *mpPT_p = ct + qt * Zct;
-    *mpPT_q = qt;
-    *mpPA_p = ca + qa * Zca;
-    *mpPA_q = qa;
-    *mpPB_p = cb + qb * Zcb;
-    *mpPB_q = qb;
+    *mpPP_p = P.pressure(q.p);
+    *mpPP_q = q.p;
+    *mpPT_p = T.pressure(q.t);
+    *mpPT_q = q.t;
+    *mpPA_p = A.pressure(q.a);
+    *mpPA_q = q.a;
+    *mpPB_p = B.pressure(q.b);
+    *mpPB_q = q.b;
     *mpXv = xv;
 }
 

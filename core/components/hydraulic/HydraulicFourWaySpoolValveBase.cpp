@@ -1,6 +1,7 @@
 #include "core/components/hydraulic/HydraulicFourWaySpoolValveBase.h"
 
 #include "core/numerics/AuxiliarySimulationFunctions.h"
+#include "core/numerics/FourWayValveFlow.h"
 
 #include <cmath>
 
@@ -59,10 +60,7 @@ void HydraulicFourWaySpoolValveBase::initialize()
 
 void HydraulicFourWaySpoolValveBase::simulateOneTimestep()
 {
-    double cp = *mpPP_c, Zcp = *mpPP_Zc;
-    double ct = *mpPT_c, Zct = *mpPT_Zc;
-    double ca = *mpPA_c, Zca = *mpPA_Zc;
-    double cb = *mpPB_c, Zcb = *mpPB_Zc;
+    TlmWave P{*mpPP_c, *mpPP_Zc}, T{*mpPT_c, *mpPT_Zc}, A{*mpPA_c, *mpPA_Zc}, B{*mpPB_c, *mpPB_Zc};
     const double xvmax = *mpXvmax;
 
     // The demand is limited to the stroke; the 4/2 types have no negative side.
@@ -78,36 +76,16 @@ void HydraulicFourWaySpoolValveBase::simulateOneTimestep()
     mQbt.setFlowCoefficient(K.bt);
     mQpt.setFlowCoefficient(K.pt);
 
-    double qp = 0, qt = 0, qa = 0, qb = 0;
-    auto solve = [&]() {
-        const double qpa = mQpa.getFlow(cp, ca, Zcp, Zca);
-        const double qpb = mQpb.getFlow(cp, cb, Zcp, Zcb);
-        const double qat = mQat.getFlow(ca, ct, Zca, Zct);
-        const double qbt = mQbt.getFlow(cb, ct, Zcb, Zct);
-        const double qpt = mQpt.getFlow(cp, ct, Zcp, Zct);
-        qp = -qpa - qpb - qpt;
-        qa = qpa - qat;
-        qb = qpb - qbt;
-        qt = qat + qbt + qpt;
-    };
-    solve();
+    const FourWayValveFlows q = solveFourWayValve({mQpa, mQpb, mQat, mQbt, &mQpt}, P, T, A, B);
 
-    // Cavitation: ports below zero become zero-pressure sources, one more solve.
-    bool cav = false;
-    if (ca + qa * Zca < 0.0) { ca = 0.0; Zca = 0.0; cav = true; }
-    if (cb + qb * Zcb < 0.0) { cb = 0.0; Zcb = 0.0; cav = true; }
-    if (cp + qp * Zcp < 0.0) { cp = 0.0; Zcp = 0.0; cav = true; }
-    if (ct + qt * Zct < 0.0) { ct = 0.0; Zct = 0.0; cav = true; }
-    if (cav) { solve(); }
-
-    *mpPP_p = cp + qp * Zcp;
-    *mpPP_q = qp;
-    *mpPT_p = ct + qt * Zct;
-    *mpPT_q = qt;
-    *mpPA_p = ca + qa * Zca;
-    *mpPA_q = qa;
-    *mpPB_p = cb + qb * Zcb;
-    *mpPB_q = qb;
+    *mpPP_p = P.pressure(q.p);
+    *mpPP_q = q.p;
+    *mpPT_p = T.pressure(q.t);
+    *mpPT_q = q.t;
+    *mpPA_p = A.pressure(q.a);
+    *mpPA_q = q.a;
+    *mpPB_p = B.pressure(q.b);
+    *mpPB_q = q.b;
     *mpXv = xv;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/ComponentFactory.h"
 #include "core/numerics/AuxiliarySimulationFunctions.h"
+#include "core/numerics/FourWayValveFlow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,12 +76,8 @@ void HydraulicOpenCenterValve::initialize()
 
 void HydraulicOpenCenterValve::simulateOneTimestep()
 {
-    double cp = *mpPP_c, Zcp = *mpPP_Zc;
-    double ct = *mpPT_c, Zct = *mpPT_Zc;
-    double ca = *mpPA_c, Zca = *mpPA_Zc;
-    double cb = *mpPB_c, Zcb = *mpPB_Zc;
-    double cc1 = *mpPC1_c, Zcc1 = *mpPC1_Zc;
-    double cc2 = *mpPC2_c, Zcc2 = *mpPC2_Zc;
+    TlmWave P{*mpPP_c, *mpPP_Zc}, T{*mpPT_c, *mpPT_Zc}, A{*mpPA_c, *mpPA_Zc}, B{*mpPB_c, *mpPB_Zc};
+    TlmWave C1{*mpPC1_c, *mpPC1_Zc}, C2{*mpPC2_c, *mpPC2_Zc};
 
     double xvin = *mpIn;
     const double Cq = *mpCq, rho = *mpRho, d = *mpD;
@@ -104,51 +101,27 @@ void HydraulicOpenCenterValve::simulateOneTimestep()
     mQbt.setFlowCoefficient(Cq * f_bt * pi * d * xbtnom * std::sqrt(2.0 / rho));
     mQcc.setFlowCoefficient(Cq * f_cc * pi * d * xccnom * std::sqrt(2.0 / rho));
 
-    double qp, qt, qa, qb, qc1, qc2, pp, pt, pa, pb, pc1, pc2;
-    auto solve = [&]() {
-        const double qpa = mQpa.getFlow(cp, ca, Zcp, Zca);
-        const double qpb = mQpb.getFlow(cp, cb, Zcp, Zcb);
-        const double qat = mQat.getFlow(ca, ct, Zca, Zct);
-        const double qbt = mQbt.getFlow(cb, ct, Zcb, Zct);
-        const double qcc = mQcc.getFlow(cc1, cc2, Zcc1, Zcc2);
-        qc1 = -qcc;
-        qc2 = qcc;
-        qp = -qpa - qpb;
-        qa = qpa - qat;
-        qb = -qbt + qpb;
-        qt = qat + qbt;
-        pp = cp + qp * Zcp;
-        pt = ct + qt * Zct;
-        pa = ca + qa * Zca;
-        pb = cb + qb * Zcb;
-        pc1 = cc1 + qc1 * Zcc1;
-        pc2 = cc2 + qc2 * Zcc2;
-    };
-    solve();
+    const FourWayValveFlows q = solveFourWayValve({mQpa, mQpb, mQat, mQbt}, P, T, A, B);
 
-    // Cavitation: a port below zero is treated as a zero-pressure source and all
-    // flows are solved once more (no clamping afterwards, see reference).
-    bool cav = false;
-    if (pa < 0.0) { ca = 0.0; Zca = 0.0; cav = true; }
-    if (pb < 0.0) { cb = 0.0; Zcb = 0.0; cav = true; }
-    if (pp < 0.0) { cp = 0.0; Zcp = 0.0; cav = true; }
-    if (pt < 0.0) { ct = 0.0; Zct = 0.0; cav = true; }
-    if (pc1 < 0.0) { cc1 = 0.0; Zcc1 = 0.0; cav = true; }
-    if (pc2 < 0.0) { cc2 = 0.0; Zcc2 = 0.0; cav = true; }
-    if (cav) { solve(); }
+    // The open centre C1-C2 shares no port with the metering edges, so it is solved on its
+    // own, with the same cavitation rule.
+    double qcc = mQcc.getFlow(C1.c, C2.c, C1.Zc, C2.Zc);
+    bool centreCavitates = cavitates(C1, -qcc);
+    centreCavitates = cavitates(C2, qcc) || centreCavitates;
+    if (centreCavitates) { qcc = mQcc.getFlow(C1.c, C2.c, C1.Zc, C2.Zc); }
 
-    *mpPP_p = cp + qp * Zcp;
-    *mpPP_q = qp;
-    *mpPT_p = ct + qt * Zct;
-    *mpPT_q = qt;
-    *mpPA_p = ca + qa * Zca;
-    *mpPA_q = qa;
-    *mpPB_p = cb + qb * Zcb;
-    *mpPB_q = qb;
-    *mpPC1_p = cc1 + qc1 * Zcc1;
-    *mpPC1_q = qc1;
-    *mpPC2_p = cc2 + qc2 * Zcc2;
-    *mpPC2_q = qc2;
+    *mpPP_p = P.pressure(q.p);
+    *mpPP_q = q.p;
+    *mpPT_p = T.pressure(q.t);
+    *mpPT_q = q.t;
+    *mpPA_p = A.pressure(q.a);
+    *mpPA_q = q.a;
+    *mpPB_p = B.pressure(q.b);
+    *mpPB_q = q.b;
+    *mpPC1_p = C1.pressure(-qcc);
+    *mpPC1_q = -qcc;
+    *mpPC2_p = C2.pressure(qcc);
+    *mpPC2_q = qcc;
     *mpXv = xv;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/ComponentFactory.h"
 #include "core/numerics/AuxiliarySimulationFunctions.h"
+#include "core/numerics/FourWayValveFlow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,10 +63,7 @@ void HydraulicPressureControlled42Valve3::initialize()
 
 void HydraulicPressureControlled42Valve3::simulateOneTimestep()
 {
-    double cp = *mpPP_c, Zcp = *mpPP_Zc;
-    double ct = *mpPT_c, Zct = *mpPT_Zc;
-    double ca = *mpPA_c, Zca = *mpPA_Zc;
-    double cb = *mpPB_c, Zcb = *mpPB_Zc;
+    TlmWave P{*mpPP_c, *mpPP_Zc}, T{*mpPT_c, *mpPT_Zc}, A{*mpPA_c, *mpPA_Zc}, B{*mpPB_c, *mpPB_Zc};
     const double cc = *mpPC_c; // pilot wave variable
     const double Fs_min = *mpFsmin, Fs_max = *mpFsmax, Cq = *mpCq, rho = *mpRho, d = *mpD;
     const double f_pa = *mpfpa, f_pb = *mpfpb, f_bt = *mpfbt, f_at = *mpfat;
@@ -83,38 +81,16 @@ void HydraulicPressureControlled42Valve3::simulateOneTimestep()
     mQpb.setFlowCoefficient(Cq * f_pb * pi * d * xpbnom * std::sqrt(2.0 / rho));
     mQat.setFlowCoefficient(Cq * f_at * pi * d * xatnom * std::sqrt(2.0 / rho));
 
-    double qp, qt, qa, qb, pp, pt, pa, pb;
-    auto solve = [&]() {
-        const double qpa = mQpa.getFlow(cp, ca, Zcp, Zca);
-        const double qbt = mQbt.getFlow(cb, ct, Zcb, Zct);
-        const double qpb = mQpb.getFlow(cp, cb, Zcp, Zcb);
-        const double qat = mQat.getFlow(ca, ct, Zca, Zct);
-        qp = -qpa - qpb;
-        qa = qpa - qat;
-        qb = -qbt + qpb;
-        qt = qat + qbt;
-        pp = cp + qp * Zcp;
-        pt = ct + qt * Zct;
-        pa = ca + qa * Zca;
-        pb = cb + qb * Zcb;
-    };
-    solve();
+    const FourWayValveFlows q = solveFourWayValve({mQpa, mQpb, mQat, mQbt}, P, T, A, B);
 
-    bool cav = false;
-    if (pa < 0.0) { ca = 0.0; Zca = 0.0; cav = true; }
-    if (pb < 0.0) { cb = 0.0; Zcb = 0.0; cav = true; }
-    if (pp < 0.0) { cp = 0.0; Zcp = 0.0; cav = true; }
-    if (pt < 0.0) { ct = 0.0; Zct = 0.0; cav = true; }
-    if (cav) { solve(); }
-
-    *mpPP_p = pp;
-    *mpPP_q = qp;
-    *mpPT_p = pt;
-    *mpPT_q = qt;
-    *mpPA_p = pa;
-    *mpPA_q = qa;
-    *mpPB_p = pb;
-    *mpPB_q = qb;
+    *mpPP_p = P.pressure(q.p);
+    *mpPP_q = q.p;
+    *mpPT_p = T.pressure(q.t);
+    *mpPT_q = q.t;
+    *mpPA_p = A.pressure(q.a);
+    *mpPA_q = q.a;
+    *mpPB_p = B.pressure(q.b);
+    *mpPB_q = q.b;
     *mpPC_p = cc;
     *mpPC_q = 0.0;
     *mpXv = xv;
