@@ -165,13 +165,13 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
     }
 
     // Queued on every node together; jobs claimed by a node count as running.
-    const int alreadyQueued = mLeases.queuedCount(request.ownerId);
-    if (alreadyQueued >= mLimits.maxQueuedPerUser) {
+    const JobStore::Admission admission = mStore.createWithinQueueLimit(request, resolved, mLimits.maxQueuedPerUser);
+    if (!admission.id) {
         return {std::nullopt, "limit_exceeded",
-                "you have " + std::to_string(alreadyQueued) + " jobs queued; the limit is " +
+                "you have " + std::to_string(admission.queued) + " jobs queued; the limit is " +
                     std::to_string(mLimits.maxQueuedPerUser)};
     }
-    const std::int64_t id = mStore.create(request, resolved);
+    const std::int64_t id = *admission.id;
     if (mNode.runsJobs) {
         std::lock_guard lock(mMutex);
         keepCompiled(id, std::move(prepared));

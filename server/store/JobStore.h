@@ -19,6 +19,14 @@ public:
     // A new queued job; `resolved` gives the settings and planned steps (its other fields are
     // ignored). Returns the job id.
     virtual std::int64_t create(const JobRequest& request, const JobInfo& resolved) = 0;
+    // The same, unless the owner already has `maxQueued` or more jobs queued (on every node).
+    // The count and the insert are one transaction, so submits that race on any nodes cannot
+    // pass the limit together.
+    struct Admission {
+        std::optional<std::int64_t> id; // nullopt: refused
+        int queued = 0;                 // the owner's queued jobs before this one
+    };
+    virtual Admission createWithinQueueLimit(const JobRequest& request, const JobInfo& resolved, int maxQueued) = 0;
 
     virtual std::optional<JobInfo> info(std::int64_t id) = 0;
     // The stored request's JSON text (JobRequest::toJson).

@@ -8,6 +8,14 @@ namespace {
 constexpr PgStatement kCreate{"jobs_create",
                               "INSERT INTO jobs(owner_id, model_id, state, created_at, steps, start, step, stop,"
                               " log_samples, request) VALUES($1, $2, $3, $4, $5, $6, $7, $8, $9, $10) RETURNING id"};
+// Submits of one owner take turns through this lock (the two-key form: a key space apart
+// from the one-key locks of claims and migrations), so their counts and inserts never
+// interleave. The class is "tlm\3"; the owner's id is folded into an int.
+constexpr int kAdmissionLockClass = 0x746c6d03;
+constexpr PgStatement kAdmissionLock{"jobs_admission_lock",
+                                     "SELECT pg_advisory_xact_lock($1::int, ($2 % 2147483647)::int)"};
+constexpr PgStatement kQueuedCount{"jobs_queued_count",
+                                   "SELECT COUNT(*) FROM jobs WHERE owner_id = $1 AND state = 'queued'"};
 constexpr PgStatement kInfo{"jobs_info",
                             "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
                             " finished_at, steps, start, step, stop, log_samples FROM jobs WHERE id = $1"};
@@ -75,18 +83,42 @@ std::vector<JobInfo> readInfos(const pqxx::result& r)
 
 } // namespace
 
-std::int64_t PostgresJobStore::create(const JobRequest& request, const JobInfo& resolved)
+namespace {
+
+std::int64_t insertQueuedJob(PostgresConnection& c, pqxx::transaction_base& tx, const JobRequest& request,
+                             const JobInfo& resolved)
 {
-    const std::string requestJson = request.toJson().dump();
     const std::optional<std::string> modelId =
         request.modelId ? std::optional(std::to_string(*request.modelId)) : std::nullopt;
+    return c.exec(tx, kCreate, request.ownerId, orNull(modelId), jobStateName(JobState::Queued),
+                  static_cast<std::int64_t>(unixNow()), static_cast<std::int64_t>(resolved.steps), resolved.start,
+                  resolved.step, resolved.stop, static_cast<std::int64_t>(resolved.logSamples),
+                  request.toJson().dump())[0][0]
+        .as<std::int64_t>();
+}
+
+} // namespace
+
+std::int64_t PostgresJobStore::create(const JobRequest& request, const JobInfo& resolved)
+{
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
-        return c.exec(tx, kCreate, request.ownerId, orNull(modelId), jobStateName(JobState::Queued),
-                      static_cast<std::int64_t>(unixNow()), static_cast<std::int64_t>(resolved.steps),
-                      resolved.start, resolved.step, resolved.stop,
-                      static_cast<std::int64_t>(resolved.logSamples), requestJson)[0][0]
-            .as<std::int64_t>();
+        return insertQueuedJob(c, tx, request, resolved);
+    });
+}
+
+JobStore::Admission PostgresJobStore::createWithinQueueLimit(const JobRequest& request, const JobInfo& resolved,
+                                                             int maxQueued)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::work tx(c.raw());
+        c.exec(tx, kAdmissionLock, kAdmissionLockClass, request.ownerId);
+        Admission admission;
+        admission.queued = c.exec(tx, kQueuedCount, request.ownerId)[0][0].as<int>();
+        if (admission.queued >= maxQueued) return admission;
+        admission.id = insertQueuedJob(c, tx, request, resolved);
+        tx.commit();
+        return admission;
     });
 }
 

@@ -53,26 +53,51 @@ std::vector<JobInfo> readInfos(SqliteConnection::Statement& q)
 
 } // namespace
 
+namespace {
+
+std::int64_t insertQueuedJob(SqliteConnection& c, const JobRequest& request, const JobInfo& resolved)
+{
+    auto insert = c.prepared("INSERT INTO jobs(owner_id, model_id, state, created_at, steps, start,"
+                             " step, stop, log_samples, request) VALUES(?,?,?,?,?,?,?,?,?,?)");
+    insert->bind(1, request.ownerId);
+    if (request.modelId) insert->bind(2, *request.modelId);
+    else insert->bind(2);
+    insert->bind(3, jobStateName(JobState::Queued));
+    insert->bind(4, static_cast<std::int64_t>(unixNow()));
+    insert->bind(5, static_cast<std::int64_t>(resolved.steps));
+    insert->bind(6, resolved.start);
+    insert->bind(7, resolved.step);
+    insert->bind(8, resolved.stop);
+    insert->bind(9, static_cast<std::int64_t>(resolved.logSamples));
+    insert->bind(10, request.toJson().dump());
+    insert->exec();
+    return static_cast<std::int64_t>(c.db().getLastInsertRowid());
+}
+
+} // namespace
+
 std::int64_t SqliteJobStore::create(const JobRequest& request, const JobInfo& resolved)
 {
-    const std::string requestJson = request.toJson().dump();
-    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) { return insertQueuedJob(c, request, resolved); });
+}
+
+JobStore::Admission SqliteJobStore::createWithinQueueLimit(const JobRequest& request, const JobInfo& resolved,
+                                                           int maxQueued)
+{
     return mDb.run([&](SqliteConnection& c) {
-        auto insert = c.prepared("INSERT INTO jobs(owner_id, model_id, state, created_at, steps, start,"
-                                 " step, stop, log_samples, request) VALUES(?,?,?,?,?,?,?,?,?,?)");
-        insert->bind(1, request.ownerId);
-        if (request.modelId) insert->bind(2, *request.modelId);
-        else insert->bind(2);
-        insert->bind(3, jobStateName(JobState::Queued));
-        insert->bind(4, now);
-        insert->bind(5, static_cast<std::int64_t>(resolved.steps));
-        insert->bind(6, resolved.start);
-        insert->bind(7, resolved.step);
-        insert->bind(8, resolved.stop);
-        insert->bind(9, static_cast<std::int64_t>(resolved.logSamples));
-        insert->bind(10, requestJson);
-        insert->exec();
-        return static_cast<std::int64_t>(c.db().getLastInsertRowid());
+        // IMMEDIATE: the write lock before the count, so no other submit counts in between.
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        Admission admission;
+        {
+            auto count = c.prepared("SELECT COUNT(*) FROM jobs WHERE owner_id = ? AND state = 'queued'");
+            count->bind(1, request.ownerId);
+            count->executeStep();
+            admission.queued = count->getColumn(0).getInt();
+        }
+        if (admission.queued >= maxQueued) return admission;
+        admission.id = insertQueuedJob(c, request, resolved);
+        transaction.commit();
+        return admission;
     });
 }
 

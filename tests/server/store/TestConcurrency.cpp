@@ -94,6 +94,36 @@ TEST_P(ConcurrencyConformance, EightConcurrentWritersAllSucceedWithoutBusy)
     writeConcurrently({&store()}, 8);
 }
 
+// Submits of one user racing on every connection of the pool: exactly the limit gets in.
+void submitConcurrently(const std::vector<Storage*>& storages, int submitters)
+{
+    constexpr int kLimit = 5;
+    constexpr int kEach = 4;
+    Storage& check = *storages.front();
+    const User owner = check.users().insert("queuer", "h", kRoleUser).value();
+    std::mutex mutex;
+    int admitted = 0;
+    std::vector<int> refusedAt;
+    runAtOnce(submitters, [&](int i) {
+        Storage& storage = *storages[static_cast<std::size_t>(i) % storages.size()];
+        for (int k = 0; k < kEach; ++k) {
+            const auto admission = storage.jobs().createWithinQueueLimit(jobRequest(owner.id), resolvedSettings(), kLimit);
+            std::lock_guard lock(mutex);
+            if (admission.id) ++admitted;
+            else refusedAt.push_back(admission.queued);
+        }
+    });
+    EXPECT_EQ(admitted, kLimit);
+    EXPECT_EQ(check.jobLeases().queuedCount(owner.id), kLimit);
+    EXPECT_EQ(refusedAt.size(), static_cast<std::size_t>(submitters * kEach - kLimit));
+    for (const int queued : refusedAt) EXPECT_EQ(queued, kLimit);
+}
+
+TEST_P(ConcurrencyConformance, RacingSubmitsNeverPassTheQueuedLimit)
+{
+    submitConcurrently({&store()}, 8);
+}
+
 // Two servers (or a server and a backup tool) on one SQLite file: separate connection pools,
 // so only SQLite's own locking keeps them apart.
 TEST(SQLiteStore, TwoStoragesOnOneFileWriteConcurrentlyWithoutBusy)
@@ -102,6 +132,14 @@ TEST(SQLiteStore, TwoStoragesOnOneFileWriteConcurrentlyWithoutBusy)
     auto first = db.open();
     auto second = db.open();
     writeConcurrently({first.get(), second.get()}, 8);
+}
+
+TEST(SQLiteStore, RacingSubmitsThroughTwoStoragesNeverPassTheQueuedLimit)
+{
+    FreshDatabase db(Backend::SQLite);
+    auto first = db.open();
+    auto second = db.open();
+    submitConcurrently({first.get(), second.get()}, 8);
 }
 
 } // namespace

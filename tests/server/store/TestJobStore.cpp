@@ -143,6 +143,30 @@ TEST_P(JobStoreConformance, ListInStateIsOldestFirstAndOnlyThatState)
     EXPECT_TRUE(store().jobs().listInState(JobState::Done).empty());
 }
 
+TEST_P(JobStoreConformance, CreateWithinQueueLimitRefusesAtTheLimitCountingOnlyThatOwnersQueuedJobs)
+{
+    std::vector<std::int64_t> admitted;
+    for (int i = 0; i < 3; ++i) {
+        const auto admission = store().jobs().createWithinQueueLimit(jobRequest(1), resolvedSettings(), 3);
+        ASSERT_TRUE(admission.id) << i;
+        EXPECT_EQ(admission.queued, i);
+        admitted.push_back(*admission.id);
+    }
+    const auto refused = store().jobs().createWithinQueueLimit(jobRequest(1), resolvedSettings(), 3);
+    EXPECT_FALSE(refused.id);
+    EXPECT_EQ(refused.queued, 3);
+    EXPECT_EQ(store().jobs().listForOwner(1).size(), 3u) << "a refused job is not stored";
+
+    // Another owner's queue is their own; a job that runs no longer counts.
+    EXPECT_TRUE(store().jobs().createWithinQueueLimit(jobRequest(2), resolvedSettings(), 3).id);
+    ASSERT_TRUE(store().jobs().markRunning(admitted[0]));
+    const auto again = store().jobs().createWithinQueueLimit(jobRequest(1), resolvedSettings(), 3);
+    ASSERT_TRUE(again.id);
+    EXPECT_EQ(again.queued, 2);
+    EXPECT_EQ(store().jobs().info(*again.id)->state, JobState::Queued);
+    EXPECT_FALSE(store().jobs().createWithinQueueLimit(jobRequest(1), resolvedSettings(), 0).id);
+}
+
 TEST_P(JobStoreConformance, MarkRunningOnlyTakesAQueuedJob)
 {
     const std::int64_t id = addJob(1);
