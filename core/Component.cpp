@@ -145,6 +145,11 @@ Port* Component::addReadMultiPort(const std::string& name, NodeType type, bool r
     return addPortInternal(name, PortKind::ReadMultiport, type, required);
 }
 
+Port* Component::addBiDirectionalSignalPort(const std::string& name, NodeType type, bool required)
+{
+    return addPortInternal(name, PortKind::BiDirectionalSignal, type, required);
+}
+
 Port* Component::addInputVariable(const std::string& name, const std::string& description,
                                   const std::string& unit, double defaultValue, double** data)
 {

@@ -145,6 +145,9 @@ protected:
     Port* addWritePort(const std::string& name, NodeType type, bool required = false);
     Port* addPowerMultiPort(const std::string& name, NodeType type, bool required = true);
     Port* addReadMultiPort(const std::string& name, NodeType type, bool required = false);
+    // A signal port the component both reads and writes (different slots, or a direction
+    // chosen at initialise). No start node and no sort hint unless the component sets one.
+    Port* addBiDirectionalSignalPort(const std::string& name, NodeType type, bool required = false);
 
     // Input variable: an optional signal read port `name` whose value, when unconnected,
     // is the parameter `name#Value` (default `defaultValue`). *data is bound to the node.

@@ -635,6 +635,17 @@ void System::setTimestep(double ts)
         if (!c->isSystem()) c->setTimestep(ts);
 }
 
+void System::preInitialize()
+{
+    // A subsystem's run lists are built in its own initialise, later: walk it by kind. Its
+    // disabled components are still in Hopsan's lists at this point, so they are included.
+    for (CqsKind kind : {CqsKind::S, CqsKind::C, CqsKind::Q})
+        for (Component* c : mOrder) {
+            const CqsKind k = c->kind() == CqsKind::Undefined ? CqsKind::S : c->kind();
+            if (k == kind) c->preInitialize();
+        }
+}
+
 void System::setProgressCallback(ProgressCallback cb, void* user, std::size_t interval)
 {
     mProgress = cb;

@@ -100,6 +100,9 @@ public:
     std::size_t requestedLogSamples = 0;
     double logStartTime = 0.0;
     void setTimestep(double ts) override;
+    // Passes preInitialize on to every component inside, S then C then Q, as Hopsan does
+    // (components set sort hints there from their parameters, before any list is sorted).
+    void preInitialize() override;
 
     // ---- running ----
     // Structure checks before a run, then every parameter evaluated: the first problem
