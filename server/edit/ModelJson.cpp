@@ -18,6 +18,7 @@ const char* portKindForJson(PortKind kind)
     case PortKind::Read:
     case PortKind::ReadMultiport: return "read";
     case PortKind::Write: return "write";
+    case PortKind::BiDirectionalSignal: return "bidirectional";
     case PortKind::System: return "system";
     default: return "power";
     }

@@ -153,6 +153,18 @@ TEST(EditSession, AddsAComponentWithPose)
     EXPECT_NE(findByName(system.at("components"), c.at("name").get<std::string>()), nullptr);
 }
 
+TEST(EditSession, PortKindsNameReadWriteAndBidirectionalSignalPorts)
+{
+    EditSession session = openServo();
+    const auto r = session.handle({{"id", 1}, {"type", "component.add"}, {"component_type", "Signal2DReadWrite"}});
+    expectReplyShape("component.add", r);
+    const json& ports = r.data.at("component").at("ports");
+    EXPECT_EQ(findByName(ports, "P2d")->at("kind"), "bidirectional");
+    EXPECT_EQ(findByName(ports, "P2d")->at("node_type"), "NodeSignal2D");
+    EXPECT_EQ(findByName(ports, "read")->at("kind"), "write");
+    EXPECT_EQ(findByName(ports, "write")->at("kind"), "read");
+}
+
 TEST(EditSession, AddedNamesAreMadeUnique)
 {
     EditSession session = openServo();

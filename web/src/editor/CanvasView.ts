@@ -362,6 +362,9 @@ export class CanvasView {
             shape = s('polygon', { ...attrs, points: `${at.x - size},${at.y - size} ${at.x + size},${at.y} ${at.x - size},${at.y + size}` });
         } else if (port.kind === 'write') {
             shape = s('rect', { ...attrs, x: at.x - size, y: at.y - size, width: 2 * size, height: 2 * size });
+        } else if (port.kind === 'bidirectional') {
+            const r = size + 1;
+            shape = s('polygon', { ...attrs, points: `${at.x},${at.y - r} ${at.x + r},${at.y} ${at.x},${at.y + r} ${at.x - r},${at.y}` });
         } else {
             shape = s('circle', { ...attrs, cx: at.x, cy: at.y, r: port.multiport ? size + 1 : size });
         }

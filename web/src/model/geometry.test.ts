@@ -65,6 +65,18 @@ describe('port layout', () => {
         expect(layout.ports.get('k')!.y).toBe(-layout.halfHeight);
     });
 
+    it('lays out bidirectional signal ports as it does power ports, alternating left and right', () => {
+        const split: Component = {
+            name: 'Split', type: 'Signal2DSplit', kind: 'S', pose: { x: 0, y: 0, angle: 0, flipped: false },
+            ports: [{ name: 'P2d', node_type: 'NodeSignal2D', kind: 'bidirectional', multiport: false, connected: false },
+                { name: 'v1', node_type: 'NodeSignal', kind: 'bidirectional', multiport: false, connected: false }],
+            parameters: [],
+        };
+        const layout = layoutComponent(split, undefined);
+        expect(layout.ports.get('P2d')!.x).toBe(-layout.halfWidth);
+        expect(layout.ports.get('v1')!.x).toBe(layout.halfWidth);
+    });
+
     it('keeps the author\'s line while both ends stay, else draws an elbow', () => {
         const conn = system.connections[0];
         const kept = connectionPath(conn.points, { x: 130, y: 100 }, { x: 300, y: 70 }, true);

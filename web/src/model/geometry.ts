@@ -93,8 +93,8 @@ function sideOf(component: Component, index: number): Side {
     const port = component.ports[index];
     if (port.kind === 'read') return isInputVariablePort(component, port.name) ? 'top' : 'left';
     if (port.kind === 'write') return 'right';
-    // power ports alternate left and right; signal-less components with one port use the bottom
-    const power = component.ports.filter((p) => p.kind === 'power' || p.kind === 'system');
+    // power ports (and two-way signal ports) alternate left and right
+    const power = component.ports.filter((p) => p.kind === 'power' || p.kind === 'system' || p.kind === 'bidirectional');
     const i = power.indexOf(port);
     if (power.length === 1 && component.ports.length === 1) return 'left';
     return i % 2 === 0 ? 'left' : 'right';

@@ -262,7 +262,10 @@ export interface Pose {
 export interface Port {
     name: string;
     node_type: NodeTypeName;
-    kind: 'power' | 'read' | 'write' | 'system';
+    /**
+     * bidirectional: a signal port that reads one slot of its node and writes another (Signal2DReadWrite, Signal2DWriteRead, Signal2DSplit).
+     */
+    kind: 'power' | 'read' | 'write' | 'bidirectional' | 'system';
     multiport: boolean;
     connected: boolean;
 }
