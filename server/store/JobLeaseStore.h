@@ -94,7 +94,9 @@ public:
     // JobStore::setProgress for the lease holder only.
     virtual void setProgressLeased(const JobLease& lease, double progress) = 0;
 
-    // A held job back to queued at once, without backoff (a node that stops gracefully).
+    // A held job back to queued at once, without backoff (a node that stops gracefully), or
+    // cancelled (finished_at set) when its cancel was asked meanwhile. False if `lease` is not
+    // the job's lease or the job does not run.
     virtual bool release(const JobLease& lease) = 0;
 
     // Running jobs whose lease has expired: cancelled if that was asked, else queued again, available after

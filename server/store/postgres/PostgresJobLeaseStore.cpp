@@ -67,8 +67,10 @@ constexpr PgStatement kStoreResult{"leases_store_result",
 constexpr PgStatement kSetProgress{"leases_set_progress",
                                    "UPDATE jobs SET progress = $1 WHERE id = $2 AND state = 'running' AND lease = $3"};
 constexpr PgStatement kRelease{"leases_release",
-                               "UPDATE jobs SET state = 'queued', lease_node = NULL, lease_expires_at = 0,"
-                               " available_at = 0 WHERE id = $1 AND state = 'running' AND lease = $2"};
+                               "UPDATE jobs SET state = CASE WHEN cancel_requested THEN 'cancelled' ELSE 'queued' END,"
+                               " finished_at = CASE WHEN cancel_requested THEN $3 ELSE finished_at END,"
+                               " lease_node = NULL, lease_expires_at = 0, available_at = 0"
+                               " WHERE id = $1 AND state = 'running' AND lease = $2"};
 constexpr PgStatement kExpired{"leases_expired",
                                "SELECT id, lease, COALESCE(lease_node, ''), cancel_requested FROM jobs WHERE state = 'running'"
                                " AND lease_expires_at > 0 AND lease_expires_at < $1 ORDER BY id FOR UPDATE SKIP LOCKED"};
@@ -271,7 +273,7 @@ bool PostgresJobLeaseStore::release(const JobLease& lease)
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
-        return c.exec(tx, kRelease, lease.jobId, lease.lease).affected_rows() == 1;
+        return c.exec(tx, kRelease, lease.jobId, lease.lease, static_cast<std::int64_t>(unixNow())).affected_rows() == 1;
     });
 }
 

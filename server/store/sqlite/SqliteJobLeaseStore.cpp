@@ -180,10 +180,13 @@ void SqliteJobLeaseStore::setProgressLeased(const JobLease& lease, double progre
 bool SqliteJobLeaseStore::release(const JobLease& lease)
 {
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE jobs SET state = 'queued', lease_node = NULL, lease_expires_at = 0,"
-                            " available_at = 0 WHERE id = ? AND state = 'running' AND lease = ?");
-        q->bind(1, lease.jobId);
-        q->bind(2, lease.lease);
+        auto q = c.prepared("UPDATE jobs SET state = CASE WHEN cancel_requested THEN 'cancelled' ELSE 'queued' END,"
+                            " finished_at = CASE WHEN cancel_requested THEN ? ELSE finished_at END,"
+                            " lease_node = NULL, lease_expires_at = 0, available_at = 0"
+                            " WHERE id = ? AND state = 'running' AND lease = ?");
+        q->bind(1, static_cast<std::int64_t>(unixNow()));
+        q->bind(2, lease.jobId);
+        q->bind(3, lease.lease);
         return q->exec() == 1;
     });
 }
