@@ -2,18 +2,21 @@
 
 #include "core/ComponentFactory.h"
 
+#include <algorithm>
+
 namespace tlmhub {
 
 namespace {
 
-// Whether a port directly connected to `port` is a write port: the scalar side is then
-// the producer. Only direct connections count, as in Hopsan (a writer behind a system
-// port does not).
-bool fedByWritePort(const Port* port)
+// One dimension's direction. A scalar port directly connected to a write port makes the
+// scalar side the producer: it feeds its slot of the 2D node; otherwise the slot feeds it.
+// Only direct connections count, as in Hopsan (a writer behind a system port does not).
+void routeDimension(const Port* scalarPort, double* scalar, double* slot, double*& from, double*& to)
 {
-    for (const Port* other : port->connectedPorts)
-        if (other->kind() == PortKind::Write) return true;
-    return false;
+    const bool scalarIsWritten = std::any_of(scalarPort->connectedPorts.begin(), scalarPort->connectedPorts.end(),
+                                             [](const Port* other) { return other->kind() == PortKind::Write; });
+    from = scalarIsWritten ? scalar : slot;
+    to = scalarIsWritten ? slot : scalar;
 }
 
 } // namespace
@@ -30,24 +33,8 @@ void Signal2DSplit::configure()
 
 void Signal2DSplit::initialize()
 {
-    double* slot0 = getSafeNodeDataPtr(mpP2d, 0);
-    double* slot1 = getSafeNodeDataPtr(mpP2d, 1);
-    double* v1 = getSafeNodeDataPtr(mpV1, NodeSignal::Value);
-    double* v2 = getSafeNodeDataPtr(mpV2, NodeSignal::Value);
-    if (fedByWritePort(mpV1)) {
-        mpFrom1 = v1;
-        mpTo1 = slot0;
-    } else {
-        mpFrom1 = slot0;
-        mpTo1 = v1;
-    }
-    if (fedByWritePort(mpV2)) {
-        mpFrom2 = v2;
-        mpTo2 = slot1;
-    } else {
-        mpFrom2 = slot1;
-        mpTo2 = v2;
-    }
+    routeDimension(mpV1, getSafeNodeDataPtr(mpV1, NodeSignal::Value), getSafeNodeDataPtr(mpP2d, 0), mpFrom1, mpTo1);
+    routeDimension(mpV2, getSafeNodeDataPtr(mpV2, NodeSignal::Value), getSafeNodeDataPtr(mpP2d, 1), mpFrom2, mpTo2);
     simulateOneTimestep();
 }
 
