@@ -3,7 +3,7 @@
 # `--with-browser` adds Chromium, which the browser tests drive; `--with-clang` adds clang 14
 # with libFuzzer and the sanitizer runtimes (the sanitizer and fuzz builds of scripts/test.sh).
 set -euo pipefail
-packages=(build-essential cmake pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
+packages=(build-essential cmake ninja-build lld pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
           libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
           libsqlitecpp-dev libsodium-dev libzstd-dev libzip-dev postgresql-15 libpqxx-dev libssl-dev nginx-light
           python3-venv python3-websocket python3-numpy)

@@ -2,14 +2,24 @@
 # Install dependencies, build, and run the whole test suite: unit tests, server tests on a
 # real server process, validation against Hopsan's reference results in ../shared, and the
 # web app's unit and browser tests (Debian's Chromium). Then the same tests and the fuzz
-# targets under ASan+UBSan, and the same tests again under TSan (the multi-threaded
-# simulation, the job queue, and the server's I/O threads and workers, in process and in the
-# server processes the tests start); the sanitizer stages leave out the web app, the shared
-# models, validation, the Python client (it drives the same routes the server tests do) and
-# the multi-process scale-out faults. Each stage prints its wall time.
+# targets under ASan+UBSan, and the tests that start threads or child processes (label
+# threads: the multi-threaded simulation, the job queue, the server's I/O threads and
+# workers, in process and in the server processes the tests start) under TSan; the sanitizer
+# stages leave out the web app, the shared models, validation, the Python client (it drives
+# the same routes the server tests do) and the multi-process scale-out faults.
+#
+# Each stage prints its wall time; each build its slowest compiles and links; each test
+# stage its 15 slowest tests, and it fails when a test listed in tests/ci-expected-STAGE.txt
+# did not run (or one ran that is not listed). The whole run should stay within 45 minutes
+# on CI's 2 cores: the script warns when it does not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root=$PWD
 jobs=$(nproc)
+budget_seconds=$((45 * 60))
+# Ninja starts a target's compiles before its dependencies are linked, which keeps both
+# cores busy where make waits. Only a new build directory takes it.
+export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 
 stage() {
   local name=$1 start=$SECONDS
@@ -18,33 +28,95 @@ stage() {
   echo "stage $name: $((SECONDS - start)) s"
 }
 
-# Sanitizer builds: clang 14, -O1 with debug info, no benchmarks, no web app.
+# Every compile and link of build directory $1 is timed into $1/build-times.tsv: sets the
+# array `timing` to the CMake flags that do it.
+timing_flags() {
+  local log=$root/$1/build-times.tsv
+  mkdir -p "$1"
+  : >"$log"
+  timing=("-DCMAKE_CXX_COMPILER_LAUNCHER=$root/scripts/ci/time-command;$log"
+          "-DCMAKE_CXX_LINKER_LAUNCHER=$root/scripts/ci/time-command;$log")
+}
+slowest_build_steps() {
+  echo "slowest compiles and links in $1 (seconds):"
+  sort -rn "$1/build-times.tsv" | head -n 12 | sed "s|$root/||; s|^|  |"
+}
+
+# Runs ctest in build directory $2 with JUnit output, then checks the names that ran
+# against tests/ci-expected-$1.txt (scripts/ci/test_report.py).
+run_tests() {
+  local name=$1 dir=$2
+  shift 2
+  local reports=$root/$dir/test-reports status=0
+  rm -rf "$reports"
+  mkdir -p "$reports"
+  TLMHUB_TEST_REPORT_DIR=$reports ctest --test-dir "$dir" --output-on-failure \
+    --output-junit "$reports/ctest.xml" --test-output-size-passed 1000000 "$@" || status=$?
+  python3 scripts/ci/test_report.py --stage "$name" --junit "$reports/ctest.xml" --reports "$reports" \
+    --expected "tests/ci-expected-$name.txt" || status=1
+  return $status
+}
+
+release_build() {
+  timing_flags build
+  scripts/build.sh "${timing[@]}"
+  slowest_build_steps build
+}
+
+# Sanitizer builds: clang 14, -O1 with line tables (enough for file:line in every report),
+# no benchmarks, no web app.
 sanitizer_config() {
   local dir=$1
   shift
+  timing_flags "$dir"
   cmake -S . -B "$dir" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DTLMHUB_BUILD_BENCHMARKS=OFF "$@" >/dev/null
+        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DTLMHUB_BUILD_BENCHMARKS=OFF \
+        "${timing[@]}" "$@" >/dev/null
 }
 asan_build() {
   # One build for tests and fuzz targets: everything has coverage instrumentation.
   sanitizer_config build-asan -DTLMHUB_SANITIZE=address,undefined -DTLMHUB_FUZZ=ON
   cmake --build build-asan -j"$jobs"
+  slowest_build_steps build-asan
 }
 tsan_build() {
   sanitizer_config build-tsan -DTLMHUB_SANITIZE=thread
   cmake --build build-tsan -j"$jobs" --target tlmhub-tests tlmhub-server-tests tlmhub-store-tests tlmhub-cli \
     tlmhub-cli-tests tlmhub-fmu-tests
+  slowest_build_steps build-tsan
 }
-# A race aborts the process that has it, so one in a server started by a test fails that test.
+# Release tests, with tests/tools/thread_probe.c noting which tests start threads or child
+# processes: each of those must have the label `threads` (the TSan stage runs only that label).
+release_test() {
+  local probes=$root/build/thread-probe status=0
+  rm -rf "$probes"
+  mkdir -p "$probes"
+  cc -shared -fPIC -O2 -o build/thread_probe.so tests/tools/thread_probe.c -ldl
+  LD_PRELOAD=$root/build/thread_probe.so TLMHUB_THREAD_PROBE_DIR=$probes run_tests test build -j"$jobs" || status=$?
+  python3 scripts/ci/check_threads_label.py build "$probes" || status=1
+  return $status
+}
+sanitizer_excluded='^(web|models|validation|scaleout|python)$'
+asan_test() {
+  run_tests asan-test build-asan -j"$jobs" -LE "$sanitizer_excluded"
+}
+# Only the tests that start threads or child processes (label threads): a race needs two
+# threads. A race aborts the process that has it, so one in a server started by a test
+# fails that test.
 tsan_test() {
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-    ctest --test-dir build-tsan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout|python)$'
+    run_tests tsan-test build-tsan -j"$jobs" -L '^threads$' -LE "$sanitizer_excluded"
 }
 
 stage install scripts/install-deps.sh --with-browser --with-clang
-stage build scripts/build.sh
-stage test ctest --test-dir build --output-on-failure -j"$jobs"
+stage build release_build
+stage test release_test
 stage asan-build asan_build
-stage asan-test ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(web|models|validation|scaleout|python)$'
+stage asan-test asan_test
 stage tsan-build tsan_build
 stage tsan-test tsan_test
+echo "total: $SECONDS s"
+if [ "$SECONDS" -gt "$budget_seconds" ]; then
+  echo "WARNING: scripts/test.sh took $SECONDS s, over its budget of $budget_seconds s (45 minutes; CI stops at 90):" \
+       "find what grew in the stage times and slowest tests above"
+fi

@@ -11,7 +11,9 @@ if(TLMHUB_FMU_TEST_SOURCES)
                              TLMHUB_CLI="$<TARGET_FILE:tlmhub-cli>")
   # The tests export, import and run models through the CLI too, as a user does.
   add_dependencies(tlmhub-fmu-tests tlmhub-cli)
-  gtest_discover_tests(tlmhub-fmu-tests DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "fmu" TIMEOUT 300)
+  # FmuChecker starts the CLI once in SetUpTestSuite for all its tests: one ctest.
+  tlmhub_add_suite_tests(tlmhub-fmu-tests SUITES FmuChecker LABELS fmu PROPERTIES TIMEOUT 300)
+  tlmhub_discover_tests(tlmhub-fmu-tests SET other FILTER "-FmuChecker.*" LABELS fmu PROPERTIES TIMEOUT 300)
   include(${CMAKE_CURRENT_SOURCE_DIR}/fmu/export.cmake)
   include(${CMAKE_CURRENT_SOURCE_DIR}/fmu/import.cmake)
 endif()

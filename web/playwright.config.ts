@@ -2,6 +2,10 @@ import { defineConfig } from '@playwright/test';
 
 // The suite drives Debian's Chromium (no browser download) against a real tlmhub-server
 // that e2e/globalSetup.ts starts on a free port with a fresh data directory.
+// With TLMHUB_TEST_REPORT_DIR (scripts/test.sh) it also writes a JUnit file there, from which
+// the script checks that every listed test ran.
+const reportDir = process.env.TLMHUB_TEST_REPORT_DIR;
+
 export default defineConfig({
     testDir: 'e2e',
     timeout: 90_000,
@@ -9,7 +13,7 @@ export default defineConfig({
     workers: 1,
     fullyParallel: false,
     retries: 0,
-    reporter: [['list']],
+    reporter: reportDir ? [['list'], ['junit', { outputFile: `${reportDir}/playwright-e2e.xml` }]] : [['list']],
     globalSetup: './e2e/globalSetup.ts',
     use: {
         viewport: { width: 1440, height: 900 },

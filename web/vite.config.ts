@@ -2,6 +2,9 @@ import { defineConfig } from 'vitest/config';
 
 // Dev server proxies the API and its WebSocket (/api/v1/ws) to a locally running tlmhub-server.
 const server = process.env.TLMHUB_DEV_SERVER ?? 'http://127.0.0.1:8080';
+// With TLMHUB_TEST_REPORT_DIR (scripts/test.sh) Vitest also writes a JUnit file there, from
+// which the script checks that every listed test ran.
+const reportDir = process.env.TLMHUB_TEST_REPORT_DIR;
 
 export default defineConfig({
     build: { outDir: 'dist', emptyOutDir: true, sourcemap: true, chunkSizeWarningLimit: 800 },
@@ -13,5 +16,7 @@ export default defineConfig({
     test: {
         include: ['src/**/*.test.ts', 'scripts/**/*.test.ts'],
         environment: 'node',
+        reporters: reportDir ? ['default', 'junit'] : ['default'],
+        outputFile: reportDir ? { junit: `${reportDir}/vitest-unit.xml` } : undefined,
     },
 });

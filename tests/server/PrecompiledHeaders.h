@@ -1,0 +1,16 @@
+#pragma once
+// Precompiled for the server, store and CLI tests under clang (tests/CMakeLists.txt): the
+// large headers nearly all of them include, parsed once per test executable.
+#include <gtest/gtest.h>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
