@@ -3,13 +3,18 @@
 # Every test of a suite named in TLMHUB_THREADS_SUITES gets the label `threads` besides its
 # own: it starts threads or child processes, and scripts/test.sh runs the label under TSan.
 # The Release stage checks the list (scripts/ci/check_threads_label.py).
+#
+# Every test of a suite named in TLMHUB_LONG_SUITES gets a COST: ctest starts the costly
+# tests first, so that on 2 cores a long test does not run alone at the end of a stage
+# (a fresh build directory has no timings of earlier runs to order by).
 include(GoogleTest)
+set(TLMHUB_LONG_TEST_COST 30)
 
-# A regular expression matching the ctest names of the suites in TLMHUB_THREADS_SUITES
-# (also `Prefix/Suite.Case/N` of parameterised tests and `Suite.*` of whole suites).
-function(tlmhub_threads_regex out)
-  list(JOIN TLMHUB_THREADS_SUITES "|" suites)
-  set(${out} "^([A-Za-z0-9_]+/)?(${suites})\\." PARENT_SCOPE)
+# A regular expression matching the ctest names of the given suites (also
+# `Prefix/Suite.Case/N` of parameterised tests and `Suite.*` of whole suites).
+function(tlmhub_suites_regex out suites)
+  list(JOIN suites "|" alternatives)
+  set(${out} "^([A-Za-z0-9_]+/)?(${alternatives})\\." PARENT_SCOPE)
 endfunction()
 
 # tlmhub_discover_tests(TARGET SET NAME [FILTER GTEST_FILTER] LABELS LABEL... [PROPERTIES ...])
@@ -26,7 +31,8 @@ function(tlmhub_discover_tests target)
   endif()
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 ${filter_args} TEST_LIST ${list}
                        PROPERTIES ${arg_PROPERTIES})
-  tlmhub_threads_regex(threads)
+  tlmhub_suites_regex(threads "${TLMHUB_THREADS_SUITES}")
+  tlmhub_suites_regex(long "${TLMHUB_LONG_SUITES}")
   set(labels_file "${CMAKE_CURRENT_BINARY_DIR}/${list}_labels.cmake")
   file(WRITE "${labels_file}"
        "foreach(test IN LISTS ${list})\n"
@@ -34,6 +40,9 @@ function(tlmhub_discover_tests target)
        "    set_tests_properties(\"\${test}\" PROPERTIES LABELS \"${arg_LABELS};threads\")\n"
        "  else()\n"
        "    set_tests_properties(\"\${test}\" PROPERTIES LABELS \"${arg_LABELS}\")\n"
+       "  endif()\n"
+       "  if(test MATCHES [=[${long}]=])\n"
+       "    set_tests_properties(\"\${test}\" PROPERTIES COST ${TLMHUB_LONG_TEST_COST})\n"
        "  endif()\n"
        "endforeach()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labels_file}")
@@ -46,7 +55,7 @@ endfunction()
 # from the output.
 function(tlmhub_add_suite_tests target)
   cmake_parse_arguments(arg "" "" "SUITES;LABELS;PROPERTIES" ${ARGN})
-  tlmhub_threads_regex(threads)
+  tlmhub_suites_regex(threads "${TLMHUB_THREADS_SUITES}")
   foreach(suite IN LISTS arg_SUITES)
     set(name "${suite}.*")
     add_test(NAME "${name}" COMMAND ${target} "--gtest_filter=${suite}.*")
@@ -54,6 +63,7 @@ function(tlmhub_add_suite_tests target)
     if(name MATCHES "${threads}")
       list(APPEND labels threads)
     endif()
-    set_tests_properties("${name}" PROPERTIES LABELS "${labels}" ${arg_PROPERTIES})
+    # A whole suite is a long test.
+    set_tests_properties("${name}" PROPERTIES LABELS "${labels}" COST ${TLMHUB_LONG_TEST_COST} ${arg_PROPERTIES})
   endforeach()
 endfunction()

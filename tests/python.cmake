@@ -44,7 +44,7 @@ if(TARGET tlmhub-server)
            COMMAND ${TLMHUB_PYTHON_VENVS}/system/bin/python
                    ${CMAKE_CURRENT_SOURCE_DIR}/docs/test_scripting_docs.py
                    ${PROJECT_SOURCE_DIR}/docs/scripting.md)
-  set_tests_properties(python/docs/scripting PROPERTIES LABELS "python" TIMEOUT 300
+  set_tests_properties(python/docs/scripting PROPERTIES LABELS "python" TIMEOUT 300 COST ${TLMHUB_LONG_TEST_COST}
     FIXTURES_REQUIRED tlmhub-python-venvs
     ENVIRONMENT "${TLMHUB_PYTHON_TEST_ENV};TLMHUB_CLI_BIN=$<TARGET_FILE:tlmhub-cli>")
 endif()

@@ -1,6 +1,6 @@
 #pragma once
-// Precompiled for the server, store and CLI tests under clang (tests/CMakeLists.txt): the
-// large headers nearly all of them include, parsed once per test executable.
+// Precompiled for the server tests under clang (tests/CMakeLists.txt): the large headers
+// nearly all of them include, parsed once instead of once per file.
 #include <gtest/gtest.h>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
