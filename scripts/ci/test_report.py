@@ -48,7 +48,7 @@ def inner_names(ctest_name, output):
     # (`Suite.*`) or executable lists its cases.
     if len(gtest_cases) > 1 or (gtest_cases and ctest_name.endswith(".*")):
         names += [f"{ctest_name} :: {case}" for case in gtest_cases]
-    for method, qualified in UNITTEST_CASE.findall(output):
+    for _, qualified in UNITTEST_CASE.findall(output):
         names.append(f"{ctest_name} :: {qualified}")
     return names
 
