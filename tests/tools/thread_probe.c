@@ -66,24 +66,31 @@ pid_t vfork(void)
     return real();
 }
 
+/* posix_spawn and posix_spawnp differ only in how they find the program. */
+typedef int (*spawn_function)(pid_t*, const char*, const posix_spawn_file_actions_t*, const posix_spawnattr_t*,
+                              char* const[], char* const[]);
+
+static int spawn_through(const char* name, spawn_function* real, pid_t* pid, const char* program,
+                         const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes,
+                         char* const argv[], char* const envp[])
+{
+    if (*real == NULL) *real = (spawn_function)next_symbol(name);
+    note_this_process();
+    return (*real)(pid, program, actions, attributes, argv, envp);
+}
+
 int posix_spawn(pid_t* pid, const char* path, const posix_spawn_file_actions_t* actions,
                 const posix_spawnattr_t* attributes, char* const argv[], char* const envp[])
 {
-    static int (*real)(pid_t*, const char*, const posix_spawn_file_actions_t*, const posix_spawnattr_t*,
-                       char* const[], char* const[]) = NULL;
-    if (real == NULL) real = next_symbol("posix_spawn");
-    note_this_process();
-    return real(pid, path, actions, attributes, argv, envp);
+    static spawn_function real = NULL;
+    return spawn_through("posix_spawn", &real, pid, path, actions, attributes, argv, envp);
 }
 
 int posix_spawnp(pid_t* pid, const char* file, const posix_spawn_file_actions_t* actions,
                  const posix_spawnattr_t* attributes, char* const argv[], char* const envp[])
 {
-    static int (*real)(pid_t*, const char*, const posix_spawn_file_actions_t*, const posix_spawnattr_t*,
-                       char* const[], char* const[]) = NULL;
-    if (real == NULL) real = next_symbol("posix_spawnp");
-    note_this_process();
-    return real(pid, file, actions, attributes, argv, envp);
+    static spawn_function real = NULL;
+    return spawn_through("posix_spawnp", &real, pid, file, actions, attributes, argv, envp);
 }
 
 /* popen and system start their child inside libc, past the symbols above. */
