@@ -1223,10 +1223,7 @@ void System::postMessage(Message m)
 void System::finalize()
 {
     for (auto* list : {&mS, &mC, &mQ}) {
-        for (Component* c : *list) {
-            if (c->isSystem()) static_cast<System*>(c)->finalize();
-            else c->finalize();
-        }
+        for (Component* c : *list) c->finalize();
     }
     // Disabled components go back to the end of the insertion order (core.md §3.6).
     for (Component* c : mDisabled) moveToEnd(c);

@@ -134,7 +134,7 @@ public:
     unsigned threadsUsed() const { return mThreadsUsed; }
     // Number of root steps from the current time to `stopTime` (Hopsan's rounding).
     std::size_t stepsUntil(double stopTime) const;
-    void finalize();
+    void finalize() override;
     // Safe to call from any thread (a server's cancel, a component on a worker thread).
     void requestStop() { mStopRequested.store(true, std::memory_order_relaxed); }
     bool stopRequested() const { return mStopRequested.load(std::memory_order_relaxed); }
@@ -189,6 +189,9 @@ public:
     std::vector<std::string> preservedObjectsXml;
 
 private:
+    // A subsystem starts inside its parent's initialize(startTime, stopTime), never through
+    // the component hook; naming the hook here keeps it from being hidden yet uncallable.
+    using Component::initialize;
     friend class Component;
     void determineKind();
     // A renamed system port's layout, and its connections' lines inside and out, follow it;

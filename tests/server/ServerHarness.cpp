@@ -1,6 +1,10 @@
 #include "ServerHarness.h"
 
 #include <boost/asio/connect.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -210,18 +214,29 @@ void upgrade(beast::websocket::stream<tcp::socket>& ws, unsigned short port, con
 
 } // namespace
 
+struct WsClient::Connection {
+    net::io_context ioc;
+    beast::websocket::stream<tcp::socket> ws{ioc};
+    beast::error_code lastError;
+};
+
 WsClient::WsClient(unsigned short port, const std::string& token, int receiveBufferBytes, WsToken where,
                    bool waitForHello)
-    : mWs(mIoc)
+    : mConnection(std::make_unique<Connection>())
 {
-    mWs.next_layer().open(tcp::v4());
+    auto& ws = mConnection->ws;
+    ws.next_layer().open(tcp::v4());
     if (receiveBufferBytes > 0)   // before connecting: the window is agreed at the handshake
-        mWs.next_layer().set_option(net::socket_base::receive_buffer_size(receiveBufferBytes));
+        ws.next_layer().set_option(net::socket_base::receive_buffer_size(receiveBufferBytes));
     beast::error_code ec;
-    upgrade(mWs, port, token, where, ec);
+    upgrade(ws, port, token, where, ec);
     if (ec) throw boost::system::system_error(ec);
     if (waitForHello) hello = receive();
 }
+
+WsClient::~WsClient() = default;
+WsClient::WsClient(WsClient&&) noexcept = default;
+WsClient& WsClient::operator=(WsClient&&) noexcept = default;
 
 bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsToken where)
 {
@@ -234,32 +249,36 @@ bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsT
 
 void WsClient::sendText(const std::string& text)
 {
-    mWs.text(true);
-    mWs.write(net::buffer(text));
+    mConnection->ws.text(true);
+    mConnection->ws.write(net::buffer(text));
 }
 
 nlohmann::json WsClient::receive(int timeoutMs)
 {
     // Asynchronous with a deadline: a blocking read would wait for ever on a server that
     // neither answers nor closes (a receive timeout on the socket does not stop Asio).
+    // References, not a structured binding: clang 14 cannot capture bindings in a lambda.
+    net::io_context& ioc = mConnection->ioc;
+    beast::websocket::stream<tcp::socket>& ws = mConnection->ws;
+    beast::error_code& lastError = mConnection->lastError;
     beast::flat_buffer buffer;
     bool done = false;
-    mWs.async_read(buffer, [&](beast::error_code ec, std::size_t) {
-        mLastError = ec;
+    ws.async_read(buffer, [&](beast::error_code ec, std::size_t) {
+        lastError = ec;
         done = true;
     });
-    mIoc.restart();
-    mIoc.run_for(std::chrono::milliseconds(timeoutMs));
+    ioc.restart();
+    ioc.run_for(std::chrono::milliseconds(timeoutMs));
     if (!done) {
         beast::error_code ignored;
-        mWs.next_layer().cancel(ignored);
-        mIoc.restart();
-        mIoc.run();
-        mLastError = net::error::timed_out;
+        ws.next_layer().cancel(ignored);
+        ioc.restart();
+        ioc.run();
+        lastError = net::error::timed_out;
     }
-    if (mLastError) return nlohmann::json();
+    if (lastError) return nlohmann::json();
     const std::string message = beast::buffers_to_string(buffer.data());
-    if (!mWs.got_text()) {
+    if (!ws.got_text()) {
         binaryHeaders.push_back(binaryFrameHeader(message));
         return binaryFrameAsJson(message);
     }
@@ -302,8 +321,9 @@ nlohmann::json binaryFrameAsJson(const std::string& message)
 
 bool WsClient::closedByServer() const
 {
-    return mLastError == beast::websocket::error::closed || mLastError == net::error::eof ||
-           mLastError == net::error::connection_reset;
+    const beast::error_code& error = mConnection->lastError;
+    return error == beast::websocket::error::closed || error == net::error::eof ||
+           error == net::error::connection_reset;
 }
 
 std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs)

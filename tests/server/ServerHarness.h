@@ -1,10 +1,9 @@
 #pragma once
 // Integration-test support: a real tlmhub-server process on an ephemeral loopback port,
 // and plain HTTP and WebSocket clients (Boost.Beast, synchronous, with timeouts).
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/beast/core.hpp>
-#include <boost/beast/http.hpp>
-#include <boost/beast/websocket.hpp>
+// Only the verb enum: Beast's streams stay in ServerHarness.cpp, so the many test files that
+// include this header do not each compile them.
+#include <boost/beast/http/verb.hpp>
 #include <nlohmann/json.hpp>
 
 #include "TestFiles.h"
@@ -13,6 +12,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -96,6 +96,9 @@ public:
     // `waitForHello` false: a node's connection (it gets no hello).
     WsClient(unsigned short port, const std::string& token, int receiveBufferBytes = 0,
              WsToken where = WsToken::InQuery, bool waitForHello = true);
+    ~WsClient();
+    WsClient(WsClient&&) noexcept;
+    WsClient& operator=(WsClient&&) noexcept;
     void sendText(const std::string& text);
     // Next message, or a null json after `timeoutMs` (the connection is of no further use
     // after a timeout) or when the connection ended. A binary frame comes as the JSON
@@ -112,10 +115,9 @@ public:
     nlohmann::json hello;
 
 private:
-    boost::asio::io_context mIoc;
-    boost::beast::websocket::stream<boost::asio::ip::tcp::socket> mWs;
+    struct Connection;   // the Beast stream, its io_context and the last read's error
+    std::unique_ptr<Connection> mConnection;
     int mNextId = 1;
-    boost::beast::error_code mLastError;
 };
 
 // A binary event.frame (protocol/README.md): its JSON header, and the whole frame as the JSON

@@ -7,6 +7,7 @@
 #include "server/store/Storage.h"
 #include "server/store/UnixTime.h"
 
+#include <boost/system/system_error.hpp>
 #include <gtest/gtest.h>
 
 #include <chrono>

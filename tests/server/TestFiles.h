@@ -12,6 +12,8 @@ namespace tlmhub::test {
 inline const std::filesystem::path kSharedDir = std::filesystem::path(TLMHUB_SOURCE_DIR) / ".." / "shared";
 inline const std::filesystem::path kExampleModels = kSharedDir / "hopsan-models" / "Example Models";
 inline const std::filesystem::path kPositionServo = kExampleModels / "Position Servo.hmf";
+// A model to export as an FMU: input u through a gain to output y, and a hydraulic line.
+inline const std::filesystem::path kFmuGain = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/server/data/FmuGain.hmf";
 
 // The whole file; a file that cannot be read fails the test (and gives "").
 inline std::string readFile(const std::filesystem::path& path)

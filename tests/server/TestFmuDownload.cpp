@@ -11,8 +11,6 @@
 namespace tlmhub::test {
 namespace {
 
-const std::filesystem::path kFmuGain = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/server/data/FmuGain.hmf";
-
 // The entry names of the zip archive `bytes` (none if it is not one).
 std::set<std::string> zipEntries(const std::string& bytes)
 {

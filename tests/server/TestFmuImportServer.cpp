@@ -15,7 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kFmuGain = fs::path(TLMHUB_SOURCE_DIR) / "tests/server/data/FmuGain.hmf";
 const fs::path kFmuGainImport = fs::path(TLMHUB_SOURCE_DIR) / "tests/server/data/FmuGainImport.hmf";
 
 // FmuGain.hmf exported through the server's own download route, written to `target`.

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <SQLiteCpp/Database.h>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/websocket.hpp>
 
 #include <cstdlib>
 #include <fstream>
