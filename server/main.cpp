@@ -99,6 +99,9 @@ int main(int argc, char** argv)
         tlmhub::fmu::setFmuLoadPolicy(*policy);
         std::cout << "FMUs load from " << policy->directory.string() << "\n";
     }
+    setPasswordCost(options.passwordCost);
+    if (options.passwordCost == PasswordCost::Minimal)
+        std::cout << "WARNING: --password-hash-cost minimal: new password hashes are cheap to guess (test servers only)\n";
     try {
         // A broken embedded schema shows now, not on the first request.
         SchemaValidator::protocol();

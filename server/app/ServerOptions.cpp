@@ -55,6 +55,9 @@ const std::string kHelp = std::string(
     "                           is full, so logging in and deleting still work (default 8388608)\n"
     "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
     "                           finish (default 0: keep them until their owner deletes them)\n"
+    "  --password-hash-cost interactive|minimal  argon2id cost of new password hashes\n"
+    "                           (default interactive: about 0.1 s and 64 MiB each); minimal is\n"
+    "                           for test servers only: its hashes take microseconds to guess\n"
     "scale-out (docs/scale-out.md):\n"
     "  --role api|worker|all    api: serve clients, run no jobs; worker: run jobs from the\n"
     "                           shared queue, serve only health and node connections; all:\n"
@@ -164,6 +167,9 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             o.nodeSecretFile = value;
         } else if (flag == "--max-ws-queue-bytes") {
             ok = parseNumber(value, o.wsQueueBytes);
+        } else if (flag == "--password-hash-cost") {
+            ok = value == "interactive" || value == "minimal";
+            o.passwordCost = value == "minimal" ? PasswordCost::Minimal : PasswordCost::Interactive;
         } else if (flag == "--role") {
             ok = value == "api" || value == "worker" || value == "all";
             o.role = value;

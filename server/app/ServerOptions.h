@@ -1,5 +1,6 @@
 #pragma once
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
+#include "server/auth/PasswordHasher.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/QueueNode.h"
 #include "server/protocol/ProtocolConstants.generated.h"
@@ -36,6 +37,8 @@ struct ServerOptions {
     // Non-empty: the file holding the secret nodes share (server/cluster/NodeSecret.h); a
     // WebSocket showing it may follow any job. Empty: no node may connect.
     std::string nodeSecretFile;
+    // Cost of new password hashes; Minimal only for test servers (see --help).
+    PasswordCost passwordCost = PasswordCost::Interactive;
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};
     JobLimits limits;

@@ -8,9 +8,9 @@
 namespace tlmhub::server {
 
 // The costs of new hashes, process-wide. Minimal (libsodium's least: one pass, 8 KiB) is for
-// the fuzz targets only, where a 0.1 s hash per input would stall the fuzzer; the server
-// never sets it. Verifying reads the costs from the stored hash, so either setting verifies
-// every hash.
+// the fuzz targets, where a 0.1 s hash per input would stall the fuzzer, and for test servers
+// (--password-hash-cost minimal), where every login would cost a tenth of a second of CPU.
+// Verifying reads the costs from the stored hash, so either setting verifies every hash.
 enum class PasswordCost { Interactive, Minimal };
 void setPasswordCost(PasswordCost cost);
 

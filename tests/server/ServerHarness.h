@@ -25,9 +25,10 @@ class ServerProcess {
 public:
     // `dataDir` is created if missing and kept (so a test can restart on the same data).
     // `launcher`: a command the server runs under (looked up on PATH), e.g. one that mounts a
-    // small file system over the data directory first. A `--listen` or `--workers` among
-    // `extraArgs` replaces the default one (127.0.0.1:0, 2), e.g. a port chosen in advance
-    // with freeLoopbackPort() for a node that must name its own address.
+    // small file system over the data directory first. A `--listen`, `--workers` or
+    // `--password-hash-cost` among `extraArgs` replaces the default one (127.0.0.1:0, 2,
+    // minimal), e.g. a port chosen in advance with freeLoopbackPort() for a node that must
+    // name its own address.
     ServerProcess(const std::filesystem::path& dataDir, std::vector<std::string> extraArgs = {},
                   std::vector<std::string> launcher = {});
     ~ServerProcess();

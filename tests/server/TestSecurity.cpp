@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "server/app/ServerOptions.h"
+
 #include <SQLiteCpp/Database.h>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/websocket.hpp>
@@ -553,6 +555,43 @@ TEST(SecurityNames, OldNamesDifferingInCaseKeepWorkingAndAreReported)
     EXPECT_NO_THROW(HttpClient(server.port()).login("erin", "erin-password"));
     EXPECT_NO_THROW(HttpClient(server.port()).login("ERIN", "frank-password"));
     fs::remove_all(dir);
+}
+
+// Test servers hash with --password-hash-cost minimal (ServerHarness.cpp); a server started
+// without the flag must still hash at the interactive cost, and a bad value is refused.
+TEST(SecurityPasswordCost, NewHashesCostWhatTheFlagSaysAndInteractiveIsTheDefault)
+{
+    const auto adminHash = [](const fs::path& dir) {
+        SQLite::Database db((dir / "tlmhub.sqlite").string(), SQLite::OPEN_READONLY);
+        return db.execAndGet("SELECT password_hash FROM users WHERE username = 'admin'").getString();
+    };
+    for (const std::string cost : {"interactive", "minimal"}) {
+        const fs::path dir = freshTempDir("password-cost-" + cost);
+        {
+            ServerProcess server(dir, {"--password-hash-cost", cost});
+            EXPECT_EQ(server.output().find("WARNING: --password-hash-cost minimal") != std::string::npos,
+                      cost == "minimal") << server.output();
+            EXPECT_NO_THROW(HttpClient(server.port()).login("admin", kAdminPassword));
+        }
+        // libsodium's interactive limits are 64 MiB and 2 passes; its least 8 KiB and 1 pass.
+        const std::string hash = adminHash(dir);
+        EXPECT_NE(hash.find(cost == "interactive" ? "$m=65536,t=2," : "$m=8,t=1,"), std::string::npos) << hash;
+        fs::remove_all(dir);
+    }
+    // Without the flag: interactive (the harness always names one, so ask the parser).
+    tlmhub::server::ServerOptions options;
+    std::string error, help;
+    char program[] = "tlmhub-server";
+    char* argv[] = {program, nullptr};
+    ASSERT_TRUE(tlmhub::server::parseServerOptions(1, argv, options, error, help)) << error;
+    EXPECT_EQ(options.passwordCost, tlmhub::server::PasswordCost::Interactive);
+    FILE* refused = ::popen((std::string("'") + TLMHUB_SERVER_BIN + "' --password-hash-cost weak 2>&1").c_str(), "r");
+    ASSERT_NE(refused, nullptr);
+    std::string output;
+    char buffer[512];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, refused)) > 0;) output.append(buffer, n);
+    EXPECT_EQ(WEXITSTATUS(::pclose(refused)), 2);
+    EXPECT_NE(output.find("bad value 'weak' for --password-hash-cost"), std::string::npos) << output;
 }
 
 TEST_F(Security, ModelNamesRefuseControlAndBidirectionalCharacters)

@@ -27,7 +27,9 @@ export default async function globalSetup(): Promise<() => Promise<void>> {
         if (!existsSync(path)) throw new Error(`e2e: ${what} not found at ${path}`);
     }
     const dataDir = mkdtempSync(join(tmpdir(), 'tlmhub-e2e-'));
-    const server = spawn(binary, ['--listen', '127.0.0.1:0', '--data-dir', dataDir, '--web-root', webRoot, '--examples-dir', examples],
+    // Cheap password hashes: every test logs in (a test server, as tests/server/ServerHarness.cpp's).
+    const server = spawn(binary, ['--listen', '127.0.0.1:0', '--data-dir', dataDir, '--web-root', webRoot, '--examples-dir', examples,
+        '--password-hash-cost', 'minimal'],
         { env: { ...process.env, TLMHUB_ADMIN_PASSWORD: ADMIN_PASSWORD }, stdio: ['ignore', 'pipe', 'pipe'] });
     let output = '';
     const url = await new Promise<string>((resolveUrl, reject) => {

@@ -96,7 +96,9 @@ class Server:
         self._process = _Process(
             [binary, "--listen", "127.0.0.1:0", "--data-dir", str(self.directory / "data"),
              "--workers", "2", "--examples-dir", str(self.directory / "examples"),
-             "--web-root", str(self.directory / "no-web")],
+             "--web-root", str(self.directory / "no-web"),
+             # Cheap hashes: the tests log in often (a test server, as ServerHarness.cpp's).
+             "--password-hash-cost", "minimal"],
             "tlmhub-server listening on ", env)
         self.url = self._process.line.rsplit(" ", 1)[1]
         self._proxies: list[_Process] = []
