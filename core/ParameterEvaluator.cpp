@@ -7,6 +7,7 @@
 #include <muParser.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -18,6 +19,7 @@ namespace tlmhub::ParameterEvaluator {
 namespace {
 
 constexpr int kMaxDepth = 250;
+std::atomic<std::size_t> gDefaultBudget{kDefaultBudget};
 
 bool parseWholeDouble(const std::string& s, double& out)
 {
@@ -40,7 +42,7 @@ bool parseWholeInt(const std::string& s, int& out)
     return true;
 }
 
-bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int depth);
+bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int depth, Pass& pass);
 
 // A named parameter visible from `owner`: "self.X" / "self.P.V" on the owner itself,
 // otherwise a system parameter from the owner's system (systems: themselves first) upwards.
@@ -90,12 +92,18 @@ double* variableFactory(const mu::char_type*, void* user)
 // 250 levels per branch (a self.k in k's own expression cost seconds).
 bool evaluateExpressionDepth(Component& owner, const std::string& expression, double& result,
                              std::string& error, const Parameter* self, int depth,
-                             std::vector<const Parameter*>& chain)
+                             std::vector<const Parameter*>& chain, Pass& pass)
 {
     if (depth > kMaxDepth) {
         error = "parameter references nest too deeply (a reference loop?)";
         return false;
     }
+    if (pass.evaluations >= pass.budget) {
+        error = "more than " + std::to_string(pass.budget) +
+                " parameter expressions to evaluate (the evaluation limit), at '" + expression + "'";
+        return false;
+    }
+    ++pass.evaluations;
     std::deque<double> pool;
     try {
         mu::Parser parser;
@@ -123,15 +131,19 @@ bool evaluateExpressionDepth(Component& owner, const std::string& expression, do
             }
             double v = 0.0;
             if (ref->type == ParameterType::Double) {
-                if (!parseWholeDouble(ref->value, v)) {
+                if (parseWholeDouble(ref->value, v)) {
+                } else if (const auto known = pass.values.find(ref); known != pass.values.end()) {
+                    v = known->second;
+                } else {
                     if (std::find(chain.begin(), chain.end(), ref) != chain.end()) {
                         error = "'" + name + "' refers to itself (a reference loop)";
                         return false;
                     }
                     chain.push_back(ref);
-                    const bool ok = evaluateExpressionDepth(*where, ref->value, v, error, ref, depth + 1, chain);
+                    const bool ok = evaluateExpressionDepth(*where, ref->value, v, error, ref, depth + 1, chain, pass);
                     chain.pop_back();
                     if (!ok) return false;
+                    pass.values.emplace(ref, v);
                 }
             } else if (ref->type == ParameterType::Integer || ref->type == ParameterType::Conditional) {
                 int iv = 0;
@@ -169,7 +181,7 @@ Parameter* lookupSameType(Component& owner, const std::string& name, ParameterTy
     return p->type == type ? p : nullptr;
 }
 
-bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int depth)
+bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int depth, Pass& pass)
 {
     if (depth > kMaxDepth) {
         error = "parameter references nest too deeply (a reference loop?)";
@@ -180,8 +192,13 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
     case ParameterType::Double: {
         double d = 0.0;
         if (!parseWholeDouble(v, d)) {
-            std::vector<const Parameter*> chain{&param};
-            if (!evaluateExpressionDepth(owner, v, d, error, &param, depth + 1, chain)) return false;
+            if (const auto known = pass.values.find(&param); known != pass.values.end()) {
+                d = known->second;
+            } else {
+                std::vector<const Parameter*> chain{&param};
+                if (!evaluateExpressionDepth(owner, v, d, error, &param, depth + 1, chain, pass)) return false;
+                pass.values.emplace(&param, d);
+            }
             // Hopsan formats the result with 17 significant digits and parses it back.
             char buf[64];
             std::snprintf(buf, sizeof buf, "%.17g", d);
@@ -209,7 +226,7 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
             Parameter copy = *ref;
             int inner = 0;
             copy.intTarget = &inner;
-            if (!evaluateDepth(*where, copy, error, depth + 1)) return false;
+            if (!evaluateDepth(*where, copy, error, depth + 1, pass)) return false;
             i = negative ? -inner : inner;
         }
         if (param.type == ParameterType::Conditional && !param.conditions.empty() &&
@@ -235,7 +252,7 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
             Parameter copy = *ref;
             bool inner = false;
             copy.boolTarget = &inner;
-            if (!evaluateDepth(*where, copy, error, depth + 1)) return false;
+            if (!evaluateDepth(*where, copy, error, depth + 1, pass)) return false;
             b = inner;
         }
         if (param.boolTarget) *param.boolTarget = b;
@@ -255,12 +272,28 @@ bool evaluateDepth(Component& owner, Parameter& param, std::string& error, int d
 
 } // namespace
 
-Status evaluate(Component& owner, Parameter& param)
+void setDefaultBudget(std::size_t evaluations)
+{
+    gDefaultBudget = evaluations;
+}
+
+std::size_t defaultBudget()
+{
+    return gDefaultBudget;
+}
+
+Status evaluate(Component& owner, Parameter& param, Pass& pass)
 {
     std::string error;
-    if (evaluateDepth(owner, param, error, 0)) return Status::ok();
+    if (evaluateDepth(owner, param, error, 0, pass)) return Status::ok();
     const std::string owned = owner.modelPath();
     return {StatusCode::InvalidParameter, error, owned.empty() ? param.name : owned + "." + param.name};
+}
+
+Status evaluate(Component& owner, Parameter& param)
+{
+    Pass pass;
+    return evaluate(owner, param, pass);
 }
 
 Result<double> evaluateExpression(Component& owner, const std::string& expression)
@@ -269,7 +302,8 @@ Result<double> evaluateExpression(Component& owner, const std::string& expressio
     if (parseWholeDouble(expression, result)) return result;
     std::vector<const Parameter*> chain;
     std::string error;
-    if (evaluateExpressionDepth(owner, expression, result, error, nullptr, 0, chain)) return result;
+    Pass pass;
+    if (evaluateExpressionDepth(owner, expression, result, error, nullptr, 0, chain, pass)) return result;
     return Status{StatusCode::InvalidParameter, error, owner.modelPath()};
 }
 

@@ -656,7 +656,8 @@ void System::setProgressCallback(ProgressCallback cb, void* user, std::size_t in
 Status System::check()
 {
     if (Status structure = checkStructure(); !structure) return structure;
-    return evaluateParameters();
+    ParameterEvaluator::Pass pass;
+    return evaluateParameters(pass);
 }
 
 Status System::checkStructure()
@@ -814,10 +815,10 @@ Status System::sortList(std::vector<Component*>& list, bool failOnLoop)
 }
 
 // System parameters first: the components' values may refer to them.
-Status System::evaluateParameters()
+Status System::evaluateParameters(ParameterEvaluator::Pass& pass)
 {
     for (const auto& param : parameters().all()) {
-        const Status evaluated = ParameterEvaluator::evaluate(*this, *param);
+        const Status evaluated = ParameterEvaluator::evaluate(*this, *param, pass);
         if (!evaluated)
             return {StatusCode::InvalidParameter,
                     "system parameter '" + param->name + "' of '" + name() + "': " + evaluated.message(),
@@ -825,11 +826,11 @@ Status System::evaluateParameters()
     }
     for (Component* c : mOrder) {
         if (c->isSystem()) {
-            if (Status evaluated = static_cast<System*>(c)->evaluateParameters(); !evaluated) return evaluated;
+            if (Status evaluated = static_cast<System*>(c)->evaluateParameters(pass); !evaluated) return evaluated;
             continue;
         }
         for (const auto& param : c->parameters().all()) {
-            const Status evaluated = ParameterEvaluator::evaluate(*c, *param);
+            const Status evaluated = ParameterEvaluator::evaluate(*c, *param, pass);
             if (!evaluated)
                 return {StatusCode::InvalidParameter,
                         "parameter '" + param->name + "' of '" + c->name() + "': " + evaluated.message(),
@@ -1113,7 +1114,8 @@ Status System::initializeInternal(double t0, double t1, ParameterEvaluation eval
     sortList(mQ, false);
     if (isRoot()) {
         if (evaluation == ParameterEvaluation::Evaluate) {
-            if (const Status evaluated = evaluateParameters(); !evaluated) {
+            ParameterEvaluator::Pass pass;
+            if (const Status evaluated = evaluateParameters(pass); !evaluated) {
                 root->postMessage({MessageType::Error, evaluated.message(), "Parameter", evaluated.path()});
                 return evaluated;
             }

@@ -17,6 +17,8 @@
 
 namespace tlmhub {
 
+namespace ParameterEvaluator { struct Pass; }
+
 // What a model file says of a system port or a connection beyond its names: the typed
 // layout (core/GuiLayout.h) and the other children of its element, kept as serialized XML
 // (see Component::preservedXml). One record, so renaming or moving one moves both.
@@ -207,7 +209,8 @@ private:
     Status sortList(std::vector<Component*>& list, bool failOnLoop);
     void computeSortHintsOfSystemPorts();
     Status checkStructure();
-    Status evaluateParameters();
+    // Every parameter, system parameters first, in one pass (values computed once each).
+    Status evaluateParameters(ParameterEvaluator::Pass& pass);
     void loadStartValues();
     void computeLogSchedule(double t0, double t1);
     void allocateLogStorage();

@@ -100,6 +100,7 @@ int main(int argc, char** argv)
         std::cout << "FMUs load from " << policy->directory.string() << "\n";
     }
     setPasswordCost(options.passwordCost);
+    tlmhub::ParameterEvaluator::setDefaultBudget(options.maxParameterEvaluations);
     if (options.passwordCost == PasswordCost::Minimal)
         std::cout << "WARNING: --password-hash-cost minimal: new password hashes are cheap to guess (test servers only)\n";
     try {

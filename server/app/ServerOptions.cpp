@@ -46,6 +46,8 @@ const std::string kHelp = std::string(
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
     "  --max-model-components N components and subsystems in a model (default 20000)\n"
     "  --max-model-depth N      subsystems nested in subsystems (default 16)\n"
+    "  --max-parameter-evaluations N  parameter expressions evaluated to check or compile a\n"
+    "                           model (default " + std::to_string(ParameterEvaluator::kDefaultBudget) + ")\n" +
     "  --max-ws-queue-messages N  messages waiting for a slow WebSocket client; past it a\n"
     "                           job's new samples merge into its waiting frame (default 256)\n"
     "  --max-ws-queue-bytes N   bytes waiting for a WebSocket client: past it a job's waiting\n"
@@ -159,6 +161,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.model.maxBytes);
         } else if (flag == "--max-model-components") {
             ok = parseNumber(value, o.limits.model.maxComponents);
+        } else if (flag == "--max-parameter-evaluations") {
+            ok = parseNumber(value, o.maxParameterEvaluations) && o.maxParameterEvaluations > 0;
         } else if (flag == "--max-model-depth") {
             ok = parseNumber(value, o.limits.model.maxDepth);
         } else if (flag == "--max-ws-queue-messages") {

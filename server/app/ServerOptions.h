@@ -1,5 +1,6 @@
 #pragma once
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
+#include "core/ParameterEvaluator.h"
 #include "server/auth/PasswordHasher.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/QueueNode.h"
@@ -39,6 +40,8 @@ struct ServerOptions {
     std::string nodeSecretFile;
     // Cost of new password hashes; Minimal only for test servers (see --help).
     PasswordCost passwordCost = PasswordCost::Interactive;
+    // Parameter expressions one evaluation pass may evaluate (core/ParameterEvaluator.h).
+    std::size_t maxParameterEvaluations = ParameterEvaluator::kDefaultBudget;
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};
     JobLimits limits;

@@ -63,19 +63,19 @@ std::string modelLimitProblem(const System& root, std::size_t hmfBytes, const Mo
 
 namespace {
 
-std::string problemIn(System& system, const std::string& prefix)
+std::string problemIn(System& system, const std::string& prefix, ParameterEvaluator::Pass& pass)
 {
     for (const auto& param : system.parameters().all())
-        if (const Status evaluated = ParameterEvaluator::evaluate(system, *param); !evaluated)
+        if (const Status evaluated = ParameterEvaluator::evaluate(system, *param, pass); !evaluated)
             return "system parameter '" + prefix + param->name + "': " + evaluated.message();
     for (Component* c : system.componentsInOrder()) {
         if (c->isSystem()) {
-            const std::string inner = problemIn(*static_cast<System*>(c), prefix + c->name() + "$");
+            const std::string inner = problemIn(*static_cast<System*>(c), prefix + c->name() + "$", pass);
             if (!inner.empty()) return inner;
             continue;
         }
         for (const auto& param : c->parameters().all())
-            if (const Status evaluated = ParameterEvaluator::evaluate(*c, *param); !evaluated)
+            if (const Status evaluated = ParameterEvaluator::evaluate(*c, *param, pass); !evaluated)
                 return "parameter '" + prefix + c->name() + "." + param->name + "': " + evaluated.message();
     }
     return {};
@@ -85,7 +85,10 @@ std::string problemIn(System& system, const std::string& prefix)
 
 std::string firstParameterProblem(System& root)
 {
-    return problemIn(root, "");
+    ParameterEvaluator::Pass pass;
+    std::string problem = problemIn(root, "", pass);
+    if (!problem.empty() && pass.evaluations >= pass.budget) problem += " (--max-parameter-evaluations)";
+    return problem;
 }
 
 } // namespace tlmhub::server

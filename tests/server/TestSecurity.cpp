@@ -630,6 +630,43 @@ TEST_F(Security, ModelWhoseParametersCannotBeEvaluatedIsRefusedAtUpload)
     EXPECT_EQ(uploadXml(alice, gains(3, "1.5")).status, 201);
 }
 
+// Issue 37 H1: system parameters where each level names two of the level below (a 2.6 KB
+// upload) doubled the evaluation work per level: 16 levels took 9.5 s, 40 would take days.
+std::string doublingChainModel(int levels)
+{
+    std::string parameters = R"(<parameter name="a0" value="1" type="double"/><parameter name="b0" value="2" type="double"/>)";
+    for (int k = 1; k <= levels; ++k) {
+        const std::string below = std::to_string(k - 1), level = std::to_string(k);
+        parameters += "<parameter name=\"a" + level + "\" value=\"a" + below + "+b" + below + "\" type=\"double\"/>" +
+                      "<parameter name=\"b" + level + "\" value=\"a" + below + "-b" + below + "\" type=\"double\"/>";
+    }
+    return "<hopsanmodelfile><system name=\"root\"><parameters>" + parameters +
+           "</parameters><objects><component typename=\"SignalGain\" name=\"G\"><parameters>"
+           "<parameter name=\"k#Value\" value=\"a" + std::to_string(levels) + "\"/></parameters></component>"
+           "</objects></system></hopsanmodelfile>";
+}
+
+TEST(SecurityParameterChain, EachParameterIsEvaluatedOnceAndTheBudgetIsAFlag)
+{
+    const fs::path dir = freshTempDir("parameter-chain");
+    {
+        ServerProcess server(dir);
+        HttpClient admin = loggedInAs(server, "admin");
+        EXPECT_EQ(uploadXml(admin, doublingChainModel(40), "chain40").status, 201);
+    }
+    {
+        ServerProcess server(dir, {"--max-parameter-evaluations", "50"});
+        HttpClient admin = loggedInAs(server, "admin");
+        EXPECT_EQ(uploadXml(admin, doublingChainModel(20), "chain20").status, 201);   // 41 evaluations
+        const auto refused = uploadXml(admin, doublingChainModel(30), "chain30");
+        EXPECT_EQ(refused.status, 400);
+        EXPECT_NE(refused.body.find("more than 50 parameter expressions"), std::string::npos) << refused.body;
+        EXPECT_NE(refused.body.find("(--max-parameter-evaluations)"), std::string::npos) << refused.body;
+        EXPECT_NE(refused.body.find("system parameter 'a26'"), std::string::npos) << refused.body;
+    }
+    fs::remove_all(dir);
+}
+
 // What held when probed, kept so.
 TEST_F(Security, LoginDoesNotRevealWhichNamesExist)
 {

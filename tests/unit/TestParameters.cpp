@@ -3,8 +3,10 @@
 #include "TestHelpers.h"
 
 #include "core/ParameterEvaluator.h"
+#include "core/hmf/HmfLoader.h"
 
 #include <cmath>
+#include <filesystem>
 
 using namespace tlmhub;
 using namespace tlmhub::test;
@@ -120,4 +122,104 @@ TEST(Parameters, LoopOverThreeParametersFailsAtOnce)
     add(root, "SignalGain", "G");
     std::string err = failureOf(ParameterEvaluator::evaluateExpression(*root.component("G"), "a"));
     EXPECT_NE(err.find("reference loop"), std::string::npos) << err;
+}
+
+namespace {
+
+// a0 = 1, b0 = 2, and at each level aK = a(K-1) + b(K-1), bK = a(K-1) - b(K-1): every level
+// names both of the level below, so evaluating without remembering doubles per level. Two
+// levels double both values: a(2n) = 2^n, b(2n) = 2^(n+1).
+void addDoublingChain(System& root, int levels)
+{
+    ASSERT_TRUE(isOk(root.setSystemParameter("a0", "1", "double", "", "", false)));
+    ASSERT_TRUE(isOk(root.setSystemParameter("b0", "2", "double", "", "", false)));
+    for (int k = 1; k <= levels; ++k) {
+        const std::string below = std::to_string(k - 1);
+        ASSERT_TRUE(isOk(root.setSystemParameter("a" + std::to_string(k), "a" + below + "+b" + below, "double", "", "", false)));
+        ASSERT_TRUE(isOk(root.setSystemParameter("b" + std::to_string(k), "a" + below + "-b" + below, "double", "", "", false)));
+    }
+}
+
+// Every parameter of `system` and of everything inside it, in `pass`.
+Status evaluateEveryParameter(System& system, ParameterEvaluator::Pass& pass)
+{
+    for (const auto& param : system.parameters().all())
+        if (Status evaluated = ParameterEvaluator::evaluate(system, *param, pass); !evaluated) return evaluated;
+    for (Component* c : system.componentsInOrder()) {
+        if (c->isSystem()) {
+            if (Status evaluated = evaluateEveryParameter(*static_cast<System*>(c), pass); !evaluated) return evaluated;
+            continue;
+        }
+        for (const auto& param : c->parameters().all())
+            if (Status evaluated = ParameterEvaluator::evaluate(*c, *param, pass); !evaluated) return evaluated;
+    }
+    return Status::ok();
+}
+
+} // namespace
+
+// Issue 37 H1: 16 such levels took 9.5 s to upload, and every further level twice as long.
+TEST(Parameters, ReferencesNamingTwoOfTheLevelBelowAreEvaluatedOnceEach)
+{
+    constexpr int kLevels = 60;   // 2^60 evaluations without remembering
+    System root;
+    addDoublingChain(root, kLevels);
+    ParameterEvaluator::Pass pass;
+    double a = 0, b = 0;
+    Parameter* top = root.parameters().find("a" + std::to_string(kLevels));
+    ASSERT_NE(top, nullptr);
+    top->doubleTarget = &a;
+    ASSERT_TRUE(isOk(ParameterEvaluator::evaluate(root, *top, pass)));
+    Parameter* other = root.parameters().find("b" + std::to_string(kLevels));
+    other->doubleTarget = &b;
+    ASSERT_TRUE(isOk(ParameterEvaluator::evaluate(root, *other, pass)));
+    EXPECT_EQ(a, std::ldexp(1.0, kLevels / 2));
+    EXPECT_EQ(b, std::ldexp(1.0, kLevels / 2 + 1));
+    EXPECT_EQ(pass.evaluations, std::size_t{2 * kLevels}) << "one evaluation per expression parameter";
+    // A whole check (one pass over the model) too.
+    EXPECT_TRUE(isOk(root.check()));
+}
+
+TEST(Parameters, APassStopsAtItsBudgetNamingTheParameter)
+{
+    System root;
+    addDoublingChain(root, 20);
+    ParameterEvaluator::Pass pass(25);
+    const Status status = evaluateEveryParameter(root, pass);
+    ASSERT_FALSE(isOk(status));
+    EXPECT_EQ(status.code(), StatusCode::InvalidParameter);
+    EXPECT_NE(status.message().find("more than 25 parameter expressions"), std::string::npos) << status.message();
+    EXPECT_NE(status.message().find("evaluation limit"), std::string::npos) << status.message();
+    // In the order added: a1..a12 and b1..b12 take 24 evaluations, a13 the 25th, and b13
+    // would need a 26th.
+    EXPECT_EQ(status.path(), "b13");
+    // The process-wide default applies to every check of a model (the server's flag).
+    ParameterEvaluator::setDefaultBudget(25);
+    const Status checked = root.check();
+    ParameterEvaluator::setDefaultBudget(ParameterEvaluator::kDefaultBudget);
+    EXPECT_NE(checked.message().find("evaluation limit"), std::string::npos) << checked.message();
+}
+
+// The default budget admits every shared model a hundred times over.
+TEST(Parameters, TheDefaultBudgetAdmitsEverySharedModelAHundredTimes)
+{
+    std::size_t models = 0, most = 0;
+    std::string mostIn;
+    for (const char* folder : {"/hopsan-models", "/bench-models"}) {
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(sharedDir() + folder)) {
+            if (entry.path().extension() != ".hmf") continue;
+            LoadedModel loaded = loadHmfFile(entry.path().string());
+            if (!loaded.root) continue;
+            ++models;
+            ParameterEvaluator::Pass pass;
+            (void)evaluateEveryParameter(*loaded.root, pass);
+            if (pass.evaluations > most) {
+                most = pass.evaluations;
+                mostIn = entry.path().filename().string();
+            }
+        }
+    }
+    EXPECT_GT(models, 100u) << "the shared models must be in " << sharedDir();
+    RecordProperty("most_expressions", std::to_string(most) + " in " + mostIn);
+    EXPECT_LE(most * 100, ParameterEvaluator::kDefaultBudget) << mostIn << " evaluates " << most << " expressions";
 }
