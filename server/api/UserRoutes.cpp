@@ -30,8 +30,9 @@ Response createUser(Services& s, Call& call)
     return jsonResponse(http::status::created, publicUser(*user));
 }
 
-// Role and enabled state. A disabled account's logins end at once (tokens revoked, open
-// WebSockets closed); a changed role applies to REST calls at once and WebSockets reconnect.
+// Role and enabled state. A disabled account's logins and API tokens end at once (revoked,
+// so enabling it again revives none; open WebSockets closed); a changed role applies to REST
+// calls at once and WebSockets reconnect.
 Response updateUser(Services& s, Call& call)
 {
     if (!isAdministrator(call.who()))
@@ -50,6 +51,7 @@ Response updateUser(Services& s, Call& call)
                                  : apiError(http::status::bad_request, "bad_request", why);
     if (user->disabled && !before->disabled) {
         s.tokens.revokeAllFor(user->id);
+        s.apiTokens.revokeAllFor(user->id);
         s.liveSessions.sweep();
     } else if (user->role != before->role) {
         s.liveSessions.closeAllOf(user->id, "your role changed: reconnect");

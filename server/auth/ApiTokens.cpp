@@ -2,6 +2,7 @@
 
 #include "core/Sha256.h"
 #include "server/auth/Sodium.h"
+#include "server/store/ModelName.h"
 #include "server/store/UnixTime.h"
 
 #include <sodium.h>
@@ -58,6 +59,9 @@ ApiTokens::Creation ApiTokens::create(const User& owner, const std::string& name
     const std::size_t length = characterCount(name);
     if (length < 1 || length > kMaxNameLength)
         return {std::nullopt, "bad_request", "a token's name has 1 to " + std::to_string(kMaxNameLength) + " characters"};
+    // Names are listed in the app and in scripts' output: no line breaks or reordering.
+    if (const std::string problem = nameCharacterProblem(name); !problem.empty())
+        return {std::nullopt, "bad_request", "a token's name: " + problem};
     if (expiresInDays && (*expiresInDays < 1 || *expiresInDays > kMaxExpiryDays))
         return {std::nullopt, "bad_request", "expires_in_days is 1 to " + std::to_string(kMaxExpiryDays)};
     // Two creations at once may both pass this check: the limit bounds a user's tokens, it is
@@ -85,6 +89,11 @@ std::vector<ApiTokenInfo> ApiTokens::list(const User& owner)
 bool ApiTokens::revoke(const User& owner, std::int64_t id)
 {
     return mStore.remove(owner.id, id);
+}
+
+void ApiTokens::revokeAllFor(std::int64_t userId)
+{
+    mStore.removeAll(userId);
 }
 
 std::optional<User> ApiTokens::authenticate(const std::string& token)

@@ -41,6 +41,8 @@ public:
     std::vector<ApiTokenInfo> list(const User& owner);
     // False when `owner` has no token `id` (another user's included).
     bool revoke(const User& owner, std::int64_t id);
+    // Every token of the user: an account being disabled (enabling it again revives none).
+    void revokeAllFor(std::int64_t userId);
     // The token's user, read fresh; nullopt when the token is unknown, revoked or expired, or
     // the account is disabled. Records the use (ApiTokenStore::use).
     std::optional<User> authenticate(const std::string& token);

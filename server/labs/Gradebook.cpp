@@ -18,11 +18,19 @@ std::string number(double value)
 
 std::string spreadsheetSafeCell(const std::string& text)
 {
-    std::string cell = text;
-    // A spreadsheet reads a cell starting with these as a formula (a tab or carriage return
-    // may precede one); the apostrophe makes it text.
-    if (!cell.empty() && std::string_view("=+-@\t\r").find(cell.front()) != std::string_view::npos)
-        cell.insert(cell.begin(), '\'');
+    // A spreadsheet reads a field starting with these as a formula (a tab or carriage return
+    // may precede one); an apostrophe before it makes it text. A field starts at the cell's
+    // start and after any character an import may split on (it may be set to split on ';' or
+    // tabs, and not honour the quotes), spaces after it included.
+    constexpr std::string_view kFormulaStart = "=+-@\t\r";
+    constexpr std::string_view kFieldBreaks = ",;\t|\r\n";
+    std::string cell;
+    bool fieldStart = true;
+    for (const char c : text) {
+        if (fieldStart && kFormulaStart.find(c) != std::string_view::npos) cell += '\'';
+        cell += c;
+        fieldStart = kFieldBreaks.find(c) != std::string_view::npos || (fieldStart && c == ' ');
+    }
     if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
     std::string quoted = "\"";
     for (char c : cell) {

@@ -18,8 +18,9 @@ struct GradebookRow {
     std::vector<GradebookCell> cells;    // one per assignment, in the column order
 };
 
-// A cell a spreadsheet shows as text: a leading =, +, -, @, tab or carriage return gets a
-// leading apostrophe; then quoted per RFC 4180 when it holds a comma, quote or line break.
+// A cell a spreadsheet shows as text: a =, +, -, @, tab or carriage return that starts the
+// cell, or follows a comma, semicolon, tab, bar or line break (spaces between), gets an
+// apostrophe before it; then quoted per RFC 4180 when it holds a comma, quote or line break.
 std::string spreadsheetSafeCell(const std::string& text);
 
 // Header: student, then per assignment "<title>" and "<title> late", then total.

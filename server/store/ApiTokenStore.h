@@ -2,6 +2,7 @@
 // Personal API tokens as stored (table api_tokens): named, long-lived, revocable Bearer tokens
 // for scripts. Only the SHA-256 of a token is stored; the token itself is shown once, when it
 // is created (server/auth/ApiTokens).
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,6 +35,8 @@ public:
     virtual std::size_t count(std::int64_t userId) = 0;
     // Deletes the user's token `id`; false when the user has no such token.
     virtual bool remove(std::int64_t userId, std::int64_t id) = 0;
+    // Deletes every token of the user (an account being disabled); how many there were.
+    virtual std::size_t removeAll(std::int64_t userId) = 0;
 };
 
 } // namespace tlmhub::server

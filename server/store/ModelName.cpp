@@ -49,6 +49,11 @@ std::string modelNameProblem(const std::string& name)
     if (name.size() > kMaxModelNameBytes)
         return "the name is " + std::to_string(name.size()) + " bytes; at most " +
                std::to_string(kMaxModelNameBytes) + " are allowed";
+    return nameCharacterProblem(name);
+}
+
+std::string nameCharacterProblem(const std::string& name)
+{
     for (std::size_t i = 0; i < name.size();) {
         const std::size_t at = i;
         const long cp = nextCodePoint(name, i);

@@ -12,4 +12,8 @@ inline constexpr std::size_t kMaxModelNameBytes = 200;
 // Empty when `name` is acceptable, else what is wrong with it.
 std::string modelNameProblem(const std::string& name);
 
+// The same rules on characters alone, for other names shown in lists (API tokens): empty
+// when `name` is valid UTF-8 without control or bidirectional control characters.
+std::string nameCharacterProblem(const std::string& name);
+
 } // namespace tlmhub::server

@@ -39,7 +39,7 @@ protected:
     {
         dataDir = new fs::path(freshTempDir("apitokens"));
         server = new ServerProcess(*dataDir);
-        createTestUsers(*server, {"alice", "bob", "dora", "erin", "fred"});
+        createTestUsers(*server, {"alice", "bob", "dora", "erin", "fred", "gwen"});
     }
     static void TearDownTestSuite()
     {
@@ -215,6 +215,24 @@ TEST_F(ApiTokens, ADisabledAccountsTokensAreRefused)
     EXPECT_TRUE(closesWithinASecond(ws));
 }
 
+// Issue 37 L3: disabling and enabling again revived the tokens; disabling revokes them.
+TEST_F(ApiTokens, EnablingADisabledAccountAgainRevivesNoToken)
+{
+    HttpClient gwen = as("gwen");
+    const auto [id, token] = newToken(gwen);
+    ASSERT_EQ(withToken(token).get("/api/v1/auth/me").status, 200);
+    const auto gwenPath = "/api/v1/users/" + std::to_string(gwen.get("/api/v1/auth/me").json()["id"].get<std::int64_t>());
+    HttpClient admin = as("admin");
+    ASSERT_EQ(admin.request(http::verb::patch, gwenPath, R"({"disabled": true})").status, 200);
+    ASSERT_EQ(admin.request(http::verb::patch, gwenPath, R"({"disabled": false})").status, 200);
+    EXPECT_EQ(withToken(token).get("/api/v1/auth/me").status, 401);
+    EXPECT_TRUE(websocketUpgradeDeclined(port(), token, WsToken::InHeader));
+    HttpClient again = as("gwen");
+    EXPECT_TRUE(tokensOf(again).empty());
+    const auto [newId, newTokenText] = newToken(again);
+    EXPECT_EQ(withToken(newTokenText).get("/api/v1/auth/me").status, 200) << "a new token works";
+}
+
 TEST_F(ApiTokens, AUserHasAtMostFiftyTokens)
 {
     HttpClient dora = as("dora");
@@ -245,6 +263,13 @@ TEST_F(ApiTokens, NameAndExpiryAreChecked)
     EXPECT_TRUE(refused({{"name", "x"}, {"expires_in_days", 3651}}));
     EXPECT_TRUE(refused({{"name", "x"}, {"expires_in_days", 1.5}}));
     EXPECT_TRUE(refused({{"name", "x"}, {"scope", "all"}}));
+    // As model names (issue 37 L4): no line breaks, other controls or bidirectional overrides.
+    EXPECT_TRUE(refused({{"name", "ci\r\nX-Injected: 1"}}));
+    EXPECT_TRUE(refused({{"name", "tab\there"}}));
+    EXPECT_TRUE(refused({{"name", "gnp\xe2\x80\xae" "exe.js"}}));   // U+202E: displayed as "gnpsj.exe"
+    EXPECT_TRUE(refused({{"name", "line\xe2\x80\xa8" "break"}}));  // U+2028
+    EXPECT_EQ(create(fred, {{"name", "x\r\ny"}}).json()["error"]["message"],
+              "a token's name: the name contains the control character U+000D");
     EXPECT_EQ(fred.request(http::verb::post, "/api/v1/tokens", "{not json").status, 400);
     EXPECT_TRUE(tokensOf(fred).empty()) << "a refused token was stored";
 

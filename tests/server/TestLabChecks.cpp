@@ -378,12 +378,20 @@ TEST(Gradebook, CellsAreNeutralisedAndQuoted)
     EXPECT_EQ(spreadsheetSafeCell("-3"), "'-3");
     EXPECT_EQ(spreadsheetSafeCell("@SUM(A1)"), "'@SUM(A1)");
     EXPECT_EQ(spreadsheetSafeCell("\tx"), "'\tx");
-    EXPECT_EQ(spreadsheetSafeCell("\r=1"), "\"'\r=1\"");
+    EXPECT_EQ(spreadsheetSafeCell("\r=1"), "\"'\r'=1\"");
     EXPECT_EQ(spreadsheetSafeCell("a,b"), "\"a,b\"");
     EXPECT_EQ(spreadsheetSafeCell("say \"hi\""), "\"say \"\"hi\"\"\"");
     EXPECT_EQ(spreadsheetSafeCell("two\nlines"), "\"two\nlines\"");
     EXPECT_EQ(spreadsheetSafeCell("=HYPERLINK(\"x\",1)"), "\"'=HYPERLINK(\"\"x\"\",1)\"");
-    EXPECT_EQ(spreadsheetSafeCell("a=1"), "a=1");   // only a leading sign starts a formula
+    EXPECT_EQ(spreadsheetSafeCell("a=1"), "a=1");   // only a sign that starts a field starts a formula
+    // Issue 37 L4: an import splitting on ';', tabs or bars, or ignoring the quotes, finds a
+    // field after each of them.
+    EXPECT_EQ(spreadsheetSafeCell("x;=1+2"), "x;'=1+2");
+    EXPECT_EQ(spreadsheetSafeCell("x\t-1"), "x\t'-1");
+    EXPECT_EQ(spreadsheetSafeCell("x| @SUM(A1)"), "x| '@SUM(A1)");
+    EXPECT_EQ(spreadsheetSafeCell("x,=1"), "\"x,'=1\"");
+    EXPECT_EQ(spreadsheetSafeCell("two\n+lines"), "\"two\n'+lines\"");
+    EXPECT_EQ(spreadsheetSafeCell("x; y=1"), "x; y=1");
 }
 
 TEST(Gradebook, WholeCsv)

@@ -20,6 +20,7 @@ constexpr PgStatement kList{"api_tokens_list",
                             " WHERE user_id = $1 ORDER BY id DESC"};
 constexpr PgStatement kCount{"api_tokens_count", "SELECT COUNT(*) FROM api_tokens WHERE user_id = $1"};
 constexpr PgStatement kRemove{"api_tokens_remove", "DELETE FROM api_tokens WHERE id = $1 AND user_id = $2"};
+constexpr PgStatement kRemoveAll{"api_tokens_remove_all", "DELETE FROM api_tokens WHERE user_id = $1"};
 
 ApiTokenInfo readToken(const pqxx::row& row)
 {
@@ -89,6 +90,14 @@ bool PostgresApiTokenStore::remove(std::int64_t userId, std::int64_t id)
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
         return c.exec(tx, kRemove, id, userId).affected_rows() > 0;
+    });
+}
+
+std::size_t PostgresApiTokenStore::removeAll(std::int64_t userId)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return static_cast<std::size_t>(c.exec(tx, kRemoveAll, userId).affected_rows());
     });
 }
 

@@ -166,6 +166,7 @@ public:
     std::vector<ApiTokenInfo> list(std::int64_t userId) override;
     std::size_t count(std::int64_t userId) override;
     bool remove(std::int64_t userId, std::int64_t id) override;
+    std::size_t removeAll(std::int64_t userId) override;
 
 private:
     PostgresDatabase& mDb;

@@ -109,4 +109,16 @@ bool SqliteApiTokenStore::remove(std::int64_t userId, std::int64_t id)
     return removed;
 }
 
+std::size_t SqliteApiTokenStore::removeAll(std::int64_t userId)
+{
+    // As remove(): disabling an account must stop its scripts on a full disk too.
+    const std::size_t removed = mDb.runFreeingSpace([&](SqliteConnection& c) {
+        auto q = c.prepared("DELETE FROM api_tokens WHERE user_id = ?");
+        q->bind(1, userId);
+        return static_cast<std::size_t>(q->exec());
+    });
+    mDb.restoreReserve();
+    return removed;
+}
+
 } // namespace tlmhub::server

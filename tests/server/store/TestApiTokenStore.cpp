@@ -123,6 +123,22 @@ TEST_P(ApiTokenStoreConformance, RemoveDeletesOnlyTheUsersOwnToken)
     EXPECT_EQ(store().apiTokens().use("hash-b", 200)->id, bobToken);
 }
 
+// Disabling an account revokes its tokens (issue 37 L3): all of that user's, nobody else's.
+TEST_P(ApiTokenStoreConformance, RemoveAllDeletesEveryTokenOfTheUserOnly)
+{
+    const User alice = addUser("alice");
+    const User bob = addUser("bob");
+    addToken(alice.id, "hash-a1");
+    addToken(alice.id, "hash-a2");
+    const auto bobToken = addToken(bob.id, "hash-b");
+    EXPECT_EQ(store().apiTokens().removeAll(alice.id), 2u);
+    EXPECT_FALSE(store().apiTokens().use("hash-a1", 200));
+    EXPECT_FALSE(store().apiTokens().use("hash-a2", 200));
+    EXPECT_EQ(store().apiTokens().count(alice.id), 0u);
+    EXPECT_EQ(store().apiTokens().removeAll(alice.id), 0u);
+    EXPECT_EQ(store().apiTokens().use("hash-b", 200)->id, bobToken);
+}
+
 // No store deletes users yet; the schema already takes their tokens with them.
 TEST_P(ApiTokenStoreConformance, DeletingAUserDeletesItsTokens)
 {
