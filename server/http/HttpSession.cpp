@@ -2,6 +2,7 @@
 
 #include "server/http/HeaderValues.h"
 #include "server/http/JsonText.h"
+#include "server/http/SecurityHeaders.h"
 #include "server/http/WebSocketSession.h"
 
 #include <boost/asio/dispatch.hpp>
@@ -103,6 +104,7 @@ void HttpSession::write(Response response, bool headOnly)
         response = errorResponse(http::status::internal_server_error, "internal",
                                  "refused to send a response header with a control character",
                                  response.version(), response.keep_alive());
+    addSecurityHeaders(response);
     auto shared = std::make_shared<Response>(std::move(response));
     shared->prepare_payload();
     if (headOnly) {

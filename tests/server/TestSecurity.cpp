@@ -630,6 +630,26 @@ TEST_F(Security, ModelWhoseParametersCannotBeEvaluatedIsRefusedAtUpload)
     EXPECT_EQ(uploadXml(alice, gains(3, "1.5")).status, 201);
 }
 
+// Issue 37 L5: every answer (the app's files, the API, errors) carries the policy the app
+// runs under; the Playwright suite fails on any violation of it (web/e2e/fixtures.ts).
+TEST_F(Security, EveryResponseCarriesTheSecurityHeaders)
+{
+    HttpClient alice = as("alice");
+    for (const HttpReply& reply : {HttpClient(server->port()).get("/api/v1/health"), alice.get("/api/v1/models"),
+                                   alice.get("/api/v1/models/999999"), HttpClient(server->port()).get("/api/v1/models"),
+                                   HttpClient(server->port()).get("/index.html")}) {
+        const auto header = [&](const char* name) {
+            const auto found = reply.headers.find(name);
+            return found == reply.headers.end() ? std::string("(none)") : found->second;
+        };
+        EXPECT_EQ(header("Content-Security-Policy"),
+                  "default-src 'self'; script-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'self'")
+            << reply.status;
+        EXPECT_EQ(header("X-Content-Type-Options"), "nosniff") << reply.status;
+        EXPECT_EQ(header("Referrer-Policy"), "no-referrer") << reply.status;
+    }
+}
+
 // Issue 37 H1: system parameters where each level names two of the level below (a 2.6 KB
 // upload) doubled the evaluation work per level: 16 levels took 9.5 s, 40 would take days.
 std::string doublingChainModel(int levels)

@@ -1,6 +1,6 @@
 // Issue 13.8: the accounts page. The administrator creates a user who can then log in;
 // disabling the account ends that user's open session.
-import { test, expect, type Page, type Browser } from '@playwright/test';
+import { test, expect, type Page, type Browser } from './fixtures';
 import { baseUrl, openExample } from './helpers';
 import { ADMIN_PASSWORD } from './globalSetup';
 

@@ -1,7 +1,7 @@
 // Issue 13.4: the spectrum (FFT) window of a plotted variable, and the Bode window.
 import { mkdirSync, copyFileSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { login, openExample, plotVariable, runAndWait, setRunField } from './helpers';
 
 const screenshots = fileURLToPath(new URL('./screenshots/', import.meta.url));

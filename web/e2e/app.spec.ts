@@ -2,7 +2,7 @@
 // draw it, run it with a live plot, edit, connect, save, and access rules.
 import { copyFileSync, mkdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import {
     api, baseUrl, dragPortToPort, login, openExample, plotted, plotVariable, port, runAndWait, setRunField,
 } from './helpers';

@@ -2,7 +2,7 @@
 // and the screenshots of the docs.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect, type Page } from '@playwright/test';
+import { test, expect, type Page } from './fixtures';
 import { login, openExample } from './helpers';
 
 const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));

@@ -1,7 +1,7 @@
 // Issue 20.4: "Download FMU" for the open model shows the FMU's interface and downloads the file.
 import { mkdirSync, copyFileSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { baseUrl, login, tokenOf } from './helpers';
 
 const screenshots = fileURLToPath(new URL('./screenshots/', import.meta.url));

@@ -1,6 +1,6 @@
 // Grouping and ungrouping on the server: a group runs exactly as the components did, the
 // refusal of a group that could not run is shown, and ungroup gives the model back.
-import { test, expect, type Page, type APIRequestContext } from '@playwright/test';
+import { test, expect, type Page, type APIRequestContext } from './fixtures';
 import { api, login, openExample, runAndWait } from './helpers';
 import type { ResultsJson } from '../src/protocol/types';
 

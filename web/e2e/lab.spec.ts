@@ -4,7 +4,7 @@
 // tune GainP.k in their copies, run, pretest and hand in; the teacher sees both on the
 // dashboard and in the overlay plot, comments on a hand-in (the student reads it) and exports
 // the gradebook.
-import { test, expect, type Browser, type Page, type APIRequestContext } from '@playwright/test';
+import { test, expect, type Browser, type Page, type APIRequestContext } from './fixtures';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { baseUrl, runAndWait } from './helpers';

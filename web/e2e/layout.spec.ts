@@ -2,7 +2,7 @@
 // .hmf pose), lines re-routed to their ports, names above the bodies.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect, type Page } from '@playwright/test';
+import { test, expect, type Page } from './fixtures';
 import { login, openExample } from './helpers';
 
 interface Rect { x0: number; y0: number; x1: number; y1: number }

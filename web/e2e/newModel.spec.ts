@@ -1,7 +1,7 @@
 // Logged in as bob: alice's own model list must stay empty for app.spec.
 // Issue 13.2: a new model runs with its defaults (Hopsan's: 0 to 10 s, 1e-3 s step, 2048
 // samples); a wrong run setting is explained next to its field, once, and cleared when fixed.
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { login, runAndWait, setRunField } from './helpers';
 
 test('a new model runs with the defaults; a wrong field is explained next to it', async ({ page }) => {

@@ -1,7 +1,7 @@
 // Issue 13.6: the palette in Hopsan's library folders, with icons, searchable by display name.
 import { mkdirSync, copyFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { login, openExample } from './helpers';
 
 const screenshots = fileURLToPath(new URL('./screenshots/', import.meta.url));

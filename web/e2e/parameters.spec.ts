@@ -1,6 +1,6 @@
 // Issue 13.7: the parameters panel reads in words (descriptions, short names, units), node
 // start values in their own section, long names wrapped inside the panel.
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { login, openExample } from './helpers';
 
 test('parameters show descriptions, short names and units; start values apart; no overflow', async ({ page }) => {

@@ -1,6 +1,6 @@
 // Issue 13.4: one y axis per unit with SI-prefixed ticks, at most three per window; curves
 // named after the port clicked; the cursor moves in every plot window at once.
-import { test, expect } from '@playwright/test';
+import { test, expect } from './fixtures';
 import { login, openExample, plotVariable, runAndWait } from './helpers';
 
 test('plots of pressure, position and flow get one axis each (MPa, mm); a fourth unit opens a new window', async ({ page }) => {

@@ -1,6 +1,6 @@
 // Issue 13.1: a plot window whose legend wraps keeps its size (it used to grow without limit,
 // the legend's height feeding back into the plot's through the resize observer).
-import { test, expect, type Page } from '@playwright/test';
+import { test, expect, type Page } from './fixtures';
 import { login, openExample, runAndWait } from './helpers';
 
 interface Heights { page: number; runArea: number; plotWindow: number; canvas: number }

@@ -4,7 +4,7 @@
 // again, subscribes to the run again and ends with exactly the job's stored samples.
 import { copyFileSync, mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { test, expect, type WebSocketRoute } from '@playwright/test';
+import { test, expect, type WebSocketRoute } from './fixtures';
 import { api, login, openExample, plotted, plotVariable, setRunField } from './helpers';
 import type { ResultsJson } from '../src/protocol/types';
 

@@ -1,0 +1,15 @@
+#pragma once
+// Headers every HTTP response carries (SECURITY.md): the page may load its own scripts,
+// styles, images and connections only, no page of another site may frame it, a browser
+// never guesses a content type, and no Referer leaves the site.
+#include "server/http/HttpTypes.h"
+
+namespace tlmhub::server {
+
+// The policy the app runs under; what it allows beyond 'self' is what the app needs.
+extern const char* const kContentSecurityPolicy;
+
+// Sets the security headers a response does not set itself.
+void addSecurityHeaders(Response& response);
+
+} // namespace tlmhub::server
