@@ -19,7 +19,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(hmf parameter-expression csv plo websocket rest static-files study-request lab-definitions binary-frame model-description)
+[ ${#targets[@]} -gt 0 ] || targets=(hmf parameter-expression parameter-graph csv plo websocket rest static-files study-request lab-definitions binary-frame model-description)
 [ -d "$shared" ] || { echo "fuzz.sh: no shared models at $shared" >&2; exit 1; }
 
 # Seed directories per target, one a line (read only: libFuzzer writes only to the first
