@@ -280,7 +280,6 @@ TEST(ScaleOut, KillWorkerMidJob)
     const LongJob job = calibrate(alice.client, alice.model, 3.0);
     const Reference reference = referenceRun(alice.client, job.request(alice.model));
     ASSERT_FALSE(reference.result.empty());
-    EXPECT_GE(reference.seconds, 2.0) << "the job (stop " << job.stop << " s) should run at least 2 s to be killed mid-run";
 
     const std::int64_t id = submit(alice.client, job.request(alice.model));
     const Lease first = waitForHolder(cluster.postgres(), id, 30s);
@@ -295,7 +294,10 @@ TEST(ScaleOut, KillWorkerMidJob)
     ASSERT_EQ(done["state"], "done") << done.dump() << " (" << secondsSince(killedAt) << " s after killing "
                                      << first.node << ")";
     const Lease last = leaseOf(cluster.postgres(), id);
-    EXPECT_EQ(last.number, 2) << "claimed once by " << first.node << " and once by the other worker";
+    // Outcomes, not the calibrated run's length (about 3 s; a wall-clock bound on it failed a
+    // CI run at 1.9 s): a job that ended before the kill would have been claimed only once.
+    EXPECT_EQ(last.number, 2) << "claimed once by " << first.node << " and once by the other worker (the reference run took "
+                              << reference.seconds << " s)";
     const std::string result = storedResult(alice.client, id);
     EXPECT_TRUE(result == reference.result) << firstDifference(result, reference.result);
 }
@@ -314,7 +316,6 @@ TEST(ScaleOut, StoppedWorkerCannotStoreAfterItsLeaseIsTaken)
     const LongJob job = calibrate(alice.client, alice.model, 3.0);
     const Reference reference = referenceRun(alice.client, job.request(alice.model));
     ASSERT_FALSE(reference.result.empty());
-    EXPECT_GE(reference.seconds, 2.0) << "the job (stop " << job.stop << " s) should run at least 2 s";
 
     const std::int64_t id = submit(alice.client, job.request(alice.model));
     const Lease first = waitForHolder(cluster.postgres(), id, 30s);
@@ -341,7 +342,8 @@ TEST(ScaleOut, StoppedWorkerCannotStoreAfterItsLeaseIsTaken)
     EXPECT_EQ(after["finished_at"], done["finished_at"]) << "the job's end was written again after " << stalled
                                                          << " resumed";
     const Lease last = leaseOf(cluster.postgres(), id);
-    EXPECT_EQ(takeover.number, 2);
+    EXPECT_EQ(takeover.number, 2) << "a job that ended before the stop is claimed once (the reference run took "
+                                  << reference.seconds << " s)";
     EXPECT_EQ(last.number, 2) << "claimed by " << stalled << ", then by " << other << ", never again";
     const auto results = sql(cluster.postgres(), "SELECT count(*) FROM job_results WHERE job_id = " + std::to_string(id));
     EXPECT_EQ(results[0][0].as<int>(), 1);
