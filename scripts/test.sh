@@ -21,11 +21,13 @@ budget_seconds=$((45 * 60))
 # cores busy where make waits. Only a new build directory takes it.
 export CMAKE_GENERATOR=${CMAKE_GENERATOR:-Ninja}
 
+# Prints a stage's wall time and the CPU time of everything it ran (user + system of the
+# processes it waited for): a stage far below twice its wall time leaves a core idle.
 stage() {
-  local name=$1 start=$SECONDS
+  local name=$1
   shift
-  "$@"
-  echo "stage $name: $((SECONDS - start)) s"
+  local TIMEFORMAT="stage $name: %0R s (CPU %0U s user + %0S s system)"
+  time "$@"
 }
 
 # Every compile and link of build directory $1 is timed into $1/build-times.tsv: sets the
