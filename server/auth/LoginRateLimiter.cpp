@@ -1,5 +1,7 @@
 #include "server/auth/LoginRateLimiter.h"
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 namespace {
@@ -30,6 +32,16 @@ bool LoginRateLimiter::allowed(const std::string& key)
         return true;
     }
     return static_cast<int>(it->second.size()) < mMaxFailures;
+}
+
+std::chrono::seconds LoginRateLimiter::retryAfter(const std::string& key)
+{
+    const Clock::time_point now = mNow();
+    std::lock_guard lock(mMutex);
+    auto it = mFailures.find(key);
+    if (it == mFailures.end() || it->second.empty()) return std::chrono::seconds(1);
+    const auto left = mWindow - (now - it->second.front());
+    return std::max(std::chrono::seconds(1), std::chrono::ceil<std::chrono::seconds>(left));
 }
 
 void LoginRateLimiter::recordFailure(const std::string& key)

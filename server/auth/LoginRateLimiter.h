@@ -1,7 +1,8 @@
 #pragma once
-// Slows password guessing: after `maxFailures` failed logins for one key (username + client
-// address) within a sliding `window`, further attempts are refused until the oldest failure
-// leaves the window. In memory only; a restart forgets, which is acceptable for this purpose.
+// Slows password guessing: after `maxFailures` failed logins for one key (a user name at a
+// client address, or an address) within a sliding `window`, further attempts are refused until
+// the oldest failure leaves the window. In memory only; a restart forgets, which is acceptable
+// for this purpose.
 #include <chrono>
 #include <deque>
 #include <functional>
@@ -22,6 +23,8 @@ public:
 
     // False while `key` has maxFailures failures inside the window.
     bool allowed(const std::string& key);
+    // When `key` is allowed again: until its oldest failure leaves the window (at least 1 s).
+    std::chrono::seconds retryAfter(const std::string& key);
     void recordFailure(const std::string& key);
     // A successful login clears the key's failures.
     void recordSuccess(const std::string& key);

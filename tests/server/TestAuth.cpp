@@ -232,6 +232,20 @@ TEST(LoginRateLimiter, BlocksAfterMaxFailuresUntilWindowPasses)
     EXPECT_FALSE(limiter.allowed(key));
 }
 
+TEST(LoginRateLimiter, RetryAfterIsWhenTheOldestFailureLeavesTheWindow)
+{
+    auto now = LoginRateLimiter::Clock::time_point{};
+    LoginRateLimiter limiter(2, 60s, [&] { return now; });
+    EXPECT_EQ(limiter.retryAfter("k"), 1s) << "no failures: at once (at least a second)";
+    limiter.recordFailure("k");
+    now += 15s;
+    limiter.recordFailure("k");
+    now += 500ms;
+    EXPECT_EQ(limiter.retryAfter("k"), 45s) << "44.5 s, rounded up";
+    now += 44s;
+    EXPECT_EQ(limiter.retryAfter("k"), 1s);
+}
+
 TEST(LoginRateLimiter, SuccessClearsFailures)
 {
     LoginRateLimiter limiter(2, 60s);
