@@ -62,6 +62,9 @@ public:
     // component is in its system with its own parameters set, and before connecting it:
     // the .hmf loader, the model copy and model editing (after a parameter change).
     virtual Status loadExternalDefinition() { return Status::ok(); }
+    // True for a component whose loadExternalDefinition reads files (an FMU unpacked and
+    // parsed): a model from a user may hold only a bounded number (LoadLimits).
+    virtual bool loadsExternalDefinition() const { return false; }
     // Not virtual: the step loop asks this of every component every step.
     bool isSystem() const { return mIsSystem; }
     // The batch step of this component's type: TLMHUB_REGISTER_COMPONENT sets a direct one,

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include <fstream>
+#include <list>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -19,8 +20,53 @@ namespace {
 constexpr std::uintmax_t kMaxFmuFileBytes = 1ull << 30;
 constexpr std::uintmax_t kMaxDescriptionFileBytes = 16ull << 20;
 
+// Files hashed before, by path: hashed again when their size or modification time changes.
+constexpr std::size_t kMaxRememberedDigests = 4096;
+struct KnownDigest {
+    std::uintmax_t size;
+    fs::file_time_type modified;
+    std::string digest;
+};
+
+// All under gCacheMutex.
 std::mutex gCacheMutex;
 std::map<std::string, std::weak_ptr<const FmuPackage>> gCache;   // by the file's SHA-256
+std::map<std::string, KnownDigest> gDigests;
+// Strong references that keep packages unpacked, the most recently used first.
+std::list<std::shared_ptr<const FmuPackage>> gKept;
+std::uintmax_t gKeptBytes = 0;
+std::uintmax_t gCacheBytes = FmuPackage::kDefaultCacheBytes;
+
+void trimKept()
+{
+    while (gKeptBytes > gCacheBytes && !gKept.empty()) {
+        gKeptBytes -= gKept.back()->unpackedBytes();
+        gKept.pop_back();
+    }
+}
+
+void keep(const std::shared_ptr<const FmuPackage>& package)
+{
+    for (auto it = gKept.begin(); it != gKept.end(); ++it) {
+        if (*it == package) {
+            gKept.splice(gKept.begin(), gKept, it);
+            return;
+        }
+    }
+    gKept.push_front(package);
+    gKeptBytes += package->unpackedBytes();
+    trimKept();
+}
+
+std::uintmax_t directoryBytes(const fs::path& directory)
+{
+    std::uintmax_t bytes = 0;
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(directory, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec))
+        if (it->is_regular_file(ec)) bytes += it->file_size(ec);
+    return bytes;
+}
 
 Result<std::string> fileDigest(const fs::path& file)
 {
@@ -29,6 +75,14 @@ Result<std::string> fileDigest(const fs::path& file)
     if (ec) return Status{StatusCode::IoError, "cannot read " + file.string()};
     if (size > kMaxFmuFileBytes)
         return Status{StatusCode::InvalidModel, file.filename().string() + " is larger than 1 GiB"};
+    const fs::file_time_type modified = fs::last_write_time(file, ec);
+    if (ec) return Status{StatusCode::IoError, "cannot read " + file.string()};
+    {
+        std::lock_guard lock(gCacheMutex);
+        const auto known = gDigests.find(file.string());
+        if (known != gDigests.end() && known->second.size == size && known->second.modified == modified)
+            return known->second.digest;
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) return Status{StatusCode::IoError, "cannot read " + file.string()};
     Sha256 hash;
@@ -37,7 +91,11 @@ Result<std::string> fileDigest(const fs::path& file)
         in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
         hash.update(std::string_view(buffer.data(), static_cast<std::size_t>(in.gcount())));
     }
-    return hash.hexDigest();
+    std::string digest = hash.hexDigest();
+    std::lock_guard lock(gCacheMutex);
+    if (gDigests.size() >= kMaxRememberedDigests) gDigests.clear();
+    gDigests[file.string()] = {size, modified, digest};
+    return digest;
 }
 
 Result<fs::path> makeTemporaryDirectory()
@@ -73,8 +131,12 @@ Result<std::shared_ptr<const FmuPackage>> FmuPackage::open(const fs::path& fmuFi
     Result<std::string> digest = fileDigest(fmuFile);
     if (!digest) return digest.status();
     std::lock_guard lock(gCacheMutex);
-    if (auto found = gCache.find(*digest); found != gCache.end())
-        if (std::shared_ptr<const FmuPackage> shared = found->second.lock()) return shared;
+    if (auto found = gCache.find(*digest); found != gCache.end()) {
+        if (std::shared_ptr<const FmuPackage> shared = found->second.lock()) {
+            keep(shared);
+            return shared;
+        }
+    }
 
     Result<fs::path> directory = makeTemporaryDirectory();
     if (!directory) return directory.status();
@@ -93,10 +155,20 @@ Result<std::shared_ptr<const FmuPackage>> FmuPackage::open(const fs::path& fmuFi
     Result<ModelDescription> description = parseModelDescription(text.str());
     if (!description) return Status{description.status().code(), name + ": " + description.status().message()};
     package->mDescription = std::move(*description);
+    package->mBytes = directoryBytes(package->mDirectory);
 
     for (auto it = gCache.begin(); it != gCache.end();) it = it->second.expired() ? gCache.erase(it) : std::next(it);
     gCache[*digest] = package;
-    return std::shared_ptr<const FmuPackage>(std::move(package));
+    std::shared_ptr<const FmuPackage> shared = std::move(package);
+    keep(shared);
+    return shared;
+}
+
+void FmuPackage::setCacheBytes(std::uintmax_t bytes)
+{
+    std::lock_guard lock(gCacheMutex);
+    gCacheBytes = bytes;
+    trimKept();
 }
 
 FmuPackage::~FmuPackage()

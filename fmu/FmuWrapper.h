@@ -31,6 +31,7 @@ public:
 
     void configure() override;
     Status loadExternalDefinition() override;
+    bool loadsExternalDefinition() const override { return true; }
     void initialize() override;
     void simulateOneTimestep() override;
     void finalize() override;

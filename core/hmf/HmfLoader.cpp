@@ -186,6 +186,14 @@ private:
             if (!trySetComponentParameter(*raw, pname, sv.attribute("value").as_string(), originalType))
                 later.emplace_back(pname, sv.attribute("value").as_string());
         }
+        if (raw->loadsExternalDefinition() && mLimits.maxExternalDefinitions &&
+            ++mExternalDefinitionCount > mLimits.maxExternalDefinitions) {
+            error("the model has more than " + std::to_string(mLimits.maxExternalDefinitions) + " " + raw->typeName() +
+                      " components (each loads a file), the limit here" + mLimits.externalDefinitionsHint,
+                  StatusCode::InvalidModel);
+            mFailed = true;
+            return;
+        }
         if (const Status loaded = raw->loadExternalDefinition(); !loaded)
             error("component '" + raw->name() + "' (" + raw->typeName() + "): " + loaded.message(),
                   loaded.code());
@@ -322,6 +330,7 @@ private:
     LoadLimits mLimits;
     std::vector<Message>& mMessages;
     std::size_t mComponentCount = 0;
+    std::size_t mExternalDefinitionCount = 0;
     legacy::CoreVersion mVersion;
     std::map<System*, std::map<std::string, std::string>> mRenames;
 

@@ -23,10 +23,13 @@ struct LoadedModel {
 struct LoadLimits {
     std::size_t maxSubsystemDepth = 64;   // subsystems inside subsystems, the root is level 0
     std::size_t maxComponents = 0;        // components and subsystems in all; 0: no limit
+    // Components that load an external definition (imported FMUs) in all; 0: no limit.
+    std::size_t maxExternalDefinitions = 0;
     // Appended to the refusal when the limit is hit, to say how it is raised (a server
     // names its flag, e.g. " (--max-model-depth)").
     std::string depthHint;
     std::string componentsHint;
+    std::string externalDefinitionsHint;
 };
 // Elements nested deeper than this are refused before anything is built (no model needs
 // more than a few dozen levels; every walk over the tree then stays shallow).

@@ -20,16 +20,26 @@ LoadLimits loadLimits(const ModelLimits& limits)
     load.componentsHint = " (--max-model-components)";
     load.maxSubsystemDepth = limits.maxDepth;
     load.depthHint = " (--max-model-depth)";
+    load.maxExternalDefinitions = limits.maxFmus;
+    load.externalDefinitionsHint = " (--max-model-fmus)";
     return load;
 }
 
+struct StructureCount {
+    std::size_t components = 0, externalDefinitions = 0;
+};
+
 // Counts components and subsystems below `system` into `count`; the first limit broken.
-std::string structureProblem(const System& system, std::size_t depth, const LoadLimits& limits, std::size_t& count)
+std::string structureProblem(const System& system, std::size_t depth, const LoadLimits& limits, StructureCount& count)
 {
     for (const Component* c : system.componentsInOrder()) {
-        if (limits.maxComponents && ++count > limits.maxComponents)
+        if (limits.maxComponents && ++count.components > limits.maxComponents)
             return "the model has more than " + std::to_string(limits.maxComponents) +
                    " components and subsystems, the limit here" + limits.componentsHint;
+        if (c->loadsExternalDefinition() && limits.maxExternalDefinitions &&
+            ++count.externalDefinitions > limits.maxExternalDefinitions)
+            return "the model has more than " + std::to_string(limits.maxExternalDefinitions) + " " + c->typeName() +
+                   " components (each loads a file), the limit here" + limits.externalDefinitionsHint;
         if (!c->isSystem()) continue;
         if (depth + 1 > limits.maxSubsystemDepth)
             return "subsystem '" + c->name() + "' is nested " + std::to_string(depth + 1) +
@@ -57,7 +67,7 @@ std::string modelLimitProblem(const System& root, std::size_t hmfBytes, const Mo
                               const std::string& sourceName)
 {
     if (std::string tooLarge = sizeProblem(hmfBytes, limits, sourceName); !tooLarge.empty()) return tooLarge;
-    std::size_t count = 0;
+    StructureCount count;
     return structureProblem(root, 0, loadLimits(limits), count);
 }
 

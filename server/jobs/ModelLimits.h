@@ -13,6 +13,7 @@ struct ModelLimits {
     std::size_t maxBytes = 16u << 20;      // .hmf text (--max-model-bytes)
     std::size_t maxComponents = 20000;     // components and subsystems (--max-model-components)
     std::size_t maxDepth = 16;             // subsystem nesting (--max-model-depth)
+    std::size_t maxFmus = 64;              // imported FMUs, FMIWrapper components (--max-model-fmus)
 };
 
 // Loads `hmf` within `limits`; on refusal root is null and firstError() says why.
