@@ -65,8 +65,11 @@ std::optional<std::string> ensureAdmin(Accounts& users, const char* envPassword)
     const bool chosen = envPassword != nullptr && envPassword[0] != '\0';
     const std::string password = chosen ? std::string(envPassword) : randomPassword(16);
     std::string error;
-    if (!users.create(kAdminUsername, password, kRoleAdmin, error))
+    if (!users.create(kAdminUsername, password, kRoleAdmin, error)) {
+        // Another node starting on the same database at the same moment created it first.
+        if (users.findByName(kAdminUsername)) return std::nullopt;
         throw std::runtime_error("cannot create the admin user: " + error);
+    }
     if (chosen) return std::nullopt;
     return password;
 }
@@ -95,10 +98,10 @@ int seedExamples(ModelStore& models, MetaStore& meta, Accounts& users,
                 log += "examples: skipped " + file.string() + ": " + loaded.firstError() + "\n";
                 continue;
             }
-            // Model first, marker second: a crash in between seeds the file again rather
-            // than losing it.
+            // Marker first: of the API nodes starting together on one database, the one that
+            // adds it seeds the file (a crash right after would leave that example out).
+            if (!meta.insertIfAbsent(marker, std::to_string(unixNow()))) continue;
             models.create(admin->id, file.stem().string(), text, true);
-            meta.set(marker, std::to_string(unixNow()));
             log += "examples: added " + file.stem().string() + "\n";
             ++added;
         }

@@ -7,6 +7,8 @@ namespace {
 constexpr PgStatement kGet{"meta_get", "SELECT value FROM meta WHERE key = $1"};
 constexpr PgStatement kSet{"meta_set", "INSERT INTO meta(key, value) VALUES($1, $2)"
                                        " ON CONFLICT (key) DO UPDATE SET value = EXCLUDED.value"};
+constexpr PgStatement kInsertIfAbsent{"meta_insert_if_absent", "INSERT INTO meta(key, value) VALUES($1, $2)"
+                                                               " ON CONFLICT (key) DO NOTHING"};
 
 } // namespace
 
@@ -25,6 +27,14 @@ void PostgresMetaStore::set(const std::string& key, const std::string& value)
     mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
         c.exec(tx, kSet, key, value);
+    });
+}
+
+bool PostgresMetaStore::insertIfAbsent(const std::string& key, const std::string& value)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kInsertIfAbsent, key, value).affected_rows() == 1;
     });
 }
 

@@ -22,4 +22,14 @@ void SqliteMetaStore::set(const std::string& key, const std::string& value)
     });
 }
 
+bool SqliteMetaStore::insertIfAbsent(const std::string& key, const std::string& value)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto insert = c.prepared("INSERT OR IGNORE INTO meta(key, value) VALUES(?, ?)");
+        insert->bind(1, key);
+        insert->bind(2, value);
+        return insert->exec() == 1;
+    });
+}
+
 } // namespace tlmhub::server

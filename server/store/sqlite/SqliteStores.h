@@ -138,6 +138,7 @@ public:
     explicit SqliteMetaStore(SqliteDatabase& db) : mDb(db) {}
     std::optional<std::string> get(const std::string& key) override;
     void set(const std::string& key, const std::string& value) override;
+    bool insertIfAbsent(const std::string& key, const std::string& value) override;
 
 private:
     SqliteDatabase& mDb;

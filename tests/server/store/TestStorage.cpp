@@ -97,6 +97,18 @@ TEST_P(StorageConformance, MetaGetsNothingForAnUnsetKeyAndTheLastValueSet)
     EXPECT_FALSE(store().meta().get("Examples"));
 }
 
+// Nodes starting at once on one database seed each example once: the one that adds its
+// marker seeds it (issue 37 R1).
+TEST_P(StorageConformance, MetaInsertIfAbsentAddsAKeyOnceAndKeepsTheFirstValue)
+{
+    EXPECT_TRUE(store().meta().insertIfAbsent("seeded:a.hmf", "1"));
+    EXPECT_FALSE(store().meta().insertIfAbsent("seeded:a.hmf", "2"));
+    EXPECT_EQ(store().meta().get("seeded:a.hmf"), "1");
+    store().meta().set("seeded:b.hmf", "3");
+    EXPECT_FALSE(store().meta().insertIfAbsent("seeded:b.hmf", "4"));
+    EXPECT_TRUE(store().meta().insertIfAbsent("seeded:c.hmf", ""));
+}
+
 TEST_P(StorageConformance, TextThatIsNotAsciiComesBackByteForByte)
 {
     const std::string text = "Prüfstand 水圧 🚀";
