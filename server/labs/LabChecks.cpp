@@ -289,6 +289,23 @@ nlohmann::json outcomesJson(const std::vector<CheckOutcome>& outcomes)
     return list;
 }
 
+nlohmann::json outcomesForStudent(const nlohmann::json& outcomes)
+{
+    if (!outcomes.is_array()) return Json::array();
+    Json list = Json::array();
+    for (const Json& o : outcomes) {
+        if (o.value("pretest", false)) {
+            list.push_back(o);
+            continue;
+        }
+        Json shown = Json::object();
+        for (const char* key : {"name", "pretest", "passed", "points", "awarded"})
+            if (o.contains(key)) shown[key] = o[key];
+        list.push_back(std::move(shown));
+    }
+    return list;
+}
+
 double settlingTime(std::span<const double> time, std::span<const double> values, double band)
 {
     const std::size_t n = std::min(time.size(), values.size());

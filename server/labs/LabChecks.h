@@ -48,6 +48,10 @@ struct CheckOutcome {
 std::vector<CheckOutcome> evaluateChecks(const std::vector<AssignmentCheck>& checks, const ResultTable& run,
                                          const ResultTable* reference, bool pretestsOnly);
 nlohmann::json outcomesJson(const std::vector<CheckOutcome>& outcomes);
+// Outcomes (outcomesJson's form) as a student may see them: of a check hidden from students
+// (not a pretest) only its name, pass or fail and points. Its bounds, deviation, worst time
+// and message would give the reference away.
+nlohmann::json outcomesForStudent(const nlohmann::json& outcomes);
 
 // Step-response measures of a logged variable (times increasing). Settling time: the first
 // time after which the variable stays within ±band·|final - initial| of its final value (0 when
