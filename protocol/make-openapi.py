@@ -72,8 +72,12 @@ def errors(*statuses):
              "401": "unauthorized (missing, unknown or expired token)",
              "403": "forbidden (role may not do this) or account_disabled (login of a disabled account)",
              "404": "not_found (also for objects of others the caller may not read)",
-             "422": "the model has no FMU interface: the core's code (invalid_parameter, invalid_model, ...)",
-             "409": "conflict", "413": "payload_too_large", "429": "rate_limited or limit_exceeded",
+             "422": "limit_exceeded: the request can never succeed as sent (steps, log samples, runs, a full "
+                    "quota, ...; the message names the limit and its flag), or for an FMU the core's code "
+                    "(invalid_parameter, invalid_model, ...)",
+             "409": "conflict", "413": "payload_too_large",
+             "429": "rate_limited: try again after Retry-After (failed logins, wrong join codes, jobs queued "
+                    "or studies running per user)",
              "503": "busy (too many logins or password changes wait for a hashing thread; Retry-After: 1) or "
                     "unavailable (the server lacks what the call needs, e.g. the FMU runtime library)",
              "507": "storage_full (the server's disk is full: deleting still works)"}
@@ -115,7 +119,8 @@ paths = {
                                body=json_body("LoginRequest"), public=True, tag="auth")},
     "/auth/logout": {"post": op("Revoke the token used", {"204": {"description": "Logged out"},
                                                           **errors("401")}, tag="auth")},
-    "/auth/me": {"get": op("The logged-in user", {**ok("The user", "User"), **errors("401")}, tag="auth")},
+    "/auth/me": {"get": op("The logged-in user, with their stored bytes and quota",
+                           {**ok("The user", "CurrentUser"), **errors("401")}, tag="auth")},
     "/auth/password": {"post": op("Change the own password (new one at least 8 characters)",
                                   {"204": {"description": "Changed"}, **errors("400", "401", "503")},
                                   body=json_body("PasswordChange"), tag="auth")},
@@ -131,16 +136,18 @@ paths = {
                     {**ok("Updated", "User"), **errors("400", "401", "403", "404", "409")},
                     body=json_body("UserUpdate"), params=[ID], tag="users")},
     "/auth/download-link": {"post": op(
-        "A short-lived signed link for one GET target of the caller's (e.g. results as CSV), for "
-        "downloads a browser starts itself; the only REST use of the query string for authentication",
-        {**ok("The link", "DownloadLink"), **errors("400", "401")}, body=json_body("DownloadLinkRequest"),
+        "A short-lived signed link for one GET download target of the caller's (results, a model's file, "
+        "an FMU, a gradebook, a hand-in's model), for downloads a browser starts itself; it ends with the "
+        "login it was made in; the only REST use of the query string for authentication; "
+        "403 for an API token (send the header instead)",
+        {**ok("The link", "DownloadLink"), **errors("400", "401", "403")}, body=json_body("DownloadLinkRequest"),
         tag="auth")},
     "/tokens": {
         "get": op("The caller's API tokens, newest first (never their text)",
                   {**ok("Tokens", "TokenList"), **errors("401")}, tag="auth"),
         "post": op("Create a personal API token for scripts (Authorization: Bearer tlmh_...; never in a URL); "
                    "the response is the only time its text is shown; at most 50 per user",
-                   {**ok("Created", "TokenCreated", "201"), **errors("400", "401", "429")},
+                   {**ok("Created", "TokenCreated", "201"), **errors("400", "401", "422")},
                    body=json_body("TokenCreate"), tag="auth")},
     "/tokens/{id}": {
         "delete": op("Revoke one of the caller's API tokens at once (its open WebSockets end)",
@@ -188,7 +195,7 @@ paths = {
         "get": op("The caller's jobs", {**ok("Jobs", {"type": "array", "items": ref("JobInfo")}), **errors("401")},
                   tag="jobs"),
         "post": op("Queue a simulation of a stored model or of .hmf text",
-                   {**ok("Queued", "JobCreated", "201"), **errors("400", "401", "404", "413", "429")},
+                   {**ok("Queued", "JobCreated", "201"), **errors("400", "401", "403", "404", "413", "422", "429")},
                    body=json_body("JobRequest"), tag="jobs")},
     "/jobs/{id}": {
         "get": op("A job", {**ok("The job", "JobInfo"), **errors("401", "404")}, params=[ID], tag="jobs"),
@@ -196,7 +203,7 @@ paths = {
                      {**ok("The job", "JobInfo"), "204": {"description": "Deleted"}, **errors("401", "403", "404")},
                      params=[ID], tag="jobs")},
     "/jobs/{id}/rerun": {"post": op("A new job with the same input", {**ok("Queued", "JobCreated", "201"),
-                                                                      **errors("401", "404", "429")},
+                                                                      **errors("401", "404", "422", "429")},
                                     params=[ID], tag="jobs")},
     "/jobs/{id}/results": {"get": op(
         "Logged results: CSV as tlmhub-cli run --csv (header time,<Comp#Port#Var>..., %.17g) or JSON",
@@ -212,7 +219,7 @@ paths = {
     "/studies": {
         "get": op("The caller's studies, newest first", {**ok("Studies", "StudyList"), **errors("401")}, tag="studies"),
         "post": op("Queue a study: a sweep, a sensitivity analysis or an optimisation of one model (docs/studies.md)",
-                   {**ok("Queued", "StudyCreated", "201"), **errors("400", "401", "404", "413", "429")},
+                   {**ok("Queued", "StudyCreated", "201"), **errors("400", "401", "403", "404", "413", "422", "429")},
                    body=json_body("StudyCreate"), tag="studies")},
     "/studies/{id}": {
         "get": op("A study", {**ok("The study", "StudyInfo"), **errors("401", "404")}, params=[ID], tag="studies"),
@@ -311,11 +318,11 @@ paths = {
         params=[ID], tag="labs")},
     "/assignments/{id}/pretest": {"post": op(
         "Run the student's copy on the server and judge it by the pretests",
-        {**ok("{checks, score, max_score}", ANY), **errors("400", "401", "403", "404", "409", "429")},
+        {**ok("{checks, score, max_score}", ANY), **errors("400", "401", "403", "404", "409", "422")},
         params=[ID], tag="labs")},
     "/assignments/{id}/handin": {"post": op(
         "Hand in the copy: frozen, run and judged by every check; again before the deadline, once late after it",
-        {**ok("The hand-in", ANY, "201"), **errors("400", "401", "403", "404", "409", "429")},
+        {**ok("The hand-in", ANY, "201"), **errors("400", "401", "403", "404", "409", "422")},
         params=[ID], tag="labs")},
     "/assignments/{id}/handins": {"get": op(
         "Hand-ins, newest first (a student: their own; staff: all, or ?student=ID)",

@@ -2,6 +2,7 @@
 // directory, seeds the examples, then serves HTTP and WebSocket until SIGTERM or SIGINT.
 // With --backup or --restore it does only that to the database and exits.
 #include "server/app/ServerOptions.h"
+#include "server/app/ShutdownSignals.h"
 #include "server/app/TlmhubApp.h"
 #include "server/http/Listener.h"
 #include "server/protocol/SchemaValidator.h"
@@ -10,10 +11,12 @@
 #include "core/ComponentLibrary.h"
 #include "core/FileAccess.h"
 #include "fmu/FmuLoadPolicy.h"
+#include "fmu/FmuPackage.h"
 
+#include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
-#include <boost/asio/signal_set.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -23,6 +26,9 @@ namespace net = boost::asio;
 namespace fs = std::filesystem;
 
 namespace {
+
+// How long the orderly stop may take after SIGTERM or SIGINT (the bound is 5 s).
+constexpr std::chrono::milliseconds kShutdownGrace{4000};
 
 // --backup FILE or --restore FILE (docs/storage.md); returns the exit status.
 int backupOrRestore(const ServerOptions& options)
@@ -77,6 +83,7 @@ int main(int argc, char** argv)
         return 0;
     }
     if (!options.backupFile.empty() || !options.restoreFile.empty()) return backupOrRestore(options);
+    ShutdownSignals shutdownSignals(kShutdownGrace);
     // Models come from users: they must not read or write the host's files.
     tlmhub::setModelFileAccess(false);
     // Component libraries run code with the server's rights: only this start-up flag,
@@ -97,6 +104,7 @@ int main(int argc, char** argv)
             return 1;
         }
         tlmhub::fmu::setFmuLoadPolicy(*policy);
+        tlmhub::fmu::FmuPackage::setCacheBytes(options.fmuCacheBytes);
         std::cout << "FMUs load from " << policy->directory.string() << "\n";
     }
     setPasswordCost(options.passwordCost);
@@ -123,8 +131,10 @@ int main(int argc, char** argv)
         listener->run();
         app.startJobs();
 
-        net::signal_set signals(ioc, SIGINT, SIGTERM);
-        signals.async_wait([&](const boost::system::error_code&, int) {
+        // The I/O threads return from run() only at ioc.stop(), the last step of the orderly
+        // stop: not as soon as the listener is closed while the stop is still under way.
+        const auto keepRunning = net::make_work_guard(ioc);
+        shutdownSignals.onSignal([&] {
             listener->stop();
             app.shutdown();   // running jobs stop (interrupted, or back in the queue) before we exit
             ioc.stop();
@@ -138,6 +148,7 @@ int main(int argc, char** argv)
         for (unsigned i = 1; i < options.ioThreads; ++i) threads.emplace_back([&ioc] { ioc.run(); });
         ioc.run();
         for (auto& t : threads) t.join();
+        shutdownSignals.onSignal(nullptr);   // what it stops is about to go
         std::cout << "tlmhub-server stopped" << std::endl;
     } catch (const std::exception& e) {
         std::cerr << "tlmhub-server: " << e.what() << "\n";

@@ -90,9 +90,20 @@ std::optional<std::int64_t> parseId(const std::string& text)
 
 http::status submitErrorStatus(const std::string& code)
 {
-    if (code == "limit_exceeded") return http::status::too_many_requests;
+    if (code == "limit_exceeded") return http::status::unprocessable_entity;
+    if (code == "rate_limited") return http::status::too_many_requests;
     if (code == "not_found") return http::status::not_found;
+    if (code == "locked") return http::status::forbidden;
     return http::status::bad_request;
+}
+
+Response refusal(const std::string& code, const std::string& message)
+{
+    const http::status status = submitErrorStatus(code);
+    Response r = apiError(status, code, message);
+    // A per-user count frees up as the user's work moves on: a few seconds is a fair first wait.
+    if (status == http::status::too_many_requests) r.set(http::field::retry_after, "5");
+    return r;
 }
 
 std::vector<std::string> commaSeparated(const std::string& text)

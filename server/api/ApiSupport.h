@@ -15,6 +15,7 @@
 #include "server/store/ModelStore.h"
 #include "server/store/StoreError.h"
 
+#include <chrono>
 #include <nlohmann/json.hpp>
 
 #include <functional>
@@ -56,6 +57,7 @@ struct Call {
     RouteParams params;
     std::optional<User> user;   // set on every route that needs authentication
     std::string token;          // the bearer token it was authenticated with (login or API)
+    std::chrono::system_clock::time_point receivedAt{};   // the request read whole
     const User& who() const { return *user; }
 };
 
@@ -65,7 +67,10 @@ using RouteHandler = std::function<Response(Services&, Call&)>;
 // health probe must answer while everything else is busy). Storage: on the request pool.
 // PasswordHash: on the bounded hashing pool (an argon2id hash or check per call). Checks: on
 // the pool that runs a lab's models (a pretest, a hand-in, a teacher's reference run).
-enum class RouteWork { Storage, Instant, PasswordHash, Checks };
+// LargeReply: a reply that may take megabytes and a second to build (a model's JSON, a run's
+// results, an FMU): authenticated on the request pool, then built on a pool of its own, at
+// most two at a time per user (more answer 503 busy with Retry-After).
+enum class RouteWork { Storage, Instant, PasswordHash, Checks, LargeReply };
 
 struct RouteSpec {
     http::verb method;
@@ -82,8 +87,12 @@ Response apiError(http::status status, const std::string& code, const std::strin
 // The protocol's error code for a failure of the database: storage_full (disk full), busy
 // (unreachable or contended: try again), internal (the rest).
 const char* storeErrorCode(const StoreError& e);
-// The HTTP status of a refused job or study: 429 limit_exceeded, 404 not_found, else 400.
+// The HTTP status of a refused job, study or check run (SECURITY.md, "Status codes"): 422
+// limit_exceeded (can never succeed as sent), 429 rate_limited (try later), 404 not_found,
+// 403 locked, else 400.
 http::status submitErrorStatus(const std::string& code);
+// apiError with submitErrorStatus, and Retry-After on a 429.
+Response refusal(const std::string& code, const std::string& message);
 // 507 storage_full, 503 busy (with Retry-After) or 500 internal.
 Response storeErrorResponse(const StoreError& e);
 

@@ -245,9 +245,10 @@ Response handIn(Services& s, Call& call)
     const auto view = studentAssignment(s, call, "hand in", error);
     if (!view) return error;
     LabError failure;
-    const auto stored = s.labs.handIn(view->assignment, call.who(), failure);
+    const auto receivedAt = std::chrono::duration_cast<std::chrono::seconds>(call.receivedAt.time_since_epoch()).count();
+    const auto stored = s.labs.handIn(view->assignment, call.who(), receivedAt, failure);
     if (!stored) return labErrorResponse(failure);
-    return jsonResponse(http::status::created, LabService::handInJson(*stored));
+    return jsonResponse(http::status::created, LabService::handInJson(*stored, view->classView.isStaff()));
 }
 
 Response listHandIns(Services& s, Call& call)
@@ -262,7 +263,8 @@ Response listHandIns(Services& s, Call& call)
         if (!student) return apiError(http::status::bad_request, "bad_request", "student must be a user id");
     }
     nlohmann::json list = nlohmann::json::array();
-    for (const HandIn& h : s.labs.store().handIns(view->assignment.id, student)) list.push_back(LabService::handInJson(h));
+    for (const HandIn& h : s.labs.store().handIns(view->assignment.id, student))
+        list.push_back(LabService::handInJson(h, view->classView.isStaff()));
     return jsonResponse(http::status::ok, {{"handins", list}});
 }
 

@@ -1,5 +1,8 @@
 // POST /auth/login, POST /auth/logout, GET /auth/me, POST /auth/password
 #include "server/api/ApiSupport.h"
+#include "server/app/ServerOptions.h"
+#include "server/jobs/JobQueue.h"
+#include "server/store/ResultStore.h"
 
 namespace tlmhub::server {
 
@@ -11,17 +14,24 @@ Response login(Services& s, Call& call)
     Response error;
     if (!readBody(call, "LoginRequest", body, error)) return error;
     const std::string& username = body.username;
-    // Failures are counted per user name and per address, so guessing one account's
-    // password and spraying one password over many accounts are both slowed down.
-    const std::string userKey = "user:" + username;
-    const std::string addressKey = "addr:" + call.clientAddress;
-    if (!s.loginLimiter.allowed(userKey) || !s.addressLimiter.allowed(addressKey))
-        return apiError(http::status::too_many_requests, "rate_limited",
-                        "too many failed logins; try again later");
+    // Failures are counted per user name at an address, and per address. Guessing one account's
+    // password from one place is slowed down without locking its owner out from another; a
+    // NAT's or a proxy's many users share the address limit, which only failures reach, and a
+    // correct password for an account not itself limited still logs in past it.
+    const std::string userKey = username + '\n' + call.clientAddress;
+    const std::string& addressKey = call.clientAddress;
+    const auto limited = [](LoginRateLimiter& limiter, const std::string& key) {
+        Response r = apiError(http::status::too_many_requests, "rate_limited", "too many failed logins; try again later");
+        r.set(http::field::retry_after, std::to_string(limiter.retryAfter(key).count()));
+        return r;
+    };
+    if (!s.loginLimiter.allowed(userKey)) return limited(s.loginLimiter, userKey);
+    const bool addressLimited = !s.addressLimiter.allowed(addressKey);
     const auto user = s.users.authenticate(username, body.password);
     if (!user) {
         s.loginLimiter.recordFailure(userKey);
         s.addressLimiter.recordFailure(addressKey);
+        if (addressLimited) return limited(s.addressLimiter, addressKey);
         return apiError(http::status::unauthorized, "unauthorized", "wrong user name or password");
     }
     s.loginLimiter.recordSuccess(userKey);
@@ -40,9 +50,14 @@ Response logout(Services& s, Call& call)
     return noContent();
 }
 
-Response me(Services&, Call& call)
+Response me(Services& s, Call& call)
 {
-    return jsonResponse(http::status::ok, publicUser(call.who()));
+    const protocol::User user = publicUser(call.who());
+    return jsonResponse(http::status::ok,
+                        protocol::CurrentUser{
+                            .id = user.id, .username = user.username, .role = user.role, .disabled = user.disabled,
+                            .storedBytes = static_cast<std::int64_t>(s.queue.results().storedBytes(user.id)),
+                            .quotaBytes = static_cast<std::int64_t>(s.options.limits.maxStoredBytesPerUser)});
 }
 
 Response changePassword(Services& s, Call& call)
@@ -67,7 +82,13 @@ Response downloadLink(Services& s, Call& call)
     const std::string& target = body.target;
     if (target.find(std::string(DownloadLinks::kParameter) + "=") != std::string::npos)
         return apiError(http::status::bad_request, "bad_request", "the target already holds a download link");
-    const auto link = s.downloadLinks.sign(target, call.who().id);
+    if (const std::string problem = DownloadLinks::targetProblem(target); !problem.empty())
+        return apiError(http::status::bad_request, "bad_request", problem);
+    // A link ends with the login it was made in; a script's API token sends its header instead.
+    if (ApiTokens::isApiToken(call.token))
+        return apiError(http::status::forbidden, "forbidden",
+                        "download links are for browser logins; with an API token, send the Authorization header");
+    const auto link = s.downloadLinks.sign(target, call.who().id, TokenService::sessionKey(call.token));
     return jsonResponse(http::status::ok, protocol::DownloadLink{.url = link.url, .expiresAt = link.expiresAt});
 }
 

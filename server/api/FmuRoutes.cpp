@@ -125,7 +125,8 @@ void addFmuRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::get, "/models/{id}/fmu/interface", true, getFmuInterface});
     // Zipping the model with the runtime library takes a moment of CPU per download: on the
     // checks pool, like the lab's model runs, so the request pool stays free.
-    routes.push_back({http::verb::get, "/models/{id}/fmu", true, getFmu, RouteWork::Checks});
+    // Not on the lab's check pool: an export must not hold up students' pretests.
+    routes.push_back({http::verb::get, "/models/{id}/fmu", true, getFmu, RouteWork::LargeReply});
 }
 
 } // namespace tlmhub::server

@@ -40,7 +40,7 @@ Response getHandIn(Services& s, Call& call)
 {
     const auto view = visibleHandIn(s, call);
     if (!view) return labNotFound("hand-in");
-    return jsonResponse(http::status::ok, LabService::handInJson(view->handIn));
+    return jsonResponse(http::status::ok, LabService::handInJson(view->handIn, view->assignment.classView.isStaff()));
 }
 
 Response handInModel(Services& s, Call& call)
@@ -91,7 +91,7 @@ Response setGrade(Services& s, Call& call)
     if (!readJsonBody(call, "GradeUpdate", body, error)) return error;
     const std::optional<double> grade = body["grade"].is_null() ? std::nullopt : std::optional(body["grade"].get<double>());
     s.labs.store().setGrade(view->handIn.id, grade, call.who().id);
-    return jsonResponse(http::status::ok, LabService::handInJson(*s.labs.store().handIn(view->handIn.id)));
+    return jsonResponse(http::status::ok, LabService::handInJson(*s.labs.store().handIn(view->handIn.id), true));
 }
 
 } // namespace

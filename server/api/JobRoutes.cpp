@@ -46,17 +46,19 @@ Response submitJob(Services& s, Call& call)
     // A student's copy runs with the overrides its assignment lets them change.
     if (request.modelId) {
         const CopyAccess access = copyAccess(s.labs.store(), call.who(), *request.modelId);
-        if (access.lock)
+        if (access.lock) {
             for (const auto& [name, value] : request.parameters)
                 if (const std::string problem = access.lock->valueProblem(name, value); !problem.empty())
                     return apiError(http::status::forbidden, "locked", problem);
+            request.settingsFixed = true;
+        }
     }
     if (body.start) request.settings.start = *body.start;
     if (body.step) request.settings.step = *body.step;
     if (body.stop) request.settings.stop = *body.stop;
     if (body.logSamples) request.settings.logSamples = static_cast<std::size_t>(*body.logSamples);
     const auto submitted = s.queue.submit(request);
-    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return refusal(submitted.code, submitted.message);
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
@@ -98,7 +100,7 @@ Response rerunJob(Services& s, Call& call)
     const auto request = s.queue.store().request(job->id);
     if (!request) return apiError(http::status::not_found, "not_found", "the job's input is gone");
     const auto submitted = s.queue.submit(*request);
-    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return refusal(submitted.code, submitted.message);
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
@@ -135,7 +137,7 @@ void addJobRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::get, "/jobs/{id}", true, getJob});
     routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelOrDeleteJob});
     routes.push_back({http::verb::post, "/jobs/{id}/rerun", true, rerunJob});
-    routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults});
+    routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults, RouteWork::LargeReply});
 }
 
 } // namespace tlmhub::server

@@ -32,11 +32,10 @@ Response labArchived()
 
 Response labErrorResponse(const LabError& error)
 {
-    http::status status = submitErrorStatus(error.code);   // 404, 429 limit_exceeded, else 400
-    if (error.code == "forbidden" || error.code == "locked") status = http::status::forbidden;
-    else if (error.code == "conflict" || error.code == "archived" || error.code == "deadline_passed")
-        status = http::status::conflict;
-    return apiError(status, error.code, error.message);
+    if (error.code == "forbidden") return apiError(http::status::forbidden, error.code, error.message);
+    if (error.code == "conflict" || error.code == "archived" || error.code == "deadline_passed")
+        return apiError(http::status::conflict, error.code, error.message);
+    return refusal(error.code, error.message);
 }
 
 nlohmann::json checksJson(const std::vector<AssignmentCheck>& checks, bool everything)

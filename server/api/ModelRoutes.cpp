@@ -169,7 +169,7 @@ void addModelRoutes(std::vector<RouteSpec>& routes)
 {
     routes.push_back({http::verb::get, "/models", true, listModels});
     routes.push_back({http::verb::post, "/models", true, createModel});
-    routes.push_back({http::verb::get, "/models/{id}", true, getModel});
+    routes.push_back({http::verb::get, "/models/{id}", true, getModel, RouteWork::LargeReply});
     routes.push_back({http::verb::put, "/models/{id}", true, updateModel});
     routes.push_back({http::verb::delete_, "/models/{id}", true, deleteModel});
 }

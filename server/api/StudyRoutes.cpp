@@ -56,7 +56,7 @@ Response submitStudy(Services& s, Call& call)
         hmf = body["hmf"].get<std::string>();
     }
     const auto submitted = s.studies.submit(call.who().id, body, hmf);
-    if (!submitted.id) return apiError(submitErrorStatus(submitted.code), submitted.code, submitted.message);
+    if (!submitted.id) return refusal(submitted.code, submitted.message);
     return jsonResponse(http::status::created, {{"id", *submitted.id}, {"runs_total", submitted.runsTotal}});
 }
 
@@ -161,8 +161,8 @@ void addStudyRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::get, "/studies", true, listStudies});
     routes.push_back({http::verb::get, "/studies/{id}", true, getStudy});
     routes.push_back({http::verb::delete_, "/studies/{id}", true, cancelOrDeleteStudy});
-    routes.push_back({http::verb::get, "/studies/{id}/results", true, studyResults});
-    routes.push_back({http::verb::get, "/studies/{id}/runs/{index}/results", true, runResults});
+    routes.push_back({http::verb::get, "/studies/{id}/results", true, studyResults, RouteWork::LargeReply});
+    routes.push_back({http::verb::get, "/studies/{id}/runs/{index}/results", true, runResults, RouteWork::LargeReply});
     routes.push_back({http::verb::get, "/studies/{id}/bands", true, studyBands});
 }
 

@@ -17,8 +17,7 @@ Response create(Services& s, Call& call)
     if (!readBody(call, "TokenCreate", body, error)) return error;
     auto creation = s.apiTokens.create(call.who(), body.name, body.expiresInDays);
     if (!creation.created)
-        return apiError(creation.code == "limit_exceeded" ? http::status::too_many_requests : http::status::bad_request,
-                        creation.code, creation.message);
+        return refusal(creation.code, creation.message);
     const ApiTokenInfo& t = creation.created->info;
     return jsonResponse(http::status::created,
                         protocol::TokenCreated{.id = t.id, .name = t.name, .token = creation.created->token,

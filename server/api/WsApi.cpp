@@ -16,6 +16,7 @@
 #include "server/store/ModelName.h"
 
 #include "core/Model.h"
+#include "core/Parameter.h"
 
 namespace tlmhub::server {
 
@@ -48,11 +49,33 @@ nlohmann::json echoableId(const nlohmann::json& msg)
     return *id;
 }
 
-// Requests that read or write storage (models, jobs), and parse or write whole models.
-bool touchesStorage(const std::string& type)
+// Requests answered on the connection's strand: they touch neither the model nor storage.
+// Everything else (parsing, evaluating, copying or writing a model, reading storage) runs on
+// the request pool: an I/O thread serves every connection and must not wait for one model.
+bool answeredOnConnection(const std::string& type)
 {
-    return type == "model.open" || type == "model.create" || type == "model.save" || type == "simulate.stop" ||
-           type == "log.subscribe" || type == "study.subscribe";
+    return type == "ping" || type == "study.unsubscribe";
+}
+
+// On a locked copy a system parameter keeps the template's type, unit and description, and no
+// new one appears: only values change.
+std::string sysparamMetadataProblem(const Model& model, const nlohmann::json& msg)
+{
+    const System* system = &model.root();
+    for (const std::string& name : msg.value("system", std::vector<std::string>{})) {
+        system = system->subsystem(name);
+        if (!system) return "";   // the edit itself reports the missing subsystem
+    }
+    const std::string name = msg.at("name").get<std::string>();
+    const Parameter* own = system->parameters().find(name);
+    if (!own) return "an assignment's copy cannot add system parameters (" + name + ")";
+    const auto differs = [&msg](const char* key, const std::string& kept) {
+        return msg.contains(key) && msg[key].get<std::string>() != kept;
+    };
+    if (differs("param_type", parameterTypeName(own->type)) || differs("unit", own->unit) ||
+        differs("description", own->description))
+        return "an assignment's copy changes only the value of " + name + ", not its type, unit or description";
+    return "";
 }
 
 FrameEncoding frameEncoding(const std::optional<std::string>& frames)
@@ -110,16 +133,19 @@ void WsApi::handle(const std::string& text)
     if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
     const std::string type = msg["type"].get<std::string>();
     if (mNode && type != "log.subscribe") return sendError(id, "forbidden", "a node may only send log.subscribe");
-    if (touchesStorage(type)) {
+    if (!answeredOnConnection(type)) {
         // On the request pool; this connection's later messages wait for its reply, so the
         // open model is only ever touched by one thread and replies keep their order.
         mBusy = true;
         mServices.pools.runRequest([self = shared_from_this(), type, msg = parsed.value, id] {
             const Reply reply = self->dispatchSafely(type, msg);
+            // simulate.start answers later, once its job is submitted (finishStart).
+            const bool deferred = std::exchange(self->mReplyDeferred, false) && reply.ok;
             // A large model's reply is megabytes of JSON: it is written here too.
-            self->mSender->runOnConnection([self, ok = reply.ok, text = answerText(id, reply)]() mutable {
+            std::string text = deferred ? std::string() : answerText(id, reply);
+            self->mSender->runOnConnection([self, deferred, ok = reply.ok, text = std::move(text)]() mutable {
                 if (self->mClosed) return;
-                self->sendAnswer(ok, std::move(text));
+                if (!deferred) self->sendAnswer(ok, std::move(text));
                 self->mBusy = false;
                 while (!self->mBusy && !self->mWaiting.empty()) {
                     const std::string next = std::move(self->mWaiting.front());
@@ -130,8 +156,7 @@ void WsApi::handle(const std::string& text)
         });
         return;
     }
-    Reply reply = dispatchSafely(type, msg);
-    if (std::exchange(mReplyDeferred, false) && reply.ok) return;
+    const Reply reply = dispatchSafely(type, msg);
     sendAnswer(reply.ok, answerText(id, reply));
 }
 
@@ -196,8 +221,11 @@ std::string WsApi::copyEditProblem(const std::string& type, const nlohmann::json
         return access.lock->valueProblem(
             parameterPath(system, msg.at("component").get<std::string>(), msg.at("parameter").get<std::string>()),
             valueText());
-    if (type == "sysparam.set")
-        return access.lock->valueProblem(parameterPath(system, "", msg.at("name").get<std::string>()), valueText());
+    if (type == "sysparam.set") {
+        const std::string problem =
+            access.lock->valueProblem(parameterPath(system, "", msg.at("name").get<std::string>()), valueText());
+        return problem.empty() ? sysparamMetadataProblem(*mSession.openModel(), msg) : problem;
+    }
     return "this assignment lets you change only its listed parameters (" + type + " is not allowed)";
 }
 
@@ -302,6 +330,8 @@ WsApi::Reply WsApi::startSimulation(const protocol::SimulateStartRequest& start)
     if (start.step) request.settings.step = *start.step;
     if (start.stop) request.settings.stop = *start.stop;
     if (start.logSamples) request.settings.logSamples = static_cast<std::size_t>(*start.logSamples);
+    if (mModelIsCopy && mModelId && copyAccess(mServices.labs.store(), mUser, *mModelId).lock)
+        request.settingsFixed = true;
     // Saving the model's text (the store keeps it for reruns) and compiling take a while on
     // a large model: both happen on the request pool, and the reply comes back through the
     // connection's strand. Other messages are answered meanwhile.

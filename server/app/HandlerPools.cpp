@@ -5,8 +5,9 @@
 namespace tlmhub::server {
 
 HandlerPools::HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit,
-                           unsigned checkThreads)
-    : mRequests(requestThreads), mHashing(hashingThreads), mChecks(checkThreads), mHashingQueueLimit(hashingQueueLimit)
+                           unsigned largeReplyThreads)
+    : mRequests(requestThreads), mHashing(hashingThreads), mLargeReplies(largeReplyThreads),
+      mHashingQueueLimit(hashingQueueLimit)
 {
 }
 
@@ -33,19 +34,19 @@ bool HandlerPools::runHashing(std::function<void()> task)
     return true;
 }
 
-void HandlerPools::runChecks(std::function<void()> task)
+void HandlerPools::runLargeReply(std::function<void()> task)
 {
-    boost::asio::post(mChecks, std::move(task));
+    boost::asio::post(mLargeReplies, std::move(task));
 }
 
 void HandlerPools::stop()
 {
     mRequests.stop();
     mHashing.stop();
-    mChecks.stop();
+    mLargeReplies.stop();
     mRequests.join();
     mHashing.join();
-    mChecks.join();
+    mLargeReplies.join();
 }
 
 } // namespace tlmhub::server

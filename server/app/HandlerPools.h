@@ -5,8 +5,9 @@
 // (argon2id at its interactive limits takes tens of milliseconds of CPU per call).
 // The hashing pool is bounded: forty students logging in at once queue there, while other
 // requests and health probes go on.
-// A third pool runs lab checks (a pretest or hand-in simulates the student's model): a class
-// handing in at once queues there, while the request pool stays free for everything else.
+// A third pool builds large replies (a model's JSON, a run's results, an FMU), so they hold up
+// neither the request pool nor each other's users (TlmhubApp keeps two per user). Lab check
+// runs have a queue of their own where users take turns (FairTaskQueue).
 #include <boost/asio/thread_pool.hpp>
 
 #include <atomic>
@@ -18,7 +19,7 @@ namespace tlmhub::server {
 class HandlerPools {
 public:
     HandlerPools(unsigned requestThreads, unsigned hashingThreads, std::size_t hashingQueueLimit,
-                 unsigned checkThreads);
+                 unsigned largeReplyThreads);
     ~HandlerPools();
     HandlerPools(const HandlerPools&) = delete;
     HandlerPools& operator=(const HandlerPools&) = delete;
@@ -26,14 +27,14 @@ public:
     void runRequest(std::function<void()> task);
     // False (and `task` not run) when `hashingQueueLimit` hashing tasks are already waiting.
     bool runHashing(std::function<void()> task);
-    void runChecks(std::function<void()> task);
+    void runLargeReply(std::function<void()> task);
     // Waits for the tasks already started; later ones do not run.
     void stop();
 
 private:
     boost::asio::thread_pool mRequests;
     boost::asio::thread_pool mHashing;
-    boost::asio::thread_pool mChecks;
+    boost::asio::thread_pool mLargeReplies;
     const std::size_t mHashingQueueLimit;
     std::atomic<std::size_t> mHashingPending{0};
 };

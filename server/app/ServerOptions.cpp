@@ -1,5 +1,6 @@
 #include "server/app/ServerOptions.h"
 
+#include "server/http/TrustedProxies.h"
 #include "server/jobs/JobQueue.h"
 
 #include <unistd.h>
@@ -29,6 +30,10 @@ const std::string kHelp = std::string(
     "  --examples-dir DIR       seed *.hmf found here as examples on first sight (repeatable;\n"
     "                           default ./examples)\n"
     "  --workers N              simulation worker threads (default: number of cores)\n"
+    "  --trusted-proxy CIDR     a reverse proxy (address or range, repeatable) whose\n"
+    "                           X-Forwarded-For names the client for the failed-login limits\n"
+    "  --io-threads N           threads serving HTTP and WebSocket connections (default 4);\n"
+    "                           they only read, route and write: model work runs beside them\n"
     "  --component-lib PATH     load extra components from a shared library (repeatable)\n"
     "  --fmu-dir DIR            models may import FMUs (FMIWrapper) from this directory only\n"
     "                           (default: no FMUs)\n"
@@ -41,11 +46,18 @@ const std::string kHelp = std::string(
     "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
     "  --max-study-runs N       runs per study (default 10000)\n"
     "  --max-studies-per-user N studies queued or running per user (default 2)\n"
+    "  --check-threads N        lab check runs at once (default: number of cores)\n"
+    "  --max-running-checks-per-user N  a user's lab check runs (pretests, hand-ins,\n"
+    "                           reference runs) at once; users take turns (default 2)\n"
+    "  --max-queued-checks-per-user N   a user's check runs waiting (default 10)\n"
     "  --max-study-bytes N      run results one study keeps (default 536870912)\n") +
     "  --max-body-bytes N       request body limit (default " + std::to_string(protocol::kMaxBodyBytes) + ")\n" +
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
     "  --max-model-components N components and subsystems in a model (default 20000)\n"
     "  --max-model-depth N      subsystems nested in subsystems (default 16)\n"
+    "  --max-model-fmus N       imported FMUs (FMIWrapper components) in a model (default 64)\n"
+    "  --fmu-cache-bytes N      unpacked FMUs kept for the next load or compile while no model\n"
+    "                           holds them (default 268435456)\n"
     "  --max-parameter-evaluations N  parameter expressions evaluated to check or compile a\n"
     "                           model (default " + std::to_string(ParameterEvaluator::kDefaultBudget) + ")\n" +
     "  --max-ws-queue-messages N  messages waiting for a slow WebSocket client; past it a\n"
@@ -127,6 +139,17 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             o.fmuDir = value;
         } else if (flag == "--workers") {
             ok = parseNumber(value, o.workers);
+        } else if (flag == "--check-threads") {
+            ok = parseNumber(value, o.checkThreads) && o.checkThreads > 0;
+        } else if (flag == "--max-running-checks-per-user") {
+            ok = parseNumber(value, o.maxRunningChecksPerUser) && o.maxRunningChecksPerUser > 0;
+        } else if (flag == "--max-queued-checks-per-user") {
+            ok = parseNumber(value, o.maxQueuedChecksPerUser) && o.maxQueuedChecksPerUser > 0;
+        } else if (flag == "--trusted-proxy") {
+            ok = TrustedProxies().add(value);
+            o.trustedProxies.push_back(value);
+        } else if (flag == "--io-threads") {
+            ok = parseNumber(value, o.ioThreads) && o.ioThreads > 0;
         } else if (flag == "--token-ttl") {
             long long s = 0;
             ok = parseNumber(value, s);
@@ -165,6 +188,10 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.maxParameterEvaluations) && o.maxParameterEvaluations > 0;
         } else if (flag == "--max-model-depth") {
             ok = parseNumber(value, o.limits.model.maxDepth);
+        } else if (flag == "--max-model-fmus") {
+            ok = parseNumber(value, o.limits.model.maxFmus);
+        } else if (flag == "--fmu-cache-bytes") {
+            ok = parseNumber(value, o.fmuCacheBytes);
         } else if (flag == "--max-ws-queue-messages") {
             ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
         } else if (flag == "--node-secret-file") {

@@ -9,6 +9,7 @@
 #include "server/studies/StudyExecution.h"
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct ServerOptions {
     std::vector<std::string> exampleDirs;       // default: examples (if it exists)
     std::vector<std::string> componentLibs;     // shared libraries; administrator's flag only
     std::string fmuDir;                         // FMUs models may import; empty: none (fmu/FmuLoadPolicy.h)
+    std::uintmax_t fmuCacheBytes = 256ull << 20;   // unpacked FMUs kept unused (fmu/FmuPackage.h)
     unsigned workers = 0;                       // simulation threads; 0 = one per core
     unsigned ioThreads = 4;                     // HTTP/WebSocket threads
     std::chrono::seconds tokenTtl{12 * 3600};
@@ -42,8 +44,18 @@ struct ServerOptions {
     PasswordCost passwordCost = PasswordCost::Interactive;
     // Parameter expressions one evaluation pass may evaluate (core/ParameterEvaluator.h).
     std::size_t maxParameterEvaluations = ParameterEvaluator::kDefaultBudget;
+    // Failed logins: per user name at one address, and per address (SECURITY.md). A lab of 40
+    // behind one NAT mistyping a password each twice is 80 of the 500.
     int loginMaxFailures = 5;
     std::chrono::seconds loginWindow{60};
+    // Lab check runs (pretests, hand-ins, reference runs) per user: users take turns.
+    unsigned checkThreads = 0;   // check runs at once on this server; 0: one per core
+    std::size_t maxRunningChecksPerUser = 2;
+    std::size_t maxQueuedChecksPerUser = 10;
+    int addressMaxFailures = 500;
+    std::chrono::seconds addressWindow{600};
+    // --trusted-proxy: reverse proxies whose X-Forwarded-For names the client (CIDR ranges).
+    std::vector<std::string> trustedProxies;
     JobLimits limits;
     StudyLimits studyLimits;
     // Scale-out (docs/scale-out.md): what this node does, and how it takes part in the queue

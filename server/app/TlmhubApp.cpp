@@ -35,7 +35,9 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mTokens = std::make_unique<TokenService>(mStorage->sessions(), mStorage->users(), mOptions.tokenTtl);
     mApiTokens = std::make_unique<ApiTokens>(mStorage->apiTokens(), mStorage->users());
     mLoginLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures, mOptions.loginWindow);
-    mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.loginMaxFailures * 10, mOptions.loginWindow);
+    mAddressLimiter = std::make_unique<LoginRateLimiter>(mOptions.addressMaxFailures, mOptions.addressWindow);
+    for (const std::string& proxy : mOptions.trustedProxies)
+        if (!mTrustedProxies.add(proxy)) throw std::runtime_error("--trusted-proxy: not an address or range: " + proxy);
     // A job still running in the store whose node crashed comes back when its lease expires.
     mStreams = std::make_unique<StreamHub>();
     unsigned workers = mOptions.workers ? mOptions.workers : std::max(1u, std::thread::hardware_concurrency());
@@ -51,7 +53,9 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mDownloadLinks = std::make_unique<DownloadLinks>(kDownloadLinkTtl);
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     mPools = std::make_unique<HandlerPools>(std::max(2u, mOptions.ioThreads), std::max(1u, cores / 2),
-                                            kHashingQueueLimit, cores);
+                                            kHashingQueueLimit, std::max(2u, cores));
+    mCheckRuns = std::make_unique<FairTaskQueue>(mOptions.checkThreads ? mOptions.checkThreads : cores,
+                                                 mOptions.maxRunningChecksPerUser, mOptions.maxQueuedChecksPerUser);
     mLabs = std::make_unique<LabService>(mStorage->labs(), mStorage->models(), mStorage->jobs(), mStorage->results(),
                                          mOptions.limits);
     mJoinLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures, kJoinWindow);
@@ -71,6 +75,8 @@ TlmhubApp::~TlmhubApp()
 
 std::optional<std::string> TlmhubApp::bootstrap(std::string& log)
 {
+    // A worker serves no one: the first administrator and the examples are the API nodes'.
+    if (mOptions.role == "worker") return std::nullopt;
     const auto generated = ensureAdmin(*mUsers, std::getenv("TLMHUB_ADMIN_PASSWORD"));
     seedExamples(mStorage->models(), mStorage->meta(), *mUsers, mOptions.exampleDirs, log);
     for (const std::string& group : mUsers->namesDifferingOnlyInCase())
@@ -87,8 +93,11 @@ void TlmhubApp::startJobs()
 
 void TlmhubApp::shutdown()
 {
-    if (mPools) mPools->stop();
+    // Jobs first: they stop promptly and record why, while a request that runs on may outlast
+    // the grace after a signal (server/app/ShutdownSignals.h).
     if (mQueue) mQueue->shutdown();
+    if (mCheckRuns) mCheckRuns->stop();
+    if (mPools) mPools->stop();
 }
 
 std::optional<User> TlmhubApp::bearerUser(const std::string& token)
@@ -114,9 +123,10 @@ std::optional<User> TlmhubApp::authenticate(const Request& request, const RouteP
         return mTokens->validate(token);
     }
     if (request.method() == http::verb::get && params.query.count(DownloadLinks::kParameter)) {
-        const auto userId = mDownloadLinks->verify(std::string(request.target()));
-        auto user = userId ? mUsers->find(*userId) : std::nullopt;
-        if (user && !user->disabled) return user;
+        // Only while the login the link was made in lives (so not after its logout).
+        const auto signer = mDownloadLinks->verify(std::string(request.target()));
+        auto user = signer ? mTokens->validateSessionKey(signer->sessionKey) : std::nullopt;
+        if (user && user->id == signer->userId) return user;
     }
     return std::nullopt;
 }
@@ -146,9 +156,45 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
     case Router<Route>::Match::Found:
         break;
     }
-    auto run = [this, &request = in.request, address = in.clientAddress, params = std::move(params), route,
-                reply]() mutable {
-        Call call{request, address, std::move(params), std::nullopt, {}};
+    std::vector<std::string_view> forwardedFor;
+    if (!mTrustedProxies.empty())
+        for (auto [field, end] = in.request.equal_range("X-Forwarded-For"); field != end; ++field)
+            forwardedFor.push_back(field->value());
+    std::string address = mTrustedProxies.clientAddress(in.clientAddress, forwardedFor);
+    if (route->work == RouteWork::LargeReply) {
+        // At most mLargeReplySlots of one user's at a time, built on their own pool.
+        return replyScheduled(
+            *route, in, std::move(address), std::move(params), std::move(reply),
+            [this](std::int64_t userId, std::function<void()> build) {
+                PerUserSlots::Slot slot = mLargeReplySlots.tryTake(userId);
+                if (!slot) return false;
+                mPools->runLargeReply([build = std::move(build), slot = std::move(slot)]() mutable { build(); });
+                return true;
+            },
+            [this] {
+                Response busy = apiError(http::status::service_unavailable, "busy",
+                                         "at most " + std::to_string(mLargeReplySlots.perUser()) +
+                                             " large replies (a model, results, an FMU) are built at once per user; "
+                                             "try again when one has come");
+                busy.set(http::field::retry_after, "1");
+                return busy;
+            });
+    }
+    if (route->work == RouteWork::Checks) {
+        // Users take turns (mCheckRuns), each within their running and waiting caps.
+        return replyScheduled(
+            *route, in, std::move(address), std::move(params), std::move(reply),
+            [this](std::int64_t userId, std::function<void()> build) { return mCheckRuns->submit(userId, std::move(build)); },
+            [this] {
+                return refusal("rate_limited", "you have " + std::to_string(mOptions.maxQueuedChecksPerUser) +
+                                                   " check runs waiting; the limit is " +
+                                                   std::to_string(mOptions.maxQueuedChecksPerUser) +
+                                                   " (--max-queued-checks-per-user): try again when one has run");
+            });
+    }
+    auto run = [this, &request = in.request, receivedAt = in.receivedAt, address = std::move(address),
+                params = std::move(params), route, reply]() mutable {
+        Call call{request, address, std::move(params), std::nullopt, {}, receivedAt};
         reply(callRoute(*route, call));
     };
     switch (route->work) {
@@ -157,7 +203,8 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
     case RouteWork::Storage:
         return mPools->runRequest(std::move(run));
     case RouteWork::Checks:
-        return mPools->runChecks(std::move(run));
+    case RouteWork::LargeReply:
+        return;   // replyScheduled, above
     case RouteWork::PasswordHash:
         if (!mPools->runHashing(std::move(run))) {
             Response busy = apiError(http::status::service_unavailable, "busy",
@@ -169,21 +216,56 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
     }
 }
 
-Response TlmhubApp::callRoute(const Route& route, Call& call)
+void TlmhubApp::replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params,
+                               Reply reply, Schedule schedule, std::function<Response()> refusal)
+{
+    mPools->runRequest([this, &route, &request = in.request, receivedAt = in.receivedAt, address = std::move(address),
+                        params = std::move(params), reply = std::move(reply), schedule = std::move(schedule),
+                        refusal = std::move(refusal)]() mutable {
+        Call call{request, address, std::move(params), std::nullopt, {}, receivedAt};
+        Response refused;
+        if (!authenticateCall(route, call, refused)) return reply(std::move(refused));
+        const std::int64_t userId = call.user ? call.user->id : 0;
+        // The call refers to this task's address: the scheduled work makes its own.
+        auto build = [this, &route, &request, receivedAt, address, params = std::move(call.params),
+                      user = call.user, token = std::move(call.token), reply]() mutable {
+            Call scheduled{request, address, std::move(params), std::move(user), std::move(token), receivedAt};
+            reply(callHandler(route, scheduled));
+        };
+        if (!schedule(userId, std::move(build))) reply(refusal());
+    });
+}
+
+bool TlmhubApp::authenticateCall(const Route& route, Call& call, Response& refused)
+{
+    if (!route.needsAuth) return true;
+    try {
+        call.user = authenticate(call.request, call.params, call.token, false);
+    } catch (const StoreError& e) {
+        refused = storeErrorResponse(e);
+        return false;
+    }
+    if (call.user) return true;
+    refused = apiError(http::status::unauthorized, "unauthorized", "log in first: send 'Authorization: Bearer <token>'");
+    return false;
+}
+
+Response TlmhubApp::callHandler(const Route& route, Call& call)
 {
     try {
-        if (route.needsAuth) {
-            call.user = authenticate(call.request, call.params, call.token, false);
-            if (!call.user)
-                return apiError(http::status::unauthorized, "unauthorized",
-                                "log in first: send 'Authorization: Bearer <token>'");
-        }
         return route.handler(*mServices, call);
     } catch (const StoreError& e) {
         return storeErrorResponse(e);
     } catch (const std::exception& e) {
         return apiError(http::status::internal_server_error, "internal", e.what());
     }
+}
+
+Response TlmhubApp::callRoute(const Route& route, Call& call)
+{
+    Response refused;
+    if (!authenticateCall(route, call, refused)) return refused;
+    return callHandler(route, call);
 }
 
 std::shared_ptr<WebSocketHandler> TlmhubApp::acceptWebSocket(const Incoming& in,

@@ -2,12 +2,15 @@
 // The composition root of a running server: opens the storage, builds the services, the job
 // queue and the routes, and answers the transport's requests.
 #include "server/api/ApiSupport.h"
+#include "server/app/FairTaskQueue.h"
 #include "server/app/HandlerPools.h"
+#include "server/app/PerUserSlots.h"
 #include "server/app/ServerOptions.h"
 #include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
 #include "server/http/HttpApplication.h"
 #include "server/http/StaticFiles.h"
+#include "server/http/TrustedProxies.h"
 #include "server/jobs/ResultExpiry.h"
 #include "server/store/Storage.h"
 #include "server/labs/LabService.h"
@@ -47,6 +50,15 @@ private:
     };
     // Authenticates where the route needs it, then runs it; errors become error responses.
     Response callRoute(const Route& route, Call& call);
+    // The two halves of callRoute: false with the refusal when the call is not authenticated.
+    bool authenticateCall(const Route& route, Call& call, Response& refused);
+    Response callHandler(const Route& route, Call& call);
+    // RouteWork::LargeReply and Checks: authenticated on the request pool, then `schedule`
+    // takes the building of the reply for the caller (runs it later), or refuses it (false):
+    // then the reply is `refusal`'s.
+    using Schedule = std::function<bool(std::int64_t userId, std::function<void()> build)>;
+    void replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params, Reply reply,
+                        Schedule schedule, std::function<Response()> refusal);
     // Bearer header (a login token or an API token); or, where `queryToken` allows (the
     // WebSocket upgrade), ?token= (a login token only); or, on GET, a signed download link.
     std::optional<User> authenticate(const Request& request, const RouteParams& params,
@@ -62,6 +74,8 @@ private:
     std::unique_ptr<ApiTokens> mApiTokens;
     std::unique_ptr<LoginRateLimiter> mLoginLimiter;
     std::unique_ptr<LoginRateLimiter> mAddressLimiter;
+    TrustedProxies mTrustedProxies;
+    PerUserSlots mLargeReplySlots{2};
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
     std::unique_ptr<JobStreams> mJobStreams;   // after the queue: its relays end first
@@ -77,6 +91,7 @@ private:
     Router<Route> mRouter;
     StaticFiles mStaticFiles;
     // Last: destroyed first, so no handler runs on a store that is gone.
+    std::unique_ptr<FairTaskQueue> mCheckRuns;   // lab check runs, users taking turns
     std::unique_ptr<HandlerPools> mPools;
 };
 

@@ -68,7 +68,7 @@ ApiTokens::Creation ApiTokens::create(const User& owner, const std::string& name
     // not a quota that must hold to the unit.
     if (mStore.count(owner.id) >= kMaxPerUser)
         return {std::nullopt, "limit_exceeded",
-                "at most " + std::to_string(kMaxPerUser) + " API tokens per user; delete one first"};
+                "at most " + std::to_string(kMaxPerUser) + " API tokens per user (a fixed limit); delete one first"};
     Created created{newToken(), {}};
     created.info.userId = owner.id;
     created.info.name = name;

@@ -6,6 +6,7 @@
 #include <sodium.h>
 
 #include <charconv>
+#include <regex>
 
 namespace tlmhub::server {
 
@@ -19,6 +20,13 @@ std::optional<std::int64_t> parseInt(const std::string& text)
     return value;
 }
 
+// A session key is a BLAKE2b hash in hex (TokenService).
+bool isSessionKey(const std::string& text)
+{
+    return text.size() == crypto_generichash_BYTES * 2 &&
+           text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
 } // namespace
 
 DownloadLinks::DownloadLinks(std::chrono::seconds ttl) : mTtl(ttl)
@@ -28,9 +36,22 @@ DownloadLinks::DownloadLinks(std::chrono::seconds ttl) : mTtl(ttl)
     randombytes_buf(mKey.data(), mKey.size());
 }
 
-std::string DownloadLinks::mac(const std::string& target, std::int64_t userId, std::int64_t expiresAt) const
+std::string DownloadLinks::targetProblem(const std::string& target)
 {
-    const std::string message = target + '\n' + std::to_string(userId) + '\n' + std::to_string(expiresAt);
+    // The GET routes whose reply is a file; the query (format, variables) is the caller's.
+    static const std::regex downloads(R"(/api/v1/(jobs/\d+/results|models/\d+|models/\d+/fmu|classes/\d+/gradebook|)"
+                                      R"(studies/\d+/results|studies/\d+/runs/\d+/results|handins/\d+/model))");
+    const std::string path = target.substr(0, target.find('?'));
+    if (std::regex_match(path, downloads)) return "";
+    return "a download link opens only a download (results, a model's file, an FMU, a gradebook, a hand-in's "
+           "model), not " + path.substr(0, 200);
+}
+
+std::string DownloadLinks::mac(const std::string& target, std::int64_t userId, std::int64_t expiresAt,
+                               const std::string& sessionKey) const
+{
+    const std::string message =
+        target + '\n' + std::to_string(userId) + '\n' + std::to_string(expiresAt) + '\n' + sessionKey;
     unsigned char tag[crypto_auth_BYTES];
     crypto_auth(tag, reinterpret_cast<const unsigned char*>(message.data()), message.size(),
                 reinterpret_cast<const unsigned char*>(mKey.data()));
@@ -39,16 +60,17 @@ std::string DownloadLinks::mac(const std::string& target, std::int64_t userId, s
     return hex;
 }
 
-DownloadLinks::Link DownloadLinks::sign(const std::string& target, std::int64_t userId) const
+DownloadLinks::Link DownloadLinks::sign(const std::string& target, std::int64_t userId,
+                                        const std::string& sessionKey) const
 {
     const std::int64_t expiresAt = unixNow() + mTtl.count();
     const char joiner = target.find('?') == std::string::npos ? '?' : '&';
-    return {target + joiner + kParameter + "=" + std::to_string(userId) + "." + std::to_string(expiresAt) +
-                "." + mac(target, userId, expiresAt),
+    return {target + joiner + kParameter + "=" + std::to_string(userId) + "." + std::to_string(expiresAt) + "." +
+                sessionKey + "." + mac(target, userId, expiresAt, sessionKey),
             expiresAt};
 }
 
-std::optional<std::int64_t> DownloadLinks::verify(const std::string& targetWithLink) const
+std::optional<DownloadLinks::Signer> DownloadLinks::verify(const std::string& targetWithLink) const
 {
     // The link is the last parameter; what precedes it is exactly what was signed.
     const std::string key = std::string(kParameter) + "=";
@@ -58,17 +80,24 @@ std::optional<std::int64_t> DownloadLinks::verify(const std::string& targetWithL
     if ((before != '?' && before != '&') || targetWithLink.find('&', at) != std::string::npos) return std::nullopt;
     const std::string target = targetWithLink.substr(0, at - 1);
     const std::string value = targetWithLink.substr(at + key.size());
-    const auto dot1 = value.find('.');
-    const auto dot2 = dot1 == std::string::npos ? dot1 : value.find('.', dot1 + 1);
-    if (dot2 == std::string::npos) return std::nullopt;
-    const auto userId = parseInt(value.substr(0, dot1));
-    const auto expiresAt = parseInt(value.substr(dot1 + 1, dot2 - dot1 - 1));
-    if (!userId || !expiresAt || *expiresAt <= unixNow()) return std::nullopt;
-    const std::string expected = mac(target, *userId, *expiresAt);
-    const std::string given = value.substr(dot2 + 1);
+    // userId.expiresAt.sessionKey.mac
+    std::string fields[4];
+    std::size_t from = 0;
+    for (int i = 0; i < 3; ++i) {
+        const auto dot = value.find('.', from);
+        if (dot == std::string::npos) return std::nullopt;
+        fields[i] = value.substr(from, dot - from);
+        from = dot + 1;
+    }
+    fields[3] = value.substr(from);
+    const auto userId = parseInt(fields[0]);
+    const auto expiresAt = parseInt(fields[1]);
+    if (!userId || !expiresAt || *expiresAt <= unixNow() || !isSessionKey(fields[2])) return std::nullopt;
+    const std::string expected = mac(target, *userId, *expiresAt, fields[2]);
+    const std::string& given = fields[3];
     if (given.size() != expected.size() || sodium_memcmp(given.data(), expected.data(), expected.size()) != 0)
         return std::nullopt;
-    return userId;
+    return Signer{*userId, fields[2]};
 }
 
 } // namespace tlmhub::server

@@ -9,9 +9,9 @@ namespace tlmhub::server {
 
 namespace {
 
-constexpr std::size_t kTokenBytes = 32;
+constexpr std::size_t kLoginTokenBytes = 32;
 
-std::string tokenHash(const std::string& token)
+std::string loginTokenHash(const std::string& token)
 {
     ensureSodium();
     unsigned char digest[crypto_generichash_BYTES];
@@ -32,22 +32,29 @@ TokenService::TokenService(SessionStore& sessions, UserStore& users, std::chrono
 TokenService::Issued TokenService::issue(const User& user)
 {
     const auto now = static_cast<std::int64_t>(unixNow());
-    Issued issued{randomHex(kTokenBytes), now + mTtl.count()};
-    mSessions.insert(tokenHash(issued.token), user.id, issued.expiresAt, now);
+    Issued issued{randomHex(kLoginTokenBytes), now + mTtl.count()};
+    mSessions.insert(loginTokenHash(issued.token), user.id, issued.expiresAt, now);
     return issued;
 }
 
 std::optional<User> TokenService::validate(const std::string& token)
 {
-    if (token.size() != kTokenBytes * 2) return std::nullopt;
-    const auto userId = mSessions.userOf(tokenHash(token), static_cast<std::int64_t>(unixNow()));
+    if (token.size() != kLoginTokenBytes * 2) return std::nullopt;
+    return validateSessionKey(loginTokenHash(token));
+}
+
+std::string TokenService::sessionKey(const std::string& token) { return loginTokenHash(token); }
+
+std::optional<User> TokenService::validateSessionKey(const std::string& key)
+{
+    const auto userId = mSessions.userOf(key, static_cast<std::int64_t>(unixNow()));
     if (!userId) return std::nullopt;
     auto user = mUsers.find(*userId);
     if (user && user->disabled) return std::nullopt;
     return user;
 }
 
-void TokenService::revoke(const std::string& token) { mSessions.remove(tokenHash(token)); }
+void TokenService::revoke(const std::string& token) { mSessions.remove(loginTokenHash(token)); }
 
 void TokenService::revokeAllFor(std::int64_t userId) { mSessions.removeAllFor(userId); }
 

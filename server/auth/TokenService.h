@@ -26,6 +26,11 @@ public:
     // The token's user, read fresh (a changed role applies at once); nullopt when unknown,
     // revoked or expired (an expired row is deleted on the way), or the account is disabled.
     std::optional<User> validate(const std::string& token);
+    // What the store keys a login token's session by (its hash): a download link names its
+    // login by it, and ends with it.
+    static std::string sessionKey(const std::string& token);
+    // validate() for a session named by its key.
+    std::optional<User> validateSessionKey(const std::string& key);
     void revoke(const std::string& token);
     // Ends every session of one user, e.g. after a password change.
     void revokeAllFor(std::int64_t userId);

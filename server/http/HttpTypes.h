@@ -2,6 +2,7 @@
 // The request and response types every HTTP handler uses (whole bodies as strings).
 #include <boost/beast/http.hpp>
 
+#include <chrono>
 #include <string>
 
 namespace tlmhub::server {
@@ -14,6 +15,8 @@ using Response = http::response<http::string_body>;
 struct Incoming {
     const Request& request;
     std::string clientAddress;   // for the login rate limit
+    // When the request had been read whole: what a hand-in's time is, however long it waits.
+    std::chrono::system_clock::time_point receivedAt = std::chrono::system_clock::now();
 };
 
 } // namespace tlmhub::server

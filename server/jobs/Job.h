@@ -39,6 +39,9 @@ struct JobRequest {
     JobSettings settings;
     // Directory relative paths in the model resolve against (data files); empty for none.
     std::string modelDirectory;
+    // A run of an assignment's locked copy: `settings` may only repeat the model's own (the
+    // template's). Checked when the job is submitted; not stored.
+    bool settingsFixed = false;
 
     // Stored with the job so that it can be run again (rerun, restart).
     nlohmann::json toJson() const;

@@ -1,4 +1,5 @@
 #include "server/jobs/JobQueue.h"
+#include "server/jobs/StorageQuota.h"
 
 #include "server/jobs/FrameSource.h"
 #include "server/jobs/PreparedJob.h"
@@ -158,18 +159,16 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
 
     const std::size_t stored = mResults.storedBytes(request.ownerId);
     if (stored >= mLimits.maxStoredBytesPerUser) {
-        return {std::nullopt, "limit_exceeded",
-                "your stored results use " + std::to_string(stored >> 20) + " MiB of " +
-                    std::to_string(mLimits.maxStoredBytesPerUser >> 20) +
-                    " MiB; delete old jobs (DELETE /api/v1/jobs/{id}) first"};
+        return {std::nullopt, "limit_exceeded", quotaMessage(stored, mLimits.maxStoredBytesPerUser)};
     }
 
     // Queued on every node together; jobs claimed by a node count as running.
     const JobStore::Admission admission = mStore.createWithinQueueLimit(request, resolved, mLimits.maxQueuedPerUser);
     if (!admission.id) {
-        return {std::nullopt, "limit_exceeded",
+        // Temporary: room comes as the user's jobs start.
+        return {std::nullopt, "rate_limited",
                 "you have " + std::to_string(admission.queued) + " jobs queued; the limit is " +
-                    std::to_string(mLimits.maxQueuedPerUser)};
+                    std::to_string(mLimits.maxQueuedPerUser) + " (--max-queued-per-user): try again when one has started"};
     }
     const std::int64_t id = *admission.id;
     if (mNode.runsJobs) {

@@ -36,6 +36,18 @@ bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limi
     }
 
     const JobSettings& s = request.settings;
+    if (request.settingsFixed) {
+        const std::size_t ownLogSamples = root.requestedLogSamples ? root.requestedLogSamples : kDefaultLogSamples;
+        const auto differs = [](const auto& asked, auto own) { return asked && *asked != own; };
+        if (differs(s.start, root.startTime) || differs(s.stop, root.stopTime) ||
+            differs(s.step, root.desiredTimestep) || differs(s.logSamples, ownLogSamples)) {
+            error = {"locked", "an assignment's copy runs with its template's settings (start " +
+                                   describe(root.startTime) + ", step " + describe(root.desiredTimestep) +
+                                   ", stop " + describe(root.stopTime) + ", " + std::to_string(ownLogSamples) +
+                                   " log samples)"};
+            return false;
+        }
+    }
     out.start = s.start.value_or(root.startTime);
     out.stop = s.stop.value_or(root.stopTime);
     out.step = s.step.value_or(root.desiredTimestep);
@@ -51,13 +63,13 @@ bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limi
     const double steps = std::ceil((out.stop - out.start) / out.step);
     if (steps > static_cast<double>(limits.maxSteps)) {
         error = {"limit_exceeded", "the job needs " + describe(steps) + " steps; the limit is " +
-                                       std::to_string(limits.maxSteps)};
+                                       std::to_string(limits.maxSteps) + " (--max-steps)"};
         return false;
     }
     out.steps = static_cast<std::uint64_t>(steps);
     if (out.logSamples > limits.maxLogSamples) {
-        error = {"limit_exceeded", "log_samples " + std::to_string(out.logSamples) +
-                                       " is above the limit of " + std::to_string(limits.maxLogSamples)};
+        error = {"limit_exceeded", "log_samples " + std::to_string(out.logSamples) + " is above the limit of " +
+                                       std::to_string(limits.maxLogSamples) + " (--max-log-samples)"};
         return false;
     }
     Result<Simulation> compiled = compile(std::move(model), {out.start, out.stop, out.step, out.logSamples});

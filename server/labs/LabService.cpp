@@ -222,14 +222,15 @@ std::optional<Judgement> LabService::judge(const AssignmentInfo& assignment, con
     return judgement;
 }
 
-std::optional<HandIn> LabService::handIn(const AssignmentInfo& assignment, const User& student, LabError& error)
+std::optional<HandIn> LabService::handIn(const AssignmentInfo& assignment, const User& student,
+                                         std::int64_t receivedAt, LabError& error)
 {
     const auto copy = mLabs.copy(assignment.id, student.id);
     if (!copy) {
         error = {"conflict", "open the assignment first"};
         return std::nullopt;
     }
-    const std::int64_t now = unixNow();
+    const std::int64_t now = receivedAt;
     const bool late = assignment.dueAt != 0 && now > assignment.dueAt;
     if (late && !mLabs.handIns(assignment.id, student.id).empty()) {
         error = {"deadline_passed", "the deadline has passed: your earlier hand-in stands"};
@@ -415,8 +416,9 @@ nlohmann::json LabService::assignmentJson(const AssignmentInfo& a)
             {"updated_at", a.updatedAt}};
 }
 
-nlohmann::json LabService::handInJson(const HandIn& h)
+nlohmann::json LabService::handInJson(const HandIn& h, bool staff)
 {
+    const nlohmann::json checks = nlohmann::json::parse(h.checkResults, nullptr, false);
     return {{"id", h.id},
             {"assignment_id", h.assignmentId},
             {"student", userRef(h.studentId, h.studentName)},
@@ -427,7 +429,7 @@ nlohmann::json LabService::handInJson(const HandIn& h)
             {"max_score", h.maxScore},
             {"grade", h.grade ? nlohmann::json(*h.grade) : nlohmann::json(nullptr)},
             {"job_id", h.jobId ? nlohmann::json(*h.jobId) : nlohmann::json(nullptr)},
-            {"checks", nlohmann::json::parse(h.checkResults, nullptr, false)}};
+            {"checks", staff ? checks : outcomesForStudent(checks)}};
 }
 
 } // namespace tlmhub::server

@@ -61,7 +61,10 @@ public:
     std::optional<Judgement> judge(const AssignmentInfo& assignment, const std::string& hmf, bool pretestsOnly,
                                    LabError& error);
     // Freezes the student's copy with its latest run, judges it and stores the hand-in.
-    std::optional<HandIn> handIn(const AssignmentInfo& assignment, const User& student, LabError& error);
+    // `receivedAt` (unix seconds): when the request had been read whole; the hand-in's time and
+    // what the deadline is judged by, however long it waited for a check thread.
+    std::optional<HandIn> handIn(const AssignmentInfo& assignment, const User& student, std::int64_t receivedAt,
+                                 LabError& error);
 
     // not_opened, working, ran, handed_in or late.
     std::string studentStatus(const AssignmentInfo& assignment, std::int64_t studentId);
@@ -74,7 +77,9 @@ public:
 
     static nlohmann::json classJson(const ClassInfo& info, const std::string& ownerName, const std::string& role);
     static nlohmann::json assignmentJson(const AssignmentInfo& assignment);
-    static nlohmann::json handInJson(const HandIn& handIn);
+    // `staff`: the class's teacher or an assistant sees every check's details; a student sees
+    // those of the pretests only (outcomesForStudent).
+    static nlohmann::json handInJson(const HandIn& handIn, bool staff);
 
     static constexpr double kCheckWallSeconds = 60;
 

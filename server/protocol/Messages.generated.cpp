@@ -44,6 +44,27 @@ void to_json(nlohmann::json& j, const User& v)
     if (v.disabled) j["disabled"] = *v.disabled;
 }
 
+void from_json(const nlohmann::json& j, CurrentUser& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("username").get_to(v.username);
+    j.at("role").get_to(v.role);
+    if (const auto x = j.find("disabled"); x != j.end()) v.disabled = x->get<bool>();
+    j.at("stored_bytes").get_to(v.storedBytes);
+    j.at("quota_bytes").get_to(v.quotaBytes);
+}
+
+void to_json(nlohmann::json& j, const CurrentUser& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["username"] = v.username;
+    j["role"] = v.role;
+    if (v.disabled) j["disabled"] = *v.disabled;
+    j["stored_bytes"] = v.storedBytes;
+    j["quota_bytes"] = v.quotaBytes;
+}
+
 void from_json(const nlohmann::json& j, UserRef& v)
 {
     j.at("id").get_to(v.id);

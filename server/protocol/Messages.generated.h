@@ -37,6 +37,7 @@ struct ComponentRenamedData;
 struct ConnectRequest;
 struct ConnectedData;
 struct Connection;
+struct CurrentUser;
 struct DisconnectRequest;
 struct DoneEvent;
 struct DownloadLink;
@@ -144,6 +145,18 @@ struct User {
 };
 void from_json(const nlohmann::json& j, User& v);
 void to_json(nlohmann::json& j, const User& v);
+
+// GET /auth/me: the logged-in user, with what their stored results take of their quota.
+struct CurrentUser {
+    std::int64_t id{};
+    std::string username{};
+    std::string role{};
+    std::optional<bool> disabled;
+    std::int64_t storedBytes{};
+    std::int64_t quotaBytes{};
+};
+void from_json(const nlohmann::json& j, CurrentUser& v);
+void to_json(nlohmann::json& j, const CurrentUser& v);
 
 struct UserRef {
     std::int64_t id{};
@@ -1198,6 +1211,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ConnectRequest>("ConnectRequest");
     visit.template operator()<ConnectedData>("ConnectedData");
     visit.template operator()<Connection>("Connection");
+    visit.template operator()<CurrentUser>("CurrentUser");
     visit.template operator()<DisconnectRequest>("DisconnectRequest");
     visit.template operator()<DoneEvent>("DoneEvent");
     visit.template operator()<DownloadLink>("DownloadLink");

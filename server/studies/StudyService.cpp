@@ -3,6 +3,7 @@
 #include "server/api/CoreErrorCodes.h"
 #include "server/jobs/ModelLimits.h"
 #include "server/jobs/PreparedJob.h"
+#include "server/jobs/StorageQuota.h"
 #include "server/studies/ExactNumber.h"
 #include "server/studies/RunMeasures.h"
 
@@ -13,8 +14,6 @@
 namespace tlmhub::server {
 
 namespace {
-
-std::string mebibytes(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
 nlohmann::json parseOr(const std::string& text, nlohmann::json fallback)
 {
@@ -61,7 +60,8 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
     if (runs == 0) return {std::nullopt, 0, "bad_request", "the study has no runs"};
     if (runs > mLimits.maxRuns)
         return {std::nullopt, 0, "limit_exceeded",
-                "the study has " + std::to_string(runs) + " runs; the limit is " + std::to_string(mLimits.maxRuns)};
+                "the study has " + std::to_string(runs) + " runs; the limit is " + std::to_string(mLimits.maxRuns) +
+                    " (--max-study-runs)"};
 
     // The model is parsed once: a copy compiles now (the check, and a first worker's
     // simulation), the rest are compiled from it by the workers.
@@ -112,15 +112,14 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
         const double total = static_cast<double>(perRun) * static_cast<double>(runs);
         if (total > static_cast<double>(mLimits.maxStoredBytes))
             return {std::nullopt, 0, "limit_exceeded",
-                    "keeping every run's result needs up to " + mebibytes(static_cast<std::size_t>(total)) +
-                        "; a study may keep " + mebibytes(mLimits.maxStoredBytes) +
-                        " (fewer runs or log_samples, or outputs.full false)"};
+                    "keeping every run's result needs up to " + byteSize(static_cast<std::size_t>(total)) +
+                        "; a study may keep " + byteSize(mLimits.maxStoredBytes) +
+                        " (--max-study-bytes): fewer runs or log_samples, or outputs.full false"};
         const std::size_t stored = mResults.storedBytes(ownerId);
         if (static_cast<double>(stored) + total > static_cast<double>(mJobLimits.maxStoredBytesPerUser))
             return {std::nullopt, 0, "limit_exceeded",
-                    "keeping every run's result needs up to " + mebibytes(static_cast<std::size_t>(total)) +
-                        "; your stored results use " + mebibytes(stored) + " of " +
-                        mebibytes(mJobLimits.maxStoredBytesPerUser) + " (delete old jobs or studies first)"};
+                    "keeping every run's result needs up to " + byteSize(static_cast<std::size_t>(total)) + "; " +
+                        quotaMessage(stored, mJobLimits.maxStoredBytesPerUser)};
     }
     prepared.model = std::make_shared<const Model>(std::move(model));
     prepared.settings = {compiled.start, compiled.stop, compiled.step, compiled.logSamples};
@@ -132,9 +131,10 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
 StudyService::Submitted StudyService::submit(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf)
 {
     if (mQueue.activeStudies(ownerId) >= mLimits.maxActivePerUser)
-        return {std::nullopt, 0, "limit_exceeded",
-                "you have " + std::to_string(mLimits.maxActivePerUser) +
-                    " studies queued or running; the limit is " + std::to_string(mLimits.maxActivePerUser)};
+        // Temporary: room comes as the user's studies end.
+        return {std::nullopt, 0, "rate_limited",
+                "you have " + std::to_string(mLimits.maxActivePerUser) + " studies queued or running; the limit is " +
+                    std::to_string(mLimits.maxActivePerUser) + " (--max-studies-per-user): try again when one has ended"};
     PreparedStudy prepared;
     Submitted checked = prepare(ownerId, body, hmf, prepared);
     if (!checked.code.empty()) return checked;

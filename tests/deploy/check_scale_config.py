@@ -58,6 +58,17 @@ def check_compose(compose):
     check(len(databases) == 1 and next(iter(databases), "").startswith("postgresql://"), "one postgresql:// database for all nodes")
     check(len(secrets) == 1 and None not in secrets, "one node secret file for all nodes")
     check("TLMHUB_ADMIN_PASSWORD" in services["api1"]["environment"], "api1 sets the first admin password")
+    # The failed-login limits count each client's address only if the API nodes trust nginx's
+    # X-Forwarded-For, and nothing else's.
+    nginx_networks = services["nginx"].get("networks", {})
+    nginx_address = nginx_networks.get("nodes", {}).get("ipv4_address") if isinstance(nginx_networks, dict) else None
+    check(nginx_address is not None, "nginx has a fixed address on the nodes network")
+    for name, service in nodes.items():
+        if name.startswith("api"):
+            check(flag(service["command"], "--trusted-proxy") == nginx_address,
+                  f"{name}: --trusted-proxy is nginx's address ({nginx_address})")
+    check("X-Forwarded-For $proxy_add_x_forwarded_for" in open(NGINX_CONF).read(),
+          "nginx appends the client's address to X-Forwarded-For")
     ports = services["nginx"].get("ports", [])
     check(ports == ["127.0.0.1:8080:8080"], "only nginx publishes a port, on loopback")
     check(all("ports" not in s for n, s in services.items() if n != "nginx"), "no other service publishes a port")

@@ -161,6 +161,24 @@ int ServerProcess::terminate()
     return status;
 }
 
+std::optional<int> ServerProcess::terminateWithin(std::chrono::milliseconds limit)
+{
+    if (mPid <= 0) return 0;
+    ::kill(mPid, SIGTERM);
+    ::kill(mPid, SIGCONT);
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    for (;;) {
+        int status = 0;
+        if (::waitpid(mPid, &status, WNOHANG) == mPid) {
+            mPid = -1;
+            collectOutput();
+            return status;
+        }
+        if (std::chrono::steady_clock::now() > deadline) return std::nullopt;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+}
+
 HttpReply HttpClient::request(http::verb method, const std::string& target, const std::string& body,
                               const std::string& contentType)
 {
@@ -170,6 +188,7 @@ HttpReply HttpClient::request(http::verb method, const std::string& target, cons
     http::request<http::string_body> req{method, target, 11};
     req.set(http::field::host, "127.0.0.1");
     if (!mToken.empty()) req.set(http::field::authorization, "Bearer " + mToken);
+    for (const auto& [name, value] : mHeaders) req.insert(name, value);
     if (!body.empty()) {
         req.set(http::field::content_type, contentType);
         req.body() = body;

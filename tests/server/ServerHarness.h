@@ -14,8 +14,10 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace tlmhub::test {
@@ -41,6 +43,8 @@ public:
     const std::string& output() const { return mOutput; }
     void kill9();          // crash: no cleanup at all
     int terminate();       // SIGTERM, wait; returns the exit status
+    // SIGTERM, then waits at most `limit`: the exit status, or nothing if it still runs.
+    std::optional<int> terminateWithin(std::chrono::milliseconds limit);
     // Sends `sig` without waiting (SIGSTOP and SIGCONT: a node that stalls and resumes).
     void signal(int sig);
 
@@ -70,6 +74,8 @@ public:
     explicit HttpClient(unsigned short port) : mPort(port) {}
     void setToken(std::string token) { mToken = std::move(token); }
     const std::string& token() const { return mToken; }
+    // Sent with every later request (a header may be added more than once).
+    void addHeader(std::string name, std::string value) { mHeaders.emplace_back(std::move(name), std::move(value)); }
     HttpReply request(boost::beast::http::verb method, const std::string& target,
                       const std::string& body = {}, const std::string& contentType = "application/json");
     HttpReply get(const std::string& target) { return request(boost::beast::http::verb::get, target); }
@@ -83,6 +89,7 @@ public:
 private:
     unsigned short mPort;
     std::string mToken;
+    std::vector<std::pair<std::string, std::string>> mHeaders;
 };
 
 // Where a WebSocket client puts its token: the query string (what browsers do; login tokens

@@ -242,7 +242,7 @@ TEST_F(ApiTokens, AUserHasAtMostFiftyTokens)
         if (i == 0) first = id;
     }
     const HttpReply refused = create(dora, {{"name", "one too many"}});
-    EXPECT_EQ(refused.status, 429) << refused.body;
+    EXPECT_EQ(refused.status, 422) << refused.body;
     EXPECT_EQ(refused.json()["error"]["code"], "limit_exceeded");
     EXPECT_EQ(tokensOf(dora).size(), 50u);
     // Others are not limited by dora's tokens; deleting one makes room.

@@ -93,3 +93,43 @@ TEST(FmuImportServer, WithoutAnFmuDirectoryNoModelLoadsAnFmu)
 }
 
 } // namespace tlmhub::test
+
+namespace tlmhub::test {
+namespace {
+
+// Issue 37 M4: each FMIWrapper unpacks and parses an FMU; a model holds at most
+// --max-model-fmus of them (default 64), refused naming the flag before any is loaded.
+TEST(FmuImportServer, AModelHoldsAtMostMaxModelFmusWrappers)
+{
+    const fs::path dir = freshTempDir("fmu-import-limit");
+    const fs::path fmuDir = dir / "fmus";
+    fs::create_directories(fmuDir);
+    ServerProcess server(dir / "data", {"--fmu-dir", fmuDir.string(), "--max-model-fmus", "2"});
+    createTestUsers(server, {"alice"});
+    HttpClient alice = loggedInAs(server, "alice");
+    downloadFmu(alice, fmuDir / "FmuGain.fmu");
+    // Two more wrappers beside the model's own: three in all.
+    std::string three = readFile(kFmuGainImport);
+    const std::string wrapper = R"(<component typename="FMIWrapperQ" name="Gain">)";
+    const auto at = three.find(wrapper);
+    ASSERT_NE(at, std::string::npos);
+    const std::string element = three.substr(at, three.find("</component>", at) + 12 - at);
+    std::string more;
+    for (const char* name : {"Gain2", "Gain3"}) {
+        std::string copy = element;
+        copy.replace(copy.find(R"(name="Gain")"), 11, std::string("name=\"") + name + "\"");
+        more += copy;
+    }
+    three.insert(at, more);
+    const auto refused = alice.post("/api/v1/jobs", {{"hmf", three}});
+    EXPECT_EQ(refused.status, 400) << refused.body;
+    EXPECT_NE(refused.body.find("--max-model-fmus"), std::string::npos) << refused.body;
+    const auto upload = alice.request(boost::beast::http::verb::post, "/api/v1/models?name=three", three,
+                                      "application/xml");
+    EXPECT_NE(upload.body.find("--max-model-fmus"), std::string::npos) << upload.body;
+    // The model's one wrapper is within the limit.
+    EXPECT_EQ(alice.post("/api/v1/jobs", {{"hmf", readFile(kFmuGainImport)}}).status, 201);
+}
+
+} // namespace
+} // namespace tlmhub::test

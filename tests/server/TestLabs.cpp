@@ -8,7 +8,11 @@
 
 #include <chrono>
 #include <ctime>
+#include <functional>
+#include <mutex>
+#include <set>
 #include <thread>
+#include <vector>
 
 namespace tlmhub::test {
 namespace {
@@ -217,6 +221,69 @@ TEST_F(Labs, StudentWorksOnACopyWithinTheLockPretestsAndHandsIn)
     EXPECT_NE(frozen.body.find(R"(value="0.0501")"), std::string::npos);
 }
 
+// Issue 37 M1: a student's hand-in reply and the hand-in routes carried the hidden check's
+// bounds, value, deviation, worst time and message ("required between 5.95 and 6.05"), from
+// which the reference follows. Every route of an assignment or a hand-in the API document
+// lists is called as the student: of a check hidden from students only its name, pass or
+// fail and points appear. Staff see everything.
+TEST_F(Labs, AStudentSeesOfAHiddenCheckOnlyItsNamePassAndPointsOnEveryRoute)
+{
+    const Lab lab = makeLab();
+    HttpClient sam = as("sam");
+    openCopy(sam, lab);
+    const auto handIn = sam.post(lab.path() + "/handin", nlohmann::json::object());
+    ASSERT_EQ(handIn.status, 201) << handIn.body;
+    const std::string handInId = idText(handIn.json()["id"]);
+    const std::string hidden = "Ends near the target";
+
+    // Every object naming the hidden check, anywhere in a reply, shows only these keys.
+    const std::set<std::string> shown = {"name", "pretest", "passed", "points", "awarded"};
+    std::function<void(const nlohmann::json&, const std::string&)> expectNoDetails =
+        [&](const nlohmann::json& j, const std::string& where) {
+            if (j.is_object()) {
+                if (j.value("name", "") == hidden && j.contains("passed")) {
+                    for (const auto& [key, value] : j.items())
+                        EXPECT_TRUE(shown.count(key)) << where << " shows the hidden check's " << key << ": " << j;
+                }
+                for (const auto& [key, value] : j.items()) expectNoDetails(value, where);
+            } else if (j.is_array()) {
+                for (const auto& value : j) expectNoDetails(value, where);
+            }
+        };
+    const nlohmann::json openapi =
+        nlohmann::json::parse(readFile(std::filesystem::path(TLMHUB_SOURCE_DIR) / "protocol" / "openapi.json"));
+    int called = 0;
+    for (const auto& [path, operations] : openapi["paths"].items()) {
+        std::string target = path;
+        if (path.rfind("/assignments/{id}", 0) == 0)
+            target.replace(0, 17, "/assignments/" + std::to_string(lab.assignmentId));
+        else if (path.rfind("/handins/{id}", 0) == 0)
+            target.replace(0, 13, "/handins/" + handInId);
+        else
+            continue;
+        if (target.find('{') != std::string::npos) continue;   // no other parameters so far
+        for (const auto& [method, operation] : operations.items()) {
+            if (method != "get" && method != "post") continue;
+            const auto reply = method == "get" ? sam.get("/api/v1" + target)
+                                               : sam.post("/api/v1" + target, nlohmann::json::object());
+            ++called;
+            expectNoDetails(reply.json(), method + " " + target);
+            EXPECT_EQ(reply.body.find("required between"), std::string::npos) << target << ": " << reply.body;
+        }
+    }
+    EXPECT_GE(called, 8) << "the API document's assignment and hand-in routes";
+    // The WebSocket protocol carries no check outcomes at all.
+    const std::string schema = readFile(std::filesystem::path(TLMHUB_SOURCE_DIR) / "protocol" / "messages.schema.json");
+    EXPECT_EQ(schema.find("worst_time"), std::string::npos);
+
+    // Staff see the details.
+    const auto forStaff = as("tina").get("/api/v1/handins/" + handInId).json()["checks"];
+    bool detailed = false;
+    for (const auto& outcome : forStaff)
+        if (outcome["name"] == hidden) detailed = outcome.contains("value") && outcome.contains("message");
+    EXPECT_TRUE(detailed) << forStaff;
+}
+
 TEST_F(Labs, TheSolutionReferenceAndHiddenChecksStayWithTheStaff)
 {
     const Lab lab = makeLab();
@@ -236,6 +303,63 @@ TEST_F(Labs, TheSolutionReferenceAndHiddenChecksStayWithTheStaff)
     EXPECT_EQ(sam.get(lab.path() + "/dashboard").status, 403);
     EXPECT_EQ(sam.get(lab.path() + "/overlay?variable=" + kPosition).status, 403);
     EXPECT_EQ(sam.get("/api/v1/classes/" + std::to_string(lab.classId) + "/gradebook").status, 403);
+}
+
+// Issue 37 L1: sysparam.set on an allowed parameter of a locked copy changed its type, unit
+// and description, and runs of the copy took any start, step or stop. A locked copy changes
+// only allowed values within bounds, and runs with its template's settings, on every path.
+TEST_F(Labs, ALockedCopyKeepsItsRunSettingsAndItsParametersTypeUnitAndDescription)
+{
+    HttpClient tina = as("tina");
+    const std::int64_t withG = uploadModel(tina, kPositionServo, "with-g");
+    const nlohmann::json g = {{"name", "g"}, {"value", 0.05}, {"param_type", "double"}, {"unit", "-"},
+                              {"description", "gain"}};
+    {
+        WsClient ws(server->port(), tina.token());
+        ASSERT_EQ(ws.call("model.open", {{"model_id", withG}})["type"], "reply");
+        ASSERT_EQ(ws.call("sysparam.set", g)["type"], "reply");
+        ASSERT_EQ(ws.call("model.save", nlohmann::json::object())["type"], "reply");
+    }
+    const Lab lab = makeLab({{"template_model_id", withG},
+                             {"parameters", {{{"name", "GainP.k"}, {"min", 0}, {"max", 0.1}},
+                                             {{"name", "g"}, {"min", 0}, {"max", 1}}}}});
+    HttpClient sam = as("sam");
+    const std::int64_t copy = openCopy(sam, lab);
+
+    WsClient ws(server->port(), sam.token());
+    ASSERT_EQ(ws.call("model.open", {{"model_id", copy}})["type"], "reply");
+    nlohmann::json value = g;
+    value["value"] = 0.5;
+    EXPECT_EQ(ws.call("sysparam.set", value)["type"], "reply") << "the value, within bounds";
+    for (const auto& [key, changed] : {std::pair{"unit", "m"}, {"param_type", "integer"}, {"description", "x"}}) {
+        nlohmann::json edit = value;
+        edit[key] = changed;
+        const auto refused = ws.call("sysparam.set", edit);
+        EXPECT_EQ(refused["error"]["code"], "locked") << key << ": " << refused;
+    }
+    nlohmann::json added = value;
+    added["name"] = "h";
+    EXPECT_EQ(ws.call("sysparam.set", added)["error"]["code"], "locked");
+    const auto described = ws.call("parameter.get", {{"component", "GainP"}, {"parameter", "k#Value"}});
+    EXPECT_EQ(described["type"], "reply") << described;
+
+    // Run settings: the template's, or none given; anything else is refused on both paths.
+    const auto longer = ws.call("simulate.start", {{"stop", 100}});
+    EXPECT_EQ(longer["error"]["code"], "locked") << longer;
+    EXPECT_EQ(ws.call("simulate.start", {{"step", 1e-5}})["error"]["code"], "locked");
+    EXPECT_EQ(ws.call("simulate.start", {{"stop", 3}})["type"], "reply");
+    for (const nlohmann::json& settings : {nlohmann::json{{"stop", 100}}, {{"step", 1e-5}}, {{"start", -1}},
+                                           {{"log_samples", 7}}}) {
+        nlohmann::json body = settings;
+        body["model_id"] = copy;
+        const auto refused = sam.post("/api/v1/jobs", body);
+        EXPECT_EQ(refused.status, 403) << settings << ": " << refused.body;
+        EXPECT_EQ(refused.json()["error"]["code"], "locked") << refused.body;
+    }
+    const auto same = sam.post("/api/v1/jobs", {{"model_id", copy}, {"stop", 3}});
+    EXPECT_EQ(same.status, 201) << same.body;
+    // The teacher's own runs of the template are not locked.
+    EXPECT_EQ(tina.post("/api/v1/jobs", {{"model_id", withG}, {"stop", 1}}).status, 201);
 }
 
 TEST_F(Labs, StudentsTeachersAndAssistantsSeeWhatTheirRoleAllows)
@@ -424,6 +548,79 @@ TEST_F(Labs, ImportedAccountsGetAPasswordOnceAndJoinAsStudents)
     EXPECT_EQ(fresh.get("/api/v1/classes/" + std::to_string(lab.classId)).json()["role"], "student");
     EXPECT_EQ(as("sam").post("/api/v1/classes/" + std::to_string(lab.classId) + "/import", nlohmann::json::object()).status,
               403);
+}
+
+} // namespace
+} // namespace tlmhub::test
+
+namespace tlmhub::test {
+namespace {
+
+// Issue 37 M2: a hand-in sent before the deadline but run after it (behind other check runs)
+// was stored late, and FMU exports shared the lab's check threads. A hand-in counts from when
+// its request arrived, and an export is built beside the check runs. The server has one check
+// thread, held for 3 s (the wall limit here) by a teacher's reference run that would go on.
+TEST(LabCheckRuns, AHandInCountsFromItsArrivalAndAnExportDoesNotWaitForChecks)
+{
+    ServerProcess server(freshTempDir("lab-check-runs"),
+                         {"--check-threads", "1", "--max-wall-seconds", "3", "--max-steps", "100000000000"});
+    createTestUsers(server, {"sue"});
+    HttpClient admin = loggedInAs(server, "admin");
+    ASSERT_EQ(admin.post("/api/v1/users", {{"username", "tina"}, {"password", testPassword("tina")}, {"role", "teacher"}})
+                  .status,
+              201);
+    HttpClient tina = loggedInAs(server, "tina");
+    const std::int64_t servo = uploadModel(tina, kPositionServo, "servo");
+    std::string endless = readFile(kPositionServo);
+    endless.replace(endless.find(R"(stop="3")"), 8, R"(stop="1e6")");
+    const auto endlessModel = tina.request(http::verb::post, "/api/v1/models?name=endless", endless, "application/xml");
+    ASSERT_EQ(endlessModel.status, 201) << endlessModel.body;
+    const auto created = tina.post("/api/v1/classes", {{"name", "Turns"}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const std::string assignments =
+        "/api/v1/classes/" + std::to_string(created.json()["id"].get<std::int64_t>()) + "/assignments";
+    const auto assignment = tina.post(assignments, {{"title", "Servo"}, {"template_model_id", servo},
+                                                    {"edit_mode", "parameters"}, {"parameters", nlohmann::json::array()},
+                                                    {"due_at", std::time(nullptr) + 3600}});
+    ASSERT_EQ(assignment.status, 201) << assignment.body;
+    const std::string path = "/api/v1/assignments/" + std::to_string(assignment.json()["id"].get<std::int64_t>());
+    HttpClient sue = loggedInAs(server, "sue");
+    ASSERT_EQ(sue.post("/api/v1/classes/join", {{"code", created.json()["join_code"].get<std::string>()}}).status, 200);
+    ASSERT_EQ(sue.post(path + "/open", nlohmann::json::object()).status, 201);
+    const std::int64_t fmuModel = uploadModel(tina, kFmuGain, "FmuGain");
+
+    std::mutex mutex;
+    std::vector<std::string> replies;
+    const auto noted = [&](const std::string& what) {
+        std::lock_guard lock(mutex);
+        replies.push_back(what);
+    };
+    std::thread reference([&, client = tina]() mutable {
+        const auto r = client.post(assignments, {{"title", "Endless"}, {"template_model_id", servo},
+                                                 {"solution_model_id", endlessModel.json()["id"]},
+                                                 {"edit_mode", "parameters"}, {"parameters", nlohmann::json::array()}});
+        EXPECT_EQ(r.status, 422) << "its reference run passes the wall limit: " << r.body;
+        noted("the reference run");
+    });
+    // The reference run is under way within a moment and holds the check thread for 3 s.
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const std::time_t sent = std::time(nullptr);
+    HttpReply handIn;
+    std::thread handing([&, client = sue]() mutable {
+        handIn = client.post(path + "/handin", nlohmann::json::object());
+        noted("sue's hand-in");
+    });
+    const auto fmu = tina.get("/api/v1/models/" + std::to_string(fmuModel) + "/fmu");
+    noted("the export");
+    reference.join();
+    handing.join();
+    EXPECT_EQ(fmu.status, 200) << fmu.body.substr(0, 300);
+    ASSERT_EQ(handIn.status, 201) << handIn.body;
+    EXPECT_EQ(replies, (std::vector<std::string>{"the export", "the reference run", "sue's hand-in"}))
+        << "the export beside the check runs; the hand-in behind the reference run";
+    EXPECT_LE(handIn.json()["handed_in_at"].get<std::int64_t>(), sent + 1)
+        << "counted from its arrival, not from when it ran (sent at " << sent << ")";
+    EXPECT_FALSE(handIn.json()["late"].get<bool>());
 }
 
 } // namespace

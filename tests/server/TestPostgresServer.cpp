@@ -8,7 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <set>
 #include <thread>
+#include <vector>
 
 using namespace tlmhub::test;
 namespace fs = std::filesystem;
@@ -62,4 +67,49 @@ TEST(PostgresServer, TwoServersOnOneDatabaseShareModelsJobsAndResults)
     EXPECT_EQ(alice.get("/api/v1/jobs/" + std::to_string(job)).status, 404);
     fs::remove_all(dirA);
     fs::remove_all(dirB);
+}
+
+// Issue 37 R1: an API node and a worker started at the same moment on a new database: one
+// exited ("cannot create the admin user: username is already taken"), and the worker had
+// created 'admin' and seeded the examples. Only API nodes bootstrap, once between them, and
+// nodes start in any order: three at once (two API nodes and a worker), ten times.
+TEST(PostgresServer, NodesStartedAtOnceOnANewDatabaseBootstrapItOnce)
+{
+    TemporaryPostgres postgres;
+    std::set<std::string> exampleNames;
+    for (const auto& entry : fs::directory_iterator(fs::path(TLMHUB_SOURCE_DIR) / "examples"))
+        if (entry.path().extension() == ".hmf") exampleNames.insert(entry.path().stem().string());
+    ASSERT_FALSE(exampleNames.empty());
+    for (int round = 0; round < 10; ++round) {
+        const std::string db = "bootstrap" + std::to_string(round);
+        const std::string createdb = std::string(TemporaryPostgres::kBinDir) + "/createdb -h 127.0.0.1 -p " +
+                                     std::to_string(postgres.port()) + " -U " + TemporaryPostgres::kUser + " " + db;
+        ASSERT_EQ(std::system(createdb.c_str()), 0) << createdb;
+        const std::vector<std::string> roles = {"api", "worker", "api"};
+        std::vector<std::unique_ptr<ServerProcess>> nodes(roles.size());
+        std::vector<std::string> failures(roles.size());
+        std::vector<std::thread> starting;
+        for (std::size_t i = 0; i < roles.size(); ++i) {
+            starting.emplace_back([&, i] {
+                try {
+                    nodes[i] = std::make_unique<ServerProcess>(
+                        freshTempDir("pg-bootstrap-" + std::to_string(i)),
+                        std::vector<std::string>{"--database", postgres.uri(db), "--role", roles[i]});
+                } catch (const std::exception& e) {
+                    failures[i] = e.what();
+                }
+            });
+        }
+        for (auto& t : starting) t.join();
+        for (std::size_t i = 0; i < roles.size(); ++i)
+            ASSERT_TRUE(nodes[i]) << "round " << round << ", " << roles[i] << " node: " << failures[i];
+        EXPECT_EQ(nodes[1]->output().find("examples: added"), std::string::npos)
+            << "round " << round << ": the worker seeded\n" << nodes[1]->output();
+        HttpClient admin(nodes[0]->port());
+        ASSERT_FALSE(admin.login("admin", kAdminPassword).empty()) << "round " << round;
+        std::map<std::string, int> seeded;
+        for (const auto& model : admin.get("/api/v1/models").json()) ++seeded[model["name"].get<std::string>()];
+        for (const std::string& name : exampleNames)
+            EXPECT_EQ(seeded[name], 1) << "round " << round << ": example " << name;
+    }
 }

@@ -489,6 +489,118 @@ TEST_F(Security, TokensOnlyInHeadersAndDownloadsThroughSignedLinks)
     EXPECT_EQ(anonymous.get(bobs.json()["url"].get<std::string>()).status, 404);
 }
 
+// Issue 37 L2: a link was reusable for any GET target and outlived its login. It opens one
+// download, any number of times within its minute, and ends with the login it was made in.
+TEST_F(Security, ADownloadLinkOpensOneDownloadUntilItsLoginEnds)
+{
+    HttpClient alice(server->port());
+    alice.login("alice", "alice-password");
+    HttpClient anonymous(server->port());
+    const auto created = alice.post("/api/v1/models", {{"name", "linked"}, {"hmf", readFile(kPositionServo)}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const std::string target = "/api/v1/models/" + std::to_string(created.json()["id"].get<std::int64_t>()) +
+                               "?format=hmf";
+    const auto link = alice.post("/api/v1/auth/download-link", {{"target", target}});
+    ASSERT_EQ(link.status, 200) << link.body;
+    const std::string url = link.json()["url"].get<std::string>();
+    EXPECT_EQ(anonymous.get(url).status, 200);
+    EXPECT_EQ(anonymous.get(url).status, 200) << "a second use within the minute";
+
+    // Only downloads: not the account list, the caller's profile or a job's record.
+    for (const char* other : {"/api/v1/users", "/api/v1/auth/me", "/api/v1/jobs/1", "/api/v1/tokens",
+                              "/api/v1/models/1/../../users", "/api/v1/models?x=/api/v1/models/1"}) {
+        const auto refused = alice.post("/api/v1/auth/download-link", {{"target", other}});
+        EXPECT_EQ(refused.status, 400) << other << ": " << refused.body;
+        EXPECT_NE(refused.body.find("download"), std::string::npos) << refused.body;
+    }
+    // A script's API token sends its header; a link could not end with a login.
+    const auto token = alice.post("/api/v1/tokens", {{"name", "links"}});
+    ASSERT_EQ(token.status, 201) << token.body;
+    HttpClient script(server->port());
+    script.setToken(token.json()["token"].get<std::string>());
+    EXPECT_EQ(script.post("/api/v1/auth/download-link", {{"target", target}}).status, 403);
+
+    // Logging out ends the link; another login of alice's does not revive it.
+    HttpClient again(server->port());
+    again.login("alice", "alice-password");
+    EXPECT_EQ(alice.post("/api/v1/auth/logout", nlohmann::json::object()).status, 204);
+    EXPECT_EQ(anonymous.get(url).status, 401);
+    const auto fresh = again.post("/api/v1/auth/download-link", {{"target", target}});
+    ASSERT_EQ(fresh.status, 200) << fresh.body;
+    EXPECT_EQ(anonymous.get(fresh.json()["url"].get<std::string>()).status, 200);
+}
+
+// Issue 37 S1: permanent refusals answered 429, which retry policies treat as "try later",
+// and quota messages disagreed ("3 MiB of 2 MiB"). A request that can never succeed as sent
+// answers 422 naming the limit and its flag; a temporary one 429 with Retry-After; a full
+// quota says the same on every path, in the numbers GET /auth/me shows.
+TEST(SecurityStatusCodes, PermanentRefusalsNameTheirFlagAndTemporaryOnesSayWhenToRetry)
+{
+    ServerProcess server(freshTempDir("status-codes"),
+                         {"--workers", "1", "--max-running-per-user", "1", "--max-queued-per-user", "1",
+                          "--max-studies-per-user", "1", "--max-study-runs", "100",
+                          "--max-stored-bytes-per-user", "400000"});
+    createTestUsers(server, {"filler"});
+    HttpClient admin = loggedInAs(server, "admin");
+    const std::string hmf = readFile(kPositionServo);
+    const auto permanent = [](const HttpReply& r, const std::string& flag) {
+        EXPECT_EQ(r.status, 422) << r.body;
+        EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded") << r.body;
+        EXPECT_NE(r.body.find(flag), std::string::npos) << r.body;
+        EXPECT_EQ(r.headers.count("Retry-After"), 0u);
+    };
+    const auto temporary = [](const HttpReply& r, const std::string& flag) {
+        EXPECT_EQ(r.status, 429) << r.body;
+        EXPECT_EQ(r.json()["error"]["code"], "rate_limited") << r.body;
+        EXPECT_NE(r.body.find(flag), std::string::npos) << r.body;
+        EXPECT_EQ(r.headers.count("Retry-After"), 1u);
+    };
+    permanent(admin.post("/api/v1/jobs", {{"hmf", hmf}, {"stop", 1e9}, {"step", 1e-6}}), "--max-steps");
+    permanent(admin.post("/api/v1/jobs", {{"hmf", hmf}, {"log_samples", 10000000}}), "--max-log-samples");
+    const nlohmann::json manyRuns = {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 101}}}}}};
+    permanent(admin.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", hmf}, {"sweep", manyRuns}}), "--max-study-runs");
+
+    // Temporary: one job running, one queued, a third waits its turn.
+    std::vector<std::int64_t> started;
+    for (int i = 0; i < 2; ++i) {
+        const auto r = admin.post("/api/v1/jobs", {{"hmf", hmf}, {"stop", 500.0}});
+        ASSERT_EQ(r.status, 201) << r.body;
+        started.push_back(r.json()["id"].get<std::int64_t>());
+    }
+    temporary(admin.post("/api/v1/jobs", {{"hmf", hmf}}), "--max-queued-per-user");
+    const nlohmann::json longRuns = {{"parameters", {{"GainP.k", {0.01, 0.02}}}}};
+    const auto study = admin.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", hmf}, {"stop", 500.0}, {"sweep", longRuns}});
+    ASSERT_EQ(study.status, 201) << study.body;
+    temporary(admin.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", hmf}, {"sweep", longRuns}}),
+              "--max-studies-per-user");
+    for (std::int64_t job : started) admin.request(http::verb::delete_, "/api/v1/jobs/" + std::to_string(job));
+    admin.request(http::verb::delete_, "/api/v1/studies/" + std::to_string(study.json()["id"].get<std::int64_t>()));
+
+    // A full quota: one stored result (about 0.5 MB) passes 400000 bytes.
+    HttpClient filler = loggedInAs(server, "filler");
+    auto me = filler.get("/api/v1/auth/me").json();
+    EXPECT_EQ(me["stored_bytes"], 0);
+    EXPECT_EQ(me["quota_bytes"], 400000);
+    const auto first = filler.post("/api/v1/jobs", {{"hmf", hmf}});
+    ASSERT_EQ(first.status, 201) << first.body;
+    const std::string firstPath = "/api/v1/jobs/" + std::to_string(first.json()["id"].get<std::int64_t>());
+    for (int i = 0; i < 2400 && filler.get(firstPath).json()["state"] != "done"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    me = filler.get("/api/v1/auth/me").json();
+    EXPECT_GT(me["stored_bytes"].get<std::int64_t>(), 400000) << me;
+    const auto job = filler.post("/api/v1/jobs", {{"hmf", hmf}});
+    permanent(job, "--max-stored-bytes-per-user");
+    const auto kept = filler.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", hmf}, {"outputs", {{"full", true}}},
+                                                      {"sweep", {{"parameters", {{"GainP.k", {0.01}}}}}}});
+    permanent(kept, "--max-stored-bytes-per-user");
+    // One message: the same figures on both paths, the quota as given (390.6 KiB).
+    const std::string message = job.json()["error"]["message"].get<std::string>();
+    const auto quotaPart = message.substr(message.find("your stored results use"));
+    EXPECT_NE(quotaPart.find(" of 390.6 KiB (--max-stored-bytes-per-user)"), std::string::npos) << message;
+    EXPECT_NE(kept.json()["error"]["message"].get<std::string>().find(quotaPart), std::string::npos)
+        << kept.body << " vs " << message;
+}
+
 // D11: with the disk full, DELETE failed with 500, so no space could be freed through the API.
 TEST(SecurityFullDisk, DeletingWorksWhenTheDiskIsFull)
 {

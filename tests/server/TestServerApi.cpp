@@ -437,9 +437,11 @@ TEST(ServerQuota, StoredResultsAreLimitedPerUserAndDeletingJobsFreesThem)
     for (int i = 0; i < 600 && admin.get("/api/v1/jobs/" + std::to_string(first)).json()["state"] != "done"; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     r = admin.post("/api/v1/jobs", {{"hmf", hmf}});
-    EXPECT_EQ(r.status, 429);
+    EXPECT_EQ(r.status, 422);
     EXPECT_EQ(r.json()["error"]["code"], "limit_exceeded");
-    EXPECT_NE(r.json()["error"]["message"].get<std::string>().find("MiB"), std::string::npos) << r.body;
+    EXPECT_NE(r.json()["error"]["message"].get<std::string>().find("of 390.6 KiB (--max-stored-bytes-per-user)"),
+              std::string::npos)
+        << r.body;
     // Deleting the finished job (and its results) makes room again.
     EXPECT_EQ(admin.request(http::verb::delete_, "/api/v1/jobs/" + std::to_string(first)).status, 204);
     EXPECT_EQ(admin.get("/api/v1/jobs/" + std::to_string(first)).status, 404);

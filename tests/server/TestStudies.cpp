@@ -334,11 +334,11 @@ TEST_F(Studies, BadStudiesAreRefusedWithErrorsNamingWhatIsWrong)
     refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", {{"mode", "list"}, {"parameters", {{"GainP.k", {1, 2}}, {"GainI.k", {1}}}}}}},
             400, "bad_request", "equal length");
     refused({{"kind", "sweep"}, {"hmf", hmf}, {"sweep", {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 5001}}}}}}}},
-            429, "limit_exceeded", "5000");
+            422, "limit_exceeded", "5000");
     // Full results of 5000 runs of 2 MB each cannot fit in the study's 512 MiB.
     refused({{"kind", "sweep"}, {"hmf", hmf}, {"outputs", {{"full", true}}},
              {"sweep", {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 5000}}}}}}}},
-            429, "limit_exceeded", "MiB");
+            422, "limit_exceeded", "--max-study-bytes");
     refused({{"kind", "optimise"}, {"hmf", hmf},
              {"optimise", {{"parameters", {{"GainP.k", {{"min", 1}, {"max", 0}}}}},
                            {"objective", {{"terms", {{{"function", "final"}, {"variable", kPosition}}}}}}}}},

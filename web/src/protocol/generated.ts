@@ -113,6 +113,7 @@ export interface ProtocolDefinitions {
     ErrorBody?: ErrorBody;
     Role?: Role;
     User?: User;
+    CurrentUser?: CurrentUser;
     UserRef?: UserRef;
     Pose?: Pose;
     Point?: Point;
@@ -242,6 +243,26 @@ export interface User {
      * Set by an administrator: the account cannot log in and its sessions have ended.
      */
     disabled?: boolean;
+}
+/**
+ * GET /auth/me: the logged-in user, with what their stored results take of their quota.
+ */
+export interface CurrentUser {
+    id: number;
+    username: string;
+    role: Role;
+    /**
+     * Set by an administrator: the account cannot log in and its sessions have ended.
+     */
+    disabled?: boolean;
+    /**
+     * Bytes the user's stored results take (jobs' results and studies' kept runs).
+     */
+    stored_bytes: number;
+    /**
+     * What they may take (--max-stored-bytes-per-user); past it new jobs are refused (422 limit_exceeded).
+     */
+    quota_bytes: number;
 }
 export interface UserRef {
     id: number;
