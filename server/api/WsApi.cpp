@@ -138,12 +138,13 @@ void WsApi::handle(const std::string& text)
         // open model is only ever touched by one thread and replies keep their order.
         mBusy = true;
         mServices.pools.runRequest([self = shared_from_this(), type, msg = parsed.value, id] {
-            const Reply reply = self->dispatchSafely(type, msg);
+            Reply reply = self->dispatchSafely(type, msg);
+            const bool ok = reply.ok;
             // simulate.start answers later, once its job is submitted (finishStart).
-            const bool deferred = std::exchange(self->mReplyDeferred, false) && reply.ok;
+            const bool deferred = std::exchange(self->mReplyDeferred, false) && ok;
             // A large model's reply is megabytes of JSON: it is written here too.
-            std::string text = deferred ? std::string() : answerText(id, reply);
-            self->mSender->runOnConnection([self, deferred, ok = reply.ok, text = std::move(text)]() mutable {
+            std::string text = deferred ? std::string() : answerText(id, std::move(reply));
+            self->mSender->runOnConnection([self, deferred, ok, text = std::move(text)]() mutable {
                 if (self->mClosed) return;
                 if (!deferred) self->sendAnswer(ok, std::move(text));
                 self->mBusy = false;
@@ -156,8 +157,9 @@ void WsApi::handle(const std::string& text)
         });
         return;
     }
-    const Reply reply = dispatchSafely(type, msg);
-    sendAnswer(reply.ok, answerText(id, reply));
+    Reply reply = dispatchSafely(type, msg);
+    const bool ok = reply.ok;
+    sendAnswer(ok, answerText(id, std::move(reply)));
 }
 
 WsApi::Reply WsApi::dispatchSafely(const std::string& type, const nlohmann::json& msg)
@@ -171,10 +173,14 @@ WsApi::Reply WsApi::dispatchSafely(const std::string& type, const nlohmann::json
     }
 }
 
-std::string WsApi::answerText(const nlohmann::json& id, const Reply& reply)
+std::string WsApi::answerText(const nlohmann::json& id, Reply reply)
 {
     if (!reply.ok) return toJsonText(protocol::ErrorReply{.id = id, .error = {.code = reply.code, .message = reply.message}});
-    return toJsonText(protocol::Reply{.id = id, .data = reply.data});
+    // A model's data is megabytes of JSON: moved into the envelope, where the protocol struct
+    // would copy it twice (into the struct, then out of it).
+    nlohmann::json envelope = protocol::Reply{.id = id};
+    envelope["data"] = std::move(reply.data);
+    return toJsonText(envelope);
 }
 
 void WsApi::sendAnswer(bool ok, std::string text)

@@ -39,7 +39,7 @@ private:
     Reply dispatch(const std::string& type, const nlohmann::json& msg);
     Reply dispatchSafely(const std::string& type, const nlohmann::json& msg);
     // The reply or error message for `reply` (no state touched: any thread).
-    static std::string answerText(const nlohmann::json& id, const Reply& reply);
+    static std::string answerText(const nlohmann::json& id, Reply reply);
     // Sends an answer; after a reply, runs what was to follow it (mAfterReply).
     void sendAnswer(bool ok, std::string text);
     Reply openModel(const protocol::ModelOpenRequest& request);
