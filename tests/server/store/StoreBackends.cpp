@@ -25,6 +25,7 @@ std::mutex gPostgresMutex;
 std::unique_ptr<TemporaryPostgres> gPostgres;
 std::string gPostgresFailure;
 int gDatabasesMade = 0;
+std::string gMigratedTemplate;
 
 TemporaryPostgres& postgres()
 {
@@ -38,6 +39,23 @@ TemporaryPostgres& postgres()
         }
     }
     return *gPostgres;
+}
+
+// Every test's database is a copy of one the store migrated once per process: migrating a
+// new database for each test took most of the suite's time (the schema upgrade itself is
+// checked here by the template's own migration and by the PostgreSQL server tests). Called
+// with gPostgresMutex held.
+const std::string& migratedTemplate(TemporaryPostgres& server, pqxx::nontransaction& admin)
+{
+    if (gMigratedTemplate.empty()) {
+        admin.exec0("CREATE DATABASE migrated_template");
+        server::StorageConfig config;
+        config.database = server.uri("migrated_template");
+        config.maxConnections = 1;
+        server::openStorage(config).reset();   // a template takes no copies while connected
+        gMigratedTemplate = "migrated_template";
+    }
+    return gMigratedTemplate;
 }
 
 class StopPostgresAtEnd : public ::testing::Environment {
@@ -118,7 +136,7 @@ FreshDatabase::FreshDatabase(Backend backend) : mBackend(backend), mDir(makeTemp
     mPostgresName = "t_" + std::to_string(++gDatabasesMade);
     pqxx::connection admin(server.uri("postgres") + "?connect_timeout=10");
     pqxx::nontransaction txn(admin);   // CREATE DATABASE cannot run in a transaction
-    txn.exec0("CREATE DATABASE " + mPostgresName);
+    txn.exec0("CREATE DATABASE " + mPostgresName + " TEMPLATE " + migratedTemplate(server, txn) + " STRATEGY FILE_COPY");
     mDatabase = server.uri(mPostgresName);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The store conformance suite (issue 16): every test runs against both back ends on a fresh,
-// empty database. SQLite gets a new file in a new temporary directory; PostgreSQL a new
-// database on the one TemporaryPostgres server of this process (started by the first test that
-// needs it, stopped when the tests end). A PostgreSQL that cannot be started fails the test.
+// The store conformance suite (issue 16): every test runs against both back ends on a fresh
+// database without data. SQLite gets a new file in a new temporary directory; PostgreSQL a
+// new database on the one TemporaryPostgres server of this process (started by the first test
+// that needs it, stopped when the tests end), copied from one with the current schema. A
+// PostgreSQL that cannot be started fails the test.
 #include "server/store/Storage.h"
 
 #include <gtest/gtest.h>
