@@ -161,37 +161,8 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
         for (auto [field, end] = in.request.equal_range("X-Forwarded-For"); field != end; ++field)
             forwardedFor.push_back(field->value());
     std::string address = mTrustedProxies.clientAddress(in.clientAddress, forwardedFor);
-    if (route->work == RouteWork::LargeReply) {
-        // At most mLargeReplySlots of one user's at a time, built on their own pool.
-        return replyScheduled(
-            *route, in, std::move(address), std::move(params), std::move(reply),
-            [this](std::int64_t userId, std::function<void()> build) {
-                PerUserSlots::Slot slot = mLargeReplySlots.tryTake(userId);
-                if (!slot) return false;
-                mPools->runLargeReply([build = std::move(build), slot = std::move(slot)]() mutable { build(); });
-                return true;
-            },
-            [this] {
-                Response busy = apiError(http::status::service_unavailable, "busy",
-                                         "at most " + std::to_string(mLargeReplySlots.perUser()) +
-                                             " large replies (a model, results, an FMU) are built at once per user; "
-                                             "try again when one has come");
-                busy.set(http::field::retry_after, "1");
-                return busy;
-            });
-    }
-    if (route->work == RouteWork::Checks) {
-        // Users take turns (mCheckRuns), each within their running and waiting caps.
-        return replyScheduled(
-            *route, in, std::move(address), std::move(params), std::move(reply),
-            [this](std::int64_t userId, std::function<void()> build) { return mCheckRuns->submit(userId, std::move(build)); },
-            [this] {
-                return refusal("rate_limited", "you have " + std::to_string(mOptions.maxQueuedChecksPerUser) +
-                                                   " check runs waiting; the limit is " +
-                                                   std::to_string(mOptions.maxQueuedChecksPerUser) +
-                                                   " (--max-queued-checks-per-user): try again when one has run");
-            });
-    }
+    if (route->work == RouteWork::LargeReply || route->work == RouteWork::Checks)
+        return replyScheduled(*route, in, std::move(address), std::move(params), std::move(reply));
     auto run = [this, &request = in.request, receivedAt = in.receivedAt, address = std::move(address),
                 params = std::move(params), route, reply]() mutable {
         Call call{request, address, std::move(params), std::nullopt, {}, receivedAt};
@@ -217,11 +188,10 @@ void TlmhubApp::handle(const Incoming& in, Reply reply)
 }
 
 void TlmhubApp::replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params,
-                               Reply reply, Schedule schedule, std::function<Response()> refusal)
+                               Reply reply)
 {
     mPools->runRequest([this, &route, &request = in.request, receivedAt = in.receivedAt, address = std::move(address),
-                        params = std::move(params), reply = std::move(reply), schedule = std::move(schedule),
-                        refusal = std::move(refusal)]() mutable {
+                        params = std::move(params), reply = std::move(reply)]() mutable {
         Call call{request, address, std::move(params), std::nullopt, {}, receivedAt};
         Response refused;
         if (!authenticateCall(route, call, refused)) return reply(std::move(refused));
@@ -232,8 +202,37 @@ void TlmhubApp::replyScheduled(const Route& route, const Incoming& in, std::stri
             Call scheduled{request, address, std::move(params), std::move(user), std::move(token), receivedAt};
             reply(callHandler(route, scheduled));
         };
-        if (!schedule(userId, std::move(build))) reply(refusal());
+        if (route.work == RouteWork::LargeReply) {
+            if (!scheduleLargeReply(userId, std::move(build))) reply(largeRepliesBusy());
+        } else if (!mCheckRuns->submit(userId, std::move(build))) {
+            reply(checkRunsRefused());
+        }
     });
+}
+
+bool TlmhubApp::scheduleLargeReply(std::int64_t userId, std::function<void()> build)
+{
+    PerUserSlots::Slot slot = mLargeReplySlots.tryTake(userId);
+    if (!slot) return false;
+    mPools->runLargeReply([build = std::move(build), slot = std::move(slot)]() mutable { build(); });
+    return true;
+}
+
+Response TlmhubApp::largeRepliesBusy() const
+{
+    Response busy = apiError(http::status::service_unavailable, "busy",
+                             "at most " + std::to_string(mLargeReplySlots.perUser()) +
+                                 " large replies (a model, results, an FMU) are built at once per user; "
+                                 "try again when one has come");
+    busy.set(http::field::retry_after, "1");
+    return busy;
+}
+
+Response TlmhubApp::checkRunsRefused() const
+{
+    return refusal("rate_limited", "at most " + std::to_string(mOptions.maxQueuedChecksPerUser) +
+                                       " check runs of one user wait at once (--max-queued-checks-per-user): "
+                                       "try again when one has run");
 }
 
 bool TlmhubApp::authenticateCall(const Route& route, Call& call, Response& refused)

@@ -53,12 +53,16 @@ private:
     // The two halves of callRoute: false with the refusal when the call is not authenticated.
     bool authenticateCall(const Route& route, Call& call, Response& refused);
     Response callHandler(const Route& route, Call& call);
-    // RouteWork::LargeReply and Checks: authenticated on the request pool, then `schedule`
-    // takes the building of the reply for the caller (runs it later), or refuses it (false):
-    // then the reply is `refusal`'s.
-    using Schedule = std::function<bool(std::int64_t userId, std::function<void()> build)>;
-    void replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params, Reply reply,
-                        Schedule schedule, std::function<Response()> refusal);
+    // RouteWork::LargeReply and Checks: authenticated on the request pool, then the building
+    // of the reply is scheduled for the caller, or refused (503 busy, 429 rate_limited).
+    void replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params, Reply reply);
+    // At most mLargeReplySlots of one user's large replies at a time, built on their own pool;
+    // false when the user has none free.
+    bool scheduleLargeReply(std::int64_t userId, std::function<void()> build);
+    Response largeRepliesBusy() const;
+    // Check runs take turns between users (mCheckRuns, within each user's caps); refused past
+    // the user's waiting limit.
+    Response checkRunsRefused() const;
     // Bearer header (a login token or an API token); or, where `queryToken` allows (the
     // WebSocket upgrade), ?token= (a login token only); or, on GET, a signed download link.
     std::optional<User> authenticate(const Request& request, const RouteParams& params,
