@@ -13,7 +13,10 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <iostream>
+#include <mutex>
 #include <poll.h>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <netinet/in.h>
@@ -29,12 +32,40 @@ namespace http = beast::http;
 namespace net = boost::asio;
 using tcp = net::ip::tcp;
 
+namespace {
+
+// The directories freshTempDir made in this process: removed when the tests end (a full run
+// left about 1.5 GB of servers' data in /tmp), or, when a test failed, kept for a look.
+std::mutex gTempDirsMutex;
+std::set<std::filesystem::path> gTempDirs;
+
+class RemoveTempDirsAtEnd : public ::testing::Environment {
+public:
+    void TearDown() override
+    {
+        const bool passed = ::testing::UnitTest::GetInstance()->Passed();
+        std::lock_guard lock(gTempDirsMutex);
+        for (const std::filesystem::path& dir : gTempDirs) {
+            std::error_code ignored;
+            if (passed) std::filesystem::remove_all(dir, ignored);
+            else std::cerr << "a test failed: its data is kept in " << dir.string() << "\n";
+        }
+        gTempDirs.clear();
+    }
+};
+[[maybe_unused]] ::testing::Environment* const gRemoveTempDirs =
+    ::testing::AddGlobalTestEnvironment(new RemoveTempDirsAtEnd);
+
+} // namespace
+
 std::filesystem::path freshTempDir(const std::string& name)
 {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("tlmhub-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    std::lock_guard lock(gTempDirsMutex);
+    gTempDirs.insert(dir);
     return dir;
 }
 

@@ -140,6 +140,8 @@ bool websocketUpgradeDeclined(unsigned short port, const std::string& token, WsT
 // closes or `timeoutMs` passes without data (for requests a client library would refuse).
 std::string rawExchange(unsigned short port, const std::string& bytes, int timeoutMs = 3000);
 
+// A new empty directory tlmhub-NAME-PID in the temporary directory; removed when the test
+// program ends with every test passed, kept (and named on stderr) when one failed.
 std::filesystem::path freshTempDir(const std::string& name);
 // A loopback TCP port nobody listens on right now (bound to port 0, then closed): for a server
 // that must know its own port before it starts. Another process may take it in between.
