@@ -560,12 +560,16 @@ TEST(SecurityStatusCodes, PermanentRefusalsNameTheirFlagAndTemporaryOnesSayWhenT
     const nlohmann::json manyRuns = {{"parameters", {{"GainP.k", {{"from", 0}, {"to", 1}, {"steps", 101}}}}}};
     permanent(admin.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", hmf}, {"sweep", manyRuns}}), "--max-study-runs");
 
-    // Temporary: one job running, one queued, a third waits its turn.
+    // Temporary: one job running, one queued, a third waits its turn. The second is sent once
+    // the first runs: before that both would be queued, and the second refused.
     std::vector<std::int64_t> started;
     for (int i = 0; i < 2; ++i) {
         const auto r = admin.post("/api/v1/jobs", {{"hmf", hmf}, {"stop", 500.0}});
         ASSERT_EQ(r.status, 201) << r.body;
         started.push_back(r.json()["id"].get<std::int64_t>());
+        const std::string path = "/api/v1/jobs/" + std::to_string(started.back());
+        for (int wait = 0; i == 0 && wait < 1200 && admin.get(path).json()["state"] == "queued"; ++wait)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     temporary(admin.post("/api/v1/jobs", {{"hmf", hmf}}), "--max-queued-per-user");
     const nlohmann::json longRuns = {{"parameters", {{"GainP.k", {0.01, 0.02}}}}};
