@@ -25,7 +25,8 @@ std::mutex gPostgresMutex;
 std::unique_ptr<TemporaryPostgres> gPostgres;
 std::string gPostgresFailure;
 int gDatabasesMade = 0;
-std::string gMigratedTemplate;
+bool gTemplateMigrated = false;
+constexpr const char* kMigratedTemplate = "migrated_template";
 
 TemporaryPostgres& postgres()
 {
@@ -45,17 +46,17 @@ TemporaryPostgres& postgres()
 // new database for each test took most of the suite's time (the schema upgrade itself is
 // checked here by the template's own migration and by the PostgreSQL server tests). Called
 // with gPostgresMutex held.
-const std::string& migratedTemplate(TemporaryPostgres& server, pqxx::nontransaction& admin)
+std::string migratedTemplate(TemporaryPostgres& server, pqxx::nontransaction& admin)
 {
-    if (gMigratedTemplate.empty()) {
-        admin.exec0("CREATE DATABASE migrated_template");
+    if (!gTemplateMigrated) {
+        admin.exec0(std::string("CREATE DATABASE ") + kMigratedTemplate);
         server::StorageConfig config;
-        config.database = server.uri("migrated_template");
+        config.database = server.uri(kMigratedTemplate);
         config.maxConnections = 1;
         server::openStorage(config).reset();   // a template takes no copies while connected
-        gMigratedTemplate = "migrated_template";
+        gTemplateMigrated = true;
     }
-    return gMigratedTemplate;
+    return kMigratedTemplate;
 }
 
 class StopPostgresAtEnd : public ::testing::Environment {
