@@ -78,7 +78,7 @@ sanitizer_config() {
         "${timing[@]}" "$@" >/dev/null
 }
 asan_build() {
-  # One build for tests and fuzz targets: everything has coverage instrumentation.
+  # One build for tests and fuzz targets: the code under test has coverage instrumentation.
   sanitizer_config build-asan -DTLMHUB_SANITIZE=address,undefined -DTLMHUB_FUZZ=ON
   cmake --build build-asan -j"$jobs"
   slowest_build_steps build-asan
