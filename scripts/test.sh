@@ -112,40 +112,12 @@ tsan_test() {
     run_tests tsan-test build-tsan -j"$jobs" -L '^threads$' -LE "$sanitizer_excluded"
 }
 
-# A sanitizer build runs in the background while the stage before it runs its tests. At nice 19
-# it gets only the CPU those tests leave idle (a test stage keeps its two cores about 80 % busy),
-# and once they end it has the machine. Its output, `stage` line included, is printed when it is
-# joined; its wall time counts from its start, so it overlaps the test stage's. It runs in a
-# session of its own, so that a failing or interrupted run stops all of it.
-export root jobs
-export -f stage timing_flags slowest_build_steps sanitizer_config asan_build tsan_build
-background_stage_pid=
-start_background_stage() {
-  local name=$1
-  setsid -w nice -n 19 bash -c 'set -euo pipefail; stage "$1-build" "$1_build"' bash "$name" \
-    >"$root/build/$name.log" 2>&1 &
-  background_stage_pid=$!
-}
-join_background_stage() {
-  local name=$1 status=0
-  wait "$background_stage_pid" || status=$?
-  background_stage_pid=
-  cat "$root/build/$name.log"
-  if [ "$status" -ne 0 ]; then
-    echo "stage $name failed (exit $status)"
-    exit "$status"
-  fi
-}
-trap '[ -z "$background_stage_pid" ] || kill -- "-$background_stage_pid" 2>/dev/null || true' EXIT
-
 stage install scripts/install-deps.sh --with-browser --with-clang
 stage build release_build
-start_background_stage asan
 stage test release_test
-join_background_stage asan
-start_background_stage tsan
+stage asan-build asan_build
 stage asan-test asan_test
-join_background_stage tsan
+stage tsan-build tsan_build
 stage tsan-test tsan_test
 echo "total: $SECONDS s"
 if [ "$SECONDS" -gt "$budget_seconds" ]; then
