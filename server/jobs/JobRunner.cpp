@@ -3,8 +3,11 @@
 #include "core/Simulation.h"
 #include "server/jobs/FrameSource.h"
 #include "server/store/ResultBlob.h"
+#include "server/store/StoreError.h"
 
+#include <iostream>
 #include <sstream>
+#include <thread>
 
 namespace tlmhub::server {
 
@@ -83,7 +86,13 @@ void JobRunner::onProgress(StartedJob& job, System& root, std::size_t stepsTaken
     }
     if (now - job.mLastProgressStore >= kProgressStorePeriod) {
         job.mLastProgressStore = now;
-        mLeases.setProgressLeased(job.mLease, progress);
+        // Stored progress is advisory: while the database is away (a restart) the job runs on,
+        // and the next period stores it again.
+        try {
+            mLeases.setProgressLeased(job.mLease, progress);
+        } catch (const StoreError& e) {
+            if (e.code() != StoreErrc::Unavailable) throw;
+        }
     }
     if (now - job.mLastFramePoll >= kFramePollPeriod) {
         job.mLastFramePoll = now;
@@ -96,10 +105,31 @@ void JobRunner::onProgress(StartedJob& job, System& root, std::size_t stepsTaken
 void JobRunner::finish(StartedJob& job, JobState state, const std::string& error, std::uint64_t steps,
                        const Result* result)
 {
-    if (mLeases.finishLeased(job.mLease, state, error, steps, result ? &result->blob : nullptr))
-        mHub.finish(job.mId, result ? &result->samples : nullptr, state, error);
-    else
-        mHub.abandon(job.mId);   // another node took the job over while this one stalled
+    // While the database restarts (about a second) the end is stored once it answers again;
+    // the lease number keeps a late store from overwriting another node's run. Past the
+    // retries the job's lease lapses and the queue gives it to a node again, as it does a
+    // stalled node's. A worker thread never ends on a database that is away.
+    constexpr auto kRetryPause = std::chrono::milliseconds(250);
+    constexpr auto kRetryFor = std::chrono::seconds(5);
+    const auto giveUpAt = Clock::now() + kRetryFor;
+    for (;;) {
+        try {
+            if (mLeases.finishLeased(job.mLease, state, error, steps, result ? &result->blob : nullptr))
+                mHub.finish(job.mId, result ? &result->samples : nullptr, state, error);
+            else
+                mHub.abandon(job.mId);   // another node took the job over while this one stalled
+            return;
+        } catch (const StoreError& e) {
+            if (e.code() != StoreErrc::Unavailable) throw;
+            if (Clock::now() >= giveUpAt) {
+                std::cerr << "job " << job.mId << ": its end could not be stored (" << e.what()
+                          << "); its lease will lapse and the job run again\n";
+                mHub.abandon(job.mId);
+                return;
+            }
+        }
+        std::this_thread::sleep_for(kRetryPause);
+    }
 }
 
 void JobRunner::giveUp(StartedJob& job)
@@ -140,7 +170,13 @@ bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bo
         finishRun(job, ok, {});
     } catch (const std::exception& e) {
         job.mControl->detach();
-        finish(job, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
+        try {
+            finish(job, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
+        } catch (const std::exception& storing) {
+            std::cerr << "job " << job.mId << ": failed (" << e.what() << ") and that could not be stored ("
+                      << storing.what() << "); its lease will lapse\n";
+            mHub.abandon(job.mId);
+        }
     }
     return true;
 }
