@@ -57,6 +57,13 @@ bool answeredOnConnection(const std::string& type)
     return type == "ping" || type == "study.unsubscribe";
 }
 
+// Requests whose reply is a whole model (megabytes for a large one): built on the large-reply
+// pool within the user's slots there, as GET /models/{id} is.
+bool buildsLargeReply(const std::string& type)
+{
+    return type == "model.open" || type == "model.get";
+}
+
 // On a locked copy a system parameter keeps the template's type, unit and description, and no
 // new one appears: only values change.
 std::string sysparamMetadataProblem(const Model& model, const nlohmann::json& msg)
@@ -134,16 +141,19 @@ void WsApi::handle(const std::string& text)
     const std::string type = msg["type"].get<std::string>();
     if (mNode && type != "log.subscribe") return sendError(id, "forbidden", "a node may only send log.subscribe");
     if (!answeredOnConnection(type)) {
-        // On the request pool; this connection's later messages wait for its reply, so the
-        // open model is only ever touched by one thread and replies keep their order.
+        // On the request pool (a whole model: the large-reply pool); this connection's later
+        // messages wait for its reply, so the open model is only ever touched by one thread
+        // and replies keep their order.
         mBusy = true;
-        mServices.pools.runRequest([self = shared_from_this(), type, msg = parsed.value, id] {
+        // `largeReplySlot`: held while a whole model's reply is built (null on the request pool).
+        auto work = [self = shared_from_this(), type, msg = parsed.value, id](PerUserSlots::Slot largeReplySlot) {
             Reply reply = self->dispatchSafely(type, msg);
             const bool ok = reply.ok;
             // simulate.start answers later, once its job is submitted (finishStart).
             const bool deferred = std::exchange(self->mReplyDeferred, false) && ok;
             // A large model's reply is megabytes of JSON: it is written here too.
             std::string text = deferred ? std::string() : answerText(id, std::move(reply));
+            largeReplySlot.reset();
             self->mSender->runOnConnection([self, deferred, ok, text = std::move(text)]() mutable {
                 if (self->mClosed) return;
                 if (!deferred) self->sendAnswer(ok, std::move(text));
@@ -154,8 +164,11 @@ void WsApi::handle(const std::string& text)
                     self->handle(next);
                 }
             });
-        });
-        return;
+        };
+        if (!buildsLargeReply(type)) return mServices.pools.runRequest([work = std::move(work)] { work(nullptr); });
+        if (mServices.pools.runLargeReply(mUser.id, std::move(work))) return;
+        mBusy = false;
+        return sendError(id, "busy", mServices.pools.largeRepliesBusyMessage());
     }
     Reply reply = dispatchSafely(type, msg);
     const bool ok = reply.ok;

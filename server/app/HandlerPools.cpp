@@ -34,9 +34,18 @@ bool HandlerPools::runHashing(std::function<void()> task)
     return true;
 }
 
-void HandlerPools::runLargeReply(std::function<void()> task)
+bool HandlerPools::runLargeReply(std::int64_t userId, std::function<void(PerUserSlots::Slot)> task)
 {
-    boost::asio::post(mLargeReplies, std::move(task));
+    PerUserSlots::Slot slot = mLargeReplySlots.tryTake(userId);
+    if (!slot) return false;
+    boost::asio::post(mLargeReplies, [task = std::move(task), slot = std::move(slot)]() mutable { task(std::move(slot)); });
+    return true;
+}
+
+std::string HandlerPools::largeRepliesBusyMessage() const
+{
+    return "at most " + std::to_string(mLargeReplySlots.perUser()) +
+           " large replies (a model, results, an FMU) are built at once per user; try again when one has come";
 }
 
 void HandlerPools::stop()

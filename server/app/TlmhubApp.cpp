@@ -198,32 +198,23 @@ void TlmhubApp::replyScheduled(const Route& route, const Incoming& in, std::stri
         const std::int64_t userId = call.user ? call.user->id : 0;
         // The call refers to this task's address: the scheduled work makes its own.
         auto build = [this, &route, &request, receivedAt, address, params = std::move(call.params),
-                      user = call.user, token = std::move(call.token), reply]() mutable {
+                      user = call.user, token = std::move(call.token), reply](PerUserSlots::Slot slot) mutable {
             Call scheduled{request, address, std::move(params), std::move(user), std::move(token), receivedAt};
-            reply(callHandler(route, scheduled));
+            Response response = callHandler(route, scheduled);
+            slot.reset();
+            reply(std::move(response));
         };
         if (route.work == RouteWork::LargeReply) {
-            if (!scheduleLargeReply(userId, std::move(build))) reply(largeRepliesBusy());
-        } else if (!mCheckRuns->submit(userId, std::move(build))) {
+            if (!mPools->runLargeReply(userId, std::move(build))) reply(largeRepliesBusy());
+        } else if (!mCheckRuns->submit(userId, [build = std::move(build)]() mutable { build(nullptr); })) {
             reply(checkRunsRefused());
         }
     });
 }
 
-bool TlmhubApp::scheduleLargeReply(std::int64_t userId, std::function<void()> build)
-{
-    PerUserSlots::Slot slot = mLargeReplySlots.tryTake(userId);
-    if (!slot) return false;
-    mPools->runLargeReply([build = std::move(build), slot = std::move(slot)]() mutable { build(); });
-    return true;
-}
-
 Response TlmhubApp::largeRepliesBusy() const
 {
-    Response busy = apiError(http::status::service_unavailable, "busy",
-                             "at most " + std::to_string(mLargeReplySlots.perUser()) +
-                                 " large replies (a model, results, an FMU) are built at once per user; "
-                                 "try again when one has come");
+    Response busy = apiError(http::status::service_unavailable, "busy", mPools->largeRepliesBusyMessage());
     busy.set(http::field::retry_after, "1");
     return busy;
 }

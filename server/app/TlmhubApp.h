@@ -4,7 +4,6 @@
 #include "server/api/ApiSupport.h"
 #include "server/app/FairTaskQueue.h"
 #include "server/app/HandlerPools.h"
-#include "server/app/PerUserSlots.h"
 #include "server/app/ServerOptions.h"
 #include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
@@ -56,9 +55,6 @@ private:
     // RouteWork::LargeReply and Checks: authenticated on the request pool, then the building
     // of the reply is scheduled for the caller, or refused (503 busy, 429 rate_limited).
     void replyScheduled(const Route& route, const Incoming& in, std::string address, RouteParams params, Reply reply);
-    // At most mLargeReplySlots of one user's large replies at a time, built on their own pool;
-    // false when the user has none free.
-    bool scheduleLargeReply(std::int64_t userId, std::function<void()> build);
     Response largeRepliesBusy() const;
     // Check runs take turns between users (mCheckRuns, within each user's caps); refused past
     // the user's waiting limit.
@@ -79,7 +75,6 @@ private:
     std::unique_ptr<LoginRateLimiter> mLoginLimiter;
     std::unique_ptr<LoginRateLimiter> mAddressLimiter;
     TrustedProxies mTrustedProxies;
-    PerUserSlots mLargeReplySlots{2};
     std::unique_ptr<StreamHub> mStreams;
     std::unique_ptr<JobQueue> mQueue;
     std::unique_ptr<JobStreams> mJobStreams;   // after the queue: its relays end first

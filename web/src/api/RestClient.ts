@@ -12,11 +12,20 @@ export interface FmuOptions { parameters: string[]; identifier?: string }
 /** An account as the administrator sees it. */
 export interface Account extends User { disabled: boolean }
 
+/**
+ * A GET the server answered 503 with Retry-After (it builds at most two of a user's large
+ * replies at once, SECURITY.md) is sent again after the time it names, at most this often and
+ * only when it names at most MAX_RETRY_AFTER_S seconds; other methods are never repeated.
+ */
+const BUSY_RETRIES = 3;
+const MAX_RETRY_AFTER_S = 10;
+
 export class RestClient {
     constructor(
         private token: string | null = null,
         private readonly base = '/api/v1',
         private readonly fetchFn: typeof fetch = (...args) => fetch(...args),
+        private readonly wait: (ms: number) => Promise<void> = (ms) => new Promise((resolve) => setTimeout(resolve, ms)),
     ) {}
 
     /** Called when the server no longer accepts the token (expired, password changed, account disabled). */
@@ -34,7 +43,7 @@ export class RestClient {
             headers['Content-Type'] = contentType;
             payload = typeof body === 'string' ? body : JSON.stringify(body);
         }
-        const response = await this.fetchFn(this.base + path, { method, headers, body: payload });
+        const response = await this.fetchRetryingWhenBusy(path, { method, headers, body: payload });
         const text = await response.text();
         if (response.status === 401 && this.token && path !== '/auth/login') this.onUnauthorized();
         if (!response.ok) throw errorFromResponse(response.status, text);
@@ -47,10 +56,23 @@ export class RestClient {
     async blob(path: string, accept: string): Promise<Blob> {
         const headers: Record<string, string> = { Accept: accept };
         if (this.token) headers.Authorization = `Bearer ${this.token}`;
-        const response = await this.fetchFn(this.base + path, { method: 'GET', headers });
+        const response = await this.fetchRetryingWhenBusy(path, { method: 'GET', headers });
         if (response.status === 401 && this.token) this.onUnauthorized();
         if (!response.ok) throw errorFromResponse(response.status, await response.text());
         return response.blob();
+    }
+
+    private async fetchRetryingWhenBusy(path: string, init: RequestInit): Promise<Response> {
+        for (let attempt = 0; ; ++attempt) {
+            const response = await this.fetchFn(this.base + path, init);
+            const retryAfter = Number(response.headers.get('Retry-After'));
+            if (init.method !== 'GET' || response.status !== 503 || attempt >= BUSY_RETRIES ||
+                !response.headers.has('Retry-After') || !(retryAfter >= 0 && retryAfter <= MAX_RETRY_AFTER_S)) {
+                return response;
+            }
+            await response.text();   // the refusal's body, not needed
+            await this.wait(retryAfter * 1000);
+        }
     }
 
     login(username: string, password: string): Promise<LoginResult> {

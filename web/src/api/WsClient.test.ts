@@ -56,6 +56,48 @@ describe('WsClient', () => {
         expect((err as ApiError).message).toBe('A.out and B.out are both write ports');
     });
 
+    it('sends model.open again a second later while the server is busy, and gives up after five tries', async () => {
+        const socket = new FakeSocket();
+        const timers: { fn: () => void; ms: number }[] = [];
+        const client = new WsClient(() => socket, { enabled: false, setTimer: (fn, ms) => timers.push({ fn, ms }) });
+        const ready = client.connect();
+        socket.receive(hello);
+        await ready;
+        const busy = (id: unknown) => ({ id, type: 'error', error: { code: 'busy', message: 'at most 2 large replies' } });
+        const settle = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+        const opened = client.request('model.open', { model_id: 3 });
+        socket.receive(busy(socket.sent[0].id));
+        await settle();
+        expect(timers.map((t) => t.ms)).toEqual([1000]);
+        expect(socket.sent).toHaveLength(1);   // nothing sent before the second has passed
+        timers[0].fn();
+        await settle();
+        expect(socket.sent.map((m) => m.type)).toEqual(['model.open', 'model.open']);
+        expect(socket.sent[1]).toMatchObject({ model_id: 3 });
+        socket.receive({ id: socket.sent[1].id, type: 'reply', ok: true, data: { model_id: 3 } });
+        expect(await opened).toEqual({ model_id: 3 });
+
+        const refused = client.request('model.get').catch((e: unknown) => e);
+        for (let attempt = 0; attempt < 6; ++attempt) {
+            socket.receive(busy(socket.sent[socket.sent.length - 1].id));
+            await settle();
+            if (attempt < 5) timers[timers.length - 1].fn();
+            await settle();
+        }
+        const err = await refused;
+        expect((err as ApiError).code).toBe('busy');
+        expect(socket.sent.filter((m) => m.type === 'model.get')).toHaveLength(6);
+    });
+
+    it('does not send an edit again when the server answers busy', async () => {
+        const { socket, client } = await connected();
+        const p = client.request('ping').catch((e: unknown) => e);
+        socket.receive({ id: socket.sent[0].id, type: 'error', error: { code: 'busy', message: 'too many messages' } });
+        expect(((await p) as ApiError).code).toBe('busy');
+        expect(socket.sent).toHaveLength(1);
+    });
+
     it('the field "type" of a request cannot overwrite the message type', async () => {
         const { socket, client } = await connected();
         // @ts-expect-error: the typed fields have no "type"; untyped callers could still send one

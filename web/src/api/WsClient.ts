@@ -73,6 +73,15 @@ export function backoffDelay(attempt: number, random: () => number, baseMs = 250
 /** A job this socket streams: subscribed again, with the same fields, after a reconnect. */
 interface JobSubscription { job_id: number; variables?: string[]; rate?: number; frames?: 'json' | 'binary' }
 
+/**
+ * Requests whose reply is a whole model: the server builds at most two of a user's large
+ * replies at once and refuses more with 'busy' (SECURITY.md). They only read, so they are sent
+ * again a second later, a few times, before the caller sees the refusal.
+ */
+const RETRIED_WHEN_BUSY: ReadonlySet<string> = new Set(['model.open', 'model.get']);
+const BUSY_RETRIES = 5;
+const BUSY_RETRY_MS = 1000;
+
 /** The close code the server uses when the login ends (logout, expiry, password or role change). */
 const POLICY_CLOSE = 1008;
 
@@ -146,7 +155,19 @@ export class WsClient {
             const why = this.status === 'reconnecting' ? 'the connection to the server was lost; reconnecting' : 'not connected to the server';
             return Promise.reject(new ApiError('not_connected', why));
         }
+        if (RETRIED_WHEN_BUSY.has(type)) return this.sendRetryingWhenBusy(type, fields);
         return this.send(type, fields);
+    }
+
+    private async sendRetryingWhenBusy<T extends RequestType>(type: T, fields: RequestFields<T> | undefined): Promise<ReplyData<T>> {
+        for (let attempt = 0; ; ++attempt) {
+            try {
+                return await this.send(type, fields);
+            } catch (e) {
+                if (!(e instanceof ApiError) || e.code !== 'busy' || attempt >= BUSY_RETRIES) throw e;
+                await new Promise<void>((resolve) => { this.options.setTimer(resolve, BUSY_RETRY_MS); });
+            }
+        }
     }
 
     private send<T extends RequestType>(type: T, fields: RequestFields<T> | undefined): Promise<ReplyData<T>> {

@@ -1,0 +1,53 @@
+import { describe, expect, it } from 'vitest';
+import { RestClient } from './RestClient';
+import { ApiError } from './ApiError';
+
+/** A fetch that answers from a list, in order, and records what it was asked. */
+function scripted(answers: (() => Response)[]) {
+    const asked: { url: string; method: string }[] = [];
+    const fetchFn = (async (url: string, init: RequestInit) => {
+        asked.push({ url, method: init.method ?? 'GET' });
+        const next = answers.shift();
+        if (!next) throw new Error('no more answers');
+        return next();
+    }) as unknown as typeof fetch;
+    return { asked, fetchFn };
+}
+
+const busy = (retryAfter = '1') => () => new Response(JSON.stringify({ error: { code: 'busy', message: 'at most 2 large replies' } }),
+    { status: 503, headers: { 'Retry-After': retryAfter } });
+const ok = (body: unknown) => () => new Response(JSON.stringify(body), { status: 200 });
+
+describe('RestClient', () => {
+    it('sends a GET again after the Retry-After of a busy refusal', async () => {
+        const { asked, fetchFn } = scripted([busy('2'), busy('1'), ok({ id: 7 })]);
+        const waits: number[] = [];
+        const client = new RestClient('t', '/api/v1', fetchFn, async (ms) => { waits.push(ms); });
+        const job = await client.job(7);
+        expect(job).toEqual({ id: 7 });
+        expect(waits).toEqual([2000, 1000]);
+        expect(asked.map((a) => a.url)).toEqual(['/api/v1/jobs/7', '/api/v1/jobs/7', '/api/v1/jobs/7']);
+    });
+
+    it('gives up after three more tries and reports the refusal', async () => {
+        const { asked, fetchFn } = scripted([busy(), busy(), busy(), busy()]);
+        const client = new RestClient('t', '/api/v1', fetchFn, async () => undefined);
+        const err = await client.getModel(3).catch((e: unknown) => e);
+        expect(err).toBeInstanceOf(ApiError);
+        expect((err as ApiError).code).toBe('busy');
+        expect(asked).toHaveLength(4);
+    });
+
+    it('never repeats a request that changes something, nor waits for a long Retry-After', async () => {
+        const post = scripted([busy()]);
+        const client = new RestClient('t', '/api/v1', post.fetchFn, async () => undefined);
+        expect(((await client.createModel('m').catch((e: unknown) => e)) as ApiError).code).toBe('busy');
+        expect(post.asked).toHaveLength(1);
+
+        const long = scripted([busy('600')]);
+        const waits: number[] = [];
+        const reader = new RestClient('t', '/api/v1', long.fetchFn, async (ms) => { waits.push(ms); });
+        expect(((await reader.job(1).catch((e: unknown) => e)) as ApiError).code).toBe('busy');
+        expect(waits).toEqual([]);
+    });
+});
