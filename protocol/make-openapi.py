@@ -75,7 +75,8 @@ def errors(*statuses):
              "422": "limit_exceeded: the request can never succeed as sent (steps, log samples, runs, a full "
                     "quota, ...; the message names the limit and its flag), or for an FMU the core's code "
                     "(invalid_parameter, invalid_model, ...)",
-             "409": "conflict", "413": "payload_too_large",
+             "409": "conflict", "410": "gone (a run's results were dropped: --max-unpinned-runs-per-model)",
+             "413": "payload_too_large",
              "429": "rate_limited: try again after Retry-After (failed logins, wrong join codes, jobs queued "
                     "or studies running per user)",
              "503": "busy (too many logins or password changes wait for a hashing thread; Retry-After: 1) or "
@@ -192,13 +193,26 @@ paths = {
     "/components": {"get": op("The component catalogue", {**ok("Catalogue", "Catalogue"), **errors("401")},
                               tag="models")},
     "/jobs": {
-        "get": op("The caller's jobs", {**ok("Jobs", {"type": "array", "items": ref("JobInfo")}), **errors("401")},
+        "get": op("The caller's jobs, newest first; with model_id, the model's run history (the runs the caller "
+                  "may see, each with owner and parameters), a page at a time",
+                  {**ok("Jobs", {"type": "array", "items": ref("JobInfo")}), **errors("400", "401", "404")},
+                  params=[{"name": "model_id", "in": "query", "required": False, "schema": {"type": "integer", "minimum": 1},
+                           "description": "Only this model's runs: all of them for an administrator and for the staff "
+                                          "of a student's copy, else the caller's own"},
+                          {"name": "limit", "in": "query", "required": False,
+                           "schema": {"type": "integer", "minimum": 1, "maximum": 100, "default": 20},
+                           "description": "With model_id: runs per page"},
+                          {"name": "before", "in": "query", "required": False, "schema": {"type": "integer", "minimum": 1},
+                           "description": "With model_id: only runs with a lower id (the next page: the last id of this one)"}],
                   tag="jobs"),
         "post": op("Queue a simulation of a stored model or of .hmf text",
                    {**ok("Queued", "JobCreated", "201"), **errors("400", "401", "403", "404", "413", "422", "429")},
                    body=json_body("JobRequest"), tag="jobs")},
     "/jobs/{id}": {
         "get": op("A job", {**ok("The job", "JobInfo"), **errors("401", "404")}, params=[ID], tag="jobs"),
+        "patch": op("Name or pin a run (the owner): a pinned run keeps its results",
+                    {**ok("The job", "JobInfo"), **errors("400", "401", "403", "404")},
+                    body=json_body("JobUpdate"), params=[ID], tag="jobs"),
         "delete": op("Cancel a queued or running job (200 with the job); delete a finished one with its results (204)",
                      {**ok("The job", "JobInfo"), "204": {"description": "Deleted"}, **errors("401", "403", "404")},
                      params=[ID], tag="jobs")},
@@ -210,7 +224,7 @@ paths = {
         {"200": {"description": "Results",
                  "content": {"application/json": {"schema": ref("ResultsJson")},
                              "text/csv": {"schema": {"type": "string"}}}},
-         **errors("400", "401", "404")},
+         **errors("400", "401", "404", "409", "410")},
         params=[ID, {"name": "format", "in": "query", "required": False,
                      "schema": {"type": "string", "enum": ["csv", "json"]}},
                 {"name": "variables", "in": "query", "required": False,

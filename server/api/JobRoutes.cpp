@@ -5,6 +5,9 @@
 #include "server/http/HeaderValues.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
+#include "server/store/ModelName.h"
+
+#include <map>
 
 
 namespace tlmhub::server {
@@ -62,11 +65,72 @@ Response submitJob(Services& s, Call& call)
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
+constexpr int kDefaultHistoryPage = 20;
+constexpr int kMaxHistoryPage = 100;
+
+// GET /jobs?model_id=ID[&limit=N][&before=JOB]: the model's runs, newest first, as GET
+// /jobs/{id} lets the caller see them: all of them for an administrator and for the staff of
+// a student's copy, else the caller's own. The next page: before = the last id of this one.
+Response modelHistory(Services& s, Call& call)
+{
+    const auto& q = call.params.query;
+    const auto modelId = parseId(q.at("model_id"));
+    if (!modelId) return apiError(http::status::bad_request, "bad_request", "model_id must be a model's id");
+    int limit = kDefaultHistoryPage;
+    if (q.count("limit")) {
+        const auto n = parseId(q.at("limit"));
+        if (!n || *n > kMaxHistoryPage)
+            return apiError(http::status::bad_request, "bad_request",
+                            "limit must be 1 to " + std::to_string(kMaxHistoryPage));
+        limit = static_cast<int>(*n);
+    }
+    std::optional<std::int64_t> before;
+    if (q.count("before") && !(before = parseId(q.at("before"))))
+        return apiError(http::status::bad_request, "bad_request", "before must be a job's id");
+    const User& who = call.who();
+    const bool everyones = who.role == kRoleAdmin ||
+                           copyAccess(s.labs.store(), who, *modelId).kind == CopyAccess::Kind::Read;
+    if (!everyones && !readableModel(s, who, *modelId)) return apiError(http::status::not_found, "not_found", "no such model");
+    std::map<std::int64_t, std::string> owners;
+    nlohmann::json out = nlohmann::json::array();
+    for (const JobInfo& job : s.queue.store().listForModel(*modelId, everyones ? std::nullopt : std::optional(who.id),
+                                                            before, limit)) {
+        auto owner = owners.find(job.ownerId);
+        if (owner == owners.end()) {
+            const auto user = s.users.find(job.ownerId);
+            owner = owners.emplace(job.ownerId, user ? user->username : std::string()).first;
+        }
+        nlohmann::json entry = job.toJson();
+        entry["owner"] = owner->second;
+        out.push_back(std::move(entry));
+    }
+    return jsonResponse(http::status::ok, out);
+}
+
 Response listJobs(Services& s, Call& call)
 {
+    if (call.params.query.count("model_id")) return modelHistory(s, call);
     nlohmann::json out = nlohmann::json::array();
     for (const JobInfo& job : s.queue.store().listForOwner(call.who().id)) out.push_back(job.toJson());
     return jsonResponse(http::status::ok, out);
+}
+
+// PATCH /jobs/{id} {name?, pinned?}: the owner names or pins a run.
+Response labelJob(Services& s, Call& call)
+{
+    protocol::JobUpdate body;
+    Response error;
+    if (!readBody(call, "JobUpdate", body, error)) return error;
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    if (!canControlJob(call.who(), job->ownerId))
+        return apiError(http::status::forbidden, "forbidden", "only the owner names or pins a run");
+    if (body.name && !body.name->empty())
+        if (const std::string problem = modelNameProblem(*body.name); !problem.empty())
+            return apiError(http::status::bad_request, "bad_request", "run name: " + problem);
+    if (!s.queue.store().label(job->id, body.name, body.pinned))
+        return apiError(http::status::not_found, "not_found", "no such job");
+    return jsonResponse(http::status::ok, s.queue.store().info(job->id)->toJson());
 }
 
 Response getJob(Services& s, Call& call)
@@ -111,6 +175,10 @@ Response jobResults(Services& s, Call& call)
     if (job->state != JobState::Done)
         return apiError(http::status::conflict, "conflict",
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
+    if (job->resultsDropped)
+        return apiError(http::status::gone, "gone",
+                        "the run's results were dropped: a model keeps the results of its newest unpinned runs "
+                        "only (--max-unpinned-runs-per-model); pin a run to keep them");
     const auto& q = call.params.query;
     const std::vector<std::string> variables = q.count("variables") ? commaSeparated(q.at("variables")) : std::vector<std::string>{};
     const auto table = s.queue.results().result(job->id, variables);
@@ -135,6 +203,7 @@ void addJobRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/jobs", true, submitJob});
     routes.push_back({http::verb::get, "/jobs", true, listJobs});
     routes.push_back({http::verb::get, "/jobs/{id}", true, getJob});
+    routes.push_back({http::verb::patch, "/jobs/{id}", true, labelJob});
     routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelOrDeleteJob});
     routes.push_back({http::verb::post, "/jobs/{id}/rerun", true, rerunJob});
     routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults, RouteWork::LargeReply});

@@ -44,6 +44,8 @@ const std::string kHelp = std::string(
     "  --max-running-per-user N jobs running at once per user (default 2)\n"
     "  --max-queued-per-user N  jobs waiting per user (default 20)\n"
     "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
+    "  --max-unpinned-runs-per-model N  a model's finished runs that keep their results\n"
+    "                           unless pinned; older ones lose them (default 20)\n"
     "  --max-study-runs N       runs per study (default 10000)\n"
     "  --max-studies-per-user N studies queued or running per user (default 2)\n"
     "  --check-threads N        lab check runs at once (default: number of cores)\n"
@@ -67,8 +69,8 @@ const std::string kHelp = std::string(
     "                           alone pass it is disconnected (default 16777216)\n"
     "  --disk-reserve-bytes N   space kept beside the database and given back when the disk\n"
     "                           is full, so logging in and deleting still work (default 8388608)\n"
-    "  --result-ttl SECONDS     delete finished jobs and their results this long after they\n"
-    "                           finish (default 0: keep them until their owner deletes them)\n"
+    "  --result-ttl SECONDS     delete unpinned finished jobs and their results this long after\n"
+    "                           they finish (default 0: keep them until their owner deletes them)\n"
     "  --password-hash-cost interactive|minimal  argon2id cost of new password hashes\n"
     "                           (default interactive: about 0.1 s and 64 MiB each); minimal is\n"
     "                           for test servers only: its hashes take microseconds to guess\n"
@@ -170,6 +172,8 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.limits.maxRunningPerUser);
         } else if (flag == "--max-queued-per-user") {
             ok = parseNumber(value, o.limits.maxQueuedPerUser);
+        } else if (flag == "--max-unpinned-runs-per-model") {
+            ok = parseNumber(value, o.limits.maxUnpinnedRunsPerModel) && o.limits.maxUnpinnedRunsPerModel >= 0;
         } else if (flag == "--max-stored-bytes-per-user") {
             ok = parseNumber(value, o.limits.maxStoredBytesPerUser);
         } else if (flag == "--result-ttl") {

@@ -90,7 +90,12 @@ nlohmann::json JobInfo::toJson() const
         .startedAt = timeIfSet(startedAt),
         .finishedAt = timeIfSet(finishedAt),
         .steps = static_cast<std::int64_t>(steps),
-        .settings = {.start = start, .step = step, .stop = stop, .logSamples = static_cast<std::int64_t>(logSamples)}};
+        .settings = {.start = start, .step = step, .stop = stop, .logSamples = static_cast<std::int64_t>(logSamples)},
+        .name = name,
+        .pinned = pinned,
+        .resultsDropped = resultsDropped,
+        .owner = std::nullopt,
+        .parameters = parameters};
 }
 
 } // namespace tlmhub::server

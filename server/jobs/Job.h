@@ -58,9 +58,16 @@ struct JobInfo {
     std::uint64_t steps = 0;                // planned steps; taken steps once finished
     double start = 0.0, step = 0.0, stop = 0.0;   // s, as resolved at submit
     std::size_t logSamples = 0;
+    std::string name;                       // the user's name for the run; empty: none
+    bool pinned = false;                    // kept whole, whatever the model's other runs do
+    bool resultsDropped = false;            // its results went to keep the model's unpinned runs few
+    // Only in a model's history (JobStore::listForModel): the overrides the job was submitted
+    // with (JobRequest::parameters).
+    std::optional<std::map<std::string, std::string>> parameters;
 
     // {id, model_id, state, progress, error, created_at, started_at, finished_at, steps,
-    //  settings:{start,step,stop,log_samples}}; unset times and model_id are null.
+    //  settings:{start,step,stop,log_samples}, name, pinned, results_dropped[, parameters]};
+    // unset times and model_id are null.
     nlohmann::json toJson() const;
 };
 
@@ -70,6 +77,8 @@ struct JobLimits {
     double maxWallSeconds = 300;              // s a job runs (its time slices; not time parked)
     std::size_t maxResultBytes = 64u << 20;   // ResultTable::byteSize()
     int maxQueuedPerUser = 20;
+    // A model's finished runs that keep their results unless pinned (newest first).
+    int maxUnpinnedRunsPerModel = 20;
     int maxRunningPerUser = 2;
     // Results kept per user (all their finished jobs); new jobs wait for old ones to be deleted.
     std::size_t maxStoredBytesPerUser = std::size_t(1) << 30;

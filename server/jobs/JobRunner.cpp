@@ -114,10 +114,12 @@ void JobRunner::finish(StartedJob& job, JobState state, const std::string& error
     const auto giveUpAt = Clock::now() + kRetryFor;
     for (;;) {
         try {
-            if (mLeases.finishLeased(job.mLease, state, error, steps, result ? &result->blob : nullptr))
+            if (mLeases.finishLeased(job.mLease, state, error, steps, result ? &result->blob : nullptr)) {
                 mHub.finish(job.mId, result ? &result->samples : nullptr, state, error);
-            else
+                if (result) dropOldResultsOfItsModel(job.mId);
+            } else {
                 mHub.abandon(job.mId);   // another node took the job over while this one stalled
+            }
             return;
         } catch (const StoreError& e) {
             if (e.code() != StoreErrc::Unavailable) throw;
@@ -129,6 +131,17 @@ void JobRunner::finish(StartedJob& job, JobState state, const std::string& error
             }
         }
         std::this_thread::sleep_for(kRetryPause);
+    }
+}
+
+void JobRunner::dropOldResultsOfItsModel(std::int64_t jobId)
+{
+    try {
+        const auto info = mStore.info(jobId);
+        if (info && info->modelId) mStore.dropOldResults(*info->modelId, mLimits.maxUnpinnedRunsPerModel);
+    } catch (const StoreError& e) {
+        // The job's end is stored; the next run of the model drops them.
+        std::cerr << "job " << jobId << ": old results of its model not dropped (" << e.what() << ")\n";
     }
 }
 

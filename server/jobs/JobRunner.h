@@ -129,6 +129,8 @@ private:
                 const Result* result);
     // A job stopped for Release or LeaseLost: back to the queue or left to its new holder.
     void giveUp(StartedJob& job);
+    // Keeps its model's unpinned runs with results within mLimits.maxUnpinnedRunsPerModel.
+    void dropOldResultsOfItsModel(std::int64_t jobId);
 
     JobStore& mStore;
     JobLeaseStore& mLeases;

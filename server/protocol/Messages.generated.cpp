@@ -544,6 +544,19 @@ void to_json(nlohmann::json& j, const ModelUpdate& v)
     if (v.hmf) j["hmf"] = *v.hmf;
 }
 
+void from_json(const nlohmann::json& j, JobUpdate& v)
+{
+    if (const auto x = j.find("name"); x != j.end()) v.name = x->get<std::string>();
+    if (const auto x = j.find("pinned"); x != j.end()) v.pinned = x->get<bool>();
+}
+
+void to_json(nlohmann::json& j, const JobUpdate& v)
+{
+    j = nlohmann::json::object();
+    if (v.name) j["name"] = *v.name;
+    if (v.pinned) j["pinned"] = *v.pinned;
+}
+
 void from_json(const nlohmann::json& j, ModelSummary& v)
 {
     j.at("id").get_to(v.id);
@@ -658,6 +671,11 @@ void from_json(const nlohmann::json& j, JobInfo& v)
     if (const nlohmann::json& x = j.at("finished_at"); !x.is_null()) v.finishedAt = x.get<std::int64_t>();
     j.at("steps").get_to(v.steps);
     j.at("settings").get_to(v.settings);
+    j.at("name").get_to(v.name);
+    j.at("pinned").get_to(v.pinned);
+    j.at("results_dropped").get_to(v.resultsDropped);
+    if (const auto x = j.find("owner"); x != j.end()) v.owner = x->get<std::string>();
+    if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<std::map<std::string, std::string>>();
 }
 
 void to_json(nlohmann::json& j, const JobInfo& v)
@@ -674,6 +692,11 @@ void to_json(nlohmann::json& j, const JobInfo& v)
     j["finished_at"] = v.finishedAt ? nlohmann::json(*v.finishedAt) : nlohmann::json(nullptr);
     j["steps"] = v.steps;
     j["settings"] = v.settings;
+    j["name"] = v.name;
+    j["pinned"] = v.pinned;
+    j["results_dropped"] = v.resultsDropped;
+    if (v.owner) j["owner"] = *v.owner;
+    if (v.parameters) j["parameters"] = *v.parameters;
 }
 
 void from_json(const nlohmann::json& j, ResultVariable& v)

@@ -59,6 +59,7 @@ struct JobCreated;
 struct JobInfo;
 struct JobRequest;
 struct JobSettings;
+struct JobUpdate;
 struct LogSubscribeRequest;
 struct LoginRequest;
 struct LoginResponse;
@@ -439,6 +440,15 @@ struct ModelUpdate {
 void from_json(const nlohmann::json& j, ModelUpdate& v);
 void to_json(nlohmann::json& j, const ModelUpdate& v);
 
+// JSON body of PATCH /jobs/{id}: the run's name (model-name rules; empty clears it) and/or
+// whether it is pinned.
+struct JobUpdate {
+    std::optional<std::string> name;
+    std::optional<bool> pinned;
+};
+void from_json(const nlohmann::json& j, JobUpdate& v);
+void to_json(nlohmann::json& j, const JobUpdate& v);
+
 struct ModelSummary {
     std::int64_t id{};
     std::string name{};
@@ -509,6 +519,11 @@ struct JobInfo {
     std::optional<std::int64_t> finishedAt;
     std::int64_t steps{};
     JobSettings settings{};
+    std::string name{};
+    bool pinned{};
+    bool resultsDropped{};
+    std::optional<std::string> owner;
+    std::optional<std::map<std::string, std::string>> parameters;
 };
 void from_json(const nlohmann::json& j, JobInfo& v);
 void to_json(nlohmann::json& j, const JobInfo& v);
@@ -1233,6 +1248,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<JobInfo>("JobInfo");
     visit.template operator()<JobRequest>("JobRequest");
     visit.template operator()<JobSettings>("JobSettings");
+    visit.template operator()<JobUpdate>("JobUpdate");
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");
     visit.template operator()<LoginResponse>("LoginResponse");

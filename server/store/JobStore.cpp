@@ -12,4 +12,14 @@ std::optional<JobRequest> JobStore::request(std::int64_t id)
     return r;
 }
 
+std::map<std::string, std::string> JobStore::parameterOverrides(const std::string& json)
+{
+    const auto parsed = nlohmann::json::parse(json, nullptr, false);
+    std::map<std::string, std::string> out;
+    if (!parsed.is_object()) return out;
+    for (const auto& [name, value] : parsed.items())
+        if (value.is_string()) out[name] = value.get<std::string>();
+    return out;
+}
+
 } // namespace tlmhub::server

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,15 @@ public:
     virtual std::optional<std::string> requestText(std::int64_t id) = 0;
     // Newest first.
     virtual std::vector<JobInfo> listForOwner(std::int64_t ownerId) = 0;
+    // A model's jobs, newest first, each with its parameter overrides: only `ownerId`'s when
+    // given; at most `limit`, all with ids below `beforeId` when given (the next page).
+    virtual std::vector<JobInfo> listForModel(std::int64_t modelId, std::optional<std::int64_t> ownerId,
+                                              std::optional<std::int64_t> beforeId, int limit) = 0;
+    // Sets the job's name and whether it is pinned, where given; false when there is no such job.
+    virtual bool label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned) = 0;
+    // Of `modelId`'s finished, unpinned jobs that still have their results, all but the newest
+    // `keep` lose them (the jobs stay, marked results-dropped); returns how many lost them.
+    virtual int dropOldResults(std::int64_t modelId, int keep) = 0;
     virtual std::vector<JobInfo> listAll() = 0;
     // Oldest first (the order they were submitted in).
     virtual std::vector<JobInfo> listInState(JobState state) = 0;
@@ -49,12 +59,17 @@ public:
 
     // Deletes the job and its result; works on a full disk too.
     virtual bool remove(std::int64_t id) = 0;
-    // Deletes finished jobs (and their results) that finished before `unixSeconds`;
+    // Deletes unpinned finished jobs (and their results) that finished before `unixSeconds`;
     // returns how many.
     virtual int removeFinishedBefore(std::int64_t unixSeconds) = 0;
 
     // The stored request; nullopt when the job does not exist or its text is not a request.
     std::optional<JobRequest> request(std::int64_t id);
+
+protected:
+    // The overrides of a stored request, from the JSON text of its "parameters" (empty when
+    // the text is not such an object).
+    static std::map<std::string, std::string> parameterOverrides(const std::string& json);
 };
 
 } // namespace tlmhub::server

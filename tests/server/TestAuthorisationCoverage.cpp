@@ -59,8 +59,10 @@ const std::map<std::string, RouteCase>& routeCases()
         {"GET /models/{id}/fmu/interface", {Case::Foreign, ""}},
         {"GET /models/{id}/fmu", {Case::Foreign, ""}},
         {"POST /jobs", {Case::Own, "the job is the caller's; a model_id must be readable (Foreign case below)"}},
-        {"GET /jobs", {Case::Own, "lists the caller's jobs"}},
+        {"GET /jobs", {Case::Own, "lists the caller's jobs; with model_id, the model's runs as GET /jobs/{id} "
+                                  "lets the caller see them (RunHistory and Labs tests)"}},
         {"GET /jobs/{id}", {Case::Foreign, ""}},
+        {"PATCH /jobs/{id}", {Case::Foreign, ""}},
         {"DELETE /jobs/{id}", {Case::Foreign, ""}},
         {"POST /jobs/{id}/rerun", {Case::Foreign, ""}},
         {"GET /jobs/{id}/results", {Case::Foreign, ""}},
@@ -248,6 +250,7 @@ protected:
         if (name == "PUT /handins/{id}/grade") return {R"({"grade": 1})", "application/json"};
         if (name == "POST /users") return {R"({"username": "x1", "password": "12345678", "role": "user"})", "application/json"};
         if (name == "PATCH /users/{id}") return {R"({"role": "admin"})", "application/json"};
+        if (name == "PATCH /jobs/{id}") return {R"({"name": "mine", "pinned": true})", "application/json"};
         if (name == "POST /classes") return {R"({"name": "x"})", "application/json"};
         return {"{}", "application/json"};
     }

@@ -416,6 +416,37 @@ TEST_F(Labs, StudentsTeachersAndAssistantsSeeWhatTheirRoleAllows)
     }
 }
 
+// Issue 38: a copy's run history as GET /jobs/{id} decides: the student's own runs for the
+// student, all of them for the class's teacher and assistant, nothing for another student or
+// another class's teacher.
+TEST_F(Labs, ACopysRunHistoryIsTheStudentsAndTheirStaffs)
+{
+    const Lab lab = makeLab();
+    HttpClient sam = as("sam"), sue = as("sue"), ada = as("ada"), otto = as("otto"), tina = as("tina");
+    const std::int64_t copy = openCopy(sam, lab);
+    std::vector<nlohmann::json> runs;
+    for (const char* gain : {"0.01", "0.02"}) {
+        const auto job = sam.post("/api/v1/jobs", {{"model_id", copy}, {"parameters", {{"GainP.k", gain}}}});
+        ASSERT_EQ(job.status, 201) << job.body;
+        runs.push_back(job.json()["id"]);
+    }
+    const std::string history = "/api/v1/jobs?model_id=" + std::to_string(copy);
+    for (HttpClient* reader : {&sam, &tina, &ada}) {
+        const auto listed = reader->get(history);
+        ASSERT_EQ(listed.status, 200) << listed.body;
+        ASSERT_EQ(listed.json().size(), 2u) << listed.body;
+        EXPECT_EQ(listed.json()[0]["id"], runs[1]);
+        EXPECT_EQ(listed.json()[0]["owner"], "sam");
+        EXPECT_EQ(listed.json()[0]["parameters"], (nlohmann::json{{"GainP.k", "0.02"}}));
+        EXPECT_EQ(listed.json()[1]["id"], runs[0]);
+    }
+    EXPECT_EQ(sue.get(history).status, 404);
+    EXPECT_EQ(otto.get(history).status, 404);
+    // The staff read the runs but do not name or pin them.
+    EXPECT_EQ(tina.request(http::verb::patch, "/api/v1/jobs/" + idText(runs[0]), R"({"pinned": true})").status, 403);
+    EXPECT_EQ(sam.request(http::verb::patch, "/api/v1/jobs/" + idText(runs[0]), R"({"pinned": true})").status, 200);
+}
+
 TEST_F(Labs, ARemovedStudentLosesTheClassAndTheCopyAtOnce)
 {
     const Lab lab = makeLab();

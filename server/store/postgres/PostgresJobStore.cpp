@@ -18,18 +18,38 @@ constexpr PgStatement kQueuedCount{"jobs_queued_count",
                                    "SELECT COUNT(*) FROM jobs WHERE owner_id = $1 AND state = 'queued'"};
 constexpr PgStatement kInfo{"jobs_info",
                             "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
-                            " finished_at, steps, start, step, stop, log_samples FROM jobs WHERE id = $1"};
+                            " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs WHERE id = $1"};
 constexpr PgStatement kRequest{"jobs_request", "SELECT request FROM jobs WHERE id = $1"};
 constexpr PgStatement kListForOwner{"jobs_list_for_owner",
                                     "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
-                                    " finished_at, steps, start, step, stop, log_samples FROM jobs"
+                                    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs"
                                     " WHERE owner_id = $1 ORDER BY id DESC"};
+// The history of a model: with the overrides (column 17), for one owner ($2 not null) or all,
+// below an id ($3 not null); $4 rows.
+constexpr PgStatement kListForModel{"jobs_list_for_model",
+                                    "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+                                    " finished_at, steps, start, step, stop, log_samples, name, pinned,"
+                                    " results_dropped_at, (request::jsonb -> 'parameters')::text FROM jobs"
+                                    " WHERE model_id = $1 AND ($2::bigint IS NULL OR owner_id = $2)"
+                                    " AND ($3::bigint IS NULL OR id < $3) ORDER BY id DESC LIMIT $4"};
+constexpr PgStatement kLabel{"jobs_label",
+                             "UPDATE jobs SET name = COALESCE($1, name), pinned = COALESCE($2::boolean, pinned)"
+                             " WHERE id = $3"};
+// A model's finished unpinned jobs with results, but the newest $2, lose them; their rows stay.
+constexpr PgStatement kDropOldResults{
+    "jobs_drop_old_results",
+    "WITH dropped AS (UPDATE jobs SET results_dropped_at = $3 WHERE id IN ("
+    " SELECT id FROM jobs WHERE model_id = $1 AND NOT pinned AND results_dropped_at = 0"
+    " AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') ORDER BY id DESC OFFSET $2)"
+    " RETURNING id),"
+    " gone AS (DELETE FROM job_results WHERE job_id IN (SELECT id FROM dropped))"
+    " SELECT COUNT(*) FROM dropped"};
 constexpr PgStatement kListAll{"jobs_list_all",
                                "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
-                               " finished_at, steps, start, step, stop, log_samples FROM jobs ORDER BY id DESC"};
+                               " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs ORDER BY id DESC"};
 constexpr PgStatement kListInState{"jobs_list_in_state",
                                    "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
-                                   " finished_at, steps, start, step, stop, log_samples FROM jobs"
+                                   " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs"
                                    " WHERE state = $1 ORDER BY id ASC"};
 constexpr PgStatement kMarkRunning{"jobs_mark_running",
                                    "UPDATE jobs SET state = 'running', started_at = $1, progress = 0"
@@ -51,7 +71,7 @@ constexpr PgStatement kMarkRunningInterrupted{"jobs_mark_running_interrupted",
 constexpr PgStatement kRemove{"jobs_remove", "DELETE FROM jobs WHERE id = $1"};
 constexpr PgStatement kRemoveFinishedBefore{"jobs_remove_finished_before",
                                             "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled',"
-                                            " 'interrupted', 'dead') AND finished_at < $1"};
+                                            " 'interrupted', 'dead') AND finished_at < $1 AND NOT pinned"};
 
 JobInfo readInfo(const pqxx::row& row)
 {
@@ -70,6 +90,9 @@ JobInfo readInfo(const pqxx::row& row)
     j.step = row[11].as<double>();
     j.stop = row[12].as<double>();
     j.logSamples = static_cast<std::size_t>(row[13].as<std::int64_t>());
+    j.name = row[14].as<std::string>();
+    j.pinned = row[15].as<bool>();
+    j.resultsDropped = row[16].as<std::int64_t>() != 0;
     return j;
 }
 
@@ -147,6 +170,43 @@ std::vector<JobInfo> PostgresJobStore::listForOwner(std::int64_t ownerId)
     return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
         return readInfos(c.exec(tx, kListForOwner, ownerId));
+    });
+}
+
+std::vector<JobInfo> PostgresJobStore::listForModel(std::int64_t modelId, std::optional<std::int64_t> ownerId,
+                                                   std::optional<std::int64_t> beforeId, int limit)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        std::vector<JobInfo> jobs;
+        const auto idText = [](std::optional<std::int64_t> id) {
+            return id ? std::optional(std::to_string(*id)) : std::nullopt;
+        };
+        const std::optional<std::string> owner = idText(ownerId), before = idText(beforeId);
+        for (const auto& row : c.exec(tx, kListForModel, modelId, orNull(owner), orNull(before), limit)) {
+            JobInfo job = readInfo(row);
+            job.parameters = parameterOverrides(row[17].is_null() ? "" : row[17].as<std::string>());
+            jobs.push_back(std::move(job));
+        }
+        return jobs;
+    });
+}
+
+bool PostgresJobStore::label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        const std::optional<std::string> pinnedText =
+            pinned ? std::optional<std::string>(*pinned ? "true" : "false") : std::nullopt;
+        return c.exec(tx, kLabel, orNull(name), orNull(pinnedText), id).affected_rows() == 1;
+    });
+}
+
+int PostgresJobStore::dropOldResults(std::int64_t modelId, int keep)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kDropOldResults, modelId, keep, static_cast<std::int64_t>(unixNow()))[0][0].as<int>();
     });
 }
 

@@ -226,9 +226,19 @@ void addJobLeases(pqxx::transaction_base& tx)
              " last_seen BIGINT NOT NULL)");
 }
 
+// Version 6: a model's run history, as SQLite's version 6.
+void addRunHistory(pqxx::transaction_base& tx)
+{
+    tx.exec0("ALTER TABLE jobs"
+             " ADD COLUMN name TEXT NOT NULL DEFAULT '',"
+             " ADD COLUMN pinned BOOLEAN NOT NULL DEFAULT FALSE,"
+             " ADD COLUMN results_dropped_at BIGINT NOT NULL DEFAULT 0");
+    tx.exec0("CREATE INDEX jobs_model ON jobs(model_id, id)");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
-                                                             createLabs, addJobLeases};
+                                                             createLabs, addJobLeases, addRunHistory};
 
 int versionIn(pqxx::transaction_base& tx)
 {

@@ -10,8 +10,16 @@ namespace {
 // The columns readInfo reads, in its order; one full text per query so each is prepared once.
 #define TLMHUB_JOB_INFO                                                                         \
     "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"           \
-    " finished_at, steps, start, step, stop, log_samples FROM jobs"
+    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs"
 constexpr const char* kInfoById = TLMHUB_JOB_INFO " WHERE id = ?";
+// The history of a model: with the overrides (column 17), and for one owner (?2 not null) or
+// all, below an id (?3 not null); ?4 rows.
+constexpr const char* kHistory =
+    "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
+    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at,"
+    " json_extract(request, '$.parameters') FROM jobs"
+    " WHERE model_id = ?1 AND (?2 IS NULL OR owner_id = ?2) AND (?3 IS NULL OR id < ?3)"
+    " ORDER BY id DESC LIMIT ?4";
 constexpr const char* kInfoByOwner = TLMHUB_JOB_INFO " WHERE owner_id = ? ORDER BY id DESC";
 constexpr const char* kInfoAll = TLMHUB_JOB_INFO " ORDER BY id DESC";
 constexpr const char* kInfoByState = TLMHUB_JOB_INFO " WHERE state = ? ORDER BY id ASC";
@@ -20,9 +28,14 @@ constexpr const char* kInfoByState = TLMHUB_JOB_INFO " WHERE state = ? ORDER BY 
 // Finished states, as in isFinished().
 constexpr const char* kDeleteOldResults =
     "DELETE FROM job_results WHERE job_id IN (SELECT id FROM jobs WHERE"
-    " state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?)";
+    " state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ? AND pinned = 0)";
 constexpr const char* kDeleteOldJobs =
-    "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?";
+    "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?"
+    " AND pinned = 0";
+// A model's finished unpinned jobs with results, but the newest ?2: their results go.
+constexpr const char* kResultsToDrop =
+    "SELECT id FROM jobs WHERE model_id = ?1 AND pinned = 0 AND results_dropped_at = 0"
+    " AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') ORDER BY id DESC LIMIT -1 OFFSET ?2";
 
 JobInfo readInfo(SQLite::Statement& q)
 {
@@ -41,6 +54,9 @@ JobInfo readInfo(SQLite::Statement& q)
     j.step = q.getColumn(11).getDouble();
     j.stop = q.getColumn(12).getDouble();
     j.logSamples = static_cast<std::size_t>(q.getColumn(13).getInt64());
+    j.name = q.getColumn(14).getString();
+    j.pinned = q.getColumn(15).getInt() != 0;
+    j.resultsDropped = q.getColumn(16).getInt64() != 0;
     return j;
 }
 
@@ -128,6 +144,68 @@ std::vector<JobInfo> SqliteJobStore::listForOwner(std::int64_t ownerId)
         q->bind(1, ownerId);
         return readInfos(q);
     });
+}
+
+std::vector<JobInfo> SqliteJobStore::listForModel(std::int64_t modelId, std::optional<std::int64_t> ownerId,
+                                                 std::optional<std::int64_t> beforeId, int limit)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared(kHistory);
+        q->bind(1, modelId);
+        if (ownerId) q->bind(2, *ownerId);
+        else q->bind(2);
+        if (beforeId) q->bind(3, *beforeId);
+        else q->bind(3);
+        q->bind(4, limit);
+        std::vector<JobInfo> out;
+        while (q->executeStep()) {
+            JobInfo job = readInfo(*q);
+            job.parameters = parameterOverrides(q->getColumn(17).isNull() ? "" : q->getColumn(17).getString());
+            out.push_back(std::move(job));
+        }
+        return out;
+    });
+}
+
+bool SqliteJobStore::label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE jobs SET name = COALESCE(?, name), pinned = COALESCE(?, pinned) WHERE id = ?");
+        if (name) q->bind(1, *name);
+        else q->bind(1);
+        if (pinned) q->bind(2, *pinned ? 1 : 0);
+        else q->bind(2);
+        q->bind(3, id);
+        return q->exec() == 1;
+    });
+}
+
+int SqliteJobStore::dropOldResults(std::int64_t modelId, int keep)
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    const int dropped = mDb.runFreeingSpace([&](SqliteConnection& c) {
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        std::vector<std::int64_t> ids;
+        {
+            auto q = c.prepared(kResultsToDrop);
+            q->bind(1, modelId);
+            q->bind(2, keep);
+            while (q->executeStep()) ids.push_back(q->getColumn(0).getInt64());
+        }
+        for (const std::int64_t id : ids) {
+            auto results = c.prepared("DELETE FROM job_results WHERE job_id = ?");
+            results->bind(1, id);
+            results->exec();
+            auto mark = c.prepared("UPDATE jobs SET results_dropped_at = ? WHERE id = ?");
+            mark->bind(1, now);
+            mark->bind(2, id);
+            mark->exec();
+        }
+        transaction.commit();
+        return static_cast<int>(ids.size());
+    });
+    mDb.restoreReserve();
+    return dropped;
 }
 
 std::vector<JobInfo> SqliteJobStore::listAll()

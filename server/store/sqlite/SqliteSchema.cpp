@@ -224,9 +224,20 @@ void addJobLeases(SQLite::Database& db)
             " last_seen INTEGER NOT NULL)");
 }
 
+// Version 6: a model's run history (issue 38). A run's name and whether it is pinned (kept
+// whole); when its results were dropped to keep a model's unpinned runs within their number
+// (0: not dropped). The history reads a model's jobs newest first.
+void addRunHistory(SQLite::Database& db)
+{
+    db.exec("ALTER TABLE jobs ADD COLUMN name TEXT NOT NULL DEFAULT ''");
+    db.exec("ALTER TABLE jobs ADD COLUMN pinned INTEGER NOT NULL DEFAULT 0");
+    db.exec("ALTER TABLE jobs ADD COLUMN results_dropped_at INTEGER NOT NULL DEFAULT 0");
+    db.exec("CREATE INDEX jobs_model ON jobs(model_id, id)");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
-                                                             createLabs, addJobLeases};
+                                                             createLabs, addJobLeases, addRunHistory};
 
 } // namespace
 

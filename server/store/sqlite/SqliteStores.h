@@ -75,6 +75,10 @@ public:
     std::optional<JobInfo> info(std::int64_t id) override;
     std::optional<std::string> requestText(std::int64_t id) override;
     std::vector<JobInfo> listForOwner(std::int64_t ownerId) override;
+    std::vector<JobInfo> listForModel(std::int64_t modelId, std::optional<std::int64_t> ownerId,
+                                      std::optional<std::int64_t> beforeId, int limit) override;
+    bool label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned) override;
+    int dropOldResults(std::int64_t modelId, int keep) override;
     std::vector<JobInfo> listAll() override;
     std::vector<JobInfo> listInState(JobState state) override;
     bool markRunning(std::int64_t id) override;

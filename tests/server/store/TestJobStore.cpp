@@ -6,13 +6,31 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <stdexcept>
 
 using namespace tlmhub::server;
 
 namespace tlmhub::test {
 namespace {
 
-class JobStoreConformance : public StoreTest {};
+class JobStoreConformance : public StoreTest {
+protected:
+    // A job of `ownerId` on model `modelId` with `parameters` as its overrides, finished (done,
+    // with a result) unless `finished` is false.
+    std::int64_t addModelRun(std::int64_t ownerId, std::int64_t modelId,
+                             std::map<std::string, std::string> parameters = {}, bool finished = true)
+    {
+        JobRequest request = jobRequest(ownerId);
+        request.modelId = modelId;
+        request.parameters = std::move(parameters);
+        const std::int64_t id = store().jobs().create(request, resolvedSettings());
+        const std::string blob = "result of " + std::to_string(id);
+        if (finished && (!store().jobs().markRunning(id) || !store().jobs().finish(id, JobState::Done, "", 10, &blob)))
+            throw std::runtime_error("cannot finish job " + std::to_string(id));
+        return id;
+    }
+};
 TLMHUB_STORE_CONFORMANCE(JobStoreConformance);
 
 std::vector<std::int64_t> idsOf(const std::vector<JobInfo>& jobs)
@@ -314,6 +332,99 @@ TEST_P(JobStoreConformance, RemoveFinishedBeforeRemovesOnlyJobsFinishedEarlierAn
     EXPECT_EQ(store().jobs().removeFinishedBefore(cutoff + 100), 1);
     EXPECT_TRUE(store().jobs().info(queued));
     EXPECT_TRUE(store().jobs().info(running));
+}
+
+TEST_P(JobStoreConformance, ListForModelIsNewestFirstWithOverridesPagedAndOptionallyOneOwners)
+{
+    const std::int64_t a1 = addModelRun(1, 10, {{"Gain.k", "2"}, {"mass", "1e400"}});
+    const std::int64_t b1 = addModelRun(2, 10);
+    addModelRun(1, 11);   // another model
+    const std::int64_t a2 = addModelRun(1, 10, {}, false);
+    const std::int64_t b2 = addModelRun(2, 10, {{"Sub$Mass.m", "a+b"}});
+
+    const auto all = store().jobs().listForModel(10, std::nullopt, std::nullopt, 100);
+    EXPECT_EQ(idsOf(all), (std::vector<std::int64_t>{b2, a2, b1, a1}));
+    ASSERT_EQ(all.size(), 4u);
+    ASSERT_TRUE(all[3].parameters);
+    EXPECT_EQ(*all[3].parameters, (std::map<std::string, std::string>{{"Gain.k", "2"}, {"mass", "1e400"}}));
+    EXPECT_EQ(*all[0].parameters, (std::map<std::string, std::string>{{"Sub$Mass.m", "a+b"}}));
+    EXPECT_TRUE(all[2].parameters && all[2].parameters->empty());
+    EXPECT_EQ(all[1].state, JobState::Queued);
+    EXPECT_EQ(all[0].modelId, 10);
+
+    EXPECT_EQ(idsOf(store().jobs().listForModel(10, 1, std::nullopt, 100)), (std::vector<std::int64_t>{a2, a1}));
+    // Pages: two, then the two below the last id of the first page.
+    const auto first = store().jobs().listForModel(10, std::nullopt, std::nullopt, 2);
+    EXPECT_EQ(idsOf(first), (std::vector<std::int64_t>{b2, a2}));
+    EXPECT_EQ(idsOf(store().jobs().listForModel(10, std::nullopt, first.back().id, 2)),
+              (std::vector<std::int64_t>{b1, a1}));
+    EXPECT_TRUE(store().jobs().listForModel(10, std::nullopt, a1, 2).empty());
+    EXPECT_TRUE(store().jobs().listForModel(12, std::nullopt, std::nullopt, 2).empty());
+    // The other lists carry no overrides.
+    EXPECT_FALSE(store().jobs().info(a1)->parameters);
+}
+
+TEST_P(JobStoreConformance, LabelSetsNameAndPinnedWhereGiven)
+{
+    const std::int64_t id = addModelRun(1, 10);
+    const JobInfo fresh = *store().jobs().info(id);
+    EXPECT_EQ(fresh.name, "");
+    EXPECT_FALSE(fresh.pinned);
+    EXPECT_FALSE(fresh.resultsDropped);
+    ASSERT_TRUE(store().jobs().label(id, std::string("stiffer spring \xc2\xb5"), std::nullopt));
+    EXPECT_EQ(store().jobs().info(id)->name, "stiffer spring \xc2\xb5");
+    EXPECT_FALSE(store().jobs().info(id)->pinned);
+    ASSERT_TRUE(store().jobs().label(id, std::nullopt, true));
+    EXPECT_EQ(store().jobs().info(id)->name, "stiffer spring \xc2\xb5") << "a name not given stays";
+    EXPECT_TRUE(store().jobs().info(id)->pinned);
+    ASSERT_TRUE(store().jobs().label(id, std::string(), false));
+    EXPECT_EQ(store().jobs().info(id)->name, "");
+    EXPECT_FALSE(store().jobs().info(id)->pinned);
+    EXPECT_FALSE(store().jobs().label(id + 100, std::string("x"), true));
+}
+
+TEST_P(JobStoreConformance, DropOldResultsKeepsTheNewestUnpinnedAndEveryPinnedRun)
+{
+    const std::int64_t oldest = addModelRun(1, 10);
+    const std::int64_t pinnedOld = addModelRun(1, 10);
+    ASSERT_TRUE(store().jobs().label(pinnedOld, std::nullopt, true));
+    const std::int64_t second = addModelRun(2, 10);   // owners do not matter: the model's runs
+    const std::int64_t otherModel = addModelRun(1, 11);
+    const std::int64_t third = addModelRun(1, 10);
+    const std::int64_t newest = addModelRun(1, 10);
+    const std::int64_t queued = addModelRun(1, 10, {}, false);
+
+    EXPECT_EQ(store().jobs().dropOldResults(10, 2), 2);
+    for (const std::int64_t gone : {oldest, second}) {
+        EXPECT_FALSE(store().results().has(gone)) << gone;
+        EXPECT_TRUE(store().jobs().info(gone)->resultsDropped) << gone;
+        EXPECT_EQ(store().jobs().info(gone)->state, JobState::Done) << "the run stays listed";
+    }
+    for (const std::int64_t kept : {pinnedOld, otherModel, third, newest}) {
+        EXPECT_TRUE(store().results().has(kept)) << kept;
+        EXPECT_FALSE(store().jobs().info(kept)->resultsDropped) << kept;
+    }
+    EXPECT_FALSE(store().jobs().info(queued)->resultsDropped);
+    EXPECT_EQ(store().jobs().dropOldResults(10, 2), 0) << "nothing more to drop";
+    // Unpinning the old run makes it the oldest unpinned one with results.
+    ASSERT_TRUE(store().jobs().label(pinnedOld, std::nullopt, false));
+    EXPECT_EQ(store().jobs().dropOldResults(10, 2), 1);
+    EXPECT_FALSE(store().results().has(pinnedOld));
+    EXPECT_EQ(store().jobs().dropOldResults(10, 0), 2);
+    EXPECT_TRUE(store().results().has(otherModel));
+}
+
+TEST_P(JobStoreConformance, RemoveFinishedBeforeKeepsPinnedJobs)
+{
+    const std::string blob = "pinned result";
+    const std::int64_t pinned = addFinishedJob(1, &blob);
+    const std::int64_t unpinned = addFinishedJob(1, &blob);
+    ASSERT_TRUE(store().jobs().label(pinned, std::nullopt, true));
+    waitForNextSecond();
+    EXPECT_EQ(store().jobs().removeFinishedBefore(unixNow() + 1), 1);
+    EXPECT_FALSE(store().jobs().info(unpinned));
+    EXPECT_TRUE(store().jobs().info(pinned));
+    EXPECT_EQ(store().results().blob(pinned), blob);
 }
 
 } // namespace

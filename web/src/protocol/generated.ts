@@ -42,6 +42,7 @@ export type ErrorCode =
     | 'storage_full'
     | 'busy'
     | 'unavailable'
+    | 'gone'
     | 'internal';
 export type Role = 'admin' | 'teacher' | 'user';
 /**
@@ -147,6 +148,7 @@ export interface ProtocolDefinitions {
     ModelName?: ModelName;
     ModelCreate?: ModelCreate;
     ModelUpdate?: ModelUpdate;
+    JobUpdate?: JobUpdate;
     ModelSummary?: ModelSummary;
     ModelDetail?: ModelDetail;
     ParameterValue?: ParameterValue;
@@ -531,6 +533,13 @@ export interface ModelUpdate {
     name?: ModelName;
     hmf?: string;
 }
+/**
+ * JSON body of PATCH /jobs/{id}: the run's name (model-name rules; empty clears it) and/or whether it is pinned.
+ */
+export interface JobUpdate {
+    name?: string;
+    pinned?: boolean;
+}
 export interface ModelSummary {
     id: number;
     name: string;
@@ -609,6 +618,28 @@ export interface JobInfo {
     finished_at: number | null;
     steps: number;
     settings: JobSettings;
+    /**
+     * The user's name for the run (PATCH /jobs/{id}); empty when it has none.
+     */
+    name: string;
+    /**
+     * Kept whole: its results are not dropped to keep the model's unpinned runs within --max-unpinned-runs-per-model, nor by --result-ttl.
+     */
+    pinned: boolean;
+    /**
+     * Its results were dropped (oldest unpinned first, beyond --max-unpinned-runs-per-model): GET /jobs/{id}/results answers 410.
+     */
+    results_dropped: boolean;
+    /**
+     * Only in a model's run history (GET /jobs?model_id=): the name of the account that ran it.
+     */
+    owner?: string;
+    /**
+     * Only in a model's run history: the parameter overrides the job was submitted with (name -> value text).
+     */
+    parameters?: {
+        [k: string]: string;
+    };
 }
 export interface ResultVariable {
     /**
