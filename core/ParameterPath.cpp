@@ -3,6 +3,8 @@
 #include "core/ParameterEvaluator.h"
 #include "core/System.h"
 
+#include <cmath>
+
 namespace tlmhub {
 
 namespace {
@@ -62,11 +64,19 @@ Status setParameterValue(System& root, const std::string& path, const std::strin
     return Status::ok();
 }
 
+Status finiteValueStatus(const Parameter& parameter)
+{
+    if (parameter.type != ParameterType::Double || !parameter.doubleTarget || std::isfinite(*parameter.doubleTarget))
+        return Status::ok();
+    return {StatusCode::InvalidParameter, "'" + parameter.value + "' is not a finite number"};
+}
+
 Status assignParameter(Component& owner, Parameter& parameter, const std::string& value)
 {
     const std::string previous = parameter.value;
     parameter.value = value;
     Status evaluated = ParameterEvaluator::evaluate(owner, parameter);
+    if (evaluated) evaluated = finiteValueStatus(parameter);
     // A parameter may say where the component's ports come from (an FMU's path).
     if (evaluated) evaluated = owner.loadExternalDefinition();
     if (!evaluated) {

@@ -31,6 +31,12 @@ Status setParameterValue(System& root, const std::string& path, const std::strin
 // evaluated value in place. The failure is the evaluator's, without the path, or the
 // component's when it cannot load its external definition with the new value
 // (Component::loadExternalDefinition: model editing declares an FMU's ports this way).
+// A number parameter's value must come out finite: "1e400", "nan" or "1/0" are refused
+// (a model file that holds one still loads, as in Hopsan).
 Status assignParameter(Component& owner, Parameter& parameter, const std::string& value);
+
+// invalid_parameter when `parameter`, just evaluated, is a number parameter whose value is
+// not a finite number; ok otherwise.
+Status finiteValueStatus(const Parameter& parameter);
 
 } // namespace tlmhub

@@ -333,7 +333,9 @@ Result EditSession::sysparamSet(System& system, const protocol::SysParamSetReque
         return fail(set);
     Parameter* p = system.parameters().find(name);
     if (!p) return fail("internal", "system parameter '" + name + "' vanished after setting it");
-    if (const Status evaluated = ParameterEvaluator::evaluate(system, *p); !evaluated) {
+    Status evaluated = ParameterEvaluator::evaluate(system, *p);
+    if (evaluated) evaluated = finiteValueStatus(*p);
+    if (!evaluated) {
         if (before) {
             system.setSystemParameter(name, before->value, parameterTypeName(before->type), before->description,
                                       before->unit, before->internal);

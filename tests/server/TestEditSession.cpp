@@ -304,6 +304,15 @@ TEST(EditSession, ParameterSetKeepsOldValueWhenEvaluationFails)
     const auto syntax = session.handle({{"id", 4}, {"type", "parameter.set"}, {"component", "Mass"},
                                         {"parameter", "m"}, {"value", "2*(3"}});
     EXPECT_EQ(syntax.code, "invalid_parameter");
+    // Issue 38: "1e400" reads as infinity; refused naming the parameter, the old value kept.
+    const auto infinite = session.handle({{"id", 7}, {"type", "parameter.set"}, {"component", "Mass"},
+                                          {"parameter", "m"}, {"value", "1e400"}});
+    EXPECT_EQ(infinite.code, "invalid_parameter");
+    EXPECT_NE(infinite.message.find("Mass.m: '1e400' is not a finite number"), std::string::npos) << infinite.message;
+    const auto notANumber = session.handle({{"id", 8}, {"type", "sysparam.set"}, {"name", "heavy"}, {"value", "nan"}});
+    EXPECT_EQ(notANumber.code, "invalid_parameter");
+    EXPECT_NE(notANumber.message.find("heavy: 'nan' is not a finite number"), std::string::npos) << notANumber.message;
+    EXPECT_EQ(findByName(rootSystem(session).at("parameters"), "heavy"), nullptr) << "a new one that is refused is not added";
 
     const auto get = session.handle({{"id", 5}, {"type", "parameter.get"}, {"component", "Mass"}, {"parameter", "m"}});
     expectReplyShape("parameter.get", get);

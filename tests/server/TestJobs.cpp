@@ -522,6 +522,13 @@ TEST_F(Jobs, InvalidParametersAndModelsAreRefusedAtSubmit)
     EXPECT_EQ(submitWith("NoSuchComponent.Kc", "1").code, "invalid_parameter");
     EXPECT_EQ(submitWith("Orifice.NoSuchParameter", "1").code, "invalid_parameter");
     EXPECT_EQ(submitWith("no_such_system_parameter", "1").code, "invalid_parameter");
+    // Issue 38: numbers that are not finite, naming the parameter.
+    for (const char* notFinite : {"1e400", "nan", "-inf"}) {
+        const auto refused = submitWith("Orifice.Kc", notFinite);
+        EXPECT_EQ(refused.code, "invalid_parameter") << notFinite;
+        EXPECT_NE(refused.message.find("Orifice.Kc"), std::string::npos) << refused.message;
+        EXPECT_NE(refused.message.find("not a finite number"), std::string::npos) << refused.message;
+    }
     EXPECT_TRUE(submitWith("Orifice.Kc", "relief_pressure * 1e-17").id);   // names resolve
     EXPECT_TRUE(submitWith("Orifice.Kc#Value", "3e-10").id);
 

@@ -71,3 +71,21 @@ TEST_F(ParameterPath, AValueThatDoesNotEvaluateIsRefusedAndTheOldOneKept)
     EXPECT_NE(refused.message().find("Force2"), std::string::npos) << refused.message();
     EXPECT_EQ(value(servo("Servo1"), "Gain", "k#Value"), "PGain * 2");
 }
+
+// Issue 38: a number that is not finite ("1e400" reads as infinity) is refused wherever a
+// value is set, literal or computed, for component and system parameters alike, naming the
+// parameter; the old value stays. Finite extremes are values like any other.
+TEST_F(ParameterPath, ANumberThatIsNotFiniteIsRefusedNamingTheParameter)
+{
+    for (const char* notFinite : {"1e400", "-1e400", "nan", "-nan", "inf", "1/0", "PGain * 1e300 * 1e300"}) {
+        const Status refused = setParameterValue(*root, "Servo1$Translational_Mass.m", notFinite);
+        EXPECT_EQ(refused.code(), StatusCode::InvalidParameter) << notFinite;
+        EXPECT_NE(refused.message().find("Servo1$Translational_Mass.m"), std::string::npos) << refused.message();
+        EXPECT_NE(refused.message().find("not a finite number"), std::string::npos) << refused.message();
+        EXPECT_EQ(value(servo("Servo1"), "Translational_Mass", "m"), "200") << notFinite;
+        EXPECT_EQ(setParameterValue(*root, "Force", notFinite).code(), StatusCode::InvalidParameter) << notFinite;
+    }
+    EXPECT_NE(root->parameters().find("Force")->value, "1e400");
+    EXPECT_TRUE(isOk(setParameterValue(*root, "Servo1$Translational_Mass.m", "1e300")));
+    EXPECT_TRUE(isOk(setParameterValue(*root, "Force", "-1.5e+300")));
+}
