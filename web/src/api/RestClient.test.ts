@@ -4,9 +4,9 @@ import { ApiError } from './ApiError';
 
 /** A fetch that answers from a list, in order, and records what it was asked. */
 function scripted(answers: (() => Response)[]) {
-    const asked: { url: string; method: string }[] = [];
+    const asked: { url: string; method: string; body?: BodyInit | null }[] = [];
     const fetchFn = (async (url: string, init: RequestInit) => {
-        asked.push({ url, method: init.method ?? 'GET' });
+        asked.push({ url, method: init.method ?? 'GET', body: init.body });
         const next = answers.shift();
         if (!next) throw new Error('no more answers');
         return next();
@@ -49,5 +49,25 @@ describe('RestClient', () => {
         const reader = new RestClient('t', '/api/v1', long.fetchFn, async (ms) => { waits.push(ms); });
         expect(((await reader.job(1).catch((e: unknown) => e)) as ApiError).code).toBe('busy');
         expect(waits).toEqual([]);
+    });
+
+    it('asks for a model\'s run history with the page size and the job to continue after', async () => {
+        const runs = [{ id: 12, state: 'done' }, { id: 9, state: 'failed' }];
+        const { asked, fetchFn } = scripted([ok(runs), ok([])]);
+        const client = new RestClient('t', '/api/v1', fetchFn);
+        expect(await client.runHistory(4)).toEqual(runs);
+        expect(await client.runHistory(4, 20, 9)).toEqual([]);
+        expect(asked).toEqual([
+            { url: '/api/v1/jobs?model_id=4', method: 'GET', body: undefined },
+            { url: '/api/v1/jobs?model_id=4&limit=20&before=9', method: 'GET', body: undefined },
+        ]);
+    });
+
+    it('names and pins a run with a PATCH of only the fields given', async () => {
+        const { asked, fetchFn } = scripted([ok({ id: 12, name: 'baseline', pinned: true })]);
+        const client = new RestClient('t', '/api/v1', fetchFn);
+        const job = await client.labelJob(12, { name: 'baseline', pinned: true });
+        expect(job).toEqual({ id: 12, name: 'baseline', pinned: true });
+        expect(asked).toEqual([{ url: '/api/v1/jobs/12', method: 'PATCH', body: JSON.stringify({ name: 'baseline', pinned: true }) }]);
     });
 });

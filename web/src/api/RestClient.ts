@@ -119,6 +119,17 @@ export class RestClient {
     components(): Promise<CatalogueEntry[]> { return this.call('GET', '/components'); }
 
     job(id: number): Promise<JobInfo> { return this.call('GET', `/jobs/${id}`); }
+    /** A model's runs, newest first, at most `limit`; `before` (a job id) asks for the runs older than it. */
+    runHistory(modelId: number, limit?: number, before?: number): Promise<JobInfo[]> {
+        const query = [`model_id=${modelId}`];
+        if (limit !== undefined) query.push(`limit=${limit}`);
+        if (before !== undefined) query.push(`before=${before}`);
+        return this.call('GET', `/jobs?${query.join('&')}`);
+    }
+    /** Names or pins a run (its owner only); answers the updated run. */
+    labelJob(id: number, change: { name?: string; pinned?: boolean }): Promise<JobInfo> {
+        return this.call('PATCH', `/jobs/${id}`, change);
+    }
     resultsJson(id: number, variables: string[]): Promise<ResultsJson> {
         const list = variables.map(encodeURIComponent).join(',');
         return this.call('GET', `/jobs/${id}/results?format=json&variables=${list}`);

@@ -4,6 +4,7 @@ import { unitOfVariable } from './units';
 import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import { XyWindow } from './XyWindow';
 import type { RunController } from './RunController';
+import type { SavedPlots } from './runHistory';
 import { h, toast, errorText } from '../ui/dom';
 
 export class PlotArea {
@@ -17,7 +18,8 @@ export class PlotArea {
     private fetchedFor = 0;
     private readonly unsubscribe: () => void;
 
-    constructor(private readonly runs: RunController) {
+    /** `onLayoutChange` is told when the user adds or removes a variable or closes a window (to remember them). */
+    constructor(private readonly runs: RunController, private readonly onLayoutChange: () => void = () => undefined) {
         this.list = h('div', { class: 'plot-list' });
         this.element = h('div', { class: 'plot-area' },
             h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window')),
@@ -42,9 +44,9 @@ export class PlotArea {
 
     addWindow(): PlotWindow {
         const w = new PlotWindow(this.nextId++, {
-            close: (x) => this.close(x),
+            close: (x) => { this.close(x); this.onLayoutChange(); },
             activate: (x) => this.activate(x),
-            changed: (x) => this.refresh(x),
+            changed: (x) => { this.refresh(x); this.onLayoutChange(); },
             analyse: (x, kind) => (kind === 'xy' ? this.openXy(x.variables, (v) => x.labelOf(v)) : this.openAnalysis(kind, x.variables, (v) => x.labelOf(v))),
         });
         this.windows.push(w);
@@ -95,6 +97,21 @@ export class PlotArea {
         const w = this.active && this.active.hasRoomFor(unit) ? this.active : this.addWindow();
         w.add(name, label, unit);
         this.refresh(w);
+        this.onLayoutChange();
+    }
+
+    /** The plot windows' variables as they are shown, to open them again later. */
+    layout(): SavedPlots {
+        return this.windows.map((w) => w.variables.map((name) => ({ name, label: w.labelOf(name), unit: w.unitOf(name) })));
+    }
+
+    /** Opens a window per saved one, with its variables. */
+    openLayout(saved: SavedPlots): void {
+        for (const variables of saved) {
+            const w = this.addWindow();
+            for (const v of variables) w.add(v.name, v.label, v.unit);
+            this.refresh(w);
+        }
     }
 
     /** Every plotted variable, in window order, without repeats. */

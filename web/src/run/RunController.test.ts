@@ -1,6 +1,12 @@
 import { describe, expect, it, vi } from 'vitest';
 import { RunController } from './RunController';
-import type { ResultsJson, ServerEvent } from '../protocol/types';
+import type { JobInfo, ResultsJson, ServerEvent } from '../protocol/types';
+
+/** A run of the history as GET /jobs?model_id= lists it. */
+const stored = (id: number, state: JobInfo['state'] = 'done'): JobInfo => ({
+    id, model_id: 4, state, progress: 1, error: '', created_at: 0, started_at: 0, finished_at: 1, steps: 100,
+    settings: { start: 0, step: 0.001, stop: 1, log_samples: 0 }, name: '', pinned: false, results_dropped: false,
+});
 
 function fakeTransport() {
     let listener: ((e: ServerEvent) => void) | null = null;
@@ -102,5 +108,41 @@ describe('RunController', () => {
         expect(f.sent[1]).toEqual({ type: 'simulate.stop', fields: { job_id: 10 } });
         f.emit({ type: 'event.done', job_id: 10, state: 'cancelled' });
         expect(runs.current?.state).toBe('cancelled');
+    });
+
+    it('restores the last two finished runs of the history and loads their results when plots ask', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        const told = vi.fn();
+        runs.subscribe(told);
+        runs.restore([stored(9, 'failed'), stored(7), stored(5)]);
+        expect(told).toHaveBeenCalled();
+        expect(runs.running).toBe(false);
+        expect(runs.current?.jobId).toBe(7);
+        expect(runs.current?.state).toBe('done');
+        expect(runs.current?.finished).toBe(true);
+        expect(runs.previous?.jobId).toBe(5);
+        await runs.ensure(['B#p#Pressure']);
+        expect(f.results).toHaveBeenCalledWith(7, ['B#p#Pressure']);
+        expect(f.results).toHaveBeenCalledWith(5, ['B#p#Pressure']);
+        expect(runs.current?.columns.get('B#p#Pressure')).toEqual([42, 43]);
+    });
+
+    it('a history that arrives after a run was started changes nothing', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        runs.restore([stored(7)]);
+        expect(runs.current?.jobId).toBe(10);
+        expect(runs.previous).toBeNull();
+    });
+
+    it('a run started after the restore keeps the restored run to compare with', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(7)]);
+        await runs.start({}, []);
+        expect(runs.current?.jobId).toBe(10);
+        expect(runs.previous?.jobId).toBe(7);
     });
 });

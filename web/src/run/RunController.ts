@@ -4,7 +4,8 @@
 import { RunData } from './RunData';
 import type { RestClient } from '../api/RestClient';
 import type { WsClient } from '../api/WsClient';
-import type { ServerEvent } from '../protocol/types';
+import type { JobInfo, ServerEvent } from '../protocol/types';
+import { restorableRuns } from './runHistory';
 import { DEFAULT_FRAME_RATE, MAX_STREAM_VARIABLES } from '../protocol/constants.generated';
 import type { RequestFields } from '../protocol/requests.generated';
 
@@ -64,6 +65,19 @@ export class RunController {
         this.early.clear();
         this.emit();
         return run;
+    }
+
+    /**
+     * Shows the model's last finished runs from its run history (after a reload, say), unless a
+     * run was started meanwhile. Their data is loaded when plots ask for it (ensure).
+     */
+    restore(history: JobInfo[]): void {
+        if (this.current) return;
+        const { current, previous } = restorableRuns(history);
+        if (!current) return;
+        this.current = finishedRun(current);
+        this.previous = previous && finishedRun(previous);
+        this.emit();
     }
 
     async cancel(): Promise<void> {
@@ -128,4 +142,12 @@ export class RunController {
     }
 
     private emit(): void { for (const l of this.listeners) l(); }
+}
+
+/** A stored run that ended well, with no samples yet: ensure() loads those asked for. */
+function finishedRun(job: JobInfo): RunData {
+    const run = new RunData(job.id, []);
+    run.state = 'done';
+    run.progress = 1;
+    return run;
 }

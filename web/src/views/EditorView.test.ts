@@ -84,6 +84,7 @@ describe('leaving the editor', () => {
                 components: () => Promise.resolve([]),
                 me: () => Promise.resolve({}),
                 resultsJson: () => Promise.resolve({}),
+                runHistory: () => Promise.resolve([]),
             },
         } as unknown as Session;
 

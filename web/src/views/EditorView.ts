@@ -10,6 +10,7 @@ import { copySelection, Disconnect, GroupComponents, MoveComponents, Paste, Remo
 import { RunController } from '../run/RunController';
 import { PlotArea } from '../run/PlotArea';
 import { RunPanel } from '../run/RunPanel';
+import { HISTORY_PAGE, isLoggedVariable, loadPlots, savePlots } from '../run/runHistory';
 import { portVariables, sinkVariables } from '../model/variables';
 import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
@@ -76,7 +77,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
         onResubscribe: ws.onResubscribe.bind(ws) });
-    const plots = new PlotArea(runs);
+    const plots = new PlotArea(runs, () => savePlots(localStorage, summary.id, plots.layout()));
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
         (changed) => store.execute(new SetSimulationSettings(changed)));
     store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
@@ -267,7 +268,12 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     root.replaceChildren(layout);
     // (render fits the view to the model)
     canvas.render();
-    plots.addWindow();
+    // The plots and the runs as they were when the model was last open here (a reload, say).
+    const savedPlots = loadPlots(localStorage, summary.id, (name) => isLoggedVariable(store.model, name));
+    if (savedPlots.length > 0) plots.openLayout(savedPlots);
+    else plots.addWindow();
+    rest.runHistory(summary.id, HISTORY_PAGE).then((history) => runs.restore(history),
+        (e) => toast(`Earlier runs: ${errorText(e)}`, 'error'));
     layout.addEventListener('editor-error', (e) => toast((e as CustomEvent<string>).detail, 'error'));
 
     // ---- keys ----
