@@ -8,22 +8,22 @@ namespace tlmhub::server {
 namespace {
 
 // The columns readInfo reads, in its order; one full text per query so each is prepared once.
-#define TLMHUB_JOB_INFO                                                                         \
+#define TLMHUB_JOB_COLUMNS                                                                      \
     "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"           \
-    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs"
+    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at"
+#define TLMHUB_JOB_INFO TLMHUB_JOB_COLUMNS " FROM jobs"
 constexpr const char* kInfoById = TLMHUB_JOB_INFO " WHERE id = ?";
 // The history of a model: with the overrides (column 17), and for one owner (?2 not null) or
 // all, below an id (?3 not null); ?4 rows.
 constexpr const char* kHistory =
-    "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
-    " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at,"
-    " json_extract(request, '$.parameters') FROM jobs"
+    TLMHUB_JOB_COLUMNS ", json_extract(request, '$.parameters') FROM jobs"
     " WHERE model_id = ?1 AND (?2 IS NULL OR owner_id = ?2) AND (?3 IS NULL OR id < ?3)"
     " ORDER BY id DESC LIMIT ?4";
 constexpr const char* kInfoByOwner = TLMHUB_JOB_INFO " WHERE owner_id = ? ORDER BY id DESC";
 constexpr const char* kInfoAll = TLMHUB_JOB_INFO " ORDER BY id DESC";
 constexpr const char* kInfoByState = TLMHUB_JOB_INFO " WHERE state = ? ORDER BY id ASC";
 #undef TLMHUB_JOB_INFO
+#undef TLMHUB_JOB_COLUMNS
 
 // Finished states, as in isFinished().
 constexpr const char* kDeleteOldResults =
@@ -32,10 +32,14 @@ constexpr const char* kDeleteOldResults =
 constexpr const char* kDeleteOldJobs =
     "DELETE FROM jobs WHERE state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') AND finished_at < ?"
     " AND pinned = 0";
-// A model's finished unpinned jobs with results, but the newest ?2: their results go.
-constexpr const char* kResultsToDrop =
-    "SELECT id FROM jobs WHERE model_id = ?1 AND pinned = 0 AND results_dropped_at = 0"
-    " AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') ORDER BY id DESC LIMIT -1 OFFSET ?2";
+// A model's finished unpinned jobs with results, but the newest ?2, are marked (at ?3); then
+// the results of its marked jobs go.
+constexpr const char* kMarkResultsDropped =
+    "UPDATE jobs SET results_dropped_at = ?3 WHERE id IN (SELECT id FROM jobs WHERE model_id = ?1 AND pinned = 0"
+    " AND results_dropped_at = 0 AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead')"
+    " ORDER BY id DESC LIMIT -1 OFFSET ?2)";
+constexpr const char* kDeleteDroppedResults =
+    "DELETE FROM job_results WHERE job_id IN (SELECT id FROM jobs WHERE model_id = ? AND results_dropped_at > 0)";
 
 JobInfo readInfo(SQLite::Statement& q)
 {
@@ -185,24 +189,16 @@ int SqliteJobStore::dropOldResults(std::int64_t modelId, int keep)
     const auto now = static_cast<std::int64_t>(unixNow());
     const int dropped = mDb.runFreeingSpace([&](SqliteConnection& c) {
         SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
-        std::vector<std::int64_t> ids;
-        {
-            auto q = c.prepared(kResultsToDrop);
-            q->bind(1, modelId);
-            q->bind(2, keep);
-            while (q->executeStep()) ids.push_back(q->getColumn(0).getInt64());
-        }
-        for (const std::int64_t id : ids) {
-            auto results = c.prepared("DELETE FROM job_results WHERE job_id = ?");
-            results->bind(1, id);
-            results->exec();
-            auto mark = c.prepared("UPDATE jobs SET results_dropped_at = ? WHERE id = ?");
-            mark->bind(1, now);
-            mark->bind(2, id);
-            mark->exec();
-        }
+        auto mark = c.prepared(kMarkResultsDropped);
+        mark->bind(1, modelId);
+        mark->bind(2, keep);
+        mark->bind(3, now);
+        const int marked = mark->exec();
+        auto results = c.prepared(kDeleteDroppedResults);
+        results->bind(1, modelId);
+        results->exec();
         transaction.commit();
-        return static_cast<int>(ids.size());
+        return marked;
     });
     mDb.restoreReserve();
     return dropped;
