@@ -135,7 +135,13 @@ int runCommand(const std::vector<std::string>& args)
     for (const auto& m : sim.messages())
         if (m.type == MessageType::Error || m.type == MessageType::Fatal)
             std::cerr << "error: " << m.text << "\n";
-    if (!status) {
+    // A model that ends its own run (SignalStopSimulation) ran as designed: its results are
+    // checked and written as those of a run to the stop time.
+    const bool ended = status.code() == StatusCode::SimulationEnded;
+    if (ended)
+        std::fprintf(stderr, "note: %s: %s (t=%g, before the stop time %g)\n", path.c_str(),
+                     status.message().c_str(), sim.time(), stop);
+    if (!status && !ended) {
         if (status.code() == StatusCode::SimulationStopped)
             std::fprintf(stderr, "error: %s: simulation stopped at t=%g before the stop time %g\n",
                          path.c_str(), sim.time(), stop);
@@ -162,6 +168,7 @@ int runCommand(const std::vector<std::string>& args)
                 Status again = sim.reset();
                 if (again) again = sim.run(half, runOptions);
                 if (again) again = sim.run(stop, runOptions);
+                if (again.code() == StatusCode::SimulationEnded) again = Status::ok();
                 const std::string rerunHash =
                     again ? csvSha256(ResultTable::fromView(sim.results())) : std::string();
                 if (rerunHash != hash) {
@@ -174,6 +181,7 @@ int runCommand(const std::vector<std::string>& args)
                 }
                 Result<Simulation> original = compile(std::move(model), settings);
                 Status ran = original ? original->run(runOptions) : original.status();
+                if (ran.code() == StatusCode::SimulationEnded) ran = Status::ok();
                 const std::string originalHash =
                     ran ? csvSha256(ResultTable::fromView(original->results())) : std::string();
                 if (originalHash != hash) {
@@ -190,7 +198,7 @@ int runCommand(const std::vector<std::string>& args)
     const double init = std::chrono::duration<double>(t1 - t0).count();
     const double simTime = std::chrono::duration<double>(t2 - t1).count();
     std::printf("ok: %s: %zu steps, t=[%g, %g], compile %.3f s, run %.3f s%s%s%s\n", path.c_str(),
-                sim.totalSteps(), start, stop, init, simTime, csv.empty() ? "" : ", csv ",
+                sim.takenSteps(), start, ended ? sim.time() : stop, init, simTime, csv.empty() ? "" : ", csv ",
                 csv.c_str(), hashNote.c_str());
     return 0;
 }

@@ -362,6 +362,15 @@ void Component::stopSimulation(const std::string& reason)
     if (root) root->requestStop();
 }
 
+void Component::endSimulation(const std::string& reason)
+{
+    System* root = mParent ? mParent->rootSystem() : nullptr;
+    if (!root && isSystem()) root = static_cast<System*>(this)->rootSystem();
+    if (!root) return;
+    root->postMessage({MessageType::Info, reason, "SimulationEnded", modelPath(), StatusCode::SimulationEnded});
+    root->requestStop();
+}
+
 RandomStream& Component::randomStream()
 {
     System* root = mParent ? mParent->rootSystem() : static_cast<System*>(this);

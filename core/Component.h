@@ -119,6 +119,10 @@ public:
     void addDebugMessage(const std::string& t) { addMessage(MessageType::Debug, t); }
     // Ask the root system to stop the running simulation (reported as failure).
     void stopSimulation(const std::string& reason = {});
+    // End the run at this step as the model designs it (Hopsan's SignalStopSimulation): the
+    // run reports SimulationEnded with this reason, a normal finish, unless a component
+    // reported an error.
+    void endSimulation(const std::string& reason);
     // Directory of the model file (for components reading data files).
     std::string modelDirectory() const;
     // The simulation's random numbers (for noise sources; bind it in initialize()). The root

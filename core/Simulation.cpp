@@ -123,12 +123,16 @@ const std::vector<Message>& Simulation::messages() const { return mRoot->message
 void Simulation::requestStop() { mRoot->requestStop(); }
 
 // A run that ended early: the first error a component reported (its text and model path),
-// else the fallback message.
+// else the end a component designed (SimulationEnded), else the fallback message.
 Status Simulation::stopped(const std::string& fallbackMessage) const
 {
-    for (const Message& m : mRoot->messages())
+    const Message* designedEnd = nullptr;
+    for (const Message& m : mRoot->messages()) {
         if (m.type == MessageType::Error || m.type == MessageType::Fatal)
             return {StatusCode::SimulationStopped, m.text, m.source};
+        if (m.code == StatusCode::SimulationEnded && !designedEnd) designedEnd = &m;
+    }
+    if (designedEnd) return {StatusCode::SimulationEnded, designedEnd->text, designedEnd->source};
     return {StatusCode::SimulationStopped, fallbackMessage};
 }
 

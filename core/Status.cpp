@@ -16,6 +16,7 @@ const char* statusCodeName(StatusCode code)
     case StatusCode::AlgebraicLoop: return "algebraic_loop";
     case StatusCode::InitFailed: return "init_failed";
     case StatusCode::SimulationStopped: return "simulation_stopped";
+    case StatusCode::SimulationEnded: return "simulation_ended";
     case StatusCode::InvalidState: return "invalid_state";
     case StatusCode::NotFound: return "not_found";
     case StatusCode::IllegalGrouping: return "illegal_grouping";

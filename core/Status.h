@@ -21,6 +21,7 @@ enum class StatusCode {
     AlgebraicLoop,          // signal components that depend on each other in one step
     InitFailed,             // a component refused to initialise
     SimulationStopped,      // a component or the caller stopped the run before its end
+    SimulationEnded,        // a component ended the run as the model designs it (SignalStopSimulation)
     InvalidState,           // an operation the simulation's state does not allow
     NotFound,               // a component, port, system port, parameter or variable name that names nothing
     IllegalGrouping,        // components that cannot be grouped into a subsystem, or ungrouped

@@ -16,7 +16,8 @@ const char* protocolErrorCode(StatusCode code)
     case StatusCode::AlgebraicLoop: return "invalid_model";
     case StatusCode::InvalidSettings: return "bad_request";
     case StatusCode::InitFailed:
-    case StatusCode::SimulationStopped: return "simulation_failed";
+    case StatusCode::SimulationStopped:
+    case StatusCode::SimulationEnded: return "simulation_failed";
     case StatusCode::InvalidState: return "conflict";
     case StatusCode::NotFound: return "not_found";
     case StatusCode::Ok:   // a success is no error: reaching here is a bug

@@ -79,13 +79,15 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
 
 nlohmann::json JobInfo::toJson() const
 {
+    const bool endedByModel = state == JobState::Done && !error.empty();
     return protocol::JobInfo{
         .id = id,
         .ownerId = std::nullopt,   // the API does not show it
         .modelId = modelId,
         .state = jobStateName(state),
         .progress = progress,
-        .error = error,
+        .error = endedByModel ? std::string() : error,
+        .stopReason = endedByModel ? std::optional<std::string>(error) : std::nullopt,
         .createdAt = createdAt,
         .startedAt = timeIfSet(startedAt),
         .finishedAt = timeIfSet(finishedAt),

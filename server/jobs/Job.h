@@ -53,7 +53,8 @@ struct JobInfo {
     std::optional<std::int64_t> modelId;
     JobState state = JobState::Queued;
     double progress = 0.0;                  // 0..1
-    std::string error;                      // why it failed; empty otherwise
+    std::string error;                      // why it failed; of a done run, the reason a component of
+                                            // the model ended it (stop_reason); empty otherwise
     std::int64_t createdAt = 0, startedAt = 0, finishedAt = 0;   // unix s; 0 = not yet
     std::uint64_t steps = 0;                // planned steps; taken steps once finished
     double start = 0.0, step = 0.0, stop = 0.0;   // s, as resolved at submit

@@ -170,7 +170,10 @@ bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bo
             onProgress(job, root, taken, total);
         };
         options.pause = job.mPause.get_token();
-        const bool ok = sim.run(options).isOk();
+        const Status ran = sim.run(options);
+        // A model that ends its own run (SignalStopSimulation) finishes as designed.
+        const bool endedByModel = ran.code() == StatusCode::SimulationEnded;
+        const bool ok = ran.isOk() || endedByModel;
         const auto now = Clock::now();
         job.mRunTime += now - job.mSliceStart;
         if (ok && sim.state() == SimulationState::Paused) {
@@ -180,7 +183,7 @@ bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bo
             mHub.publishFrames(job.mId, *job.mLive);
             return false;
         }
-        finishRun(job, ok, {});
+        finishRun(job, ok, {}, endedByModel ? ran.message() : std::string());
     } catch (const std::exception& e) {
         job.mControl->detach();
         try {
@@ -244,7 +247,7 @@ bool JobRunner::start(StartedJob& job)
     return true;
 }
 
-void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge)
+void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge, const std::string& endReason)
 {
     job.mControl->detach();
     Simulation& sim = *job.mJob->simulation;
@@ -253,7 +256,7 @@ void JobRunner::finishRun(StartedJob& job, bool ran, const std::string& tooLarge
     const JobControl::Stop stop = job.mControl->stopReason();
     if (!ran && (stop == JobControl::Stop::Release || stop == JobControl::Stop::LeaseLost)) return giveUp(job);
     JobState finalState = JobState::Done;
-    std::string error;
+    std::string error = endReason;   // of a done run: stored as its stop reason
     if (!tooLarge.empty()) {
         finalState = JobState::Failed;
         error = tooLarge;

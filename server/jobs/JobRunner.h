@@ -119,7 +119,9 @@ private:
     // its final state.
     bool start(StartedJob& job);
     // The job's final state after its last slice (ran: whether that slice ended well).
-    void finishRun(StartedJob& job, bool ran, const std::string& tooLarge);
+    // endReason: why a component of the model ended the run as designed (a done run's stop
+    // reason); empty for a run to its stop time.
+    void finishRun(StartedJob& job, bool ran, const std::string& tooLarge, const std::string& endReason = {});
     // A finished run's result: what is stored, and where its last frames come from.
     struct Result {
         const std::string& blob;

@@ -666,6 +666,7 @@ void from_json(const nlohmann::json& j, JobInfo& v)
     j.at("state").get_to(v.state);
     j.at("progress").get_to(v.progress);
     j.at("error").get_to(v.error);
+    if (const auto x = j.find("stop_reason"); x != j.end()) v.stopReason = x->get<std::string>();
     j.at("created_at").get_to(v.createdAt);
     if (const nlohmann::json& x = j.at("started_at"); !x.is_null()) v.startedAt = x.get<std::int64_t>();
     if (const nlohmann::json& x = j.at("finished_at"); !x.is_null()) v.finishedAt = x.get<std::int64_t>();
@@ -687,6 +688,7 @@ void to_json(nlohmann::json& j, const JobInfo& v)
     j["state"] = v.state;
     j["progress"] = v.progress;
     j["error"] = v.error;
+    if (v.stopReason) j["stop_reason"] = *v.stopReason;
     j["created_at"] = v.createdAt;
     j["started_at"] = v.startedAt ? nlohmann::json(*v.startedAt) : nlohmann::json(nullptr);
     j["finished_at"] = v.finishedAt ? nlohmann::json(*v.finishedAt) : nlohmann::json(nullptr);
@@ -1350,6 +1352,7 @@ void from_json(const nlohmann::json& j, DoneEvent& v)
     j.at("job_id").get_to(v.jobId);
     j.at("state").get_to(v.state);
     if (const auto x = j.find("error"); x != j.end()) v.error = x->get<std::string>();
+    if (const auto x = j.find("stop_reason"); x != j.end()) v.stopReason = x->get<std::string>();
 }
 
 void to_json(nlohmann::json& j, const DoneEvent& v)
@@ -1359,6 +1362,7 @@ void to_json(nlohmann::json& j, const DoneEvent& v)
     j["job_id"] = v.jobId;
     j["state"] = v.state;
     if (v.error) j["error"] = *v.error;
+    if (v.stopReason) j["stop_reason"] = *v.stopReason;
 }
 
 void from_json(const nlohmann::json& j, ResyncEvent& v)

@@ -514,6 +514,7 @@ struct JobInfo {
     std::string state{};
     double progress{};
     std::string error{};
+    std::optional<std::string> stopReason;
     std::int64_t createdAt{};
     std::optional<std::int64_t> startedAt;
     std::optional<std::int64_t> finishedAt;
@@ -916,6 +917,7 @@ struct DoneEvent {
     std::int64_t jobId{};
     std::string state{};
     std::optional<std::string> error;
+    std::optional<std::string> stopReason;
 };
 void from_json(const nlohmann::json& j, DoneEvent& v);
 void to_json(nlohmann::json& j, const DoneEvent& v);

@@ -140,7 +140,8 @@ StudyExecution::RunOutcome StudyExecution::simulate(unsigned worker, const Plann
         }
     };
     const Status ran = simulation->run(options);
-    if (!ran) {
+    // A model that ends its own run (SignalStopSimulation) ran as designed: its outputs count.
+    if (!ran && ran.code() != StatusCode::SimulationEnded) {
         outcome.error = wallTimeExceeded ? wallTimeLimitMessage(mJobLimits.maxWallSeconds) : ran.message();
         return outcome;
     }

@@ -565,6 +565,34 @@ TEST_F(Jobs, NestedParametersReachIntoSubsystems)
               b.column("Servo2$Translational_Mass#P1#Position")->data);
 }
 
+// A model that ends itself with SignalStopSimulation (Hopsan's StopTest: at t = 5 s of 10) has
+// run as designed: done, its component's message as the stop reason in the job and in
+// event.done, and its results up to that step stored. Before, it ended failed.
+TEST_F(Jobs, AModelThatEndsItselfIsDoneWithTheReason)
+{
+    const std::string stopTest =
+        std::string(TLMHUB_SOURCE_DIR) + "/../shared/hopsan-models/Component Test/SignalComponent Test/Logic/StopTest.hmf";
+    JobQueue queue(store, leases, results, hub, {}, 1);
+    const auto id = *queue.submit(request(stopTest)).id;
+    EventLog events;
+    queue.subscribe(id, {}, 0, events.sink());
+    queue.start();
+    ASSERT_TRUE(waitUntil([&] { return events.done(); }));
+    const nlohmann::json done = events.snapshot().back();
+    EXPECT_EQ(done.at("state"), "done") << done.dump();
+    EXPECT_EQ(done.value("stop_reason", ""), "Simulation stopped by Stop_simulation") << done.dump();
+    EXPECT_FALSE(done.contains("error")) << done.dump();
+    const JobInfo info = *store.info(id);
+    EXPECT_EQ(info.state, JobState::Done);
+    const nlohmann::json shown = info.toJson();
+    EXPECT_EQ(shown.at("error"), "");
+    EXPECT_EQ(shown.value("stop_reason", ""), "Simulation stopped by Stop_simulation");
+    const auto result = results.result(id);
+    ASSERT_TRUE(result);
+    ASSERT_FALSE(result->time.empty());
+    EXPECT_NEAR(result->time.back(), 5.0, 0.02);
+}
+
 TEST_F(Jobs, WallTimeLimitFailsTheJob)
 {
     JobLimits limits;

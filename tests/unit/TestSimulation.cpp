@@ -302,3 +302,29 @@ TEST(Simulation, ComponentThatRefusesToInitialiseGivesInitFailedWithItsPath)
     ASSERT_NE(reporter, nullptr) << status.path();
     EXPECT_EQ(reporter->typeName(), "AeroFlightRecorder");
 }
+
+// Hopsan's SignalStopSimulation ends the run as the model designs it: a status of its own
+// with the component's message, the results up to that step, and no error in the log. A
+// component's error stops a run as a failure, as before (StopTokenEndsTheRun, Model tests).
+TEST(Simulation, AStopComponentEndsTheRunAsDesignedWithItsReason)
+{
+    const std::string path = sharedDir() + "/hopsan-models/Component Test/SignalComponent Test/Logic/StopTest.hmf";
+    auto root = load(path);
+    ASSERT_TRUE(root);
+    Result<Simulation> sim = compile(*root);
+    ASSERT_TRUE(sim) << sim.status().message();
+    const Status status = sim->run();
+    EXPECT_EQ(status.code(), StatusCode::SimulationEnded) << status.message();
+    EXPECT_STREQ(status.codeName(), "simulation_ended");
+    EXPECT_EQ(status.message(), "Simulation stopped by Stop_simulation");
+    EXPECT_EQ(status.path(), "Stop_simulation");
+    EXPECT_EQ(sim->state(), SimulationState::Stopped);
+    // The step input turns true at t = 5 s of 10: the run ends at that step.
+    EXPECT_NEAR(sim->time(), 5.0, 2e-3);
+    EXPECT_LT(sim->takenSteps(), sim->totalSteps());
+    for (const Message& m : sim->messages())
+        EXPECT_NE(m.type, MessageType::Error) << m.text;
+    const ResultView view = sim->results();
+    ASSERT_FALSE(view.time().empty());
+    EXPECT_NEAR(view.time().back(), 5.0, 0.02);
+}

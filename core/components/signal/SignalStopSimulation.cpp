@@ -22,7 +22,7 @@ void SignalStopSimulation::initialize()
 void SignalStopSimulation::simulateOneTimestep()
 {
     if (doubleToBool(*mpIn)) {
-        stopSimulation(mStopText);
+        endSimulation(mStopText);
     }
 }
 

@@ -5,7 +5,8 @@
 
 namespace tlmhub {
 
-// Stops the simulation after the first step at which the input is true (> 0.5).
+// Ends the run after the first step at which the input is true (> 0.5): the model's designed
+// end, a normal finish with the message as its reason.
 class SignalStopSimulation : public ComponentSignal {
 public:
     void configure() override;

@@ -6,6 +6,7 @@ import { RenameComponent, SetParameter, SetSystemParameter } from './commands';
 import { errorText, h } from '../ui/dom';
 import { displayNameOf } from '../model/appearance';
 import { parameterLabel, shortName, splitParameters } from './parameterLabels';
+import { notFiniteError } from './finiteNumber';
 import type { Component, PortRef, System } from '../protocol/types';
 
 export interface PanelActions {
@@ -84,6 +85,8 @@ export class ParameterPanel {
                 const value = input.value.trim();
                 if (value === p.value && !refused) return;
                 if (value === p.value) { this.refused.delete(key); this.render(); return; }
+                const notFinite = notFiniteError(`${comp.name}.${shortName(p)}`, p.type, value);
+                if (notFinite) { this.refused.set(key, { value, message: notFinite }); this.render(); return; }
                 this.run(this.store.execute(new SetParameter(path, comp.name, p.name, value)).then(() => {
                     this.refused.delete(key);
                     this.render();
@@ -148,7 +151,9 @@ export class ParameterPanel {
             const input = h('input', { name: `sysparam-${p.name}`, value: refused?.value ?? p.value, class: refused ? 'invalid' : '', 'aria-label': `${p.name} value` });
             const commit = () => {
                 const value = input.value.trim();
-                if (value === p.value) return;
+                if (value === p.value) { if (refused) { this.refused.delete(key); this.render(); } return; }
+                const notFinite = notFiniteError(p.name, p.type, value);
+                if (notFinite) { this.refused.set(key, { value, message: notFinite }); this.render(); return; }
                 this.run(this.store.execute(new SetSystemParameter(path, { ...p, value })).then(() => { this.refused.delete(key); this.render(); }),
                     (message) => { this.refused.set(key, { value, message }); this.render(); });
             };
@@ -170,6 +175,8 @@ export class ParameterPanel {
                 const name = newName.value.trim();
                 if (!name) return;
                 const param = { name, value: newValue.value.trim() || '0', type: 'double' as const, unit: newUnit.value.trim(), description: '' };
+                const notFinite = notFiniteError(name, param.type, param.value);
+                if (notFinite) { this.refused.set('$new', { value: name, message: notFinite }); this.render(); return; }
                 this.run(this.store.execute(new SetSystemParameter(path, param)).then(() => { this.refused.delete('$new'); this.render(); }),
                     (message) => { this.refused.set('$new', { value: name, message }); this.render(); });
             },

@@ -613,6 +613,10 @@ export interface JobInfo {
     state: JobState;
     progress: number;
     error: string;
+    /**
+     * Only for a run a component of the model ended as designed (SignalStopSimulation), state done: its message, e.g. 'Simulation stopped by Stop_simulation'.
+     */
+    stop_reason?: string;
     created_at: number;
     started_at: number | null;
     finished_at: number | null;
@@ -1039,6 +1043,10 @@ export interface DoneEvent {
     job_id: number;
     state: JobState;
     error?: string;
+    /**
+     * A run a component of the model ended as designed (SignalStopSimulation): state done, and this is its message.
+     */
+    stop_reason?: string;
 }
 /**
  * The job's streamed samples would have passed the socket's byte limit: no more frames of the job follow on this subscription (event.done still does); read the stored result instead.

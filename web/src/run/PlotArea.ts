@@ -120,10 +120,9 @@ export class PlotArea {
     }
 
     private refresh(w: PlotWindow): void {
-        w.update(this.runs.current, this.runs.previous);
-        if (!this.runs.running) {
-            this.runs.ensure(w.variables).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
-        }
+        w.update(this.runs.generations);
+        // (a run still going has no stored results: ensure() passes it over)
+        this.runs.ensure(w.variables, w.shownRuns()).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
     }
 
     // at most one redraw per animation frame while frames stream in
@@ -132,7 +131,7 @@ export class PlotArea {
         this.scheduled = true;
         requestAnimationFrame(() => {
             this.scheduled = false;
-            for (const w of this.windows) w.update(this.runs.current, this.runs.previous);
+            for (const w of this.windows) w.update(this.runs.generations);
             for (const a of this.analyses) a.update(this.runs.current);
         });
     }

@@ -1,5 +1,6 @@
-// One plot window: chosen variables of the current run (and the previous one to compare),
-// live while the run goes on; zoom by dragging, cursor read-out in the legend, CSV and PNG.
+// One plot window: chosen variables of one of the model's runs, the newest unless the user
+// stepped back (◀ ▶, Ctrl+← Ctrl+→), and the run before it to compare; live while the run goes
+// on; each curve names its run; zoom by dragging, cursor read-out in the legend, CSV and PNG.
 import uPlot from 'uplot';
 import { alignSeries, toCsv, type RunData, type SeriesSource } from './RunData';
 import { variableLabel } from '../model/variables';
@@ -7,6 +8,7 @@ import { downloadText, h } from '../ui/dom';
 import { PlotSurface } from './PlotSurface';
 import type { AnalysisKind } from './AnalysisWindow';
 import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
+import { generationText, shownRuns, stepGeneration } from './generations';
 
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
 
@@ -33,6 +35,13 @@ export class PlotWindow {
     private plotted: Plotted[] = [];
     /** x range to show while a run is filling the plot. */
     private span: [number, number] | null = null;
+    /** The model's runs, oldest first, as last drawn. */
+    private runs: readonly RunData[] = [];
+    /** The job the user stepped to; null follows the newest run. */
+    private shown: number | null = null;
+    private readonly earlierButton: HTMLButtonElement;
+    private readonly laterButton: HTMLButtonElement;
+    private readonly generation: HTMLElement;
 
     constructor(readonly id: number, private readonly actions: {
         close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
@@ -44,16 +53,26 @@ export class PlotWindow {
             type: 'checkbox', name: 'compare',
             onchange: () => { this.compare = this.compareBox.checked; this.actions.changed(this); },
         });
-        this.element = h('section', { class: 'plot-window', 'data-plot-id': String(id), onpointerdown: () => this.actions.activate(this) },
+        this.earlierButton = h('button', { class: 'small', onclick: () => this.step(-1), title: 'Earlier run (Ctrl+←)', 'aria-label': 'Earlier run' }, '◀');
+        this.laterButton = h('button', { class: 'small', onclick: () => this.step(1), title: 'Later run (Ctrl+→)', 'aria-label': 'Later run' }, '▶');
+        this.generation = h('span', { class: 'generation', 'data-testid': 'generation' });
+        this.element = h('section', {
+            class: 'plot-window', 'data-plot-id': String(id), tabindex: 0,
+            onpointerdown: () => this.actions.activate(this),
+            onkeydown: (e: KeyboardEvent) => this.onKey(e),
+        },
             h('header', { class: 'plot-header' },
                 h('strong', {}, `Plot ${id}`), this.chips,
-                h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
-                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
-                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
-                h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
-                h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
-                h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
-                h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×')),
+                // one group: in a narrow window it goes below the chips as a whole
+                h('div', { class: 'plot-controls' },
+                    h('span', { class: 'generations' }, this.earlierButton, this.generation, this.laterButton),
+                    h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
+                    h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
+                    h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
+                    h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
+                    h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
+                    h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
+                    h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×'))),
             this.body);
     }
 
@@ -94,16 +113,43 @@ export class PlotWindow {
         return units.includes(unit) || units.length < MAX_AXES;
     }
 
-    /** Redraws with the runs' current data. */
-    update(current: RunData | null, previous: RunData | null): void {
+    /** The run shown and the one before it, whose data the window needs. */
+    shownRuns(): (RunData | null)[] {
+        const { run, before } = shownRuns(this.runs, this.shown);
+        return [run, before];
+    }
+
+    /** Shows the run `by` runs later (or earlier, if negative) than the one shown. */
+    step(by: number): void {
+        this.shown = stepGeneration(this.runs, this.shown, by);
+        this.actions.changed(this);
+    }
+
+    private onKey(e: KeyboardEvent): void {
+        if (!(e.ctrlKey || e.metaKey) || (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight')) return;
+        e.preventDefault();
+        this.step(e.key === 'ArrowLeft' ? -1 : 1);
+    }
+
+    /**
+     * Redraws with the data of the model's runs (oldest first). A new run is shown as it
+     * comes, even if the user had stepped back.
+     */
+    update(runs: readonly RunData[]): void {
+        if (runs.at(-1) !== this.runs.at(-1)) this.shown = null;
+        this.runs = runs;
+        const { run: current, before: previous } = shownRuns(runs, this.shown);
+        this.generation.textContent = generationText(runs, this.shown);
+        this.earlierButton.disabled = previous === null;
+        this.laterButton.disabled = this.shown === null;
         const plotted: Plotted[] = [];
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
             const col = current?.columns.get(name);
-            if (current && col) plotted.push({ name, label: this.labelOf(name), source: { time: current.time, data: col }, previous: false, colour, unit: this.unitOf(name) });
+            if (current && col) plotted.push({ name, label: `${this.labelOf(name)} (${current.label})`, source: { time: current.time, data: col }, previous: false, colour, unit: this.unitOf(name) });
             const old = previous?.columns.get(name);
             if (this.compare && previous && old) {
-                plotted.push({ name, label: `${this.labelOf(name)} (run ${previous.jobId})`, source: { time: previous.time, data: old }, previous: true, colour, unit: this.unitOf(name) });
+                plotted.push({ name, label: `${this.labelOf(name)} (${previous.label})`, source: { time: previous.time, data: old }, previous: true, colour, unit: this.unitOf(name) });
             }
         });
         this.plotted = plotted;
@@ -168,7 +214,7 @@ export class PlotWindow {
         };
     }
 
-    /** Values of a variable of the current run as plotted (tests read the last one). */
+    /** Values of a variable of the shown run (or the one before) as plotted (tests read the last one). */
     seriesData(name: string, previous = false): number[] {
         return this.plotted.find((p) => p.name === name && p.previous === previous)?.source.data ?? [];
     }

@@ -1,6 +1,8 @@
 import { describe, expect, it, vi } from 'vitest';
 import { RunController } from './RunController';
 import type { JobInfo, ResultsJson, ServerEvent } from '../protocol/types';
+import { ApiError } from '../api/ApiError';
+import { MAX_GENERATIONS } from './generations';
 
 /** A run of the history as GET /jobs?model_id= lists it. */
 const stored = (id: number, state: JobInfo['state'] = 'done'): JobInfo => ({
@@ -144,5 +146,100 @@ describe('RunController', () => {
         await runs.start({}, []);
         expect(runs.current?.jobId).toBe(10);
         expect(runs.previous?.jobId).toBe(7);
+    });
+
+    it('a run a component of the model ended is done, with the reason it gives', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        const run = await runs.start({}, []);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done', stop_reason: 'Simulation stopped by Stop_simulation' });
+        expect(run.state).toBe('done');
+        expect(run.stopReason).toBe('Simulation stopped by Stop_simulation');
+        expect(run.error).toBe('');
+    });
+
+    it('a restored run keeps the reason a component of the model ended it', () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([{ ...stored(7), stop_reason: 'Simulation stopped by Stop_simulation' }, stored(5)]);
+        expect(runs.current?.stopReason).toBe('Simulation stopped by Stop_simulation');
+        expect(runs.previous?.stopReason).toBe('');
+    });
+
+    it('a failed run takes what it stored up to the failure, for streamed variables and those asked for later', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        const run = await runs.start({}, ['A#out#Value']);
+        f.emit({ type: 'event.frame', job_id: 10, seq: 0, time: [0], variables: { 'A#out#Value': [1] }, dropped: 0 });
+        f.emit({ type: 'event.done', job_id: 10, state: 'failed', error: 'step 3: pressure is not a number' });
+        expect(run.error).toBe('step 3: pressure is not a number');
+        await vi.waitFor(() => expect(run.columns.get('A#out#Value')).toEqual([42, 43]));
+        await runs.ensure(['B#p#Pressure']);
+        expect(f.results).toHaveBeenCalledWith(10, ['B#p#Pressure']);
+        expect(run.columns.get('B#p#Pressure')).toEqual([42, 43]);
+    });
+
+    it('a failed run that stored nothing keeps what it streamed, without an error', async () => {
+        const f = fakeTransport();
+        f.results.mockRejectedValue(new ApiError('not_found', 'no results', 404));
+        const runs = new RunController(f.transport);
+        const run = await runs.start({}, ['A#out#Value']);
+        f.emit({ type: 'event.frame', job_id: 10, seq: 0, time: [0], variables: { 'A#out#Value': [1] }, dropped: 0 });
+        f.emit({ type: 'event.done', job_id: 10, state: 'failed', error: 'diverged' });
+        await expect(runs.ensure(['A#out#Value', 'B#p#Pressure'])).resolves.toBeUndefined();
+        expect(run.columns.get('A#out#Value')).toEqual([1]);
+        expect(run.has('B#p#Pressure')).toBe(false);
+    });
+
+    it('a done run whose results cannot be read still reports it', async () => {
+        const f = fakeTransport();
+        f.results.mockRejectedValue(new ApiError('gone', 'results dropped', 410));
+        const runs = new RunController(f.transport);
+        await runs.start({}, []);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        await expect(runs.ensure(['B#p#Pressure'])).rejects.toThrow('results dropped');
+    });
+
+    it('keeps the model\'s runs to step through, oldest first, a refused run not among them', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(5), stored(9, 'failed'), stored(7)]);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([5, 7]);
+        await runs.start({}, []);
+        f.emit({ type: 'event.done', job_id: 10, state: 'done' });
+        const request = f.transport.request;
+        f.transport.request = (async () => { throw new Error('the job needs 1e+12 steps'); }) as never;
+        await expect(runs.start({}, [])).rejects.toThrow();
+        f.transport.request = request;
+        await runs.start({}, []);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([5, 7, 10, 11]);
+        expect(runs.generations.at(-1)).toBe(runs.current);
+    });
+
+    it('names restored runs by their name in the history, else by their job', () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([{ ...stored(7), name: 'stiff spring' }, stored(5)]);
+        expect(runs.generations.map((r) => r.label)).toEqual(['run 5', 'stiff spring']);
+    });
+
+    it('keeps at most MAX_GENERATIONS runs, dropping the oldest', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        for (let i = 0; i < MAX_GENERATIONS + 2; ++i) {
+            const run = await runs.start({}, []);
+            f.emit({ type: 'event.done', job_id: run.jobId, state: 'done' });
+        }
+        expect(runs.generations).toHaveLength(MAX_GENERATIONS);
+        expect(runs.generations[0].jobId).toBe(12);
+    });
+
+    it('loads stored results of the runs a plot window shows', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(7), stored(5), stored(3)]);
+        await runs.ensure(['B#p#Pressure'], [runs.generations[0]]);
+        expect(f.results).toHaveBeenCalledTimes(1);
+        expect(f.results).toHaveBeenCalledWith(3, ['B#p#Pressure']);
     });
 });

@@ -1,11 +1,14 @@
 // Runs of the open model: simulate.start over the socket, events into RunData, cancel, and
 // the stored results for variables that were not streamed or whose stream the server cut
-// short (event.resync). Keeps the previous run to compare.
+// short (event.resync). Keeps the previous run to compare, and the model's runs for plot
+// windows to step through (generations).
 import { RunData } from './RunData';
 import type { RestClient } from '../api/RestClient';
 import type { WsClient } from '../api/WsClient';
 import type { JobInfo, ServerEvent } from '../protocol/types';
 import { restorableRuns } from './runHistory';
+import { MAX_GENERATIONS } from './generations';
+import { ApiError } from '../api/ApiError';
 import { DEFAULT_FRAME_RATE, MAX_STREAM_VARIABLES } from '../protocol/constants.generated';
 import type { RequestFields } from '../protocol/requests.generated';
 
@@ -23,6 +26,8 @@ export interface RunTransport {
 export class RunController {
     current: RunData | null = null;
     previous: RunData | null = null;
+    /** The model's runs a plot window can step through, oldest first; the current one is the last. */
+    generations: RunData[] = [];
     private readonly early = new Map<number, ServerEvent[]>();
     private readonly listeners = new Set<() => void>();
     private readonly detach: (() => void)[];
@@ -61,6 +66,7 @@ export class RunController {
         run.state = 'running';
         run.span = span;
         this.current = run;
+        this.generations = [...this.generations, run].slice(-MAX_GENERATIONS);
         for (const event of this.early.get(run.jobId) ?? []) this.apply(run, event);
         this.early.clear();
         this.emit();
@@ -73,10 +79,11 @@ export class RunController {
      */
     restore(history: JobInfo[]): void {
         if (this.current) return;
-        const { current, previous } = restorableRuns(history);
-        if (!current) return;
-        this.current = finishedRun(current);
-        this.previous = previous && finishedRun(previous);
+        const restored = restorableRuns(history).slice(0, MAX_GENERATIONS).reverse().map(finishedRun);
+        if (restored.length === 0) return;
+        this.generations = restored;
+        this.current = restored.at(-1)!;
+        this.previous = restored.at(-2) ?? null;
         this.emit();
     }
 
@@ -85,14 +92,21 @@ export class RunController {
         await this.transport.request('simulate.stop', { job_id: this.current.jobId });
     }
 
-    /** Loads stored results of finished runs for variables they lack. */
-    async ensure(names: string[]): Promise<void> {
-        const runs = [this.current, this.previous].filter((r): r is RunData => r !== null && r.state === 'done');
-        await Promise.all(runs.map(async (run) => {
+    /**
+     * Loads stored results of finished runs (by default the current and the previous one) for
+     * variables they lack. A failed run keeps what it logged up to the failure, if anything:
+     * its results may be missing (404) or dropped (410).
+     */
+    async ensure(names: string[], runs: (RunData | null)[] = [this.current, this.previous]): Promise<void> {
+        const stored = runs.filter((r): r is RunData => r !== null && hasStoredResults(r));
+        await Promise.all(stored.map(async (run) => {
             const missing = names.filter((n) => !run.has(n));
             if (missing.length === 0) return;
-            const results = await this.transport.resultsJson(run.jobId, missing);
-            run.setResults(results);
+            try {
+                run.setResults(await this.transport.resultsJson(run.jobId, missing));
+            } catch (e) {
+                if (!(run.state === 'failed' && isNoResults(e))) throw e;
+            }
         }));
         this.emit();
     }
@@ -122,10 +136,12 @@ export class RunController {
         } else if (event.type === 'event.done') {
             run.state = event.state;
             run.error = event.error ?? '';
+            run.stopReason = event.stop_reason ?? '';
             if (event.state === 'done') run.progress = 1;
-            // The stream is incomplete (event.resync, or a frame went missing): take the stored
-            // result, which exists once the job has ended (a stopped run keeps what it logged).
-            if (run.gap) void this.loadStored(run);
+            // The stream is incomplete (event.resync, or a frame went missing), or the run failed
+            // and its stream may end before what it logged: take the stored result, which exists
+            // once the job has ended (a stopped or failed run keeps what it logged).
+            if (run.gap || run.state === 'failed') void this.loadStored(run);
         }
     }
 
@@ -146,8 +162,19 @@ export class RunController {
 
 /** A stored run that ended well, with no samples yet: ensure() loads those asked for. */
 function finishedRun(job: JobInfo): RunData {
-    const run = new RunData(job.id, []);
+    const run = new RunData(job.id, [], job.name || undefined);
     run.state = 'done';
     run.progress = 1;
+    run.stopReason = job.stop_reason ?? '';
     return run;
+}
+
+/** Runs whose results the server stores: those that ended well, and failed ones up to the failure. */
+function hasStoredResults(run: RunData): boolean {
+    return run.state === 'done' || run.state === 'failed';
+}
+
+/** The server has no results for the job: none were stored (404) or they were dropped (410). */
+function isNoResults(e: unknown): boolean {
+    return e instanceof ApiError && (e.status === 404 || e.status === 410);
 }

@@ -8,6 +8,8 @@ export class RunData {
     state: JobState = 'queued';
     progress = 0;
     error = '';
+    /** Why a component of the model ended the run (SignalStopSimulation): a normal finish. */
+    stopReason = '';
     lastSeq = -1;
     /** A frame went missing or the server sent event.resync: the streamed data is incomplete. */
     gap = false;

@@ -4,6 +4,7 @@ import type { PlotArea } from './PlotArea';
 import { h, errorText, toast } from '../ui/dom';
 import type { SimulationSettings } from '../protocol/types';
 import { checkRunSettings, fieldOfServerError, RUN_FIELDS, type RunField } from './runSettings';
+import { runStatusText } from './runStatus';
 
 export class RunPanel {
     readonly element: HTMLElement;
@@ -13,6 +14,8 @@ export class RunPanel {
     private readonly cancelButton: HTMLButtonElement;
     private readonly bar: HTMLProgressElement;
     private readonly status: HTMLElement;
+    /** Why the last run could not start: shown instead of the run before it until a run starts. */
+    private refusal = '';
 
     /**
      * `onSettingsChange` receives a field the user changed, to make it the model's own
@@ -98,10 +101,11 @@ export class RunPanel {
         const { values: chosen, errors } = this.showErrors();
         const wrong = RUN_FIELDS.find((f) => errors[f]);
         if (wrong) {
-            this.status.textContent = 'Not started: correct the marked field.';
+            this.refuse('Not started: correct the marked field.');
             this.inputs[wrong].focus();
             return;
         }
+        this.refusal = '';
         try {
             if (this.plots.allVariables().length === 0) {
                 for (const v of this.defaultVariables()) this.plots.addVariable(v);
@@ -115,14 +119,13 @@ export class RunPanel {
             const span: [number, number] | null = start !== undefined && stop !== undefined && stop > start ? [start, stop] : null;
             await this.runs.start(chosen, this.plots.allVariables(), span);
         } catch (e) {
-            this.status.dataset.state = 'not-started';
             const inField = fieldOfServerError(errorText(e));
             if (inField) {
                 this.showError(inField.field, inField.text);
-                this.status.textContent = 'Not started: correct the marked field.';
+                this.refuse('Not started: correct the marked field.');
             } else {
                 toast(`Run: ${errorText(e)}`, 'error');
-                this.status.textContent = `Not started: ${errorText(e)}`;
+                this.refuse(`Not started: ${errorText(e)}`);
             }
         } finally {
             this.refresh();
@@ -137,16 +140,27 @@ export class RunPanel {
         }
     }
 
+    /** The run was not started: the status says why, and no longer names the run before. */
+    private refuse(reason: string): void {
+        this.refusal = reason;
+        this.refresh();
+    }
+
     private refresh(): void {
         const run = this.runs.current;
         const running = this.runs.running;
         this.runButton.disabled = running;
         this.cancelButton.disabled = !running;
+        if (this.refusal) {
+            this.bar.value = 0;
+            this.status.textContent = this.refusal;
+            this.status.dataset.state = 'not-started';
+            delete this.status.dataset.job;
+            return;
+        }
         this.bar.value = run?.progress ?? 0;
         if (!run) return;
-        const pct = Math.round((run.progress ?? 0) * 100);
-        this.status.textContent = running ? `Job ${run.jobId}: running ${pct}%`
-            : `Job ${run.jobId}: ${run.state}${run.error ? ` — ${run.error}` : ''}`;
+        this.status.textContent = runStatusText(run);
         this.status.dataset.state = run.state;
         this.status.dataset.job = String(run.jobId);
     }

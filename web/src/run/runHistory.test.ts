@@ -32,22 +32,20 @@ const model: Model = {
 };
 
 describe('restorableRuns', () => {
-    it('picks the newest run that ended well as current and the next one as previous', () => {
+    it('lists the runs that ended well, newest first', () => {
         const picked = restorableRuns([job(12, 'failed'), job(11, 'cancelled'), job(10, 'done'), job(8, 'running'), job(7, 'done'), job(3, 'done')]);
-        expect(picked.current?.id).toBe(10);
-        expect(picked.previous?.id).toBe(7);
+        expect(picked.map((j) => j.id)).toEqual([10, 7, 3]);
     });
 
     it('skips runs whose results were dropped and does not rely on the order of the page', () => {
         const picked = restorableRuns([job(5, 'done'), job(9, 'done', true), job(6, 'done'), job(2, 'done')]);
-        expect(picked.current?.id).toBe(6);
-        expect(picked.previous?.id).toBe(5);
+        expect(picked.map((j) => j.id)).toEqual([6, 5, 2]);
     });
 
     it('has nothing to show for a history without a finished run', () => {
-        expect(restorableRuns([])).toEqual({ current: null, previous: null });
-        expect(restorableRuns([job(4, 'interrupted'), job(3, 'dead')])).toEqual({ current: null, previous: null });
-        expect(restorableRuns([job(4, 'done')])).toEqual({ current: job(4, 'done'), previous: null });
+        expect(restorableRuns([])).toEqual([]);
+        expect(restorableRuns([job(4, 'interrupted'), job(3, 'dead')])).toEqual([]);
+        expect(restorableRuns([job(4, 'done')])).toEqual([job(4, 'done')]);
     });
 });
 

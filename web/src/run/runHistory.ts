@@ -8,14 +8,14 @@ import { portVariables } from '../model/variables';
 export const HISTORY_PAGE = 20;
 
 /**
- * The newest two runs of a history that ended well and whose results the server still has:
- * the one to show and the one to compare with. Failed, stopped or still running jobs are
- * skipped, as are runs whose results were dropped (they could draw nothing).
+ * The runs of a history that ended well and whose results the server still has, newest first:
+ * the one to show, the one to compare with, and earlier ones to step back to. Failed, stopped
+ * or still running jobs are skipped, as are runs whose results were dropped (they could draw
+ * nothing).
  */
-export function restorableRuns(history: JobInfo[]): { current: JobInfo | null; previous: JobInfo | null } {
-    const usable = history.filter((job) => job.state === 'done' && !job.results_dropped)
+export function restorableRuns(history: JobInfo[]): JobInfo[] {
+    return history.filter((job) => job.state === 'done' && !job.results_dropped)
         .sort((a, b) => b.id - a.id);   // newest first, whatever order the page came in
-    return { current: usable[0] ?? null, previous: usable[1] ?? null };
 }
 
 /** A plotted variable as its window shows it: the name of its curve and its axis's unit. */
