@@ -125,6 +125,12 @@ paths = {
     "/auth/password": {"post": op("Change the own password (new one at least 8 characters)",
                                   {"204": {"description": "Changed"}, **errors("400", "401", "503")},
                                   body=json_body("PasswordChange"), tag="auth")},
+    "/preferences": {
+        "get": op("The caller's own settings: the display unit chosen per quantity",
+                  {**ok("The settings", "Preferences"), **errors("401")}, tag="auth"),
+        "put": op("Replace the caller's own settings (at most 100 units, names and units of 1 to 40 characters)",
+                  {**ok("The settings stored", "Preferences"), **errors("400", "401")},
+                  body=json_body("Preferences"), tag="auth")},
     "/users": {
         "get": op("List users (admin)", {**ok("Users", {"type": "array", "items": ref("User")}),
                                          **errors("401", "403")}, tag="users"),

@@ -127,6 +127,7 @@ void addStudyRoutes(std::vector<RouteSpec>& routes);
 void addClassRoutes(std::vector<RouteSpec>& routes);
 void addAssignmentRoutes(std::vector<RouteSpec>& routes);
 void addHandInRoutes(std::vector<RouteSpec>& routes);
+void addPreferenceRoutes(std::vector<RouteSpec>& routes);
 // Every route of the API (below /api/v1), in matching order.
 std::vector<RouteSpec> apiRoutes();
 

@@ -53,6 +53,9 @@ public:
     // Existing names that differ only in case (made before names were compared that way),
     // one "alice, ALICE" line per group; they keep working, the server reports them at start.
     std::vector<std::string> namesDifferingOnlyInCase() { return mStore.namesDifferingOnlyInCase(); }
+    // The account's own settings as stored JSON text (UserStore::preferences).
+    std::optional<std::string> preferences(std::int64_t id) { return mStore.preferences(id); }
+    bool setPreferences(std::int64_t id, const std::string& json) { return mStore.setPreferences(id, json); }
 
 private:
     UserStore& mStore;

@@ -557,6 +557,17 @@ void to_json(nlohmann::json& j, const JobUpdate& v)
     if (v.pinned) j["pinned"] = *v.pinned;
 }
 
+void from_json(const nlohmann::json& j, Preferences& v)
+{
+    j.at("units").get_to(v.units);
+}
+
+void to_json(nlohmann::json& j, const Preferences& v)
+{
+    j = nlohmann::json::object();
+    j["units"] = v.units;
+}
+
 void from_json(const nlohmann::json& j, ModelSummary& v)
 {
     j.at("id").get_to(v.id);

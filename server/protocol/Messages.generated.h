@@ -91,6 +91,7 @@ struct PingRequest;
 struct Port;
 struct PortRef;
 struct Pose;
+struct Preferences;
 struct ProgressEvent;
 struct Reply;
 struct ResultVariable;
@@ -448,6 +449,15 @@ struct JobUpdate {
 };
 void from_json(const nlohmann::json& j, JobUpdate& v);
 void to_json(nlohmann::json& j, const JobUpdate& v);
+
+// The caller's own settings (GET/PUT /preferences), kept on the server across browsers: units
+// maps a quantity (Hopsan's names: Pressure, Flow, Position, ...) to the display unit chosen
+// for it (bar, l/min, mm, ...).
+struct Preferences {
+    std::map<std::string, std::string> units;
+};
+void from_json(const nlohmann::json& j, Preferences& v);
+void to_json(nlohmann::json& j, const Preferences& v);
 
 struct ModelSummary {
     std::int64_t id{};
@@ -1282,6 +1292,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<Port>("Port");
     visit.template operator()<PortRef>("PortRef");
     visit.template operator()<Pose>("Pose");
+    visit.template operator()<Preferences>("Preferences");
     visit.template operator()<ProgressEvent>("ProgressEvent");
     visit.template operator()<Reply>("Reply");
     visit.template operator()<ResultVariable>("ResultVariable");

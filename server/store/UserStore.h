@@ -52,6 +52,11 @@ public:
     // (AccessPolicy's administersServer) among all accounts; `updated` gets the account as it
     // is afterwards.
     virtual UserChangeOutcome change(std::int64_t id, const UserChange& change, User& updated) = 0;
+    // The account's own settings (GET/PUT /preferences) as the JSON text stored, "{}" until
+    // it sets some; nullopt when the account does not exist.
+    virtual std::optional<std::string> preferences(std::int64_t id) = 0;
+    // False when the account does not exist.
+    virtual bool setPreferences(std::int64_t id, const std::string& json) = 0;
     // Existing names that differ only in case (made before names were compared that way),
     // one "alice, ALICE" line per group, names in id order.
     virtual std::vector<std::string> namesDifferingOnlyInCase() = 0;

@@ -444,6 +444,14 @@ HttpClient loggedInAs(const ServerProcess& server, const std::string& user)
     return c;
 }
 
+std::int64_t modelIdNamed(HttpClient& client, const std::string& name)
+{
+    for (const auto& m : client.get("/api/v1/models").json())
+        if (m["name"] == name) return m["id"].get<std::int64_t>();
+    ADD_FAILURE() << "no model named " << name;
+    return 0;
+}
+
 std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, const std::string& name)
 {
     const auto r = client.request(boost::beast::http::verb::post, "/api/v1/models?name=" + name, readFile(file),

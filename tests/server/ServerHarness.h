@@ -154,6 +154,9 @@ std::string testPassword(const std::string& user);
 void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names);
 // A client of `server` logged in as `user`.
 HttpClient loggedInAs(const ServerProcess& server, const std::string& user);
+// The id of the first model named `name` in the client's list (its own or an example; the
+// test fails if there is none).
+std::int64_t modelIdNamed(HttpClient& client, const std::string& name);
 // Uploads the .hmf `file` as a model named `name` (the test fails if it is refused); its id.
 std::int64_t uploadModel(HttpClient& client, const std::filesystem::path& file, const std::string& name);
 // Polls the job until it is neither queued nor running (at most `timeout`); its last JSON.

@@ -47,6 +47,8 @@ const std::map<std::string, RouteCase>& routeCases()
         {"POST /auth/password", {Case::Own, "the caller's password, with the old one"}},
         {"POST /auth/download-link", {Case::Own, "a link signed for the caller, checked again when used"}},
         {"GET /components", {Case::Own, "the component catalogue, the same for everyone"}},
+        {"GET /preferences", {Case::Own, "the caller's own settings (Preferences test: another user's stay apart)"}},
+        {"PUT /preferences", {Case::Own, "replaces the caller's own settings only"}},
         {"GET /stats", {Case::Administrator, ""}},
         {"GET /users", {Case::Administrator, ""}},
         {"POST /users", {Case::Administrator, ""}},
@@ -252,6 +254,7 @@ protected:
         if (name == "PATCH /users/{id}") return {R"({"role": "admin"})", "application/json"};
         if (name == "PATCH /jobs/{id}") return {R"({"name": "mine", "pinned": true})", "application/json"};
         if (name == "POST /classes") return {R"({"name": "x"})", "application/json"};
+        if (name == "PUT /preferences") return {R"({"units": {"Pressure": "bar"}})", "application/json"};
         return {"{}", "application/json"};
     }
 

@@ -60,14 +60,6 @@ HttpReply uploadXml(HttpClient& c, const std::string& hmf, const std::string& na
     return c.request(http::verb::post, "/api/v1/models?name=" + name, hmf, "application/xml");
 }
 
-std::int64_t exampleId(HttpClient& c, const std::string& name)
-{
-    for (const auto& m : c.get("/api/v1/models").json())
-        if (m["name"] == name) return m["id"].get<std::int64_t>();
-    ADD_FAILURE() << "no example " << name;
-    return 0;
-}
-
 bool healthy(unsigned short port)
 {
     HttpClient anonymous(port);
@@ -213,7 +205,7 @@ TEST_F(Security, DeeplyNestedModelUploadIsRefused)
 TEST_F(Security, ResetAfterManyUnreadRepliesLeavesTheServerRunning)
 {
     HttpClient alice = as("alice");
-    const std::int64_t servo = exampleId(alice, "Position Servo");
+    const std::int64_t servo = modelIdNamed(alice, "Position Servo");
     for (int round = 0; round < 3; ++round) {
         net::io_context ioc;
         websocket::stream<net::ip::tcp::socket> ws(ioc);
@@ -385,7 +377,7 @@ TEST(SecurityBacklog, AClientThatNeverReadsIsDisconnectedAndItsQueueFreed)
                                kExampleModels.string()});
     HttpClient admin(server.port());
     const std::string token = admin.login("admin", kAdminPassword);
-    const std::int64_t servo = exampleId(admin, "Position Servo");
+    const std::int64_t servo = modelIdNamed(admin, "Position Servo");
     net::io_context ioc;
     websocket::stream<net::ip::tcp::socket> ws(ioc);
     ws.next_layer().open(net::ip::tcp::v4());

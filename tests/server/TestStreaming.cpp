@@ -26,14 +26,6 @@ nlohmann::json longRun()
     return {{"stop", 300.0}, {"log_samples", 50000}, {"rate", 120}};
 }
 
-std::int64_t exampleId(HttpClient& c, const std::string& name)
-{
-    for (const auto& m : c.get("/api/v1/models").json())
-        if (m["name"] == name) return m["id"].get<std::int64_t>();
-    ADD_FAILURE() << "no example " << name;
-    return 0;
-}
-
 // Polls the job over REST (not the socket, which the client is leaving unread) until it has
 // gone `fraction` of the way or ended.
 nlohmann::json waitForProgress(HttpClient& c, std::int64_t job, double fraction, int seconds = 120)
@@ -136,7 +128,7 @@ struct ServerWithServo {
         : dir(freshTempDir(name)), server(dir, withExamples(std::move(flags))), admin(server.port())
     {
         token = admin.login("admin", kAdminPassword);
-        servo = exampleId(admin, "Position Servo");
+        servo = modelIdNamed(admin, "Position Servo");
     }
     ~ServerWithServo() { fs::remove_all(dir); }
     static std::vector<std::string> withExamples(std::vector<std::string> flags)
@@ -263,7 +255,7 @@ TEST(Streaming, AnEditorsRunComputesWhatItsModelFileDoes)
     ServerWithServo s("editor-run", {});
     const std::string name = "Load Sensing System";
     WsClient ws(s.server.port(), s.token);
-    ASSERT_EQ(ws.call("model.open", {{"model_id", exampleId(s.admin, name)}})["type"], "reply");
+    ASSERT_EQ(ws.call("model.open", {{"model_id", modelIdNamed(s.admin, name)}})["type"], "reply");
     const auto started = ws.call("simulate.start", {{"log_samples", 200}});
     ASSERT_EQ(started["type"], "reply") << started.dump();
     const auto edited = started["data"]["job_id"].get<std::int64_t>();

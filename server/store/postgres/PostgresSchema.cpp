@@ -236,9 +236,16 @@ void addRunHistory(pqxx::transaction_base& tx)
     tx.exec0("CREATE INDEX jobs_model ON jobs(model_id, id)");
 }
 
+// Version 7: each account's own settings, as SQLite's version 7.
+void addPreferences(pqxx::transaction_base& tx)
+{
+    tx.exec0("ALTER TABLE users ADD COLUMN preferences TEXT NOT NULL DEFAULT '{}'");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
-constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
-                                                             createLabs, addJobLeases, addRunHistory};
+constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
+                                                             createLabs,     addJobLeases,  addRunHistory,
+                                                             addPreferences};
 
 int versionIn(pqxx::transaction_base& tx)
 {

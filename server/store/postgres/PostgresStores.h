@@ -28,6 +28,8 @@ public:
     std::optional<Credentials> credentials(const std::string& username) override;
     std::optional<Credentials> credentials(std::int64_t id) override;
     bool setPasswordHash(std::int64_t id, const std::string& passwordHash) override;
+    std::optional<std::string> preferences(std::int64_t id) override;
+    bool setPreferences(std::int64_t id, const std::string& json) override;
     std::optional<User> find(std::int64_t id) override;
     std::optional<User> findByName(const std::string& username) override;
     std::vector<User> list() override;

@@ -21,6 +21,8 @@ constexpr PgStatement kCredentialsById{"users_credentials_by_id",
                                        "SELECT id, password_hash FROM users WHERE id = $1"};
 constexpr PgStatement kSetPasswordHash{"users_set_password_hash",
                                        "UPDATE users SET password_hash = $1 WHERE id = $2"};
+constexpr PgStatement kPreferences{"users_preferences", "SELECT preferences FROM users WHERE id = $1"};
+constexpr PgStatement kSetPreferences{"users_set_preferences", "UPDATE users SET preferences = $1 WHERE id = $2"};
 constexpr PgStatement kFind{"users_find", "SELECT id, username, role, disabled FROM users WHERE id = $1"};
 constexpr PgStatement kFindByName{"users_find_by_name",
                                   "SELECT id, username, role, disabled FROM users"
@@ -90,6 +92,24 @@ bool PostgresUserStore::setPasswordHash(std::int64_t id, const std::string& pass
     return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
         return c.exec(tx, kSetPasswordHash, passwordHash, id).affected_rows() > 0;
+    });
+}
+
+std::optional<std::string> PostgresUserStore::preferences(std::int64_t id)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<std::string> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kPreferences, id);
+        if (r.empty()) return std::nullopt;
+        return r[0][0].as<std::string>();
+    });
+}
+
+bool PostgresUserStore::setPreferences(std::int64_t id, const std::string& json)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kSetPreferences, json, id).affected_rows() > 0;
     });
 }
 

@@ -235,9 +235,16 @@ void addRunHistory(SQLite::Database& db)
     db.exec("CREATE INDEX jobs_model ON jobs(model_id, id)");
 }
 
+// Version 7: each account's own settings (GET/PUT /preferences: display units), JSON text.
+void addPreferences(SQLite::Database& db)
+{
+    db.exec("ALTER TABLE users ADD COLUMN preferences TEXT NOT NULL DEFAULT '{}'");
+}
+
 using Migration = void (*)(SQLite::Database&);
-constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables, indexSessions, createTokensAndStudies,
-                                                             createLabs, addJobLeases, addRunHistory};
+constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
+                                                             createLabs,     addJobLeases,  addRunHistory,
+                                                             addPreferences};
 
 } // namespace
 

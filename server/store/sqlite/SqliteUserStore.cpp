@@ -86,6 +86,26 @@ bool SqliteUserStore::setPasswordHash(std::int64_t id, const std::string& passwo
     });
 }
 
+std::optional<std::string> SqliteUserStore::preferences(std::int64_t id)
+{
+    return mDb.run([&](SqliteConnection& c) -> std::optional<std::string> {
+        auto q = c.prepared("SELECT preferences FROM users WHERE id = ?");
+        q->bind(1, id);
+        if (!q->executeStep()) return std::nullopt;
+        return q->getColumn(0).getString();
+    });
+}
+
+bool SqliteUserStore::setPreferences(std::int64_t id, const std::string& json)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto update = c.prepared("UPDATE users SET preferences = ? WHERE id = ?");
+        update->bind(1, json);
+        update->bind(2, id);
+        return update->exec() > 0;
+    });
+}
+
 std::optional<User> SqliteUserStore::find(std::int64_t id)
 {
     return mDb.run([&](SqliteConnection& c) -> std::optional<User> {

@@ -251,5 +251,22 @@ TEST(SQLiteStore, AccountsWhoseNamesDifferOnlyInCaseAreListedAndNotGuessedBetwee
     EXPECT_EQ(storage->users().credentials("BOB")->passwordHash, "h-bob");
 }
 
+// An account's own settings (GET/PUT /preferences): "{}" until set, replaced whole, one
+// account's never another's, none for an account that does not exist.
+TEST_P(UserStoreConformance, PreferencesStartEmptyAndAreReplacedWholePerAccount)
+{
+    const auto alice = addUser("alice");
+    const auto bob = addUser("bob");
+    EXPECT_EQ(store().users().preferences(alice.id), "{}");
+    const std::string units = R"({"units":{"Flow":"l/min","Pressure":"bar","Temperature":"°C"}})";
+    ASSERT_TRUE(store().users().setPreferences(alice.id, units));
+    EXPECT_EQ(store().users().preferences(alice.id), units);
+    EXPECT_EQ(store().users().preferences(bob.id), "{}");
+    ASSERT_TRUE(store().users().setPreferences(alice.id, R"({"units":{}})"));
+    EXPECT_EQ(store().users().preferences(alice.id), R"({"units":{}})");
+    EXPECT_FALSE(store().users().preferences(bob.id + 1000));
+    EXPECT_FALSE(store().users().setPreferences(bob.id + 1000, units));
+}
+
 } // namespace
 } // namespace tlmhub::test
