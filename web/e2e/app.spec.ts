@@ -98,7 +98,7 @@ test('runs Position Servo: the plot fills while running and ends on the stored r
     expect(textFrames).toBe(0);
 
     // export: CSV of the plotted data, PNG of the plot
-    const [csv] = await Promise.all([page.waitForEvent('download'), plot.getByRole('button', { name: 'CSV' }).click()]);
+    const [csv] = await Promise.all([page.waitForEvent('download'), plot.getByRole('button', { name: 'CSV', exact: true }).click()]);
     const lines = readFileSync(await csv.path(), 'utf8').trim().split('\n');
     expect(lines[0]).toBe(`time,${variable}`);
     expect(lines).toHaveLength(stored.length + 1);

@@ -70,4 +70,16 @@ describe('RestClient', () => {
         expect(job).toEqual({ id: 12, name: 'baseline', pinned: true });
         expect(asked).toEqual([{ url: '/api/v1/jobs/12', method: 'PATCH', body: JSON.stringify({ name: 'baseline', pinned: true }) }]);
     });
+
+    it('reads the user\'s preferences and replaces them with a PUT of the whole object', async () => {
+        const stored = { units: { Pressure: 'bar', Flow: 'l/min' } };
+        const { asked, fetchFn } = scripted([ok({ units: {} }), ok(stored)]);
+        const client = new RestClient('t', '/api/v1', fetchFn);
+        expect(await client.preferences()).toEqual({ units: {} });
+        expect(await client.setPreferences(stored)).toEqual(stored);
+        expect(asked).toEqual([
+            { url: '/api/v1/preferences', method: 'GET', body: undefined },
+            { url: '/api/v1/preferences', method: 'PUT', body: JSON.stringify(stored) },
+        ]);
+    });
 });

@@ -1,13 +1,16 @@
 // REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
 import { ApiError } from './ApiError';
 import type {
-    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, ResultsJson, User,
+    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, Preferences, ResultsJson, User,
 } from '../protocol/types';
 
 export interface LoginResult { token: string; expires_at: number; user: User }
 
 /** What an FMU export of a stored model offers beyond its interface components (docs/fmu.md). */
 export interface FmuOptions { parameters: string[]; identifier?: string }
+
+/** The user's settings kept on the server (GET/PUT /preferences): the display unit per quantity, e.g. { Pressure: 'bar' } (docs/units.md). */
+export type { Preferences };
 
 /** An account as the administrator sees it. */
 export interface Account extends User { disabled: boolean }
@@ -83,6 +86,10 @@ export class RestClient {
     changePassword(oldPassword: string, newPassword: string): Promise<void> {
         return this.call('POST', '/auth/password', { old_password: oldPassword, new_password: newPassword });
     }
+
+    preferences(): Promise<Preferences> { return this.call('GET', '/preferences'); }
+    /** Replaces the stored preferences; answers them as stored. */
+    setPreferences(preferences: Preferences): Promise<Preferences> { return this.call('PUT', '/preferences', preferences); }
 
     listUsers(): Promise<Account[]> { return this.call('GET', '/users'); }
     createUser(username: string, password: string, role: User['role']): Promise<Account> {

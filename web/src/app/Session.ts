@@ -2,12 +2,16 @@
 import { RestClient } from '../api/RestClient';
 import { LabClient } from '../labs/LabClient';
 import type { User } from '../protocol/types';
+import { UnitPreferences } from '../run/unitPreferences';
+import { errorText, toast } from '../ui/dom';
 
 const TOKEN_KEY = 'tlmhub.token';
 
 export class Session {
     readonly rest = new RestClient(sessionStorage.getItem(TOKEN_KEY));
     readonly labs = new LabClient(this.rest);
+    /** The user's display units, loaded when plots first open. */
+    readonly units = new UnitPreferences(this.rest, (e) => toast(`The unit was not saved: ${errorText(e)}`, 'error'));
     user: User | null = null;
 
     constructor() {
@@ -22,6 +26,8 @@ export class Session {
 
     async login(username: string, password: string): Promise<User> {
         const result = await this.rest.login(username, password);
+        // another user may have been logged in in this tab
+        this.units.forget();
         this.rest.setToken(result.token);
         sessionStorage.setItem(TOKEN_KEY, result.token);
         this.user = result.user;
@@ -52,5 +58,6 @@ export class Session {
         this.rest.setToken(null);
         sessionStorage.removeItem(TOKEN_KEY);
         this.user = null;
+        this.units.forget();
     }
 }

@@ -149,6 +149,7 @@ export interface ProtocolDefinitions {
     ModelCreate?: ModelCreate;
     ModelUpdate?: ModelUpdate;
     JobUpdate?: JobUpdate;
+    Preferences?: Preferences;
     ModelSummary?: ModelSummary;
     ModelDetail?: ModelDetail;
     ParameterValue?: ParameterValue;
@@ -539,6 +540,17 @@ export interface ModelUpdate {
 export interface JobUpdate {
     name?: string;
     pinned?: boolean;
+}
+/**
+ * The caller's own settings (GET/PUT /preferences), kept on the server across browsers: units maps a quantity (Hopsan's names: Pressure, Flow, Position, ...) to the display unit chosen for it (bar, l/min, mm, ...).
+ */
+export interface Preferences {
+    /**
+     * At most 100 quantities; names of 1 to 40 characters.
+     */
+    units: {
+        [k: string]: string;
+    };
 }
 export interface ModelSummary {
     id: number;

@@ -4,7 +4,7 @@ import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Rep
 
 export type {
     CatalogueEntry, Component, Connection, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
-    ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
+    ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, Preferences, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
     SysParam, System, SystemPort, User,
 } from './generated';
 

@@ -5,6 +5,7 @@ import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import { XyWindow } from './XyWindow';
 import type { RunController } from './RunController';
 import type { SavedPlots } from './runHistory';
+import type { UnitPreferences } from './unitPreferences';
 import { h, toast, errorText } from '../ui/dom';
 
 export class PlotArea {
@@ -18,8 +19,12 @@ export class PlotArea {
     private fetchedFor = 0;
     private readonly unsubscribe: () => void;
 
-    /** `onLayoutChange` is told when the user adds or removes a variable or closes a window (to remember them). */
-    constructor(private readonly runs: RunController, private readonly onLayoutChange: () => void = () => undefined) {
+    /**
+     * `units` are the user's display units, shared by all windows; `onLayoutChange` is told when the
+     * user adds or removes a variable or closes a window (to remember them).
+     */
+    constructor(private readonly runs: RunController, private readonly units: UnitPreferences,
+        private readonly onLayoutChange: () => void = () => undefined) {
         this.list = h('div', { class: 'plot-list' });
         this.element = h('div', { class: 'plot-area' },
             h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window')),
@@ -43,7 +48,7 @@ export class PlotArea {
     }
 
     addWindow(): PlotWindow {
-        const w = new PlotWindow(this.nextId++, {
+        const w = new PlotWindow(this.nextId++, this.units, {
             close: (x) => { this.close(x); this.onLayoutChange(); },
             activate: (x) => this.activate(x),
             changed: (x) => { this.refresh(x); this.onLayoutChange(); },

@@ -1,20 +1,26 @@
 // One plot window: chosen variables of one of the model's runs, the newest unless the user
 // stepped back (◀ ▶, Ctrl+← Ctrl+→), and the run before it to compare; live while the run goes
 // on; each curve names its run; zoom by dragging, cursor read-out in the legend, CSV and PNG.
+// Each axis shows the display unit the user chose for its quantity, or SI prefixes.
 import uPlot from 'uplot';
-import { alignSeries, toCsv, type RunData, type SeriesSource } from './RunData';
+import { alignSeries, type RunData, type SeriesSource } from './RunData';
 import { variableLabel } from '../model/variables';
 import { downloadText, h } from '../ui/dom';
 import { PlotSurface } from './PlotSurface';
 import type { AnalysisKind } from './AnalysisWindow';
 import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
 import { generationText, shownRuns, stepGeneration } from './generations';
+import { displayUnitsOf, toDisplayValues, type DisplayUnit } from './displayUnits';
+import { quantityOf } from './quantities';
+import type { UnitPreferences } from './unitPreferences';
+import { plotCsv, plotCsvInDisplayUnits } from './plotCsv';
 
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
 
-interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string }
+/** A curve: its values in the base `unit`, shown in `display` when the user chose one. */
+interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string; display: DisplayUnit | null }
 
-/** One y axis: the series of one unit, with the SI prefix its values need. */
+/** One y axis: the series of one base unit, in the chosen display unit or with the SI prefix its values need. */
 interface Axis { unit: string; scale: string; prefixed: Prefixed }
 
 const largestAbs = (values: number[]) => values.reduce((m, v) => (Number.isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0);
@@ -42,8 +48,11 @@ export class PlotWindow {
     private readonly earlierButton: HTMLButtonElement;
     private readonly laterButton: HTMLButtonElement;
     private readonly generation: HTMLElement;
+    /** A unit choice per axis whose quantity has several units, and the CSV in those units. */
+    private readonly unitBar: HTMLElement;
+    private readonly unsubscribeUnits: () => void;
 
-    constructor(readonly id: number, private readonly actions: {
+    constructor(readonly id: number, private readonly preferences: UnitPreferences, private readonly actions: {
         close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
         analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void;
     }) {
@@ -56,6 +65,7 @@ export class PlotWindow {
         this.earlierButton = h('button', { class: 'small', onclick: () => this.step(-1), title: 'Earlier run (Ctrl+←)', 'aria-label': 'Earlier run' }, '◀');
         this.laterButton = h('button', { class: 'small', onclick: () => this.step(1), title: 'Later run (Ctrl+→)', 'aria-label': 'Later run' }, '▶');
         this.generation = h('span', { class: 'generation', 'data-testid': 'generation' });
+        this.unitBar = h('div', { class: 'plot-units', hidden: true });
         this.element = h('section', {
             class: 'plot-window', 'data-plot-id': String(id), tabindex: 0,
             onpointerdown: () => this.actions.activate(this),
@@ -73,7 +83,12 @@ export class PlotWindow {
                     h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
                     h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                     h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×'))),
-            this.body);
+            this.unitBar, this.body);
+        // a unit chosen here or in another window applies to every axis of its quantity
+        this.unsubscribeUnits = preferences.subscribe(() => {
+            this.drawUnitBar();
+            this.update(this.runs);
+        });
     }
 
     private emptyNote(text: string): HTMLElement {
@@ -88,6 +103,7 @@ export class PlotWindow {
         if (label) this.labels.set(name, label);
         this.units.set(name, unit ?? unitOfVariable(name));
         this.drawChips();
+        this.drawUnitBar();
     }
 
     remove(name: string): void {
@@ -95,12 +111,43 @@ export class PlotWindow {
         if (i >= 0) this.variables.splice(i, 1);
         this.labels.delete(name);
         this.drawChips();
+        this.drawUnitBar();
         this.actions.changed(this);
     }
 
     private drawChips(): void {
         this.chips.replaceChildren(...this.variables.map((v) => h('span', { class: 'chip', 'data-variable': v },
             this.labelOf(v), h('button', { class: 'chip-x', 'aria-label': `Remove ${v}`, onclick: () => this.remove(v) }, '×'))));
+    }
+
+    private drawUnitBar(): void {
+        const choices = axisUnits(this.variables.map((v) => this.unitOf(v))).flatMap((unit) => {
+            const quantity = this.quantityOfAxis(unit);
+            const units = quantity === null ? [] : displayUnitsOf(quantity);
+            return quantity !== null && units.length > 1 ? [this.unitChoice(quantity, units)] : [];
+        });
+        this.unitBar.hidden = choices.length === 0;
+        this.unitBar.replaceChildren(...choices, h('button', {
+            class: 'small', onclick: () => this.exportCsvInDisplayUnits(), title: 'Export the plotted data as CSV in the units shown, each column naming its unit',
+        }, 'CSV in display units'));
+    }
+
+    private unitChoice(quantity: string, units: DisplayUnit[]): HTMLElement {
+        const chosen = this.preferences.unitOf(quantity)?.name ?? '';
+        const select = h('select', {
+            'aria-label': `${quantity} unit`, 'data-quantity': quantity,
+            onchange: () => { void this.preferences.choose(quantity, select.value || null); },
+        },
+        h('option', { value: '', title: 'The base unit with an SI prefix that fits the values (kPa, MPa)' }, 'auto'),
+        ...units.map((u) => h('option', { value: u.name }, u.name)));
+        select.value = chosen;
+        return h('label', { class: 'unit-choice', title: `Unit of ${quantity} in every plot (remembered for you)` }, `${quantity}:`, select);
+    }
+
+    /** The quantity of the variables of the axis of base unit `unit`; null when they do not agree or none is known. */
+    private quantityOfAxis(unit: string): string | null {
+        const quantities = new Set(this.variables.filter((v) => this.unitOf(v) === unit).map((v) => quantityOf(v, unit)));
+        return quantities.size === 1 ? [...quantities][0] : null;
     }
 
     labelOf(name: string): string { return this.labels.get(name) ?? variableLabel(name); }
@@ -145,11 +192,15 @@ export class PlotWindow {
         const plotted: Plotted[] = [];
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
+            const unit = this.unitOf(name);
+            const display = this.preferences.unitOf(this.quantityOfAxis(unit));
+            // a chosen unit is named in the legend: the axis may be far from the curve
+            const label = (run: RunData) => `${this.labelOf(name)} (${run.label})${display ? ` [${display.name}]` : ''}`;
             const col = current?.columns.get(name);
-            if (current && col) plotted.push({ name, label: `${this.labelOf(name)} (${current.label})`, source: { time: current.time, data: col }, previous: false, colour, unit: this.unitOf(name) });
+            if (current && col) plotted.push({ name, label: label(current), source: { time: current.time, data: col }, previous: false, colour, unit, display });
             const old = previous?.columns.get(name);
             if (this.compare && previous && old) {
-                plotted.push({ name, label: `${this.labelOf(name)} (${previous.label})`, source: { time: previous.time, data: old }, previous: true, colour, unit: this.unitOf(name) });
+                plotted.push({ name, label: label(previous), source: { time: previous.time, data: old }, previous: true, colour, unit, display });
             }
         });
         this.plotted = plotted;
@@ -163,7 +214,7 @@ export class PlotWindow {
             this.body.replaceChildren(this.emptyNote(this.variables.length ? 'No data yet: run the model.' : 'Click a port to plot its variables here.'));
             return;
         }
-        const data = alignSeries(plotted.map((p) => p.source));
+        const data = alignSeries(plotted.map((p) => (p.display ? { time: p.source.time, data: toDisplayValues(p.source.data, p.display) } : p.source)));
         this.element.dataset.points = String(data[0].length);
         const axes = this.axes(plotted);
         // a new prefix (the values grew from kPa to MPa) needs new axes
@@ -190,10 +241,14 @@ export class PlotWindow {
     }
 
     private axes(plotted: Plotted[]): Axis[] {
-        return axisUnits(plotted.map((p) => p.unit)).map((unit, i) => ({
-            unit, scale: `y${i}`,
-            prefixed: siPrefix(Math.max(...plotted.filter((p) => p.unit === unit).map((p) => largestAbs(p.source.data))), unit),
-        }));
+        return axisUnits(plotted.map((p) => p.unit)).map((unit, i) => {
+            const series = plotted.filter((p) => p.unit === unit);
+            const display = series[0].display;
+            return {
+                unit, scale: `y${i}`,
+                prefixed: display ? { factor: 1, unit: display.name } : siPrefix(Math.max(...series.map((p) => largestAbs(p.source.data))), unit),
+            };
+        });
     }
 
     private options(plotted: Plotted[], axes: Axis[]): Omit<uPlot.Options, 'width' | 'height'> {
@@ -209,21 +264,30 @@ export class PlotWindow {
             }))],
             series: [
                 { label: 'time [s]' },
-                ...plotted.map((p) => ({ label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true, scale: axes.find((a) => a.unit === p.unit)?.scale })),
+                ...plotted.map((p): uPlot.Series => {
+                    const axis = axes.find((a) => a.unit === p.unit)!;
+                    return {
+                        label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true, scale: axis.scale,
+                        value: (_u, v) => readout(v, axis.prefixed),
+                    };
+                }),
             ],
         };
     }
 
-    /** Values of a variable of the shown run (or the one before) as plotted (tests read the last one). */
+    /** Values of a variable of the shown run (or the one before) as logged, in its base unit (tests read the last one). */
     seriesData(name: string, previous = false): number[] {
         return this.plotted.find((p) => p.name === name && p.previous === previous)?.source.data ?? [];
     }
 
     private exportCsv(): void {
         if (this.plotted.length === 0) return;
-        const aligned = alignSeries(this.plotted.map((p) => p.source));
-        const names = this.plotted.map((p) => (p.previous ? `${p.name} (previous)` : p.name));
-        downloadText(`plot-${this.id}.csv`, toCsv(names, aligned), 'text/csv');
+        downloadText(`plot-${this.id}.csv`, plotCsv(this.plotted), 'text/csv');
+    }
+
+    private exportCsvInDisplayUnits(): void {
+        if (this.plotted.length === 0) return;
+        downloadText(`plot-${this.id}-units.csv`, plotCsvInDisplayUnits(this.plotted), 'text/csv');
     }
 
     private exportPng(): void {
@@ -231,6 +295,7 @@ export class PlotWindow {
     }
 
     destroy(): void {
+        this.unsubscribeUnits();
         this.surface.destroy();
         this.element.remove();
     }
@@ -238,4 +303,11 @@ export class PlotWindow {
 
 function formatTick(v: number): string {
     return Math.abs(v) < 1e-12 ? '0' : String(Number(v.toPrecision(4)));
+}
+
+/** The cursor read-out of a value in the unit of its axis ("219.063 bar"). */
+function readout(v: number | null, axis: Prefixed): string {
+    if (v === null) return '--';
+    const value = String(Number((v / axis.factor).toPrecision(6)));
+    return axis.unit ? `${value} ${axis.unit}` : value;
 }

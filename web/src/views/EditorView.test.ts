@@ -8,6 +8,7 @@ import { CanvasView } from '../editor/CanvasView';
 import { EditorStore } from '../editor/EditorStore';
 import { emptyModel } from '../testing/FakeServer';
 import type { Session } from '../app/Session';
+import { UnitPreferences } from '../run/unitPreferences';
 
 // uPlot asks for the pixel ratio's media query when it is loaded; jsdom has none
 vi.hoisted(() => {
@@ -86,6 +87,10 @@ describe('leaving the editor', () => {
                 resultsJson: () => Promise.resolve({}),
                 runHistory: () => Promise.resolve([]),
             },
+            units: new UnitPreferences({
+                preferences: () => Promise.resolve({ units: {} }),
+                setPreferences: (p) => Promise.resolve(p),
+            }, () => undefined),
         } as unknown as Session;
 
         const page = await renderEditor(document.body, session, 1, () => undefined);

@@ -77,7 +77,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
         onResubscribe: ws.onResubscribe.bind(ws) });
-    const plots = new PlotArea(runs, () => savePlots(localStorage, summary.id, plots.layout()));
+    const plots = new PlotArea(runs, session.units, () => savePlots(localStorage, summary.id, plots.layout()));
+    void session.units.load();
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
         (changed) => store.execute(new SetSimulationSettings(changed)));
     store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
