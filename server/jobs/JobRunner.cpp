@@ -186,6 +186,15 @@ bool JobRunner::runSlice(StartedJob& job, unsigned threads, const std::atomic<bo
         finishRun(job, ok, {}, endedByModel ? ran.message() : std::string());
     } catch (const std::exception& e) {
         job.mControl->detach();
+        // The database went away (a restart) while the job read its request or stored its
+        // progress: the job is not at fault. Its lease lapses and the queue runs it again, as
+        // when its end cannot be stored (finish).
+        if (const auto* store = dynamic_cast<const StoreError*>(&e); store && store->code() == StoreErrc::Unavailable) {
+            std::cerr << "job " << job.mId << ": the database is away (" << e.what()
+                      << "); its lease will lapse and the job run again\n";
+            mHub.abandon(job.mId);
+            return true;
+        }
         try {
             finish(job, JobState::Failed, std::string("internal error: ") + e.what(), 0, nullptr);
         } catch (const std::exception& storing) {
