@@ -16,10 +16,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 jobs=$(nproc)
-# The Release and TSan test stages wait more than they compute (browsers, servers answering
-# sockets, PostgreSQL): on CI's 2 cores they kept 1.4 and 1.7 of them busy at -j2. One test
-# more at a time fills the idle core; the ASan stage, already at 1.9, keeps -j$jobs.
-waiting_jobs=$((jobs + 1))
 budget_seconds=$((45 * 60))
 # Ninja starts a target's compiles before its dependencies are linked, which keeps both
 # cores busy where make waits. Only a new build directory takes it.
@@ -124,7 +120,7 @@ release_test() {
   rm -rf "$probes"
   mkdir -p "$probes"
   cc -shared -fPIC -O2 -o build/thread_probe.so tests/tools/thread_probe.c -ldl
-  LD_PRELOAD=$root/build/thread_probe.so TLMHUB_THREAD_PROBE_DIR=$probes run_tests test build -j"$waiting_jobs" || status=$?
+  LD_PRELOAD=$root/build/thread_probe.so TLMHUB_THREAD_PROBE_DIR=$probes run_tests test build -j"$jobs" || status=$?
   python3 scripts/ci/check_threads_label.py build "$probes" || status=1
   return $status
 }
@@ -137,7 +133,7 @@ asan_test() {
 # fails that test.
 tsan_test() {
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-    run_tests tsan-test build-tsan -j"$waiting_jobs" -L '^threads$' -LE "$sanitizer_excluded"
+    run_tests tsan-test build-tsan -j"$jobs" -L '^threads$' -LE "$sanitizer_excluded"
 }
 
 stage install scripts/install-deps.sh --with-browser --with-clang
