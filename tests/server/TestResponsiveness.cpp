@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -251,15 +253,14 @@ TEST(Responsiveness, EditorWorkLeavesTheOnlyIoThreadFree)
     ASSERT_EQ(ws.call("model.open", {{"model_id", model.json()["id"]}}, 120000)["type"], "reply");
 
     std::atomic<bool> burstDone{false};
-    int probes = 0, failed = 0;
-    Clock::duration slowest{};
+    int failed = 0;
+    std::vector<Clock::duration> probeTimes;
     std::thread prober([&] {
         HttpClient probe(server.port());
         while (!burstDone.load()) {
             const auto sent = Clock::now();
             if (probe.get("/api/v1/health").status != 200) ++failed;
-            slowest = std::max(slowest, Clock::now() - sent);
-            ++probes;
+            probeTimes.push_back(Clock::now() - sent);
         }
     });
     const auto began = Clock::now();
@@ -291,15 +292,20 @@ TEST(Responsiveness, EditorWorkLeavesTheOnlyIoThreadFree)
     prober.join();
     EXPECT_EQ(last["id"], id) << "every reply, in the order of the messages";
     EXPECT_EQ(failed, 0);
-    EXPECT_GT(probes, 0);
+    ASSERT_GT(probeTimes.size(), std::size_t{kRounds});
+    // On the I/O thread each round's model.get would hold a probe for most of a round, so at
+    // least kRounds probes would be slow. The kRounds/2-th slowest is compared, not the
+    // slowest: one probe may lose the CPU to a neighbouring test on a 2-core runner (33 ms once).
     // Relative, because the burst takes ten times longer under the sanitizers.
-    std::cout << "slowest of " << probes << " health probes "
-              << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count() << " ms; a round of the burst "
-              << std::chrono::duration_cast<std::chrono::milliseconds>(perReply).count() << " ms\n";
-    EXPECT_LT(slowest * 4, perReply) << "slowest of " << probes << " health probes "
-                                     << std::chrono::duration_cast<std::chrono::milliseconds>(slowest).count()
-                                     << " ms; a round of the burst "
-                                     << std::chrono::duration_cast<std::chrono::milliseconds>(perReply).count() << " ms";
+    std::sort(probeTimes.begin(), probeTimes.end(), std::greater<>());
+    const auto fourthSlowest = probeTimes[kRounds / 2 - 1];
+    const auto ms = [](Clock::duration d) { return std::chrono::duration_cast<std::chrono::milliseconds>(d).count(); };
+    const std::string figures = std::to_string(probeTimes.size()) + " health probes: slowest " +
+                                std::to_string(ms(probeTimes.front())) + " ms, 4th slowest " +
+                                std::to_string(ms(fourthSlowest)) + " ms; a round of the burst " +
+                                std::to_string(ms(perReply)) + " ms";
+    std::cout << figures << "\n";
+    EXPECT_LT(fourthSlowest * 4, perReply) << figures;
 }
 
 // A teacher's solution run that would go on for a minute (the check runs' wall limit) holds
