@@ -1,8 +1,10 @@
 // /jobs: submit, list, status, cancel, re-run, results as CSV or JSON.
 #include "server/api/ApiSupport.h"
 
+#include "server/app/ServerOptions.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/http/HeaderValues.h"
+#include "server/jobs/RunParameterDifferences.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
 #include "server/store/ModelName.h"
@@ -67,10 +69,13 @@ Response submitJob(Services& s, Call& call)
 
 constexpr int kDefaultHistoryPage = 20;
 constexpr int kMaxHistoryPage = 100;
+// Differing parameters listed per run: a restructured model may differ in thousands.
+constexpr std::size_t kMaxDifferingParameters = 100;
 
 // GET /jobs?model_id=ID[&limit=N][&before=JOB]: the model's runs, newest first, as GET
 // /jobs/{id} lets the caller see them: all of them for an administrator and for the staff of
 // a student's copy, else the caller's own. The next page: before = the last id of this one.
+// Each run says which parameter values it used that the model's text no longer says.
 Response modelHistory(Services& s, Call& call)
 {
     const auto& q = call.params.query;
@@ -92,6 +97,7 @@ Response modelHistory(Services& s, Call& call)
                            copyAccess(s.labs.store(), who, *modelId).kind == CopyAccess::Kind::Read;
     if (!everyones && !readableModel(s, who, *modelId)) return apiError(http::status::not_found, "not_found", "no such model");
     std::map<std::int64_t, std::string> owners;
+    RunParameterDifferences differences([&] { return s.models.hmf(*modelId).value_or(""); }, s.options.limits.model);
     nlohmann::json out = nlohmann::json::array();
     for (const JobInfo& job : s.queue.store().listForModel(*modelId, everyones ? std::nullopt : std::optional(who.id),
                                                             before, limit)) {
@@ -102,6 +108,12 @@ Response modelHistory(Services& s, Call& call)
         }
         nlohmann::json entry = job.toJson();
         entry["owner"] = owner->second;
+        std::map<std::string, std::string> used;
+        if (job.usedParameters) used = *job.usedParameters;
+        else if (const auto request = s.queue.store().request(job.id)) used = differences.usedBy(*request);
+        bool truncated = false;
+        entry["differing_parameters"] = differences.differing(used, kMaxDifferingParameters, truncated);
+        if (truncated) entry["differing_parameters_truncated"] = true;
         out.push_back(std::move(entry));
     }
     return jsonResponse(http::status::ok, out);

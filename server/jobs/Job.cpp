@@ -48,12 +48,14 @@ nlohmann::json JobRequest::toJson() const
     if (settings.step) settingsJson["step"] = *settings.step;
     if (settings.stop) settingsJson["stop"] = *settings.stop;
     if (settings.logSamples) settingsJson["log_samples"] = *settings.logSamples;
-    return {{"owner_id", ownerId},
-            {"model_id", modelId ? nlohmann::json(*modelId) : nlohmann::json(nullptr)},
-            {"hmf", hmf},
-            {"parameters", parameters},
-            {"settings", std::move(settingsJson)},
-            {"model_directory", modelDirectory}};
+    nlohmann::json out = {{"owner_id", ownerId},
+                          {"model_id", modelId ? nlohmann::json(*modelId) : nlohmann::json(nullptr)},
+                          {"hmf", hmf},
+                          {"parameters", parameters},
+                          {"settings", std::move(settingsJson)},
+                          {"model_directory", modelDirectory}};
+    if (!usedParameters.empty()) out["used_parameters"] = usedParameters;
+    return out;
 }
 
 bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
@@ -70,6 +72,8 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
         if (s.contains("stop")) r.settings.stop = s.at("stop").get<double>();
         if (s.contains("log_samples")) r.settings.logSamples = s.at("log_samples").get<std::size_t>();
         r.modelDirectory = j.value("model_directory", std::string());
+        if (j.contains("used_parameters"))
+            r.usedParameters = j.at("used_parameters").get<std::map<std::string, std::string>>();
         out = std::move(r);
         return true;
     } catch (const nlohmann::json::exception&) {
@@ -97,7 +101,9 @@ nlohmann::json JobInfo::toJson() const
         .pinned = pinned,
         .resultsDropped = resultsDropped,
         .owner = std::nullopt,
-        .parameters = parameters};
+        .parameters = parameters,
+        .differingParameters = std::nullopt,
+        .differingParametersTruncated = std::nullopt};
 }
 
 } // namespace tlmhub::server

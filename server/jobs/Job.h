@@ -39,6 +39,9 @@ struct JobRequest {
     JobSettings settings;
     // Directory relative paths in the model resolve against (data files); empty for none.
     std::string modelDirectory;
+    // Every parameter's value text as the run used it ("Comp.param" -> text, ParameterTexts.h),
+    // taken when the job is prepared: what its run history compares with the model's text.
+    std::map<std::string, std::string> usedParameters;
     // A run of an assignment's locked copy: `settings` may only repeat the model's own (the
     // template's). Checked when the job is submitted; not stored.
     bool settingsFixed = false;
@@ -65,6 +68,8 @@ struct JobInfo {
     // Only in a model's history (JobStore::listForModel): the overrides the job was submitted
     // with (JobRequest::parameters).
     std::optional<std::map<std::string, std::string>> parameters;
+    // Only in a model's history: JobRequest::usedParameters; nullopt for a job stored without.
+    std::optional<std::map<std::string, std::string>> usedParameters;
 
     // {id, model_id, state, progress, error, created_at, started_at, finished_at, steps,
     //  settings:{start,step,stop,log_samples}, name, pinned, results_dropped[, parameters]};

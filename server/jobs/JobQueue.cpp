@@ -162,8 +162,11 @@ JobQueue::Submitted JobQueue::queue(const JobRequest& request, std::unique_ptr<P
         return {std::nullopt, "limit_exceeded", quotaMessage(stored, mLimits.maxStoredBytesPerUser)};
     }
 
+    // Stored with what the run will use, for its model's run history.
+    JobRequest withUsedValues = request;
+    withUsedValues.usedParameters = std::move(prepared->usedParameters);
     // Queued on every node together; jobs claimed by a node count as running.
-    const JobStore::Admission admission = mStore.createWithinQueueLimit(request, resolved, mLimits.maxQueuedPerUser);
+    const JobStore::Admission admission = mStore.createWithinQueueLimit(withUsedValues, resolved, mLimits.maxQueuedPerUser);
     if (!admission.id) {
         // Temporary: room comes as the user's jobs start.
         return {std::nullopt, "rate_limited",

@@ -4,6 +4,7 @@
 #include "server/jobs/ModelLimits.h"
 
 #include "core/ParameterPath.h"
+#include "core/ParameterTexts.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <cmath>
@@ -34,6 +35,7 @@ bool prepareLoaded(const JobRequest& request, Model model, const JobLimits& limi
         error = {protocolErrorCode(set.code()), set.message()};
         return false;
     }
+    out.usedParameters = parameterTexts(root);
 
     const JobSettings& s = request.settings;
     if (request.settingsFixed) {

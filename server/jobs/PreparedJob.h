@@ -19,6 +19,8 @@ struct PreparedJob {
     double start = 0.0, step = 0.0, stop = 0.0;   // s
     std::size_t logSamples = 0;
     std::uint64_t steps = 0;                      // ceil((stop - start) / step)
+    // Every parameter's value text with the overrides applied (JobRequest::usedParameters).
+    std::map<std::string, std::string> usedParameters;
 };
 
 struct PrepareError {

@@ -688,6 +688,8 @@ void from_json(const nlohmann::json& j, JobInfo& v)
     j.at("results_dropped").get_to(v.resultsDropped);
     if (const auto x = j.find("owner"); x != j.end()) v.owner = x->get<std::string>();
     if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<std::map<std::string, std::string>>();
+    if (const auto x = j.find("differing_parameters"); x != j.end()) v.differingParameters = x->get<std::map<std::string, std::string>>();
+    if (const auto x = j.find("differing_parameters_truncated"); x != j.end()) v.differingParametersTruncated = x->get<bool>();
 }
 
 void to_json(nlohmann::json& j, const JobInfo& v)
@@ -710,6 +712,8 @@ void to_json(nlohmann::json& j, const JobInfo& v)
     j["results_dropped"] = v.resultsDropped;
     if (v.owner) j["owner"] = *v.owner;
     if (v.parameters) j["parameters"] = *v.parameters;
+    if (v.differingParameters) j["differing_parameters"] = *v.differingParameters;
+    if (v.differingParametersTruncated) j["differing_parameters_truncated"] = *v.differingParametersTruncated;
 }
 
 void from_json(const nlohmann::json& j, ResultVariable& v)

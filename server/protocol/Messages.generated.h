@@ -535,6 +535,8 @@ struct JobInfo {
     bool resultsDropped{};
     std::optional<std::string> owner;
     std::optional<std::map<std::string, std::string>> parameters;
+    std::optional<std::map<std::string, std::string>> differingParameters;
+    std::optional<bool> differingParametersTruncated;
 };
 void from_json(const nlohmann::json& j, JobInfo& v);
 void to_json(nlohmann::json& j, const JobInfo& v);

@@ -68,7 +68,7 @@ public:
 
 protected:
     // The overrides of a stored request, from the JSON text of its "parameters" (empty when
-    // the text is not such an object).
+    // the text is not such an object); the same for its "used_parameters".
     static std::map<std::string, std::string> parameterOverrides(const std::string& json);
 };
 

@@ -1,12 +1,15 @@
 // A model's run history through a real server (issue 38): GET /jobs?model_id= lists the runs
 // the caller may see, newest first, a page at a time, with the overrides each was submitted
-// with; PATCH /jobs/{id} names and pins a run; beyond --max-unpinned-runs-per-model the
-// oldest unpinned runs lose their results (410), pinned ones never. On SQLite here, on
+// with and the values it used that the model's text no longer says; PATCH /jobs/{id} names and
+// pins a run; beyond --max-unpinned-runs-per-model the oldest unpinned runs lose their results
+// (410), pinned ones never. On SQLite here, on
 // PostgreSQL in PostgresServer.RunHistoryAsOnSqlite; who sees a student's copy's runs in
 // Labs.ACopysRunHistoryIsTheStudentsAndTheirStaffs.
 #include "ServerHarness.h"
 #include "TemporaryPostgres.h"
 #include "TestFiles.h"
+
+#include "server/jobs/RunParameterDifferences.h"
 
 #include <gtest/gtest.h>
 
@@ -76,6 +79,11 @@ void checkRunHistory(const ServerProcess& server)
     EXPECT_EQ(oldest["settings"]["stop"], all.json()[0]["settings"]["stop"]);
     EXPECT_EQ(oldest["name"], "");
     EXPECT_EQ(oldest["pinned"], false);
+    // What each run used where the model's text says otherwise: the overrides only, named as
+    // the model names the parameter (GainP.k is the start value of its input k).
+    EXPECT_EQ(oldest["differing_parameters"], (nlohmann::json{{"GainP.k#Value", "0.02"}}));
+    EXPECT_EQ(all.json()[1]["differing_parameters"], (nlohmann::json{{"GainP.k#Value", "0.05"}}));
+    EXPECT_EQ(all.json()[0]["differing_parameters"], nlohmann::json::object());
 
     // Pages of two.
     const auto page1 = hana.get(history + "&limit=2");
@@ -115,6 +123,23 @@ void checkRunHistory(const ServerProcess& server)
         EXPECT_EQ(hana.get("/api/v1/jobs/" + std::to_string(kept) + "/results?format=csv").status, 200);
     EXPECT_EQ(hana.get(history).json()[3]["name"], "k = 0.05 \xc2\xb5");
 
+    // The model's gain changes to what the third run was given: that run now used the model's
+    // text, the runs without overrides used the old gain.
+    std::string edited = readFile(kPositionServo);
+    const std::string oldGain = R"(value="0.0264249" type="double" name="k#Value")";
+    ASSERT_NE(edited.find(oldGain), std::string::npos);
+    edited.replace(edited.find(oldGain), oldGain.size(), R"(value="0.05" type="double" name="k#Value")");
+    const auto updated = hana.request(http::verb::put, "/api/v1/models/" + std::to_string(own), edited, "application/xml");
+    ASSERT_EQ(updated.status, 200) << updated.body;
+    const auto afterEdit = hana.get(history).json();
+    ASSERT_EQ(afterEdit.size(), 6u);
+    EXPECT_EQ(afterEdit[0]["id"], sixth);
+    EXPECT_EQ(afterEdit[0]["differing_parameters"], (nlohmann::json{{"GainP.k#Value", "0.0264249"}}));
+    EXPECT_EQ(afterEdit[3]["id"], third);
+    EXPECT_EQ(afterEdit[3]["differing_parameters"], nlohmann::json::object());
+    EXPECT_EQ(afterEdit[5]["differing_parameters"], (nlohmann::json{{"GainP.k#Value", "0.02"}}));
+    EXPECT_FALSE(afterEdit[5].contains("differing_parameters_truncated"));
+
     // Others: no history of her model, no naming or pinning of her runs; the administrator sees it all.
     EXPECT_EQ(ivo.get(history).status, 404);
     EXPECT_EQ(ivo.request(http::verb::patch, thirdPath, R"({"pinned": false})").status, 404);
@@ -140,6 +165,32 @@ TEST(RunHistory, ListsPinsAndDropsResultsOfUnpinnedRuns)
 {
     ServerProcess server(freshTempDir("run-history"), runHistoryServerFlags());
     checkRunHistory(server);
+}
+
+// Jobs stored before a job kept the values it used are compared through their model's text and
+// overrides; a model that no longer loads differs in everything, listed up to the limit.
+TEST(RunParameterDifferences, AJobStoredWithoutItsValuesIsComparedThroughItsModelText)
+{
+    const std::string original = readFile(kPositionServo);
+    std::string current = original;
+    const std::string oldGain = R"(value="0.0264249" type="double" name="k#Value")";
+    ASSERT_NE(current.find(oldGain), std::string::npos);
+    current.replace(current.find(oldGain), oldGain.size(), R"(value="0.05" type="double" name="k#Value")");
+    server::RunParameterDifferences differences([&] { return current; }, server::ModelLimits{});
+    server::JobRequest run;
+    run.hmf = original;
+    bool truncated = true;
+    EXPECT_EQ(differences.differing(differences.usedBy(run), 100, truncated),
+              (server::RunParameterDifferences::Texts{{"GainP.k#Value", "0.0264249"}}));
+    EXPECT_FALSE(truncated);
+    run.parameters = {{"GainP.k", "0.05"}, {"Mass.m", "2"}};
+    EXPECT_EQ(differences.differing(differences.usedBy(run), 100, truncated),
+              (server::RunParameterDifferences::Texts{{"Mass.m", "2"}}));
+
+    server::RunParameterDifferences againstNothing([] { return std::string("<not a model/>"); }, server::ModelLimits{});
+    const auto everything = againstNothing.differing(againstNothing.usedBy(run), 3, truncated);
+    EXPECT_EQ(everything.size(), 3u);
+    EXPECT_TRUE(truncated);
 }
 
 TEST(PostgresServer, RunHistoryAsOnSqlite)

@@ -3,6 +3,7 @@
 #include "TestHelpers.h"
 
 #include "core/ParameterPath.h"
+#include "core/ParameterTexts.h"
 #include "core/hmf/HmfLoader.h"
 
 #include <filesystem>
@@ -49,6 +50,25 @@ TEST_F(ParameterPath, NamesComponentsSubsystemsAndSystemParameters)
     ASSERT_TRUE(found);
     EXPECT_EQ(found->owner, servo("Servo2").component("Gain"));
     EXPECT_EQ(found->parameter->name, "k#Value");
+}
+
+// What a run used is listed by path (core/ParameterTexts.h); each path finds its parameter.
+TEST_F(ParameterPath, EveryParameterTextIsListedUnderAPathThatFindsIt)
+{
+    ASSERT_TRUE(isOk(setParameterValue(*root, "Servo1$Gain.k", "PGain * 2")));
+    const auto texts = parameterTexts(*root);
+    EXPECT_EQ(texts.at("Force"), root->parameters().find("Force")->value);
+    EXPECT_EQ(texts.at("Servo1.PGain"), servo("Servo1").parameters().find("PGain")->value);
+    EXPECT_EQ(texts.at("Servo1$Gain.k#Value"), "PGain * 2");
+    EXPECT_EQ(texts.at("Servo2$Translational_Mass.m"), "200");
+    std::size_t count = 0;
+    for (const auto& [path, text] : texts) {
+        Result<ParameterRef> found = findParameter(*root, path);
+        ASSERT_TRUE(found) << path;
+        EXPECT_EQ(found->parameter->value, text) << path;
+        ++count;
+    }
+    EXPECT_GT(count, 20u);
 }
 
 TEST_F(ParameterPath, APathThatNamesNothingSaysWhichPartIsMissing)

@@ -24,12 +24,13 @@ constexpr PgStatement kListForOwner{"jobs_list_for_owner",
                                     "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
                                     " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs"
                                     " WHERE owner_id = $1 ORDER BY id DESC"};
-// The history of a model: with the overrides (column 17), for one owner ($2 not null) or all,
-// below an id ($3 not null); $4 rows.
+// The history of a model: with the overrides (column 17) and the values used (18), for one
+// owner ($2 not null) or all, below an id ($3 not null); $4 rows. The request is parsed once.
 constexpr PgStatement kListForModel{"jobs_list_for_model",
                                     "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
                                     " finished_at, steps, start, step, stop, log_samples, name, pinned,"
-                                    " results_dropped_at, (request::jsonb -> 'parameters')::text FROM jobs"
+                                    " results_dropped_at, (r.j -> 'parameters')::text, (r.j -> 'used_parameters')::text"
+                                    " FROM jobs, LATERAL (SELECT request::jsonb AS j) r"
                                     " WHERE model_id = $1 AND ($2::bigint IS NULL OR owner_id = $2)"
                                     " AND ($3::bigint IS NULL OR id < $3) ORDER BY id DESC LIMIT $4"};
 constexpr PgStatement kLabel{"jobs_label",
@@ -186,6 +187,7 @@ std::vector<JobInfo> PostgresJobStore::listForModel(std::int64_t modelId, std::o
         for (const auto& row : c.exec(tx, kListForModel, modelId, orNull(owner), orNull(before), limit)) {
             JobInfo job = readInfo(row);
             job.parameters = parameterOverrides(row[17].is_null() ? "" : row[17].as<std::string>());
+            if (!row[18].is_null()) job.usedParameters = parameterOverrides(row[18].as<std::string>());
             jobs.push_back(std::move(job));
         }
         return jobs;

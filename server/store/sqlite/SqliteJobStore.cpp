@@ -13,10 +13,11 @@ namespace {
     " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at"
 #define TLMHUB_JOB_INFO TLMHUB_JOB_COLUMNS " FROM jobs"
 constexpr const char* kInfoById = TLMHUB_JOB_INFO " WHERE id = ?";
-// The history of a model: with the overrides (column 17), and for one owner (?2 not null) or
-// all, below an id (?3 not null); ?4 rows.
+// The history of a model: with the overrides (column 17) and the values used (18), and for one
+// owner (?2 not null) or all, below an id (?3 not null); ?4 rows.
 constexpr const char* kHistory =
-    TLMHUB_JOB_COLUMNS ", json_extract(request, '$.parameters') FROM jobs"
+    TLMHUB_JOB_COLUMNS ", json_extract(request, '$.parameters'),"
+    " json_extract(request, '$.used_parameters') FROM jobs"
     " WHERE model_id = ?1 AND (?2 IS NULL OR owner_id = ?2) AND (?3 IS NULL OR id < ?3)"
     " ORDER BY id DESC LIMIT ?4";
 constexpr const char* kInfoByOwner = TLMHUB_JOB_INFO " WHERE owner_id = ? ORDER BY id DESC";
@@ -165,6 +166,7 @@ std::vector<JobInfo> SqliteJobStore::listForModel(std::int64_t modelId, std::opt
         while (q->executeStep()) {
             JobInfo job = readInfo(*q);
             job.parameters = parameterOverrides(q->getColumn(17).isNull() ? "" : q->getColumn(17).getString());
+            if (!q->getColumn(18).isNull()) job.usedParameters = parameterOverrides(q->getColumn(18).getString());
             out.push_back(std::move(job));
         }
         return out;

@@ -656,6 +656,16 @@ export interface JobInfo {
     parameters?: {
         [k: string]: string;
     };
+    /**
+     * Only in a model's run history: the value text the run used (its model's text then, with its overrides) of each parameter whose text the model now differs in or no longer has, by path ('Comp.param', 'Sub$Comp.param', a system parameter's name, start values as 'Comp.P#Value'); empty when the run used what the model says now. At most 100, the first by path.
+     */
+    differing_parameters?: {
+        [k: string]: string;
+    };
+    /**
+     * Only in a model's run history, and only when true: more parameters differ than differing_parameters lists.
+     */
+    differing_parameters_truncated?: boolean;
 }
 export interface ResultVariable {
     /**
