@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Rewrite tests/models/hashes.txt: the SHA-256 of `tlmhub-cli run --csv` output of every .hmf
-# under ../shared/hopsan-models and ../shared/bench-models that runs to its stop time (the
-# ones ending with an error are checked against tests/models/outcomes.txt instead).
+# under ../shared/hopsan-models and ../shared/bench-models that runs to its stop time or to the
+# end a component of the model designs (SignalStopSimulation; its message is checked through
+# tests/models/outcomes.txt too). The ones ending with an error are checked against
+# tests/models/outcomes.txt alone.
 # Run it only for an intended change of results, and say in the commit why they changed.
 # JOBS=N runs N models at a time (default 2).
 set -euo pipefail
