@@ -63,7 +63,7 @@ describe('bode', () => {
             const ratio = f / corner;
             return sum + Math.sin(2 * Math.PI * f * t - Math.atan(ratio)) / Math.sqrt(1 + ratio * ratio);
         }, 0));
-        const b = bode(input, output, 'hann');
+        const b = bode(input, output, { window: 'hann' });
         const at = b.frequency.reduce((best, f, i) => (Math.abs(f - corner) < Math.abs(b.frequency[best] - corner) ? i : best), 0);
         expect(b.frequency[at]).toBeCloseTo(corner, 6);
         expect(Math.abs(b.gainDb[at] - -3.0103)).toBeLessThan(0.2);
@@ -71,5 +71,45 @@ describe('bode', () => {
         // and far above the corner the gain falls by 20 dB per decade
         const high = b.frequency.findIndex((f) => Math.abs(f - 100) < 1e-9);
         expect(Math.abs(b.gainDb[high] - 20 * Math.log10(1 / Math.sqrt(1 + 64)))).toBeLessThan(0.2);
+    });
+
+    // The step response of a third-order lag 1 / (1 + s/ωc)³, as a run logs it: the phase
+    // -3·atan(f/fc) passes -180° at fc·√3 and tends to -270°, so above fc·√3 the wrapped and the
+    // unwrapped phase differ by 360°. (Sampling every 0.1 ms shifts the phase by half a
+    // sample, under 0.8° up to 40 Hz.)
+    describe('the step response of a third-order lag (0.3 dB, 2°)', () => {
+        const corner = 5;
+        const w = 2 * Math.PI * corner;
+        const stepAt = 0.1;
+        const input = sampled(32768, 1e-4, (t) => (t >= stepAt - 1e-9 ? 1 : 0));
+        const output = sampled(32768, 1e-4, (t) => {
+            const x = Math.max(0, w * (t - stepAt));
+            return 1 - Math.exp(-x) * (1 + x + (x * x) / 2);
+        });
+        const lagDeg = (f: number) => (-3 * Math.atan(f / corner) * 180) / Math.PI;
+        const gainDb = (f: number) => -30 * Math.log10(1 + (f / corner) ** 2);   // 20·log10((1 + (f/fc)²)^-3/2)
+        const upTo40 = (b: { frequency: number[] }) => b.frequency.map((f, i) => [f, i]).filter(([f]) => f <= 40);
+
+        it('unwrapped, the phase follows -3·atan(f/fc) below -180°', () => {
+            const b = bode(input, output, { window: 'rectangular', phase: 'unwrapped' });
+            for (const [f, i] of upTo40(b)) {
+                expect(Math.abs(b.gainDb[i] - gainDb(f))).toBeLessThan(0.3);
+                expect(Math.abs(b.phaseDeg[i] - lagDeg(f))).toBeLessThan(2);
+            }
+            expect(Math.min(...upTo40(b).map(([, i]) => b.phaseDeg[i]))).toBeLessThan(-240);   // -248.6° at 40 Hz
+        });
+
+        it('wrapped, every phase is in (-180°, 180°] and the lag modulo 360°', () => {
+            const b = bode(input, output, { window: 'rectangular', phase: 'wrapped' });
+            for (const p of b.phaseDeg) {
+                expect(p).toBeGreaterThan(-180);
+                expect(p).toBeLessThanOrEqual(180);
+            }
+            const wrapped = (deg: number) => (deg <= -180 ? deg + 360 : deg);
+            // away from -180° itself, where 2° of error may land on either side of the cut
+            for (const [f, i] of upTo40(b).filter(([f]) => Math.abs(lagDeg(f) + 180) > 2)) {
+                expect(Math.abs(b.phaseDeg[i] - wrapped(lagDeg(f)))).toBeLessThan(2);
+            }
+        });
     });
 });

@@ -7,10 +7,21 @@ import { samplesIn, transform, type Samples, type WindowName } from './fft';
 export interface Bode { frequency: number[]; gainDb: number[]; phaseDeg: number[] }
 
 /**
- * `threshold` (relative to the input's largest component) drops frequencies the input hardly
- * excites, where the ratio would be noise.
+ * 'unwrapped' keeps the phase continuous from one frequency to the next, so a lag that grows
+ * past -180° reads as such; 'wrapped' gives each phase in (-180°, 180°].
  */
-export function bode(input: Samples, output: Samples, window: WindowName, from?: number, to?: number, threshold = 1e-3): Bode {
+export type PhaseMode = 'unwrapped' | 'wrapped';
+
+export interface BodeOptions {
+    window: WindowName;
+    from?: number;
+    to?: number;
+    /** Drops frequencies the input hardly excites (relative to its largest component), where the ratio would be noise. */
+    threshold?: number;
+    phase?: PhaseMode;
+}
+
+export function bode(input: Samples, output: Samples, { window, from, to, threshold = 1e-3, phase = 'unwrapped' }: BodeOptions): Bode {
     const a = samplesIn(input, from, to);
     const b = samplesIn(output, from, to);
     if (a.values.length !== b.values.length) throw new Error('input and output need the same samples');
@@ -26,14 +37,17 @@ export function bode(input: Samples, output: Samples, window: WindowName, from?:
         const d = x.re[k] * x.re[k] + x.im[k] * x.im[k];
         const hr = (y.re[k] * x.re[k] + y.im[k] * x.im[k]) / d;
         const hi = (y.im[k] * x.re[k] - y.re[k] * x.im[k]) / d;
-        let phase = (Math.atan2(hi, hr) * 180) / Math.PI;
-        // unwrap: keep the phase continuous from one frequency to the next
-        while (phase - previous > 180) phase -= 360;
-        while (phase - previous < -180) phase += 360;
-        previous = phase;
+        let degrees = (Math.atan2(hi, hr) * 180) / Math.PI;
+        if (phase === 'unwrapped') {
+            while (degrees - previous > 180) degrees -= 360;
+            while (degrees - previous < -180) degrees += 360;
+            previous = degrees;
+        } else if (degrees <= -180) {
+            degrees += 360;   // atan2 gives -180° for a negative real ratio with a -0 imaginary part
+        }
         out.frequency.push(x.frequency[k]);
         out.gainDb.push(20 * Math.log10(Math.hypot(hr, hi)));
-        out.phaseDeg.push(phase);
+        out.phaseDeg.push(degrees);
     }
     return out;
 }

@@ -3,14 +3,24 @@
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
 import { DerivedPlotFrame } from './DerivedPlotFrame';
-import { amplitudeSpectrum, peakFrequency, WINDOWS, type WindowName } from '../analysis/fft';
-import { bode } from '../analysis/bode';
+import { PlotSurface } from './PlotSurface';
+import { BodePlots } from './BodePlots';
+import { amplitudeSpectrum, peakFrequency, WINDOWS, type Spectrum, type WindowName } from '../analysis/fft';
+import { bode, type Bode, type PhaseMode } from '../analysis/bode';
+import { bodePair } from '../analysis/bodeDefaults';
 import { toCsv } from './RunData';
 import { downloadText, errorText, h } from '../ui/dom';
 
 export type AnalysisKind = 'fft' | 'bode';
 
-interface Result { x: number[]; series: { label: string; data: number[]; colour: string; scale: string }[] }
+/**
+ * What the window knows of the model beyond the plot window's variables: the logged outputs of
+ * its signal sources (the Bode input by default, plotted or not), and how to load a variable the
+ * run has not fetched yet.
+ */
+export interface ModelSignals { sources: string[]; load(names: string[]): Promise<void> }
+
+const NO_MODEL: ModelSignals = { sources: [], load: async () => undefined };
 
 export class AnalysisWindow {
     readonly element: HTMLElement;
@@ -18,21 +28,35 @@ export class AnalysisWindow {
     private readonly inputSelect: HTMLSelectElement;
     private readonly outputSelect: HTMLSelectElement;
     private readonly windowSelect: HTMLSelectElement;
+    private readonly phaseSelect: HTMLSelectElement;
+    // one of the two, by kind
+    private readonly spectrumPlot: PlotSurface | null;
+    private readonly bodePlots: BodePlots | null;
     private run: RunData | null = null;
-    private result: Result | null = null;
+    private spectrum: Spectrum | null = null;
+    private diagram: Bode | null = null;
+    /** Loads asked for (run and variables), so a variable the run lacks is asked for once. */
+    private readonly loadsAsked = new Set<string>();
 
     constructor(readonly id: number, readonly kind: AnalysisKind, variables: string[], private readonly labelOf: (name: string) => string,
-        onClose: (w: AnalysisWindow) => void) {
+        onClose: (w: AnalysisWindow) => void, private readonly model: ModelSignals = NO_MODEL) {
+        const defaults = kind === 'bode' ? bodePair(variables, model.sources) : { input: variables[0], output: undefined };
+        const choices = kind === 'bode' ? [...new Set([...variables, ...model.sources])] : variables;
         const choice = (name: string, label: string, selected: string | undefined) => h('select', { name, 'aria-label': label, onchange: () => this.recompute() },
-            ...variables.map((v) => h('option', { value: v, selected: v === selected }, this.labelOf(v))));
-        this.inputSelect = choice('input', kind === 'fft' ? 'Variable' : 'Input', variables[0]);
-        this.outputSelect = choice('output', 'Output', variables[1] ?? variables[0]);
+            ...choices.map((v) => h('option', { value: v, selected: v === selected }, this.labelOf(v))));
+        this.inputSelect = choice('input', kind === 'fft' ? 'Variable' : 'Input', defaults.input);
+        this.outputSelect = choice('output', 'Output', defaults.output);
         this.windowSelect = h('select', { name: 'window', 'aria-label': 'Window', onchange: () => this.recompute() },
             ...WINDOWS.map((w) => h('option', { value: w }, w)));
+        this.phaseSelect = h('select', { name: 'phase', 'aria-label': 'Phase', onchange: () => this.recompute() },
+            h('option', { value: 'unwrapped' }, 'phase unwrapped'), h('option', { value: 'wrapped' }, 'phase wrapped (±180°)'));
+        this.spectrumPlot = kind === 'fft' ? new PlotSurface() : null;
+        this.bodePlots = kind === 'bode' ? new BodePlots(`bode-${id}`) : null;
         this.frame = new DerivedPlotFrame({
             plotId: `a${id}`, analysis: kind, title: kind === 'fft' ? 'Spectrum (FFT)' : 'Bode', closeLabel: 'Close analysis',
-            controls: [kind === 'fft' ? this.inputSelect : h('span', { class: 'analysis-pair' }, 'out ', this.outputSelect, ' / in ', this.inputSelect),
-                this.windowSelect],
+            controls: kind === 'fft' ? [this.inputSelect, this.windowSelect]
+                : [h('span', { class: 'analysis-pair' }, 'out ', this.outputSelect, ' / in ', this.inputSelect), this.windowSelect, this.phaseSelect],
+            body: this.spectrumPlot ?? this.bodePlots!,
             changed: () => this.recompute(),
             exportCsv: () => this.exportCsv(),
             exportPng: () => this.exportPng(),
@@ -49,7 +73,19 @@ export class AnalysisWindow {
 
     private recompute(): void {
         const run = this.run;
-        if (!run || !run.finished) return this.show(null, run ? 'Waiting for the run to finish.' : 'Run the model first.');
+        this.spectrum = null;
+        this.diagram = null;
+        if (!run || !run.finished) return this.showNothing(run ? 'Waiting for the run to finish.' : 'Run the model first.');
+        const names = this.kind === 'fft' ? [this.inputSelect.value] : [this.inputSelect.value, this.outputSelect.value];
+        const missing = names.filter((n) => !run.has(n));
+        // e.g. the source, which is the Bode input without being plotted
+        const load = `${run.jobId}:${missing.join(' ')}`;
+        if (missing.length > 0 && !this.loadsAsked.has(load)) {
+            this.loadsAsked.add(load);
+            this.showNothing('Loading results…');
+            this.model.load(missing).then(() => this.recompute(), (e) => this.showNothing(errorText(e)));
+            return;
+        }
         try {
             const window = this.windowSelect.value as WindowName;
             const { from, to } = this.frame.timeRange();
@@ -62,46 +98,50 @@ export class AnalysisWindow {
                 const s = amplitudeSpectrum(column(this.inputSelect.value), window, from, to);
                 const peak = peakFrequency(s);
                 this.element.dataset.peakHz = String(peak);
-                this.show({ x: s.frequency, series: [{ label: `|${this.labelOf(this.inputSelect.value)}|`, data: s.amplitude, colour: '#1f6fd1', scale: 'y' }] },
-                    `peak at ${peak.toPrecision(4)} Hz`);
+                this.spectrum = s;
+                this.drawSpectrum(s);
+                this.frame.setNote(`peak at ${peak.toPrecision(4)} Hz`);
             } else {
-                const b = bode(column(this.inputSelect.value), column(this.outputSelect.value), window, from, to);
-                this.show({ x: b.frequency, series: [
-                    { label: 'gain [dB]', data: b.gainDb, colour: '#1f6fd1', scale: 'dB' },
-                    { label: 'phase [°]', data: b.phaseDeg, colour: '#d1421f', scale: 'deg' },
-                ] }, `${b.frequency.length} frequencies`);
+                const phase = this.phaseSelect.value as PhaseMode;
+                const b = bode(column(this.inputSelect.value), column(this.outputSelect.value), { window, from, to, phase });
+                this.diagram = b;
+                this.bodePlots?.draw(b);
+                this.frame.setNote(`${b.frequency.length} frequencies`);
             }
         } catch (e) {
-            this.show(null, errorText(e));
+            this.showNothing(errorText(e));
         }
     }
 
-    private show(result: Result | null, note: string): void {
-        this.result = result;
+    private showNothing(note: string): void {
         this.frame.setNote(note);
-        if (!result) return this.frame.surface.clear();
-        const bodeAxes: uPlot.Axis[] = [
-            { label: 'frequency [Hz]', size: 50 },
-            { scale: 'dB', label: 'gain [dB]', size: 60, stroke: '#1f6fd1' },
-            { scale: 'deg', label: 'phase [°]', side: 1, size: 60, stroke: '#d1421f', grid: { show: false } },
-        ];
-        this.frame.surface.draw({
-            scales: { x: { time: false, distr: this.kind === 'bode' ? 3 : 1 } },
-            cursor: { drag: { x: true, y: false } },
-            legend: { live: true },
-            axes: this.kind === 'bode' ? bodeAxes : [{ label: 'frequency [Hz]', size: 50 }, { label: 'amplitude', size: 60 }],
-            series: [{ label: 'frequency [Hz]' }, ...result.series.map((s) => ({ label: s.label, stroke: s.colour, width: 1.5, scale: s.scale }))],
-        }, [result.x, ...result.series.map((s) => s.data)] as uPlot.AlignedData);
+        this.spectrumPlot?.clear();
+        this.bodePlots?.clear();
     }
 
+    private drawSpectrum(s: Spectrum): void {
+        this.spectrumPlot?.draw({
+            scales: { x: { time: false } },
+            cursor: { drag: { x: true, y: false } },
+            legend: { live: true },
+            axes: [{ label: 'frequency [Hz]', size: 50 }, { label: 'amplitude', size: 60 }],
+            series: [{ label: 'frequency [Hz]' }, { label: this.spectrumLabel(), stroke: '#1f6fd1', width: 1.5 }],
+        }, [s.frequency, s.amplitude] as uPlot.AlignedData);
+    }
+
+    private spectrumLabel(): string { return `|${this.labelOf(this.inputSelect.value)}|`; }
+
     private exportCsv(): void {
-        const r = this.result;
-        if (!r) return;
-        downloadText(`${this.kind}-${this.id}.csv`, toCsv(r.series.map((s) => s.label), [r.x, ...r.series.map((s) => s.data)], 'frequency [Hz]'), 'text/csv');
+        const file = `${this.kind}-${this.id}.csv`;
+        if (this.spectrum) downloadText(file, toCsv([this.spectrumLabel()], [this.spectrum.frequency, this.spectrum.amplitude], 'frequency [Hz]'), 'text/csv');
+        const b = this.diagram;
+        if (b) downloadText(file, toCsv(['gain [dB]', 'phase [°]'], [b.frequency, b.gainDb, b.phaseDeg], 'frequency [Hz]'), 'text/csv');
     }
 
     private exportPng(): void {
-        this.frame.surface.exportPng(`${this.kind}-${this.id}.png`, (this.result?.series ?? []).map((s) => ({ label: s.label, colour: s.colour, dashed: false })));
+        const file = `${this.kind}-${this.id}.png`;
+        if (this.spectrum) this.spectrumPlot?.exportPng(file, [{ label: this.spectrumLabel(), colour: '#1f6fd1', dashed: false }]);
+        if (this.diagram) this.bodePlots?.exportPng(file, `${this.labelOf(this.outputSelect.value)} / ${this.labelOf(this.inputSelect.value)}`);
     }
 
     destroy(): void { this.frame.destroy(); }

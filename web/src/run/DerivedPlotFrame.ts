@@ -1,10 +1,12 @@
 // The frame of a window that plots something derived from the current run (a spectrum, a
 // Bode diagram, an XY curve): a header with the window's own controls, a time range, a note,
-// CSV, PNG and close buttons, and the plot surface below. It also tells its window when the
-// run has changed, so the window recomputes only then.
+// CSV, PNG and close buttons, and the window's plot (or plots) below. It also tells its window
+// when the run has changed, so the window recomputes only then.
 import type { RunData } from './RunData';
-import { PlotSurface } from './PlotSurface';
 import { h } from '../ui/dom';
+
+/** What the frame shows below its header: a plot surface, or the Bode diagram's two. */
+export interface PlotBody { readonly element: HTMLElement; destroy(): void }
 
 export interface DerivedPlotOptions {
     plotId: string;
@@ -12,6 +14,7 @@ export interface DerivedPlotOptions {
     title: string;
     closeLabel: string;
     controls: (Node | string)[];      // between the title and the time range
+    body: PlotBody;
     changed(): void;                  // the time range was edited
     exportCsv(): void;
     exportPng(): void;
@@ -22,13 +25,14 @@ export interface TimeRange { from?: number; to?: number }
 
 export class DerivedPlotFrame {
     readonly element: HTMLElement;
-    readonly surface = new PlotSurface();
+    private readonly body: PlotBody;
     private readonly note: HTMLElement;
     private readonly fromInput: HTMLInputElement;
     private readonly toInput: HTMLInputElement;
     private computedFor = '';
 
     constructor(o: DerivedPlotOptions) {
+        this.body = o.body;
         const time = (name: string, label: string, placeholder: string) =>
             h('input', { name, 'aria-label': label, size: 6, placeholder, onchange: () => o.changed() });
         this.fromInput = time('from', 'From time', 'start');
@@ -40,7 +44,7 @@ export class DerivedPlotFrame {
                 h('button', { class: 'small', onclick: () => o.exportCsv(), title: 'Export as CSV' }, 'CSV'),
                 h('button', { class: 'small', onclick: () => o.exportPng(), title: 'Save as PNG' }, 'PNG'),
                 h('button', { class: 'small', onclick: () => o.close(), title: 'Close', 'aria-label': o.closeLabel }, '×')),
-            h('div', { class: 'plot-body' }, this.surface.element));
+            h('div', { class: 'plot-body' }, o.body.element));
     }
 
     /** True when `run` is not the run (or the state of it) the window last computed for. */
@@ -63,7 +67,7 @@ export class DerivedPlotFrame {
     setNote(text: string): void { this.note.textContent = text; }
 
     destroy(): void {
-        this.surface.destroy();
+        this.body.destroy();
         this.element.remove();
     }
 }

@@ -3,6 +3,7 @@
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
 import { DerivedPlotFrame } from './DerivedPlotFrame';
+import { PlotSurface } from './PlotSurface';
 import { samplesIn } from '../analysis/fft';
 import { toCsv } from './RunData';
 import { siPrefix, unitOfVariable } from './units';
@@ -26,6 +27,7 @@ const pointToPoint: uPlot.Series.PathBuilder = (u, seriesIdx) => {
 export class XyWindow {
     readonly element: HTMLElement;
     private readonly frame: DerivedPlotFrame;
+    private readonly surface = new PlotSurface();
     private readonly xSelect: HTMLSelectElement;
     private readonly ySelect: HTMLSelectElement;
     private run: RunData | null = null;
@@ -39,6 +41,7 @@ export class XyWindow {
         this.frame = new DerivedPlotFrame({
             plotId: `xy${id}`, analysis: 'xy', title: 'XY', closeLabel: 'Close XY plot',
             controls: ['y ', this.ySelect, ' over x ', this.xSelect],
+            body: this.surface,
             changed: () => this.redraw(),
             exportCsv: () => this.exportCsv(),
             exportPng: () => this.exportPng(),
@@ -59,7 +62,7 @@ export class XyWindow {
         if (!run || !xs || !ys) {
             this.points = null;
             this.frame.setNote(run ? 'The variables are not in this run yet.' : 'Run the model first.');
-            return this.frame.surface.clear();
+            return this.surface.clear();
         }
         try {
             const { from, to } = this.frame.timeRange();
@@ -76,7 +79,7 @@ export class XyWindow {
                     values: (_u, splits) => splits.map((v) => String(Number((v / prefixed.factor).toPrecision(4)))),
                 };
             };
-            this.frame.surface.draw({
+            this.surface.draw({
                 mode: 2,
                 scales: { x: { time: false, auto: true }, y: { auto: true } },
                 cursor: { drag: { x: true, y: true } },
@@ -100,7 +103,7 @@ export class XyWindow {
     }
 
     private exportPng(): void {
-        this.frame.surface.exportPng(`xy-${this.id}.png`, [{ label: `${this.labelOf(this.ySelect.value)} over ${this.labelOf(this.xSelect.value)}`, colour: COLOUR, dashed: false }]);
+        this.surface.exportPng(`xy-${this.id}.png`, [{ label: `${this.labelOf(this.ySelect.value)} over ${this.labelOf(this.xSelect.value)}`, colour: COLOUR, dashed: false }]);
     }
 
     destroy(): void { this.frame.destroy(); }
