@@ -1,6 +1,7 @@
 // Where a uPlot chart lives in a window: a box sized by the window alone (the chart is
-// absolutely placed inside, so it cannot push its box larger) and the legend below it,
-// outside the measured box. Without that split, a wrapping legend grew the window without end.
+// absolutely placed inside, so it cannot push its box larger) and, beside it, a column with the
+// legend (one compact row per curve, scrolling when long) under an optional read-out. Without
+// that split, a growing legend grew the window without end or squeezed the graph to nothing.
 import uPlot from 'uplot';
 import { downloadBlob, h } from '../ui/dom';
 
@@ -10,15 +11,40 @@ export class PlotSurface {
     readonly element: HTMLElement;
     private readonly canvasBox: HTMLElement;
     private readonly legendBox: HTMLElement;
-    private readonly observer: ResizeObserver;
+    private observer: ResizeObserver;
     plot: uPlot | null = null;
 
-    constructor() {
+    /**
+     * The legend goes under the chart, or `beside` it for many curves; `aside` is shown above
+     * the legend (the two cursors' read-out).
+     */
+    constructor(options: { beside?: boolean; aside?: HTMLElement } = {}) {
         this.canvasBox = h('div', { class: 'plot-canvas' });
         this.legendBox = h('div', { class: 'plot-legend' });
-        this.element = h('div', { class: 'plot-surface' }, this.canvasBox, this.legendBox);
-        this.observer = new ResizeObserver(() => this.resize());
-        this.observer.observe(this.canvasBox);
+        this.element = h('div', { class: options.beside ? 'plot-surface legend-beside' : 'plot-surface' },
+            this.canvasBox, h('div', { class: 'plot-side' }, options.aside, this.legendBox));
+        this.observer = this.observe();
+    }
+
+    // An observer reports only the sizes of its own page's layout: one made by this page does
+    // not see the box once it has moved to another browser window (a detached plot).
+    private observe(): ResizeObserver {
+        const view = (this.canvasBox.ownerDocument.defaultView ?? window) as typeof window;
+        const observer = new view.ResizeObserver(() => this.resize());
+        observer.observe(this.canvasBox);
+        return observer;
+    }
+
+    /** The surface has moved to another document: watch its size there. */
+    moved(): void {
+        this.observer.disconnect();
+        this.observer = this.observe();
+        this.resize();
+    }
+
+    /** The legend's rows, one per series (the first is time), in series order. */
+    legendRows(): HTMLElement[] {
+        return [...this.legendBox.querySelectorAll<HTMLElement>('.u-series')];
     }
 
     /** A new chart; `options` without size and legend mount, which the surface supplies. */
@@ -26,6 +52,8 @@ export class PlotSurface {
         this.clear();
         const legend = { ...options.legend, mount: (_u: uPlot, el: HTMLElement) => this.legendBox.append(el) };
         this.plot = new uPlot({ ...options, ...this.size(), legend }, data, this.canvasBox);
+        // a long name is cut short in the narrow legend: the whole of it shows on hover
+        for (const label of this.legendBox.querySelectorAll<HTMLElement>('.u-label')) label.title = label.textContent ?? '';
         return this.plot;
     }
 

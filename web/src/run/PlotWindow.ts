@@ -2,11 +2,15 @@
 // stepped back (◀ ▶, Ctrl+← Ctrl+→), and the run before it to compare; live while the run goes
 // on; each curve names its run; zoom by dragging, cursor read-out in the legend, CSV and PNG.
 // Each axis shows the display unit the user chose for its quantity, or SI prefixes.
+// The legend is a compact column beside the graph, one row per curve; two cursors give Δt and
+// Δvalue; the window can fill the editor (maximised) or move into a browser window of its own.
 import uPlot from 'uplot';
 import { alignSeries, type RunData, type SeriesSource } from './RunData';
 import { variableLabel } from '../model/variables';
-import { downloadText, h } from '../ui/dom';
+import { downloadText, h, toast } from '../ui/dom';
 import { PlotSurface } from './PlotSurface';
+import { TwoCursors } from './twoCursors';
+import { detach, type Detached } from './detachedPlot';
 import type { AnalysisKind } from './AnalysisWindow';
 import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
 import { generationText, shownRuns, stepGeneration } from './generations';
@@ -15,7 +19,9 @@ import { quantityOf } from './quantities';
 import type { UnitPreferences } from './unitPreferences';
 import { plotCsv, plotCsvInDisplayUnits } from './plotCsv';
 
-const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555'];
+// sixteen that tell apart: a window of many curves repeats no colour before the seventeenth
+const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555',
+    '#8c6d1f', '#5fa8e8', '#e8845f', '#7cc47f', '#c59be0', '#2b3f8c', '#9e1f1f', '#a8a800'];
 
 /** A curve: its values in the base `unit`, shown in `display` when the user chose one. */
 interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string; display: DisplayUnit | null }
@@ -33,7 +39,8 @@ export class PlotWindow {
     private readonly units = new Map<string, string>();
     compare = false;
     private readonly body: HTMLElement;
-    private readonly surface = new PlotSurface();
+    private readonly surface: PlotSurface;
+    private readonly cursors: TwoCursors;
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
     private get plot(): uPlot | null { return this.surface.plot; }
@@ -51,12 +58,30 @@ export class PlotWindow {
     /** A unit choice per axis whose quantity has several units, and the CSV in those units. */
     private readonly unitBar: HTMLElement;
     private readonly unsubscribeUnits: () => void;
+    private readonly cursorsButton: HTMLButtonElement;
+    private readonly maximiseButton: HTMLButtonElement;
+    private readonly detachButton: HTMLButtonElement;
+    /** Where the window was in the list while it is in a browser window of its own. */
+    private readonly placeholder: HTMLElement;
+    private detached: Detached | null = null;
+    private maximised = false;
+    /** The axis unit of each plotted curve, in series order (series i + 1). */
+    private drawnAxes: Prefixed[] = [];
 
     constructor(readonly id: number, private readonly preferences: UnitPreferences, private readonly actions: {
         close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
         analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void;
     }) {
         this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
+        this.cursors = new TwoCursors(() => this.surface.legendRows(), (i, delta) => this.deltaText(i, delta));
+        this.surface = new PlotSurface({ beside: true, aside: this.cursors.readout });
+        this.cursorsButton = h('button', {
+            class: 'small', onclick: () => this.toggleCursors(), title: 'Two cursors: Δt and the Δvalue of each curve', 'aria-label': 'Two cursors', 'aria-pressed': 'false',
+        }, 'Δ');
+        this.maximiseButton = h('button', { class: 'small', onclick: () => this.setMaximised(!this.maximised), title: 'Maximise', 'aria-label': 'Maximise plot', 'aria-pressed': 'false' }, '⤢');
+        this.detachButton = h('button', { class: 'small', onclick: () => this.toggleDetached(), title: 'Open in a browser window of its own', 'aria-label': 'Detach plot' }, '↗');
+        this.placeholder = h('p', { class: 'plot-placeholder muted', 'data-plot-id': String(id) }, `Plot ${id} is open in a window of its own. `,
+            h('button', { class: 'small', onclick: () => this.detached?.close() }, 'Bring it back'));
         this.chips = h('div', { class: 'plot-chips' });
         this.compareBox = h('input', {
             type: 'checkbox', name: 'compare',
@@ -82,6 +107,7 @@ export class PlotWindow {
                     h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
                     h('button', { class: 'small', onclick: () => this.exportCsv(), title: 'Export the plotted data as CSV' }, 'CSV'),
                     h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
+                    this.cursorsButton, this.maximiseButton, this.detachButton,
                     h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×'))),
             this.unitBar, this.body);
         // a unit chosen here or in another window applies to every axis of its quantity
@@ -154,9 +180,9 @@ export class PlotWindow {
 
     unitOf(name: string): string { return this.units.get(name) ?? unitOfVariable(name); }
 
-    /** Whether a variable of this unit fits: one y axis per unit, at most three. */
+    /** Whether a variable of this unit fits: one y axis per unit, at most MAX_AXES (more only when the user asks). */
     hasRoomFor(unit: string): boolean {
-        const units = axisUnits(this.variables.map((v) => this.unitOf(v)));
+        const units = this.axisUnits();
         return units.includes(unit) || units.length < MAX_AXES;
     }
 
@@ -170,6 +196,68 @@ export class PlotWindow {
     step(by: number): void {
         this.shown = stepGeneration(this.runs, this.shown, by);
         this.actions.changed(this);
+    }
+
+    /** The units of the window's axes, in order. */
+    axisUnits(): string[] {
+        return axisUnits(this.variables.map((v) => this.unitOf(v)));
+    }
+
+    /** Fills the editor with the window (Esc restores it), as Hopsan users expect of a plot. */
+    private setMaximised(on: boolean): void {
+        if (on === this.maximised || (on && this.detached)) return;
+        this.maximised = on;
+        this.element.classList.toggle('maximised', on);
+        this.maximiseButton.setAttribute('aria-pressed', String(on));
+        this.maximiseButton.setAttribute('aria-label', on ? 'Restore plot' : 'Maximise plot');
+        this.maximiseButton.title = on ? 'Restore (Esc)' : 'Maximise';
+        this.maximiseButton.textContent = on ? '⤡' : '⤢';
+        // on the document: Esc restores wherever the focus is (and deselects nothing in the drawing)
+        if (on) document.addEventListener('keydown', this.escape, true);
+        else document.removeEventListener('keydown', this.escape, true);
+    }
+
+    private readonly escape = (e: KeyboardEvent): void => {
+        if (e.key !== 'Escape') return;
+        e.preventDefault();
+        e.stopPropagation();
+        this.setMaximised(false);
+    };
+
+    /** Into a browser window of its own, which keeps streaming; or back from it. */
+    private toggleDetached(): void {
+        if (this.detached) {
+            this.detached.close();
+            return;
+        }
+        this.setMaximised(false);
+        this.element.before(this.placeholder);
+        this.detached = detach(this.element, `Plot ${this.id}`, () => this.attachBack());
+        if (!this.detached) {
+            this.placeholder.remove();
+            toast('The browser blocked the new window: allow pop-ups for this site to detach a plot.', 'error');
+            return;
+        }
+        this.element.classList.add('detached');
+        this.surface.moved();
+        this.detachButton.setAttribute('aria-label', 'Attach plot');
+        this.detachButton.title = 'Back into the editor';
+        this.detachButton.textContent = '↙';
+    }
+
+    private attachBack(): void {
+        this.detached = null;
+        this.element.classList.remove('detached');
+        if (this.placeholder.isConnected) this.placeholder.replaceWith(this.element);
+        this.surface.moved();
+        this.detachButton.setAttribute('aria-label', 'Detach plot');
+        this.detachButton.title = 'Open in a browser window of its own';
+        this.detachButton.textContent = '↗';
+    }
+
+    private toggleCursors(): void {
+        this.cursors.toggle();
+        this.cursorsButton.setAttribute('aria-pressed', String(this.cursors.shown));
     }
 
     private onKey(e: KeyboardEvent): void {
@@ -217,6 +305,7 @@ export class PlotWindow {
         const data = alignSeries(plotted.map((p) => (p.display ? { time: p.source.time, data: toDisplayValues(p.source.data, p.display) } : p.source)));
         this.element.dataset.points = String(data[0].length);
         const axes = this.axes(plotted);
+        this.drawnAxes = plotted.map((p) => axes.find((a) => a.unit === p.unit)!.prefixed);
         // a new prefix (the values grew from kPa to MPa) needs new axes
         this.element.dataset.axes = axes.map((a) => a.prefixed.unit).join(',');
         const key = [...plotted.map((p) => p.label), ...axes.map((a) => a.prefixed.unit)].join('|');
@@ -240,6 +329,11 @@ export class PlotWindow {
         return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
     }
 
+    private deltaText(series: number, delta: number): string {
+        const axis = this.drawnAxes[series - 1];
+        return axis ? readout(delta, axis) : String(delta);
+    }
+
     private axes(plotted: Plotted[]): Axis[] {
         return axisUnits(plotted.map((p) => p.unit)).map((unit, i) => {
             const series = plotted.filter((p) => p.unit === unit);
@@ -256,10 +350,13 @@ export class PlotWindow {
             scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
             // the cursor moves in every plot window at once (same time axis)
             cursor: { drag: { x: true, y: false }, sync: { key: 'run-time' } },
-            legend: { live: true },
+            // the previous run's marker dashed like its curve
+            legend: { live: true, markers: { dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
+            hooks: { draw: [(u) => this.cursors.draw(u)] },
             axes: [{ label: 'time [s]', size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
                 scale: a.scale, label: a.prefixed.unit ? `[${a.prefixed.unit}]` : undefined, size: 64,
-                side: i === 1 ? 1 : 3, grid: { show: i === 0 },
+                // left, right, left, right: a fourth unit gets an axis of its own
+                side: i % 2 === 1 ? 1 : 3, grid: { show: i === 0 },
                 values: (_u, splits) => splits.map((v) => formatTick(v / a.prefixed.factor)),
             }))],
             series: [
@@ -295,6 +392,9 @@ export class PlotWindow {
     }
 
     destroy(): void {
+        this.setMaximised(false);
+        this.detached?.close();
+        this.placeholder.remove();
         this.unsubscribeUnits();
         this.surface.destroy();
         this.element.remove();
@@ -305,9 +405,9 @@ function formatTick(v: number): string {
     return Math.abs(v) < 1e-12 ? '0' : String(Number(v.toPrecision(4)));
 }
 
-/** The cursor read-out of a value in the unit of its axis ("219.063 bar"). */
+/** The cursor read-out of a value in the unit of its axis ("219.063 bar"; "-- bar" off the plot, so the legend always names the unit). */
 function readout(v: number | null, axis: Prefixed): string {
-    if (v === null) return '--';
+    if (v === null) return axis.unit ? `-- ${axis.unit}` : '--';
     const value = String(Number((v / axis.factor).toPrecision(6)));
     return axis.unit ? `${value} ${axis.unit}` : value;
 }

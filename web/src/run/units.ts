@@ -1,5 +1,5 @@
 // Units on plot axes: which unit a logged variable has, SI prefixes for the tick labels
-// (1.2e7 Pa reads 12 MPa), and the axes of a plot (one per unit, at most three).
+// (1.2e7 Pa reads 12 MPa), and the axes of a plot (one per unit, four before the user is asked).
 import { nodeVariables } from '../model/nodeTypes';
 
 /** The unit of "Comp#Port#Var" when every node type that has `Var` agrees on it ('' if unknown). */
@@ -25,7 +25,8 @@ export function siPrefix(largest: number, unit: string): Prefixed {
     return { factor, unit: `${prefix}${unit}` };
 }
 
-export const MAX_AXES = 3;
+/** Axes a plot window takes on its own; a variable of one more unit asks the user where it goes. */
+export const MAX_AXES = 4;
 
 /** Units in order of first appearance; the series of each unit share one axis. */
 export function axisUnits(units: string[]): string[] {
