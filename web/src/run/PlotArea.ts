@@ -1,5 +1,7 @@
-// The plot windows under the editor. Clicked variables go to the active window.
+// The plot windows under the editor. Clicked variables go to the active window; one of a unit
+// the window has no axis for, beyond four, waits for the user to say where it goes.
 import { PlotWindow } from './PlotWindow';
+import { AxisChoice, type PendingVariable } from './axisChoice';
 import { unitOfVariable } from './units';
 import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import { XyWindow } from './XyWindow';
@@ -18,16 +20,28 @@ export class PlotArea {
     private scheduled = false;
     private fetchedFor = 0;
     private readonly unsubscribe: () => void;
+    private readonly choice: AxisChoice<PlotWindow>;
 
     /**
      * `units` are the user's display units, shared by all windows; `onLayoutChange` is told when the
      * user adds or removes a variable or closes a window (to remember them).
      */
     constructor(private readonly runs: RunController, private readonly units: UnitPreferences,
-        private readonly onLayoutChange: () => void = () => undefined) {
+        private readonly onLayoutChange: () => void = () => undefined,
+        /** The model's signal sources: a Bode window's default input. */
+        private readonly sources: () => string[] = () => []) {
         this.list = h('div', { class: 'plot-list' });
+        this.choice = new AxisChoice<PlotWindow>({
+            addAxis: (w, variables) => this.addTo(w, variables),
+            newWindow: (variables) => {
+                const w = this.addWindow();
+                this.addTo(w, variables);
+                // where the user sees it, not below the fold of the run area
+                w.element.scrollIntoView({ block: 'nearest' });
+            },
+        });
         this.element = h('div', { class: 'plot-area' },
-            h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window')),
+            h('div', { class: 'plot-toolbar' }, h('button', { class: 'small', onclick: () => this.addWindow(), 'data-testid': 'new-plot' }, '+ New plot window'), this.choice.element),
             this.list);
         this.unsubscribe = runs.subscribe(() => {
             // variables added during a run were not streamed: load them when it ends
@@ -65,7 +79,7 @@ export class PlotArea {
         const w = new AnalysisWindow(this.nextId++, kind, variables, labelOf, (x) => {
             this.analyses.splice(this.analyses.indexOf(x), 1);
             x.destroy();
-        });
+        }, { sources: this.sources(), load: (names) => this.runs.ensure(names) });
         this.analyses.push(w);
         this.list.append(w.element);
         w.update(this.runs.current);
@@ -92,15 +106,28 @@ export class PlotArea {
     private close(w: PlotWindow): void {
         const i = this.windows.indexOf(w);
         if (i >= 0) this.windows.splice(i, 1);
+        if (this.choice.asking === w) this.choice.dismiss();
         w.destroy();
         if (this.active === w) this.active = this.windows.at(-1) ?? null;
         if (this.active) this.activate(this.active);
     }
 
-    /** Adds a variable to the active plot window (a new one if there is none, or if it has three units already). */
+    /**
+     * Adds a variable to the active plot window (a new one if there is none); if its unit would
+     * be one axis too many there, the user is asked whether to add the axis or open a window.
+     */
     addVariable(name: string, label?: string, unit = unitOfVariable(name)): void {
-        const w = this.active && this.active.hasRoomFor(unit) ? this.active : this.addWindow();
-        w.add(name, label, unit);
+        const w = this.active ?? this.addWindow();
+        if (!w.hasRoomFor(unit)) {
+            this.choice.ask(w, { name, label, unit });
+            return;
+        }
+        this.addTo(w, [{ name, label, unit }]);
+    }
+
+    private addTo(w: PlotWindow, variables: PendingVariable[]): void {
+        for (const v of variables) w.add(v.name, v.label, v.unit);
+        this.activate(w);
         this.refresh(w);
         this.onLayoutChange();
     }
@@ -130,14 +157,17 @@ export class PlotArea {
         this.runs.ensure(w.variables, w.shownRuns()).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
     }
 
-    // at most one redraw per animation frame while frames stream in
+    // at most one redraw per animation frame while frames stream in; a hidden page gets no
+    // animation frames, yet a plot detached into a window of its own must go on streaming
     private scheduleUpdate(): void {
         if (this.scheduled) return;
         this.scheduled = true;
-        requestAnimationFrame(() => {
+        const redraw = () => {
             this.scheduled = false;
             for (const w of this.windows) w.update(this.runs.generations);
             for (const a of this.analyses) a.update(this.runs.current);
-        });
+        };
+        if (document.hidden) setTimeout(redraw, 50);
+        else requestAnimationFrame(redraw);
     }
 }

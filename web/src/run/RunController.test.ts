@@ -242,4 +242,58 @@ describe('RunController', () => {
         expect(f.results).toHaveBeenCalledTimes(1);
         expect(f.results).toHaveBeenCalledWith(3, ['B#p#Pressure']);
     });
+
+    it('a run chosen from the history comes last, the run shown until then before it, and loads its results', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(9), stored(7), stored(5)]);
+        const told = vi.fn();
+        runs.subscribe(told);
+        await runs.choose(stored(5), ['B#p#Pressure']);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5]);
+        expect(told).toHaveBeenCalled();
+        expect(f.results).toHaveBeenCalledWith(5, ['B#p#Pressure']);
+        expect(runs.generations.at(-1)?.columns.get('B#p#Pressure')).toEqual([42, 43]);
+        expect(runs.current?.jobId).toBe(9);   // still the run the status names
+
+        // one no longer among them joins them, with its name, its state and its error
+        await runs.choose({ ...stored(2, 'failed'), name: 'too stiff', error: 'diverged' }, []);
+        const chosen = runs.generations.at(-1)!;
+        expect([chosen.jobId, chosen.label, chosen.state, chosen.error]).toEqual([2, 'too stiff', 'failed', 'diverged']);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5, 2]);
+
+        // a new run comes after it, and a history that arrives late replaces nothing
+        await runs.start({}, []);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5, 2, 10]);
+    });
+
+    it('a chosen run is not replaced by a history that arrives later', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        await runs.choose(stored(3), []);
+        runs.restore([stored(7), stored(5)]);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([3]);
+    });
+
+    it('runs without results cannot be chosen: dropped, cancelled or still running', async () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(7)]);
+        for (const job of [{ ...stored(5), results_dropped: true }, stored(4, 'cancelled'), stored(3, 'running')]) await runs.choose(job, ['B#p#Pressure']);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([7]);
+        expect(f.results).not.toHaveBeenCalled();
+    });
+
+    it('a renamed run names its curves by the new name, or by its job when the name is taken away', () => {
+        const f = fakeTransport();
+        const runs = new RunController(f.transport);
+        runs.restore([stored(7), stored(5)]);
+        const told = vi.fn();
+        runs.subscribe(told);
+        runs.rename({ ...stored(5), name: 'baseline' });
+        expect(runs.generations.map((r) => r.label)).toEqual(['baseline', 'run 7']);
+        runs.rename(stored(5));
+        expect(runs.generations[0].label).toBe('run 5');
+        expect(told).toHaveBeenCalledTimes(2);
+    });
 });

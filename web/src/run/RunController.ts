@@ -26,7 +26,10 @@ export interface RunTransport {
 export class RunController {
     current: RunData | null = null;
     previous: RunData | null = null;
-    /** The model's runs a plot window can step through, oldest first; the current one is the last. */
+    /**
+     * The model's runs a plot window can step through, oldest first, save that a run chosen
+     * from the history moves to the end (choose): windows show the last one.
+     */
     generations: RunData[] = [];
     private readonly early = new Map<number, ServerEvent[]>();
     private readonly listeners = new Set<() => void>();
@@ -75,15 +78,39 @@ export class RunController {
 
     /**
      * Shows the model's last finished runs from its run history (after a reload, say), unless a
-     * run was started meanwhile. Their data is loaded when plots ask for it (ensure).
+     * run was started or chosen meanwhile. Their data is loaded when plots ask for it (ensure).
      */
     restore(history: JobInfo[]): void {
-        if (this.current) return;
+        if (this.current || this.generations.length > 0) return;
         const restored = restorableRuns(history).slice(0, MAX_GENERATIONS).reverse().map(finishedRun);
         if (restored.length === 0) return;
         this.generations = restored;
         this.current = restored.at(-1)!;
         this.previous = restored.at(-2) ?? null;
+        this.emit();
+    }
+
+    /**
+     * Shows a run of the model's history in the plot windows, which show the last of the
+     * generations: the run moves (or, if not among them, comes) there, after the run shown until
+     * then, so "compare with previous run" sets the two against each other. Its results for
+     * `variables` are loaded. A new run comes after it as usual.
+     */
+    async choose(job: JobInfo, variables: string[]): Promise<void> {
+        if (!isChoosable(job)) return;
+        const run = this.generations.find((r) => r.jobId === job.id) ?? finishedRun(job);
+        if (this.generations.at(-1) !== run) {
+            this.generations = [...this.generations.filter((r) => r !== run), run].slice(-MAX_GENERATIONS);
+            this.emit();
+        }
+        await this.ensure(variables, [run]);
+    }
+
+    /** The user named a run (or took its name away): plots name its curves so. */
+    rename(job: JobInfo): void {
+        const run = this.generations.find((r) => r.jobId === job.id);
+        if (!run) return;
+        run.label = runLabel(job);
         this.emit();
     }
 
@@ -160,13 +187,22 @@ export class RunController {
     private emit(): void { for (const l of this.listeners) l(); }
 }
 
-/** A stored run that ended well, with no samples yet: ensure() loads those asked for. */
+/** A stored run that ended, with no samples yet: ensure() loads those asked for. */
 function finishedRun(job: JobInfo): RunData {
-    const run = new RunData(job.id, [], job.name || undefined);
-    run.state = 'done';
+    const run = new RunData(job.id, [], runLabel(job));
+    run.state = job.state;
     run.progress = 1;
+    run.error = job.error;
     run.stopReason = job.stop_reason ?? '';
     return run;
+}
+
+/** How plots and the run history name a run: the user's name for it, else "run 12". */
+export const runLabel = (job: Pick<JobInfo, 'id' | 'name'>) => job.name || `run ${job.id}`;
+
+/** A run of the history the plots can show: it ended, and the server still has its results. */
+export function isChoosable(job: JobInfo): boolean {
+    return (job.state === 'done' || job.state === 'failed') && !job.results_dropped;
 }
 
 /** Runs whose results the server stores: those that ended well, and failed ones up to the failure. */

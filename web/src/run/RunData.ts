@@ -26,7 +26,8 @@ export class RunData {
     /** Time span the run covers, when known: plots show all of it while the run fills it. */
     span: [number, number] | null = null;
 
-    constructor(readonly jobId: number, readonly variables: string[], readonly label = `run ${jobId}`) {}
+    /** `label` names the run's curves; the user may rename the run. */
+    constructor(readonly jobId: number, readonly variables: string[], public label = `run ${jobId}`) {}
 
     /**
      * Appends a frame's samples; frames of another job, or after event.resync, are ignored.

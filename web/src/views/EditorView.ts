@@ -9,11 +9,15 @@ import { createPalette } from '../editor/Palette';
 import { copySelection, Disconnect, GroupComponents, MoveComponents, Paste, RemoveComponents, SetSimulationSettings, UngroupSubsystem, type Clipboard } from '../editor/commands';
 import { RunController } from '../run/RunController';
 import { PlotArea } from '../run/PlotArea';
+import { signalSources } from '../analysis/bodeDefaults';
 import { RunPanel } from '../run/RunPanel';
+import { HistoryPanel } from '../run/HistoryPanel';
+import { parameterTexts } from '../run/runDifferences';
 import { HISTORY_PAGE, isLoggedVariable, loadPlots, savePlots } from '../run/runHistory';
 import { portVariables, sinkVariables } from '../model/variables';
 import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
+import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
 import type { Session } from '../app/Session';
 import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
@@ -77,7 +81,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
         onResubscribe: ws.onResubscribe.bind(ws) });
-    const plots = new PlotArea(runs, session.units, () => savePlots(localStorage, summary.id, plots.layout()));
+    const plots = new PlotArea(runs, session.units, () => savePlots(localStorage, summary.id, plots.layout()),
+        () => signalSources(store.model));
     void session.units.load();
     const runPanel = new RunPanel(runs, plots, opened.model.system.simulation, () => sinkVariables(store.model),
         (changed) => store.execute(new SetSimulationSettings(changed)));
@@ -258,14 +263,23 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     renderHeader();
 
     const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: pan · Shift+drag: select · Wheel: zoom · Drag port to port: connect · Click port: plot · Double-click subsystem: enter');
-    const layout = h('main', { class: 'editor' },
-        header,
-        h('div', { class: 'editor-body' },
-            createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())),
-            h('section', { class: 'canvas-column' }, breadcrumb, canvas.element, canvasHint),
-            panel.element),
-        h('section', { class: 'run-area' }, runPanel.element, plots.element),
-        picker);
+    const editorBody = h('div', { class: 'editor-body' },
+        createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())),
+        h('section', { class: 'canvas-column' }, breadcrumb, canvas.element, canvasHint),
+        panel.element);
+    const historyPanel = new HistoryPanel(rest, runs, { modelId: () => summary.id, username: () => session.user?.username,
+        parameters: () => parameterTexts(store.model), plotted: () => plots.allVariables() });
+    const runArea = h('section', { class: 'run-area' }, runPanel.element, h('div', { class: 'run-body' }, historyPanel.element, plots.element));
+    const layout = h('main', { class: 'editor' }, header, editorBody, runArea, picker);
+    // the drawing and the run area share the height as the user last left them
+    layout.insertBefore(createSplitter({
+        upper: editorBody, lower: runArea, storage: localStorage, storageKey: 'tlmhub.runAreaShare', initial: 0.5,
+        label: 'Resize the drawing and the plots',
+        apply: (share) => {
+            layout.style.setProperty('--drawing-rows', `${1 - share}fr`);
+            layout.style.setProperty('--run-rows', `${share}fr`);
+        },
+    }), runArea);
     root.replaceChildren(layout);
     // (render fits the view to the model)
     canvas.render();
@@ -345,6 +359,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             delete testHandle.__tlmhub;
             canvas.dispose();
             plots.dispose();
+            historyPanel.dispose();
             runs.dispose();
             ws.close();
         },
