@@ -24,19 +24,22 @@ async function save(page: Page): Promise<void> {
 test('the run history lists the runs, names their differences, keeps names and pins, and plots a chosen run', async ({ page }) => {
     await login(page, 'alice');
     await openExample(page, 'Position Servo');
-    // an own copy: a history of this test's runs only
+    const panel = page.getByRole('complementary', { name: 'Run history' });
+    const rows = panel.locator('.history-row');
+    await plotVariable(page, 'Position_Sensor', 'out', 'Value');
+    await runAndWait(page);
+    await expect(rows).not.toHaveCount(0);   // her runs of the example
+    // an own copy: a history of this test's runs only, from the moment it is saved
     await page.getByTestId('save').click();
     await expect(page.getByTestId('save')).toHaveText('Save');
+    await expect(rows).toHaveCount(0);
     await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
     const original = await page.getByLabel('k#Value value').inputValue();
-    await plotVariable(page, 'Position_Sensor', 'out', 'Value');
 
     const first = await runAndWait(page);
     await setGain(page, '0.02');
     await save(page);
     const second = await runAndWait(page);
-    const panel = page.getByRole('complementary', { name: 'Run history' });
-    const rows = panel.locator('.history-row');
     await expect(rows).toHaveCount(2);
 
     await page.reload();

@@ -192,6 +192,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                     headerKey = '';
                 }
                 toast(`Saved as your own copy "${reply.name}"`);
+                // the copy's runs from now on, not the example's; its plot windows are these
+                void historyPanel.reload();
+                savePlots(localStorage, summary.id, plots.layout());
             } else {
                 toast('Saved');
             }
