@@ -4,7 +4,7 @@
 
 namespace tlmhub::server {
 
-RunParameterDifferences::RunParameterDifferences(std::function<std::string()> currentHmf, const ModelLimits& limits)
+RunParameterDifferences::RunParameterDifferences(std::function<std::string()> currentHmf, ModelLimits limits)
     : mCurrentHmf(std::move(currentHmf)), mLimits(limits)
 {
 }

@@ -18,7 +18,7 @@ public:
     using Texts = std::map<std::string, std::string>;
 
     // `currentHmf` gives the model's text now; it is loaded at the first comparison.
-    RunParameterDifferences(std::function<std::string()> currentHmf, const ModelLimits& limits);
+    RunParameterDifferences(std::function<std::string()> currentHmf, ModelLimits limits);
 
     // The values of `used` that differ from the model now, at most `maxEntries` (the first by
     // path); `truncated` tells whether more differ.
@@ -34,7 +34,7 @@ private:
     const Texts& textsOf(const std::string& hmf);
 
     std::function<std::string()> mCurrentHmf;
-    const ModelLimits& mLimits;
+    const ModelLimits mLimits;
     std::unordered_map<std::string, Texts> mTextsByHmf;
     const Texts* mCurrent = nullptr;
 };
