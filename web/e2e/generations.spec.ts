@@ -1,16 +1,8 @@
 // Issue 38 item 3: a plot window steps through the model's runs (Hopsan's plot generations)
 // with ◀ ▶ and Ctrl+← Ctrl+→; each curve names its run; the newest run is shown by default,
 // with the run before it to compare.
-import { test, expect, type Page } from './fixtures';
-import { login, openExample, plotted, plotVariable, runAndWait } from './helpers';
-
-async function setGain(page: Page, value: string): Promise<void> {
-    await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
-    const gain = page.getByLabel('k#Value value');
-    await gain.fill(value);
-    await gain.press('Enter');
-    await expect(page.locator('.parameter-panel .field-error')).toHaveCount(0);
-}
+import { test, expect } from './fixtures';
+import { login, openExample, plotted, plotVariable, runAndWait, setServoGain } from './helpers';
 
 test('three runs overlaid and stepped through', async ({ page }) => {
     await login(page, 'bob');
@@ -24,7 +16,7 @@ test('three runs overlaid and stepped through', async ({ page }) => {
     const jobs: number[] = [];
     const curves: number[][] = [];
     for (const gain of ['0.001', '0.005', '0.02']) {
-        await setGain(page, gain);
+        await setServoGain(page, gain);
         const job = await runAndWait(page);
         await expect(plot).toHaveAttribute('data-job', String(job));
         await expect.poll(async () => (await plotted(page, position)).length).toBeGreaterThan(100);

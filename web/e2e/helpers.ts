@@ -84,3 +84,12 @@ export async function plotted(page: Page, name: string, previous = false): Promi
         return [...app.plots.windows[0].seriesData(n as string, p as boolean)];
     }, [name, previous] as const);
 }
+
+/** Sets Position Servo's proportional gain (GainP's input k) in the parameter panel. */
+export async function setServoGain(page: Page, value: string): Promise<void> {
+    await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
+    const gain = page.getByLabel('k#Value value');
+    await gain.fill(value);
+    await gain.press('Enter');
+    await expect(page.locator('.parameter-panel .field-error')).toHaveCount(0);
+}

@@ -4,17 +4,9 @@
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { test, expect, type Page } from './fixtures';
-import { login, openExample, plotVariable, runAndWait } from './helpers';
+import { login, openExample, plotVariable, runAndWait, setServoGain } from './helpers';
 
 const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));
-
-async function setGain(page: Page, value: string): Promise<void> {
-    await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
-    const gain = page.getByLabel('k#Value value');
-    await gain.fill(value);
-    await gain.press('Enter');
-    await expect(page.locator('.parameter-panel .field-error')).toHaveCount(0);
-}
 
 async function save(page: Page): Promise<void> {
     await page.getByTestId('save').click();
@@ -37,7 +29,7 @@ test('the run history lists the runs, names their differences, keeps names and p
     const original = await page.getByLabel('k#Value value').inputValue();
 
     const first = await runAndWait(page);
-    await setGain(page, '0.02');
+    await setServoGain(page, '0.02');
     await save(page);
     const second = await runAndWait(page);
     await expect(rows).toHaveCount(2);
@@ -83,7 +75,7 @@ test('the run history lists the runs, names their differences, keeps names and p
     await expect.poll(() => plot.getAttribute('data-points').then(Number)).toBeGreaterThan(10);
 
     // a third run comes first and is shown; the chosen one is shown again when clicked
-    await setGain(page, '0.005');
+    await setServoGain(page, '0.005');
     await save(page);
     const third = await runAndWait(page);
     await expect(rows).toHaveCount(3);
