@@ -20,8 +20,11 @@ void ProgressDisplay::update(double fraction, const std::string& detail)
     const std::string suffix = detail.empty() ? "" : " " + detail;
     if (!mTerminal) {
         const int tenths = percent / 10;
-        if (tenths <= mTenthsShown) return;
+        // At 100 % a study may still be running: its final state gets a line of its own.
+        const bool newState = tenths == 10 && suffix != mSuffixShown;
+        if (tenths <= mTenthsShown && !newState) return;
         mTenthsShown = tenths;
+        mSuffixShown = suffix;
         std::fprintf(mOut, "%s: %d %%%s\n", mLabel.c_str(), tenths * 10, suffix.c_str());
         std::fflush(mOut);
         return;

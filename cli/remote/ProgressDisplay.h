@@ -24,6 +24,7 @@ private:
     std::FILE* mOut;
     bool mTerminal;
     int mTenthsShown = -1;      // piped: the last 10 % step printed
+    std::string mSuffixShown;   // piped: the detail printed with it
     std::string mDrawn;         // terminal: the bar as last drawn
 };
 
