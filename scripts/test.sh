@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Install dependencies, build, and run the whole test suite: unit tests, server tests on a
 # real server process, validation against Hopsan's reference results in ../shared, and the
-# web app's unit and browser tests (Debian's Chromium). Then the same tests and the fuzz
-# targets under ASan+UBSan, and the tests that start threads or child processes (label
-# threads: the multi-threaded simulation, the job queue, the server's I/O threads and
-# workers, in process and in the server processes the tests start) under TSan; the sanitizer
+# web app's unit and browser tests (Debian's Chromium). Then the tests that start threads or
+# child processes (label threads: the multi-threaded simulation, the job queue, the server's
+# I/O threads and workers, in process and in the server processes the tests start) under
+# TSan, and the same tests as Release and the fuzz targets under ASan+UBSan; the sanitizer
 # stages leave out the web app, the shared models, validation, the Python client (it drives
 # the same routes the server tests do) and the multi-process scale-out faults.
 #
@@ -41,8 +41,20 @@ use_tmpfs_scratch() {
   rm "$dir/exec-probe"
   chmod 1777 "$dir"
   export TMPDIR=$dir
-  trap 'rm -rf "$TMPDIR"' EXIT
+  scratch_dir=$dir
 }
+scratch_dir=
+background_pid=
+# On any exit: stop a build still running in the background, then remove the scratch files.
+cleanup() {
+  if [ -n "$background_pid" ]; then
+    # The group, or the process itself if it has not yet made its group.
+    kill -TERM -- "-$background_pid" 2>/dev/null || kill -TERM "$background_pid" 2>/dev/null || true
+    wait "$background_pid" 2>/dev/null || true
+  fi
+  [ -z "$scratch_dir" ] || rm -rf "$scratch_dir"
+}
+trap cleanup EXIT
 use_tmpfs_scratch
 
 # Prints a stage's wall time and the CPU time of everything it ran (user + system of the
@@ -136,13 +148,49 @@ tsan_test() {
     run_tests tsan-test build-tsan -j"$jobs" -L '^threads$' -LE "$sanitizer_excluded"
 }
 
+# A sanitizer build runs beside the test stage before it, in the idle scheduling class
+# (SCHED_IDLE): it gets only the CPU the tests leave, which is much of it, since they wait on
+# sockets, servers and the browser (the Release tests kept 1.3 of 2 cores busy, TSan's 1.7),
+# and a test thread that wakes takes its core back at once. Its output is printed when it ends;
+# its wall time counts from its start, beside the other stage.
+start_background_stage() {
+  background_name=$1
+  background_log=$root/build/$1.log
+  # setsid: its own process group, which cleanup() stops as a whole.
+  setsid bash -c 'chrt --idle -p 0 $$ >/dev/null && exec bash "$@"' background \
+    "$root/scripts/test.sh" --background-stage "$1" >"$background_log" 2>&1 &
+  background_pid=$!
+}
+finish_background_stage() {
+  local status=0
+  wait "$background_pid" || status=$?
+  background_pid=
+  cat "$background_log"
+  if [ "$status" -ne 0 ]; then
+    echo "stage $background_name failed (exit $status)"
+    return "$status"
+  fi
+}
+# scripts/test.sh --background-stage NAME: one build stage, as start_background_stage runs it.
+if [ "${1:-}" = --background-stage ]; then
+  trap - EXIT
+  case $2 in
+    tsan-build) stage "tsan-build (beside the Release tests, idle priority)" tsan_build ;;
+    asan-build) stage "asan-build (beside the TSan tests, idle priority)" asan_build ;;
+    *) echo "unknown background stage: $2" >&2; exit 2 ;;
+  esac
+  exit 0
+fi
+
 stage install scripts/install-deps.sh --with-browser --with-clang
 stage build release_build
+start_background_stage tsan-build
 stage test release_test
-stage asan-build asan_build
-stage asan-test asan_test
-stage tsan-build tsan_build
+finish_background_stage
+start_background_stage asan-build
 stage tsan-test tsan_test
+finish_background_stage
+stage asan-test asan_test
 echo "total: $SECONDS s"
 if [ "$SECONDS" -gt "$budget_seconds" ]; then
   echo "WARNING: scripts/test.sh took $SECONDS s, over its budget of $budget_seconds s (45 minutes; CI stops at 90):" \

@@ -17,7 +17,7 @@ Arguments optimiseArguments(const std::vector<std::string>& args)
     return Arguments(args, {"algorithm", "max-evaluations", "seed", "csv"}, {"bound", "objective"}, {"maximise"});
 }
 
-TEST(StudyRequest, ARangeAndAListSweep)
+TEST(RemoteStudyRequest, ARangeAndAListSweep)
 {
     const nlohmann::json request = sweepRequest(
         "pump", sweepArguments({"m.hmf", "--vary", "Valve.Kv=1:5:10", "--vary", "Pump.Dp=1e-5,2e-5", "--output",
@@ -29,7 +29,7 @@ TEST(StudyRequest, ARangeAndAListSweep)
                                                  "Pump.Dp": [1e-5, 2e-5]}}})"));
 }
 
-TEST(StudyRequest, ListModeAndNoOutputs)
+TEST(RemoteStudyRequest, ListModeAndNoOutputs)
 {
     const nlohmann::json request =
         sweepRequest("m", sweepArguments({"m.hmf", "--vary=a=1,2", "--vary", "Sub$C.p=3,4", "--mode", "list"}));
@@ -38,7 +38,7 @@ TEST(StudyRequest, ListModeAndNoOutputs)
               nlohmann::json::parse(R"({"mode": "list", "parameters": {"a": [1, 2], "Sub$C.p": [3, 4]}})"));
 }
 
-TEST(StudyRequest, BadSweepOptionsAreUsageErrors)
+TEST(RemoteStudyRequest, BadSweepOptionsAreUsageErrors)
 {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"m.hmf"},
@@ -54,7 +54,7 @@ TEST(StudyRequest, BadSweepOptionsAreUsageErrors)
         EXPECT_THROW(sweepRequest("m", sweepArguments(args)), UsageError) << args.back();
 }
 
-TEST(StudyRequest, OptimiseWithWeightedTerms)
+TEST(RemoteStudyRequest, OptimiseWithWeightedTerms)
 {
     const nlohmann::json request = optimiseRequest(
         "servo", optimiseArguments({"m.hmf", "--bound", "Kp.k=0:0.01", "--bound", "Ki.k=0:0.1", "--objective",
@@ -73,7 +73,7 @@ TEST(StudyRequest, OptimiseWithWeightedTerms)
           "max_evaluations": 200, "seed": 1}})"));
 }
 
-TEST(StudyRequest, OptimiseDefaults)
+TEST(RemoteStudyRequest, OptimiseDefaults)
 {
     const nlohmann::json request =
         optimiseRequest("m", optimiseArguments({"m.hmf", "--bound", "a=1:2", "--objective", "mean:V"}));
@@ -83,7 +83,7 @@ TEST(StudyRequest, OptimiseDefaults)
     EXPECT_FALSE(request["optimise"].contains("seed"));
 }
 
-TEST(StudyRequest, BadOptimiseOptionsAreUsageErrors)
+TEST(RemoteStudyRequest, BadOptimiseOptionsAreUsageErrors)
 {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"m.hmf", "--objective", "final:V"},
@@ -100,7 +100,7 @@ TEST(StudyRequest, BadOptimiseOptionsAreUsageErrors)
         EXPECT_THROW(optimiseRequest("m", optimiseArguments(args)), UsageError) << args.back();
 }
 
-TEST(StudyRequest, ParametersAreNumbersWhenTheyAreNumbers)
+TEST(RemoteStudyRequest, ParametersAreNumbersWhenTheyAreNumbers)
 {
     EXPECT_EQ(parameterValues({"Gain.k=0.5", "Step.t_step=2*t0", "relief_pressure=-1e7"}),
               nlohmann::json::parse(R"({"Gain.k": 0.5, "Step.t_step": "2*t0", "relief_pressure": -1e7})"));
