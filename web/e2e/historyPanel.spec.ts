@@ -1,6 +1,6 @@
 // Issue 38 items 2 and 3: the run history beside the plots. After a reload it lists the
 // model's runs; hovering one names the parameters it used otherwise than the latest run; a
-// run's name and pin are kept; a clicked run is shown in the plot window.
+// run's name and pin are kept; a clicked run is shown in the plot window, in its place in time.
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { test, expect, type Page } from './fixtures';
@@ -82,9 +82,13 @@ test('the run history lists the runs, names their differences, keeps names and p
     await expect(plot).toHaveAttribute('data-job', String(third));
     await older.locator('.history-show').click();
     await expect(plot).toHaveAttribute('data-job', String(first));
-    // compared with the run shown until then, the latest
+    // in its place in time, the oldest of the three, whenever it was chosen
+    await expect(plot.getByTestId('generation')).toHaveText('baseline (1 of 3)');
+    // the middle one, compared with the run before it in time
+    await newer.locator('.history-show').click();
+    await expect(plot.getByTestId('generation')).toHaveText(`run ${second} (2 of 3)`);
     await plot.locator('input[name="compare"]').check();
-    await expect(plot.locator('.u-legend .u-series:not(:first-child) .u-label')).toHaveText([/\(baseline\)$/, new RegExp(`\\(run ${third}\\)$`)]);
+    await expect(plot.locator('.u-legend .u-series:not(:first-child) .u-label')).toHaveText([new RegExp(`\\(run ${second}\\)$`), /\(baseline\)$/]);
 
     await page.mouse.move(0, 0);
     await expect(page.locator('.toast')).toHaveCount(0, { timeout: 10_000 });

@@ -1,5 +1,5 @@
 // A window with the spectrum (FFT) of one plotted variable or the Bode diagram of one against
-// another, over a chosen time range and window, from the current run; CSV and PNG export.
+// another, over a chosen time range and window, from the run its plot window shows; CSV and PNG export.
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
 import { DerivedPlotFrame } from './DerivedPlotFrame';

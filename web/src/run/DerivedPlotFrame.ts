@@ -1,4 +1,4 @@
-// The frame of a window that plots something derived from the current run (a spectrum, a
+// The frame of a window that plots something derived from a run (a spectrum, a
 // Bode diagram, an XY curve): a header with the window's own controls, a time range, a note,
 // CSV, PNG and close buttons, and the window's plot (or plots) below. It also tells its window
 // when the run has changed, so the window recomputes only then.

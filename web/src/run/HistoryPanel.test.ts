@@ -113,8 +113,8 @@ describe('HistoryPanel', () => {
         expect(row(9).getAttribute('aria-current')).toBe('true');
         row(8).querySelector<HTMLElement>('.history-show')!.click();
         await settle();
-        expect(runs.generations.at(-1)?.jobId).toBe(8);
-        expect(runs.generations.at(-1)?.columns.get('Mass#P2#Position')).toEqual([1, 2]);
+        expect(runs.chosen?.jobId).toBe(8);
+        expect(runs.chosen?.columns.get('Mass#P2#Position')).toEqual([1, 2]);
         expect(row(8).getAttribute('aria-current')).toBe('true');
         expect(row(9).hasAttribute('aria-current')).toBe(false);
 
@@ -122,7 +122,7 @@ describe('HistoryPanel', () => {
         expect(row(7).querySelector('.history-show')?.getAttribute('aria-disabled')).toBe('true');
         row(7).querySelector<HTMLElement>('.history-show')!.click();
         await settle();
-        expect(runs.generations.at(-1)?.jobId).toBe(8);
+        expect(runs.chosen?.jobId).toBe(8);
     });
 
     it('loads older runs with More, and lists the runs again when one ends', async () => {

@@ -93,7 +93,7 @@ export class HistoryPanel {
             const listed = current === null || this.jobs.some((j) => j.id === current.jobId && j.state === current.state);
             if (!listed) void this.reload();
         }
-        const shown = this.runs.generations.at(-1)?.jobId ?? null;
+        const shown = this.shownRun();
         if (shown !== this.shownJob) {
             this.shownJob = shown;
             for (const row of this.list.children) this.markShown(row as HTMLElement);
@@ -152,9 +152,14 @@ export class HistoryPanel {
         return row;
     }
 
+    /** The run the plot windows show, unless one stepped elsewhere: the chosen one, else the newest. */
+    private shownRun(): number | null {
+        return (this.runs.chosen ?? this.runs.generations.at(-1))?.jobId ?? null;
+    }
+
     /** The run the plot windows show stands out. */
     private markShown(row: HTMLElement): void {
-        const shown = row.dataset.job === String(this.runs.generations.at(-1)?.jobId);
+        const shown = row.dataset.job === String(this.shownRun());
         row.classList.toggle('shown', shown);
         if (shown) row.setAttribute('aria-current', 'true');
         else row.removeAttribute('aria-current');

@@ -1,5 +1,7 @@
 // The plot windows under the editor. Clicked variables go to the active window; one of a unit
-// the window has no axis for, beyond four, waits for the user to say where it goes.
+// the window has no axis for, beyond four, waits for the user to say where it goes. A run chosen
+// in the run history is shown in every window; an FFT, Bode or XY window analyses the run its
+// plot window shows.
 import { PlotWindow } from './PlotWindow';
 import { AxisChoice, type PendingVariable } from './axisChoice';
 import { unitOfVariable } from './units';
@@ -14,23 +16,29 @@ export class PlotArea {
     readonly element: HTMLElement;
     readonly windows: PlotWindow[] = [];
     readonly analyses: (AnalysisWindow | XyWindow)[] = [];
+    /** The plot window each analysis was opened from: it analyses the run that window shows. */
+    private readonly analysed = new Map<AnalysisWindow | XyWindow, PlotWindow>();
     private active: PlotWindow | null = null;
     private nextId = 1;
     private readonly list: HTMLElement;
     private scheduled = false;
+    /** A zoom or pan waiting to be remembered: at most one save per pause of the mouse, not one per frame. */
+    private zoomSave: ReturnType<typeof setTimeout> | undefined;
     private fetchedFor = 0;
     private readonly unsubscribe: () => void;
+    private readonly unsubscribeChoice: () => void;
     private readonly choice: AxisChoice<PlotWindow>;
 
     /**
      * `units` are the user's display units, shared by all windows; `onLayoutChange` is told when the
-     * user adds or removes a variable or closes a window (to remember them).
+     * user adds or removes a variable, closes a window or has zoomed one (to remember them).
      */
     constructor(private readonly runs: RunController, private readonly units: UnitPreferences,
         private readonly onLayoutChange: () => void = () => undefined,
         /** The model's signal sources: a Bode window's default input. */
         private readonly sources: () => string[] = () => []) {
         this.list = h('div', { class: 'plot-list' });
+        window.addEventListener('pagehide', this.saveZoom);
         this.choice = new AxisChoice<PlotWindow>({
             addAxis: (w, variables) => this.addTo(w, variables),
             newWindow: (variables) => {
@@ -52,13 +60,22 @@ export class PlotArea {
             }
             this.scheduleUpdate();
         });
+        this.unsubscribeChoice = runs.onChoose((run) => {
+            for (const w of this.windows) {
+                w.show(run.jobId);
+                this.refresh(w);
+            }
+        });
     }
 
     /** Closes every window (the editor was left): their resize observers stop, and runs are no longer followed. */
     dispose(): void {
+        this.saveZoom();
+        window.removeEventListener('pagehide', this.saveZoom);
         this.unsubscribe();
+        this.unsubscribeChoice();
         for (const w of [...this.windows]) this.close(w);
-        for (const a of this.analyses.splice(0)) a.destroy();
+        for (const a of [...this.analyses]) this.closeAnalysis(a);
     }
 
     addWindow(): PlotWindow {
@@ -66,7 +83,8 @@ export class PlotArea {
             close: (x) => { this.close(x); this.onLayoutChange(); },
             activate: (x) => this.activate(x),
             changed: (x) => { this.refresh(x); this.onLayoutChange(); },
-            analyse: (x, kind) => (kind === 'xy' ? this.openXy(x.variables, (v) => x.labelOf(v)) : this.openAnalysis(kind, x.variables, (v) => x.labelOf(v))),
+            zoomed: () => this.saveZoomSoon(),
+            analyse: (x, kind) => (kind === 'xy' ? this.openXy(x) : this.openAnalysis(kind, x)),
         });
         this.windows.push(w);
         this.list.append(w.element);
@@ -75,27 +93,34 @@ export class PlotArea {
     }
 
     /** A spectrum or Bode window of variables of a plot window (the first one or two chosen). */
-    openAnalysis(kind: AnalysisKind, variables: string[], labelOf: (name: string) => string): AnalysisWindow {
-        const w = new AnalysisWindow(this.nextId++, kind, variables, labelOf, (x) => {
-            this.analyses.splice(this.analyses.indexOf(x), 1);
-            x.destroy();
-        }, { sources: this.sources(), load: (names) => this.runs.ensure(names) });
-        this.analyses.push(w);
-        this.list.append(w.element);
-        w.update(this.runs.current);
-        return w;
+    openAnalysis(kind: AnalysisKind, plot: PlotWindow): AnalysisWindow {
+        const w = new AnalysisWindow(this.nextId++, kind, plot.variables, (v) => plot.labelOf(v), (x) => this.closeAnalysis(x),
+            { sources: this.sources(), load: (names) => this.runs.ensure(names, [plot.shownRun()]) });
+        return this.addAnalysis(w, plot);
     }
 
     /** An XY plot of two variables of a plot window. */
-    openXy(variables: string[], labelOf: (name: string) => string): XyWindow {
-        const w = new XyWindow(this.nextId++, variables, labelOf, (x) => {
-            this.analyses.splice(this.analyses.indexOf(x), 1);
-            x.destroy();
-        });
+    openXy(plot: PlotWindow): XyWindow {
+        return this.addAnalysis(new XyWindow(this.nextId++, plot.variables, (v) => plot.labelOf(v), (x) => this.closeAnalysis(x)), plot);
+    }
+
+    private addAnalysis<W extends AnalysisWindow | XyWindow>(w: W, plot: PlotWindow): W {
         this.analyses.push(w);
+        this.analysed.set(w, plot);
         this.list.append(w.element);
-        w.update(this.runs.current);
+        w.update(plot.shownRun());
         return w;
+    }
+
+    private closeAnalysis(w: AnalysisWindow | XyWindow): void {
+        this.analyses.splice(this.analyses.indexOf(w), 1);
+        this.analysed.delete(w);
+        w.destroy();
+    }
+
+    /** Analyses follow the run their plot window shows (one whose window was closed keeps the run it had). */
+    private updateAnalyses(): void {
+        for (const a of this.analyses) a.update(this.analysed.get(a)!.shownRun());
     }
 
     private activate(w: PlotWindow): void {
@@ -132,19 +157,37 @@ export class PlotArea {
         this.onLayoutChange();
     }
 
-    /** The plot windows' variables as they are shown, to open them again later. */
+    /** The plot windows' variables as they are shown, and their zooms, to open them again later. */
     layout(): SavedPlots {
-        return this.windows.map((w) => w.variables.map((name) => ({ name, label: w.labelOf(name), unit: w.unitOf(name) })));
+        return this.windows.map((w) => {
+            const variables = w.variables.map((name) => ({ name, label: w.labelOf(name), unit: w.unitOf(name) }));
+            const zoom = w.zoom();
+            return zoom ? { variables, zoom } : { variables };
+        });
     }
 
-    /** Opens a window per saved one, with its variables. */
+    /** Opens a window per saved one, with its variables and zoom. */
     openLayout(saved: SavedPlots): void {
-        for (const variables of saved) {
+        for (const { variables, zoom } of saved) {
             const w = this.addWindow();
             for (const v of variables) w.add(v.name, v.label, v.unit);
+            if (zoom) w.restoreZoom(zoom);
             this.refresh(w);
         }
     }
+
+    private saveZoomSoon(): void {
+        clearTimeout(this.zoomSave);
+        this.zoomSave = setTimeout(this.saveZoom, 400);
+    }
+
+    // also when the page goes (a reload right after a zoom)
+    private readonly saveZoom = (): void => {
+        if (this.zoomSave === undefined) return;
+        clearTimeout(this.zoomSave);
+        this.zoomSave = undefined;
+        this.onLayoutChange();
+    };
 
     /** Every plotted variable, in window order, without repeats. */
     allVariables(): string[] {
@@ -153,6 +196,7 @@ export class PlotArea {
 
     private refresh(w: PlotWindow): void {
         w.update(this.runs.generations);
+        this.updateAnalyses();
         // (a run still going has no stored results: ensure() passes it over)
         this.runs.ensure(w.variables, w.shownRuns()).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
     }
@@ -165,7 +209,7 @@ export class PlotArea {
         const redraw = () => {
             this.scheduled = false;
             for (const w of this.windows) w.update(this.runs.generations);
-            for (const a of this.analyses) a.update(this.runs.current);
+            this.updateAnalyses();
         };
         if (document.hidden) setTimeout(redraw, 50);
         else requestAnimationFrame(redraw);

@@ -1,6 +1,7 @@
 // One plot window: chosen variables of one of the model's runs, the newest unless the user
-// stepped back (◀ ▶, Ctrl+← Ctrl+→), and the run before it to compare; live while the run goes
-// on; each curve names its run; zoom by dragging, cursor read-out in the legend, CSV and PNG.
+// stepped back (◀ ▶, Ctrl+← Ctrl+→), and the run before it (or all the others) to compare;
+// live while the run goes on; each curve names its run; on demand, each variable's difference
+// between two runs (A − B); zoom by dragging, cursor read-out in the legend, CSV and PNG.
 // Each axis shows the display unit the user chose for its quantity, or SI prefixes.
 // The legend is a compact column beside the graph, one row per curve; two cursors give Δt and
 // Δvalue; the window can fill the editor (maximised) or move into a browser window of its own.
@@ -14,20 +15,32 @@ import { detach, type Detached } from './detachedPlot';
 import type { AnalysisKind } from './AnalysisWindow';
 import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
 import { generationText, shownRuns, stepGeneration } from './generations';
+import { DifferenceChoice } from './DifferenceChoice';
+import { curveDifference } from './curveDifference';
 import { displayUnitsOf, toDisplayValues, type DisplayUnit } from './displayUnits';
 import { quantityOf } from './quantities';
 import type { UnitPreferences } from './unitPreferences';
 import { plotCsv, plotCsvInDisplayUnits } from './plotCsv';
+import { envelopePaths } from './envelopePaths';
+import { fittedRange } from './fittedRange';
+import { WheelZoom } from './wheelZoom';
+import type { SavedZoom } from './runHistory';
 
 // sixteen that tell apart: a window of many curves repeats no colour before the seventeenth
 const COLOURS = ['#1f6fd1', '#d1421f', '#2e8b3d', '#8a4fbf', '#d17a00', '#0f9a9a', '#b8336a', '#555555',
     '#8c6d1f', '#5fa8e8', '#e8845f', '#7cc47f', '#c59be0', '#2b3f8c', '#9e1f1f', '#a8a800'];
 
-/** A curve: its values in the base `unit`, shown in `display` when the user chose one. */
-interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; colour: string; unit: string; display: DisplayUnit | null }
+/**
+ * A curve: its values in the base `unit`, shown in `display` when the user chose one. A
+ * `difference` curve is the variable's A − B of the two runs it names ("run 3 − run 2").
+ */
+interface Plotted { name: string; label: string; source: SeriesSource; previous: boolean; difference?: string; colour: string; unit: string; display: DisplayUnit | null }
 
 /** One y axis: the series of one base unit, in the chosen display unit or with the SI prefix its values need. */
 interface Axis { unit: string; scale: string; prefixed: Prefixed }
+
+/** The time axis, named as Hopsan names it. */
+const TIME_AXIS = 'Time [s]';
 
 const largestAbs = (values: number[]) => values.reduce((m, v) => (Number.isFinite(v) ? Math.max(m, Math.abs(v)) : m), 0);
 
@@ -38,11 +51,14 @@ export class PlotWindow {
     private readonly labels = new Map<string, string>();
     private readonly units = new Map<string, string>();
     compare = false;
+    /** Every run of the window drawn, the shown one solid: overrides compare. */
+    allRuns = false;
     private readonly body: HTMLElement;
     private readonly surface: PlotSurface;
     private readonly cursors: TwoCursors;
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
+    private readonly allRunsBox: HTMLInputElement;
     private get plot(): uPlot | null { return this.surface.plot; }
     private seriesKey = '';
     private plotted: Plotted[] = [];
@@ -55,6 +71,7 @@ export class PlotWindow {
     private readonly earlierButton: HTMLButtonElement;
     private readonly laterButton: HTMLButtonElement;
     private readonly generation: HTMLElement;
+    private readonly difference: DifferenceChoice;
     /** A unit choice per axis whose quantity has several units, and the CSV in those units. */
     private readonly unitBar: HTMLElement;
     private readonly unsubscribeUnits: () => void;
@@ -67,10 +84,14 @@ export class PlotWindow {
     private maximised = false;
     /** The axis unit of each plotted curve, in series order (series i + 1). */
     private drawnAxes: Prefixed[] = [];
+    /** Wheel zoom and pan of the chart drawn. */
+    private wheelZoom: WheelZoom | null = null;
+    /** The zoom the window had before a reload, shown again until the user zooms or a run streams in. */
+    private restoredZoom: SavedZoom | null = null;
 
     constructor(readonly id: number, private readonly preferences: UnitPreferences, private readonly actions: {
         close(w: PlotWindow): void; activate(w: PlotWindow): void; changed(w: PlotWindow): void;
-        analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void;
+        analyse(w: PlotWindow, kind: AnalysisKind | 'xy'): void; zoomed(w: PlotWindow): void;
     }) {
         this.body = h('div', { class: 'plot-body' }, this.emptyNote('Click a port to plot its variables here.'));
         this.cursors = new TwoCursors(() => this.surface.legendRows(), (i, delta) => this.deltaText(i, delta));
@@ -87,9 +108,14 @@ export class PlotWindow {
             type: 'checkbox', name: 'compare',
             onchange: () => { this.compare = this.compareBox.checked; this.actions.changed(this); },
         });
+        this.allRunsBox = h('input', {
+            type: 'checkbox', name: 'allRuns',
+            onchange: () => { this.allRuns = this.allRunsBox.checked; this.actions.changed(this); },
+        });
         this.earlierButton = h('button', { class: 'small', onclick: () => this.step(-1), title: 'Earlier run (Ctrl+←)', 'aria-label': 'Earlier run' }, '◀');
         this.laterButton = h('button', { class: 'small', onclick: () => this.step(1), title: 'Later run (Ctrl+→)', 'aria-label': 'Later run' }, '▶');
         this.generation = h('span', { class: 'generation', 'data-testid': 'generation' });
+        this.difference = new DifferenceChoice(() => this.actions.changed(this));
         this.unitBar = h('div', { class: 'plot-units', hidden: true });
         this.element = h('section', {
             class: 'plot-window', 'data-plot-id': String(id), tabindex: 0,
@@ -102,6 +128,8 @@ export class PlotWindow {
                 h('div', { class: 'plot-controls' },
                     h('span', { class: 'generations' }, this.earlierButton, this.generation, this.laterButton),
                     h('label', { class: 'compare', title: 'Show the previous run dashed' }, this.compareBox, 'compare with previous run'),
+                    h('label', { class: 'compare', title: 'Show every other run dashed, the older the paler' }, this.allRunsBox, 'all runs'),
+                    this.difference.button,
                     h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'fft'), title: 'Amplitude spectrum of a plotted variable' }, 'FFT'),
                     h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'bode'), title: 'Gain and phase of one plotted variable against another' }, 'Bode'),
                     h('button', { class: 'small', onclick: () => this.actions.analyse(this, 'xy'), title: 'One plotted variable over another' }, 'XY'),
@@ -109,7 +137,8 @@ export class PlotWindow {
                     h('button', { class: 'small', onclick: () => this.exportPng(), title: 'Save the plot as PNG' }, 'PNG'),
                     this.cursorsButton, this.maximiseButton, this.detachButton,
                     h('button', { class: 'small', onclick: () => this.actions.close(this), title: 'Close', 'aria-label': 'Close plot' }, '×'))),
-            this.unitBar, this.body);
+            this.unitBar, this.difference.bar, this.body);
+        this.element.dataset.timeAxis = TIME_AXIS;
         // a unit chosen here or in another window applies to every axis of its quantity
         this.unsubscribeUnits = preferences.subscribe(() => {
             this.drawUnitBar();
@@ -186,11 +215,19 @@ export class PlotWindow {
         return units.includes(unit) || units.length < MAX_AXES;
     }
 
-    /** The run shown and the one before it, whose data the window needs. */
-    shownRuns(): (RunData | null)[] {
+    /** The run the window shows: its FFT, Bode and XY windows analyse it. */
+    shownRun(): RunData | null { return shownRuns(this.runs, this.shown).run; }
+
+    /** The runs whose data the window needs: the shown one, the one before it, and a difference's two. */
+    shownRuns(): RunData[] {
         const { run, before } = shownRuns(this.runs, this.shown);
-        return [run, before];
+        const pair = this.difference.pair(this.runs, this.shown);
+        const others = this.allRuns ? this.runs : [before];
+        return [...new Set([run, ...others, pair?.a, pair?.b])].filter((r): r is RunData => !!r);
     }
+
+    /** Shows the run of job `jobId` (chosen from the run history) until the user steps or a new run comes. */
+    show(jobId: number): void { this.shown = jobId; }
 
     /** Shows the run `by` runs later (or earlier, if negative) than the one shown. */
     step(by: number): void {
@@ -274,9 +311,15 @@ export class PlotWindow {
         if (runs.at(-1) !== this.runs.at(-1)) this.shown = null;
         this.runs = runs;
         const { run: current, before: previous } = shownRuns(runs, this.shown);
+        // showing the newest run means following the runs that come after it
+        if (current === runs.at(-1)) this.shown = null;
+        const pair = this.difference.pair(runs, this.shown);
+        this.difference.draw(runs, pair);
         this.generation.textContent = generationText(runs, this.shown);
         this.earlierButton.disabled = previous === null;
         this.laterButton.disabled = this.shown === null;
+        // the runs drawn dashed beside the shown one, the newest first
+        const compared = this.allRuns ? runs.filter((r) => r !== current).reverse() : this.compare && previous ? [previous] : [];
         const plotted: Plotted[] = [];
         this.variables.forEach((name, i) => {
             const colour = COLOURS[i % COLOURS.length];
@@ -286,13 +329,24 @@ export class PlotWindow {
             const label = (run: RunData) => `${this.labelOf(name)} (${run.label})${display ? ` [${display.name}]` : ''}`;
             const col = current?.columns.get(name);
             if (current && col) plotted.push({ name, label: label(current), source: { time: current.time, data: col }, previous: false, colour, unit, display });
-            const old = previous?.columns.get(name);
-            if (this.compare && previous && old) {
-                plotted.push({ name, label: label(previous), source: { time: previous.time, data: old }, previous: true, colour, unit, display });
+            compared.forEach((other, age) => {
+                const old = other.columns.get(name);
+                if (old) plotted.push({ name, label: label(other), source: { time: other.time, data: old }, previous: true, colour: paler(colour, age), unit, display });
+            });
+            const [a, b] = [pair?.a.columns.get(name), pair?.b.columns.get(name)];
+            if (pair && a && b) {
+                const runsText = `${pair.a.label} − ${pair.b.label}`;
+                plotted.push({
+                    name, label: `${this.labelOf(name)}: ${runsText}${display ? ` [${display.name}]` : ''}`, difference: runsText,
+                    source: curveDifference({ time: pair.a.time, data: a }, { time: pair.b.time, data: b }), previous: false, colour, unit,
+                    // a difference of temperatures has no offset: 10 K apart is 10 °C apart
+                    display: display && { ...display, offset: 0 },
+                });
             }
         });
         this.plotted = plotted;
         this.span = current && !current.finished ? current.span : null;
+        if (this.span) this.restoredZoom = null;
         this.element.dataset.job = current ? String(current.jobId) : '';
         this.element.dataset.state = current?.state ?? '';
         if (plotted.length === 0) {
@@ -312,7 +366,8 @@ export class PlotWindow {
         if (!this.plot || key !== this.seriesKey) {
             this.seriesKey = key;
             if (this.surface.element.parentNode !== this.body) this.body.replaceChildren(this.surface.element);
-            this.surface.draw(this.options(plotted, axes), data as uPlot.AlignedData);
+            const u = this.surface.draw(this.options(plotted, axes), data as uPlot.AlignedData);
+            if (this.restoredZoom) this.wheelZoom?.restore(u, this.restoredZoom);
         } else {
             this.plot.setData(data as uPlot.AlignedData, !this.zoomed());
         }
@@ -327,6 +382,23 @@ export class PlotWindow {
         const max = u.scales.x.max;
         if (min === undefined || max === undefined || xs.length === 0) return false;
         return min > (xs[0] as number) || max < (xs[xs.length - 1] as number) * 0.999;
+    }
+
+    /** The zoom to remember for the window: as restored until the user changes it, else as shown. */
+    zoom(): SavedZoom | undefined {
+        if (this.restoredZoom) return this.restoredZoom;
+        return this.plot && this.wheelZoom ? this.wheelZoom.saved(this.plot) : undefined;
+    }
+
+    /** Shows `zoom` (remembered from before a reload) once the window has data. */
+    restoreZoom(zoom: SavedZoom): void {
+        this.restoredZoom = zoom;
+        if (this.plot) this.wheelZoom?.restore(this.plot, zoom);
+    }
+
+    private userZoomed(): void {
+        this.restoredZoom = null;
+        this.actions.zoomed(this);
     }
 
     private deltaText(series: number, delta: number): string {
@@ -346,25 +418,31 @@ export class PlotWindow {
     }
 
     private options(plotted: Plotted[], axes: Axis[]): Omit<uPlot.Options, 'width' | 'height'> {
+        // a saved y range is of the values as drawn: in the display unit, or in the base unit whatever prefix the ticks show
+        this.wheelZoom = new WheelZoom(() => this.userZoomed(), new Map(axes.map((a) => [a.scale, a.prefixed.factor === 1 ? a.prefixed.unit : a.unit])));
+        // long curves are drawn and ranged without walking every sample in view on each frame
+        const paths = envelopePaths();
+        const range = fittedRange();
         return {
-            scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] } },
+            plugins: [this.wheelZoom.plugin()],
+            scales: { x: { time: false, range: (_u, min, max) => this.span ?? [min, max] }, ...Object.fromEntries(axes.map((a) => [a.scale, { range }])) },
             // the cursor moves in every plot window at once (same time axis)
             cursor: { drag: { x: true, y: false }, sync: { key: 'run-time' } },
             // the previous run's marker dashed like its curve
             legend: { live: true, markers: { dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
             hooks: { draw: [(u) => this.cursors.draw(u)] },
-            axes: [{ label: 'time [s]', size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
+            axes: [{ label: TIME_AXIS, size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
                 scale: a.scale, label: a.prefixed.unit ? `[${a.prefixed.unit}]` : undefined, size: 64,
                 // left, right, left, right: a fourth unit gets an axis of its own
                 side: i % 2 === 1 ? 1 : 3, grid: { show: i === 0 },
                 values: (_u, splits) => splits.map((v) => formatTick(v / a.prefixed.factor)),
             }))],
             series: [
-                { label: 'time [s]' },
+                { label: 'Time', value: (_u, v) => readout(v, { factor: 1, unit: 's' }) },
                 ...plotted.map((p): uPlot.Series => {
                     const axis = axes.find((a) => a.unit === p.unit)!;
                     return {
-                        label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : undefined, spanGaps: true, scale: axis.scale,
+                        label: p.label, stroke: p.colour, width: 1.5, dash: p.previous ? [6, 4] : p.difference ? [2, 3] : undefined, spanGaps: true, scale: axis.scale, paths, auto: false,
                         value: (_u, v) => readout(v, axis.prefixed),
                     };
                 }),
@@ -374,7 +452,12 @@ export class PlotWindow {
 
     /** Values of a variable of the shown run (or the one before) as logged, in its base unit (tests read the last one). */
     seriesData(name: string, previous = false): number[] {
-        return this.plotted.find((p) => p.name === name && p.previous === previous)?.source.data ?? [];
+        return this.plotted.find((p) => p.name === name && p.previous === previous && !p.difference)?.source.data ?? [];
+    }
+
+    /** A variable's difference curve as drawn, in its base unit (tests read it). */
+    differenceData(name: string): SeriesSource | null {
+        return this.plotted.find((p) => p.name === name && p.difference)?.source ?? null;
     }
 
     private exportCsv(): void {
@@ -388,7 +471,7 @@ export class PlotWindow {
     }
 
     private exportPng(): void {
-        this.surface.exportPng(`plot-${this.id}.png`, this.plotted.map((p) => ({ label: p.label, colour: p.colour, dashed: p.previous })));
+        this.surface.exportPng(`plot-${this.id}.png`, this.plotted.map((p) => ({ label: p.label, colour: p.colour, dashed: p.previous || !!p.difference })));
     }
 
     destroy(): void {
@@ -399,6 +482,13 @@ export class PlotWindow {
         this.surface.destroy();
         this.element.remove();
     }
+}
+
+/** `colour` ('#rrggbb') paler by `age` steps, so that runs compared at once tell apart. */
+function paler(colour: string, age: number): string {
+    if (age === 0) return colour;
+    const alpha = Math.max(0.3, 1 - 0.3 * age);
+    return colour + Math.round(alpha * 255).toString(16).padStart(2, '0');
 }
 
 function formatTick(v: number): string {

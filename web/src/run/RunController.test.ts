@@ -243,28 +243,35 @@ describe('RunController', () => {
         expect(f.results).toHaveBeenCalledWith(3, ['B#p#Pressure']);
     });
 
-    it('a run chosen from the history comes last, the run shown until then before it, and loads its results', async () => {
+    it('a run chosen from the history takes its place in time, is shown until a new run starts, and loads its results', async () => {
         const f = fakeTransport();
         const runs = new RunController(f.transport);
         runs.restore([stored(9), stored(7), stored(5)]);
         const told = vi.fn();
         runs.subscribe(told);
+        const choices: number[] = [];
+        runs.onChoose((run) => choices.push(run.jobId));
         await runs.choose(stored(5), ['B#p#Pressure']);
-        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5]);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([5, 7, 9]);
+        expect(runs.chosen?.jobId).toBe(5);
         expect(told).toHaveBeenCalled();
         expect(f.results).toHaveBeenCalledWith(5, ['B#p#Pressure']);
-        expect(runs.generations.at(-1)?.columns.get('B#p#Pressure')).toEqual([42, 43]);
+        expect(runs.chosen?.columns.get('B#p#Pressure')).toEqual([42, 43]);
         expect(runs.current?.jobId).toBe(9);   // still the run the status names
 
         // one no longer among them joins them, with its name, its state and its error
         await runs.choose({ ...stored(2, 'failed'), name: 'too stiff', error: 'diverged' }, []);
-        const chosen = runs.generations.at(-1)!;
+        const chosen = runs.chosen!;
         expect([chosen.jobId, chosen.label, chosen.state, chosen.error]).toEqual([2, 'too stiff', 'failed', 'diverged']);
-        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5, 2]);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([2, 5, 7, 9]);
+        // the same run again is a choice again (a window may have stepped away from it)
+        await runs.choose(stored(5), []);
+        expect(choices).toEqual([5, 2, 5]);
 
-        // a new run comes after it, and a history that arrives late replaces nothing
+        // a new run comes after them and is shown
         await runs.start({}, []);
-        expect(runs.generations.map((r) => r.jobId)).toEqual([7, 9, 5, 2, 10]);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([2, 5, 7, 9, 10]);
+        expect(runs.chosen).toBeNull();
     });
 
     it('a chosen run is not replaced by a history that arrives later', async () => {

@@ -7,7 +7,7 @@ import type { RestClient } from '../api/RestClient';
 import type { WsClient } from '../api/WsClient';
 import type { JobInfo, ServerEvent } from '../protocol/types';
 import { restorableRuns } from './runHistory';
-import { MAX_GENERATIONS } from './generations';
+import { MAX_GENERATIONS, withGeneration } from './generations';
 import { ApiError } from '../api/ApiError';
 import { DEFAULT_FRAME_RATE, MAX_STREAM_VARIABLES } from '../protocol/constants.generated';
 import type { RequestFields } from '../protocol/requests.generated';
@@ -26,11 +26,11 @@ export interface RunTransport {
 export class RunController {
     current: RunData | null = null;
     previous: RunData | null = null;
-    /**
-     * The model's runs a plot window can step through, oldest first, save that a run chosen
-     * from the history moves to the end (choose): windows show the last one.
-     */
+    /** The model's runs a plot window can step through, in the order they were run (job ids). */
     generations: RunData[] = [];
+    /** The run the user chose from the history, until a new run starts: the plot windows show it. */
+    chosen: RunData | null = null;
+    private readonly choiceListeners = new Set<(run: RunData) => void>();
     private readonly early = new Map<number, ServerEvent[]>();
     private readonly listeners = new Set<() => void>();
     private readonly detach: (() => void)[];
@@ -55,6 +55,12 @@ export class RunController {
         return () => this.listeners.delete(listener);
     }
 
+    /** Tells `listener` of each run the user chooses from the history (the same one again, too). */
+    onChoose(listener: (run: RunData) => void): () => void {
+        this.choiceListeners.add(listener);
+        return () => this.choiceListeners.delete(listener);
+    }
+
     get running(): boolean { return this.current !== null && !this.current.finished; }
 
     /** Starts a run of the socket's open model, streaming `variables` (at most MAX_STREAM_VARIABLES). */
@@ -69,7 +75,8 @@ export class RunController {
         run.state = 'running';
         run.span = span;
         this.current = run;
-        this.generations = [...this.generations, run].slice(-MAX_GENERATIONS);
+        this.chosen = null;
+        this.generations = withGeneration(this.generations, run);
         for (const event of this.early.get(run.jobId) ?? []) this.apply(run, event);
         this.early.clear();
         this.emit();
@@ -91,18 +98,17 @@ export class RunController {
     }
 
     /**
-     * Shows a run of the model's history in the plot windows, which show the last of the
-     * generations: the run moves (or, if not among them, comes) there, after the run shown until
-     * then, so "compare with previous run" sets the two against each other. Its results for
-     * `variables` are loaded. A new run comes after it as usual.
+     * Shows a run of the model's history in the plot windows: it joins the generations (if not
+     * among them) in its place in time, and the windows step to it. Its results for `variables`
+     * are loaded. A new run is shown again as it comes.
      */
     async choose(job: JobInfo, variables: string[]): Promise<void> {
         if (!isChoosable(job)) return;
         const run = this.generations.find((r) => r.jobId === job.id) ?? finishedRun(job);
-        if (this.generations.at(-1) !== run) {
-            this.generations = [...this.generations.filter((r) => r !== run), run].slice(-MAX_GENERATIONS);
-            this.emit();
-        }
+        this.generations = withGeneration(this.generations, run);
+        this.chosen = run;
+        this.emit();
+        for (const l of this.choiceListeners) l(run);
         await this.ensure(variables, [run]);
     }
 

@@ -1,5 +1,5 @@
-// A window plotting one variable of the current run against another (an XY plot, e.g. force
-// over position), over an optional time range; CSV and PNG export.
+// A window plotting one variable against another (an XY plot, e.g. force over position) in the
+// run its plot window shows, over an optional time range; CSV and PNG export.
 import type uPlot from 'uplot';
 import type { RunData } from './RunData';
 import { DerivedPlotFrame } from './DerivedPlotFrame';

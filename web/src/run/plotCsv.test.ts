@@ -46,4 +46,9 @@ describe('plot CSV', () => {
         const signal: CsvSeries = { name: 'Gain#out#Value', previous: false, source: { time: [0], data: [0.5] }, unit: '', display: null };
         expect(plotCsvInDisplayUnits([signal])).toBe('time [s],Gain#out#Value\n0,0.5\n');
     });
+
+    it('names a difference column by the two runs it sets against each other', () => {
+        const difference: CsvSeries = { name: 'Heater#P1#Temperature', previous: false, difference: 'run 3 − run 2', source: { time: now, data: [1, 2, 3, 4] }, unit: 'K', display: null };
+        expect(rows(plotCsv([difference]))[0]).toEqual(['time', 'Heater#P1#Temperature (run 3 − run 2)']);
+    });
 });

@@ -3,10 +3,14 @@
 import { alignSeries, toCsv, type SeriesSource } from './RunData';
 import { toDisplayValues, type DisplayUnit } from './displayUnits';
 
-/** A plotted curve: its variable, whether it is of the previous run, its base unit and its axis' display unit. */
-export interface CsvSeries { name: string; previous: boolean; source: SeriesSource; unit: string; display: DisplayUnit | null }
+/**
+ * A plotted curve: its variable, whether it is of the previous run or the difference of two runs
+ * (which it names), its base unit and its axis' display unit.
+ */
+export interface CsvSeries { name: string; previous: boolean; difference?: string; source: SeriesSource; unit: string; display: DisplayUnit | null }
 
 function columnName(s: CsvSeries): string {
+    if (s.difference) return `${s.name} (${s.difference})`;
     return s.previous ? `${s.name} (previous)` : s.name;
 }
 

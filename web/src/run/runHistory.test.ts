@@ -50,10 +50,11 @@ describe('restorableRuns', () => {
 });
 
 describe('saved plot windows', () => {
+    const position = { name: 'Mass#P2#Position', label: 'Mass.P2 Position', unit: 'm' };
     const windows: SavedPlots = [
-        [{ name: 'Mass#P2#Position', label: 'Mass.P2 Position', unit: 'm' }, { name: 'Mass#P2#Velocity', label: 'Mass.P2 Velocity', unit: 'm/s' }],
-        [],
-        [{ name: 'Sub$Cyl#P1#Pressure', label: 'Sub$Cyl.P1 Pressure', unit: 'Pa' }],
+        { variables: [position, { name: 'Mass#P2#Velocity', label: 'Mass.P2 Velocity', unit: 'm/s' }] },
+        { variables: [] },
+        { variables: [{ name: 'Sub$Cyl#P1#Pressure', label: 'Sub$Cyl.P1 Pressure', unit: 'Pa' }], zoom: { x: [1.5, 2.25] } },
     ];
 
     it('come back per model, without empty windows', () => {
@@ -67,7 +68,7 @@ describe('saved plot windows', () => {
     it('are forgotten when no window shows a variable', () => {
         const storage = memoryStorage();
         savePlots(storage, 4, windows);
-        savePlots(storage, 4, [[]]);
+        savePlots(storage, 4, [{ variables: [] }]);
         expect(storage.getItem(plotsKey(4))).toBeNull();
     });
 
@@ -82,9 +83,31 @@ describe('saved plot windows', () => {
             [plotsKey(6)]: '{"a": 1}',
         });
         const known = (name: string) => isLoggedVariable(model, name);
-        expect(loadPlots(storage, 4, known)).toEqual([[{ name: 'Mass#P2#Position', label: 'Mass.P2 Position', unit: 'm' }]]);
+        expect(loadPlots(storage, 4, known)).toEqual([{ variables: [position] }]);
         expect(loadPlots(storage, 5, known)).toEqual([]);
         expect(loadPlots(storage, 6, known)).toEqual([]);
+    });
+
+    it('keep each window\'s zoomed time and y ranges', () => {
+        const storage = memoryStorage();
+        const zoomed: SavedPlots = [{ variables: [position], zoom: { x: [2, 3.5], y: { m: [-0.1, 0.4] } } }, windows[2]];
+        savePlots(storage, 4, zoomed);
+        expect(loadPlots(storage, 4, () => true)).toEqual(zoomed);
+    });
+
+    it('open windows saved before zooms were kept as before, and drop a zoom not in the saved form', () => {
+        const storage = memoryStorage({
+            [plotsKey(4)]: JSON.stringify([
+                [position],
+                { variables: [position], zoom: { x: [3, 1] } },
+                { variables: [position], zoom: { x: [1, 3], y: { m: 'all' } } },
+                { variables: [position], zoom: { x: [1, 3], y: { m: [0, 1] } } },
+            ]),
+        });
+        expect(loadPlots(storage, 4, () => true)).toEqual([
+            { variables: [position] }, { variables: [position] }, { variables: [position] },
+            { variables: [position], zoom: { x: [1, 3], y: { m: [0, 1] } } },
+        ]);
     });
 });
 

@@ -21,14 +21,20 @@ export function restorableRuns(history: JobInfo[]): JobInfo[] {
 /** A plotted variable as its window shows it: the name of its curve and its axis's unit. */
 export interface SavedVariable { name: string; label: string; unit: string }
 
-/** The variables of each plot window, in window order. */
-export type SavedPlots = SavedVariable[][];
+/** A plot window's zoom: the time shown, and the y ranges the user zoomed, keyed by the unit of the axis's values. */
+export interface SavedZoom { x: [number, number]; y?: Record<string, [number, number]> }
+
+/** A plot window: its variables, and its zoom when the user zoomed it. */
+export interface SavedPlot { variables: SavedVariable[]; zoom?: SavedZoom }
+
+/** The plot windows, in window order. */
+export type SavedPlots = SavedPlot[];
 
 export const plotsKey = (modelId: number) => `tlmhub.plots.${modelId}`;
 
 /** Remembers the plot windows of a model; windows without variables are not kept. */
 export function savePlots(storage: Storage, modelId: number, windows: SavedPlots): void {
-    const kept = windows.filter((w) => w.length > 0);
+    const kept = windows.filter((w) => w.variables.length > 0);
     try {
         if (kept.length === 0) storage.removeItem(plotsKey(modelId));
         else storage.setItem(plotsKey(modelId), JSON.stringify(kept));
@@ -39,7 +45,8 @@ export function savePlots(storage: Storage, modelId: number, windows: SavedPlots
 
 /**
  * The remembered plot windows of a model, keeping only variables `isKnown` accepts (the
- * model may have changed since) and dropping whatever is not in the saved form.
+ * model may have changed since) and dropping whatever is not in the saved form. A window saved
+ * before zooms were kept is a list of its variables.
  */
 export function loadPlots(storage: Storage, modelId: number, isKnown: (name: string) => boolean): SavedPlots {
     let saved: unknown;
@@ -49,9 +56,20 @@ export function loadPlots(storage: Storage, modelId: number, isKnown: (name: str
         return [];
     }
     if (!Array.isArray(saved)) return [];
-    return saved
-        .map((w: unknown) => (Array.isArray(w) ? w.filter((v): v is SavedVariable => isSavedVariable(v) && isKnown(v.name)) : []))
-        .filter((w) => w.length > 0);
+    return saved.map((w: unknown): SavedPlot => {
+        const { variables, zoom } = (Array.isArray(w) ? { variables: w } : typeof w === 'object' && w !== null ? w : {}) as { variables?: unknown; zoom?: unknown };
+        const known = Array.isArray(variables) ? variables.filter((v): v is SavedVariable => isSavedVariable(v) && isKnown(v.name)) : [];
+        return isSavedZoom(zoom) ? { variables: known, zoom } : { variables: known };
+    }).filter((w) => w.variables.length > 0);
+}
+
+const isRange = (r: unknown): r is [number, number] =>
+    Array.isArray(r) && r.length === 2 && r.every((v) => typeof v === 'number' && Number.isFinite(v)) && r[0] < r[1];
+
+function isSavedZoom(z: unknown): z is SavedZoom {
+    const x = z as Partial<SavedZoom> | null;
+    if (typeof x !== 'object' || x === null || !isRange(x.x)) return false;
+    return x.y === undefined || (typeof x.y === 'object' && x.y !== null && Object.values(x.y).every(isRange));
 }
 
 function isSavedVariable(v: unknown): v is SavedVariable {
