@@ -21,6 +21,21 @@ async function plottedDifference(page: Page, name: string): Promise<{ time: numb
 }
 
 /** The x values of an XY window, from its CSV export. */
+/** Runs Position Servo with three gains; each run's job id and its plotted position curve. */
+async function runThreeGains(page: Page, plot: Locator, position: string): Promise<{ jobs: number[]; curves: number[][] }> {
+    const jobs: number[] = [];
+    const curves: number[][] = [];
+    for (const gain of ['0.001', '0.005', '0.02']) {
+        await setServoGain(page, gain);
+        const job = await runAndWait(page);
+        await expect(plot).toHaveAttribute('data-job', String(job));
+        await expect.poll(async () => (await plotted(page, position)).length).toBeGreaterThan(100);
+        jobs.push(job);
+        curves.push(await plotted(page, position));
+    }
+    return { jobs, curves };
+}
+
 async function xyColumn(page: Page, xy: Locator): Promise<number[]> {
     const [csv] = await Promise.all([page.waitForEvent('download'), xy.getByRole('button', { name: 'CSV' }).click()]);
     const [, ...rows] = readFileSync(await csv.path(), 'utf8').trim().split('\n');
@@ -36,16 +51,7 @@ test('three runs overlaid and stepped through', async ({ page }) => {
     const legend = plot.locator('.u-legend .u-series:not(:first-child) .u-label');
 
     // three runs, each with another gain: three different curves
-    const jobs: number[] = [];
-    const curves: number[][] = [];
-    for (const gain of ['0.001', '0.005', '0.02']) {
-        await setServoGain(page, gain);
-        const job = await runAndWait(page);
-        await expect(plot).toHaveAttribute('data-job', String(job));
-        await expect.poll(async () => (await plotted(page, position)).length).toBeGreaterThan(100);
-        jobs.push(job);
-        curves.push(await plotted(page, position));
-    }
+    const { jobs, curves } = await runThreeGains(page, plot, position);
     expect(curves[1]).not.toEqual(curves[0]);
     expect(curves[2]).not.toEqual(curves[1]);
     const [first, second, third] = jobs;
@@ -99,16 +105,7 @@ test('a run chosen in the panel takes its place in time; a difference of two run
     const legend = plot.locator('.u-legend .u-series:not(:first-child) .u-label');
     await expect(plot.locator('.chip')).toHaveCount(1);
 
-    const jobs: number[] = [];
-    const curves: number[][] = [];
-    for (const gain of ['0.001', '0.005', '0.02']) {
-        await setServoGain(page, gain);
-        const job = await runAndWait(page);
-        await expect(plot).toHaveAttribute('data-job', String(job));
-        await expect.poll(async () => (await plotted(page, position)).length).toBeGreaterThan(100);
-        jobs.push(job);
-        curves.push(await plotted(page, position));
-    }
+    const { jobs, curves } = await runThreeGains(page, plot, position);
     const [first, second, third] = jobs;
     await expect(generation).toHaveText(`run ${third} (3 of 3)`);
 
