@@ -41,6 +41,11 @@ bool isFinished(JobState state)
     return state != JobState::Queued && state != JobState::Running;
 }
 
+bool endedByModel(JobState state, const std::string& message)
+{
+    return state == JobState::Done && !message.empty();
+}
+
 nlohmann::json JobRequest::toJson() const
 {
     nlohmann::json settingsJson = nlohmann::json::object();
@@ -83,15 +88,15 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
 
 nlohmann::json JobInfo::toJson() const
 {
-    const bool endedByModel = state == JobState::Done && !error.empty();
+    const bool stopped = endedByModel(state, error);
     return protocol::JobInfo{
         .id = id,
         .ownerId = std::nullopt,   // the API does not show it
         .modelId = modelId,
         .state = jobStateName(state),
         .progress = progress,
-        .error = endedByModel ? std::string() : error,
-        .stopReason = endedByModel ? std::optional<std::string>(error) : std::nullopt,
+        .error = stopped ? std::string() : error,
+        .stopReason = stopped ? std::optional<std::string>(error) : std::nullopt,
         .createdAt = createdAt,
         .startedAt = timeIfSet(startedAt),
         .finishedAt = timeIfSet(finishedAt),

@@ -23,6 +23,9 @@ const char* jobStateName(JobState state);
 bool jobStateFromName(const std::string& name, JobState& out);
 // Done, failed, cancelled and interrupted jobs never change again.
 bool isFinished(JobState state);
+// A job done with a message was ended by its model (a SignalStopSimulation component): the
+// message is its stop reason (`stop_reason`), not an error.
+bool endedByModel(JobState state, const std::string& message);
 
 // Settings that override the model's own; unset ones come from the model.
 struct JobSettings {

@@ -188,7 +188,7 @@ void StreamHub::sendFrame(Subscription& s, const FrameSource& source, Publicatio
 void StreamHub::sendDone(Subscription& s, JobState state, const std::string& error)
 {
     nlohmann::json done = {{"type", "event.done"}, {"job_id", s.jobId}, {"state", jobStateName(state)}};
-    if (!error.empty()) done[state == JobState::Done ? "stop_reason" : "error"] = error;
+    if (!error.empty()) done[endedByModel(state, error) ? "stop_reason" : "error"] = error;
     s.sink.done(std::move(done));
 }
 
