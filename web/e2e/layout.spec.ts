@@ -33,7 +33,7 @@ async function drawn(page: Page): Promise<Drawn> {
             return { name: el.getAttribute('data-name')!, type: el.getAttribute('data-type')!, angle: angles.get(el.getAttribute('data-name')!) ?? 0,
                 frame: scene(el.querySelector('.icon-frame')!), solid: [...el.querySelectorAll('.icon-solid')].map(scene), label: label ? scene(label) : null };
         });
-        const ports = [...document.querySelectorAll('.canvas .port:not(.optional)')].map((el) => {
+        const ports = [...document.querySelectorAll('.canvas .port:not(.parameter)')].map((el) => {
             const r = scene(el);
             return { component: el.getAttribute('data-component')!, port: el.getAttribute('data-port')!, x: (r.x0 + r.x1) / 2, y: (r.y0 + r.y1) / 2 };
         });

@@ -7,10 +7,13 @@ import { EditorStore } from './EditorStore';
 import { AddComponent, Connect, MoveComponents, type Move } from './commands';
 import { componentIcon } from './icons';
 import {
-    anchorsFromSystem, connectionPath, isInputVariablePort, layoutComponent, objectCentre, orientedPoints, poseTransform, toScene,
+    anchorsFromSystem, connectionPath, layoutComponent, objectCentre, orientedPoints, poseTransform, toScene,
     type Anchors, type ComponentLayout, type Point,
 } from '../model/geometry';
 import { appearanceLayout } from '../model/appearanceLayout';
+import { isParameterPort, placeParameterPorts, PORT_MARKER_SIZE } from '../model/parameterPortPlacement';
+import { ParameterPortVisibility } from './ParameterPortVisibility';
+import { pickPort, type PortTarget } from './portHitTest';
 import { placeLabels, type LabelSpot } from './labelPlacement';
 import { nodeColour } from '../model/nodeTypes';
 import { sameRef, uniqueName } from '../model/modelState';
@@ -32,6 +35,8 @@ type Drag =
     | { kind: 'marquee'; start: Point; current: Point };
 
 const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
+/** Scene distance from a port's centre that still hits it: its marker's extent. */
+const PORT_REACH = PORT_MARKER_SIZE / 2 + 1;
 
 /** A drawn component or line with the attribute values it was last given. */
 interface DrawnComponent { el: SVGGElement; body: SVGGElement; text: SVGTextElement; comp: Component; pose: string; cls: string; spot: string }
@@ -64,6 +69,8 @@ export class CanvasView {
     selectedConnection: { from: PortRef; to: PortRef } | null = null;
     /** Layouts of the components on screen, by name (for hit tests and tests). */
     layouts = new Map<string, ComponentLayout>();
+    /** Which parameter ports are drawn (hidden unless shown). */
+    readonly parameterPorts = new ParameterPortVisibility();
 
     constructor(private readonly store: EditorStore, private readonly callbacks: CanvasCallbacks) {
         this.world = s('g', { class: 'world' });
@@ -83,7 +90,9 @@ export class CanvasView {
             void this.addComponent(type, this.sceneFromClient(e.clientX, e.clientY));
         });
         this.world.append(this.connectionGroup, this.componentGroup, this.overlay);
-        this.unsubscribe = store.subscribe(() => this.render());
+        const unsubscribeStore = store.subscribe(() => this.render());
+        const unsubscribeVisibility = this.parameterPorts.subscribe(() => this.render());
+        this.unsubscribe = () => { unsubscribeStore(); unsubscribeVisibility(); };
         this.resizeObserver.observe(this.element);
     }
 
@@ -221,7 +230,8 @@ export class CanvasView {
         this.layouts = new Map(system.components.map((c) => {
             let layout = this.layoutCache.get(c);
             if (!layout) {
-                layout = appearanceLayout(c, anchors.get(c.name)) ?? layoutComponent(c, anchors.get(c.name));
+                const known = anchors.get(c.name);
+                layout = placeParameterPorts(c, appearanceLayout(c, known) ?? layoutComponent(c, known), known);
                 this.layoutCache.set(c, layout);
             }
             return [c.name, layout];
@@ -325,7 +335,8 @@ export class CanvasView {
      */
     private drawComponent(comp: Component, label: LabelSpot, drawn: DrawnComponent | undefined): DrawnComponent {
         const pose = poseTransform(this.poseOf(comp));
-        const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}`;
+        const shown = this.parameterPorts.shownFor(this.store.path, comp.name);
+        const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}${shown ? ' parameter-ports-shown' : ''}`;
         const spot = `${label.x},${label.y},${label.anchor}`;
         if (drawn && drawn.comp === comp) {
             if (drawn.pose !== pose) drawn.body.setAttribute('transform', pose);
@@ -350,10 +361,11 @@ export class CanvasView {
 
     private drawPort(comp: Component, port: Port, at: Point): SVGElement {
         const colour = nodeColour(port.node_type);
-        const hidden = !port.connected && port.kind === 'read' && isInputVariablePort(comp, port.name);
-        const size = hidden ? 3 : 4.5;
+        // an unconnected parameter port is drawn only when shown (see .port.parameter in styles.css)
+        const hideable = !port.connected && isParameterPort(comp, port);
+        const size = hideable ? 3 : 4.5;
         const attrs = {
-            class: `port port-${port.kind}${port.connected ? ' connected' : ''}${hidden ? ' optional' : ''}${port.multiport ? ' multiport' : ''}`,
+            class: `port port-${port.kind}${port.connected ? ' connected' : ''}${hideable ? ' parameter' : ''}${port.multiport ? ' multiport' : ''}`,
             'data-component': comp.name, 'data-port': port.name,
             stroke: colour, fill: port.connected ? colour : '#fff',
         };
@@ -438,7 +450,8 @@ export class CanvasView {
         } else if (e.button !== 0) {
             return;
         } else if (portEl) {
-            const from = { component: portEl.getAttribute('data-component')!, port: portEl.getAttribute('data-port')! };
+            const from = pickPort(this.portTargets(false), scene, PORT_REACH)
+                ?? { component: portEl.getAttribute('data-component')!, port: portEl.getAttribute('data-port')! };
             const fromPoint = this.portPoint(this.store.system, from) ?? scene;
             this.drag = { kind: 'connect', from, fromPoint, current: scene, startClient: { x: e.clientX, y: e.clientY }, moved: false };
         } else if (compEl) {
@@ -479,7 +492,10 @@ export class CanvasView {
             this.applyView();
         } else if (drag.kind === 'connect') {
             drag.current = scene;
-            if (Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD) drag.moved = true;
+            if (!drag.moved && Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD) {
+                drag.moved = true;
+                this.svg.classList.toggle('offer-parameter-ports', this.offersParameterPorts(drag.from));
+            }
             this.renderOverlay();
         } else if (drag.kind === 'move') {
             const dx = scene.x - drag.start.x;
@@ -504,14 +520,15 @@ export class CanvasView {
         } else if (drag.kind === 'marquee') {
             this.selectInBox(drag.start, drag.current);
         } else if (drag.kind === 'connect') {
+            const offered = this.offersParameterPorts(drag.from);
+            this.svg.classList.remove('offer-parameter-ports');
             this.render();
             if (!drag.moved) {
                 this.callbacks.onPortClick(drag.from, { x: e.clientX, y: e.clientY });
                 return;
             }
-            const target = document.elementFromPoint(e.clientX, e.clientY)?.closest('[data-port]');
-            if (!target) return;
-            const to = { component: target.getAttribute('data-component')!, port: target.getAttribute('data-port')! };
+            const to = this.dropTarget(drag.from, this.sceneFromClient(e.clientX, e.clientY), offered, { x: e.clientX, y: e.clientY });
+            if (!to) return;
             if (to.component === drag.from.component && to.port === drag.from.port) return;
             try {
                 await this.store.execute(new Connect(this.store.path, drag.from, to));
@@ -534,6 +551,46 @@ export class CanvasView {
                 this.render();
             }
         }
+    }
+
+    private nodeTypeOf(ref: PortRef): string | null {
+        return this.portOf(ref)?.node_type ?? this.store.system.ports.find((p) => p.name === ref.component)?.node_type ?? null;
+    }
+
+    /** A signal output dragged: the hidden parameter ports could take it, so they show meanwhile. */
+    private offersParameterPorts(from: PortRef): boolean {
+        const port = this.portOf(from);
+        return this.nodeTypeOf(from) === 'NodeSignal' && port?.kind !== 'read';
+    }
+
+    /** The drawn ports in scene coordinates; hidden parameter ports only when `withParameterPorts`. */
+    private portTargets(withParameterPorts: boolean): PortTarget[] {
+        const targets: PortTarget[] = [];
+        for (const comp of this.store.system.components) {
+            const layout = this.layouts.get(comp.name);
+            const shown = withParameterPorts || this.parameterPorts.shownFor(this.store.path, comp.name);
+            for (const port of comp.ports) {
+                const at = layout?.ports.get(port.name);
+                if (!at || (!shown && !port.connected && isParameterPort(comp, port))) continue;
+                targets.push({ ref: { component: comp.name, port: port.name }, at: toScene(this.poseOf(comp), at), nodeType: port.node_type, power: port.kind === 'power' });
+            }
+        }
+        for (const sp of this.store.system.ports) {
+            targets.push({ ref: { component: sp.name, port: sp.name }, at: { x: sp.pose.x, y: sp.pose.y }, nodeType: sp.node_type, power: sp.node_type !== 'NodeSignal' });
+        }
+        return targets;
+    }
+
+    /**
+     * Where a dragged connection lands: a port of its own node type under the pointer, power
+     * ports first; else the port element there, so that the server says why it does not fit.
+     */
+    private dropTarget(from: PortRef, scene: Point, withParameterPorts: boolean, client: Point): PortRef | null {
+        const nodeType = this.nodeTypeOf(from);
+        const fitting = pickPort(this.portTargets(withParameterPorts), scene, PORT_REACH, nodeType ?? undefined);
+        if (fitting) return fitting;
+        const element = document.elementFromPoint(client.x, client.y)?.closest('[data-port]');
+        return element ? { component: element.getAttribute('data-component')!, port: element.getAttribute('data-port')! } : null;
     }
 
     private selectInBox(a: Point, b: Point): void {

@@ -5,6 +5,7 @@ import { EditorStore } from './EditorStore';
 import { RenameComponent, SetParameter, SetSystemParameter } from './commands';
 import { errorText, h } from '../ui/dom';
 import { displayNameOf } from '../model/appearance';
+import { isParameterPort } from '../model/parameterPortPlacement';
 import { parameterLabel, shortName, splitParameters } from './parameterLabels';
 import { notFiniteError } from './finiteNumber';
 import type { Component, PortRef, System } from '../protocol/types';
@@ -16,6 +17,9 @@ export interface PanelActions {
     group(): void;
     ungroup(): void;
     plotPort(ref: PortRef, anchor: HTMLElement): void;
+    /** Shows or hides the selected components' parameter ports. */
+    toggleParameterPorts(): void;
+    parameterPortsShown(name: string): boolean;
 }
 
 export class ParameterPanel {
@@ -42,7 +46,8 @@ export class ParameterPanel {
         const system = this.store.system;
         const selected = [...this.store.selection];
         const comp = selected.length === 1 ? system.components.find((c) => c.name === selected[0]) : undefined;
-        const signature = JSON.stringify([this.store.path, selected, comp ?? system.parameters, this.nameError, [...this.refused]]);
+        const portsShown = comp ? this.actions.parameterPortsShown(comp.name) : false;
+        const signature = JSON.stringify([this.store.path, selected, comp ?? system.parameters, this.nameError, [...this.refused], portsShown]);
         if (signature === this.signature) return;
         this.signature = signature;
         if (comp) this.body.replaceChildren(...this.componentView(comp));
@@ -120,6 +125,10 @@ export class ParameterPanel {
             h('div', { class: 'button-row' },
                 h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)' }, 'Rotate'),
                 h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)' }, 'Flip'),
+                comp.ports.some((p) => isParameterPort(comp, p)) ? h('button', {
+                    onclick: () => this.actions.toggleParameterPorts(), title: 'Show or hide this component\'s parameter ports (P)',
+                    'aria-pressed': String(this.actions.parameterPortsShown(comp.name)), 'data-testid': 'toggle-parameter-ports',
+                }, 'Parameter ports') : null,
                 comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
                 comp.system ? h('button', { onclick: () => this.actions.ungroup(), 'data-testid': 'ungroup' }, 'Ungroup') : null,
                 h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)' }, 'Delete')),

@@ -84,7 +84,7 @@ const PORT_GAP = 14;
 type Side = 'left' | 'right' | 'top' | 'bottom';
 
 // Hopsan hides the input-variable ports (a read port backed by a "<port>#Value" parameter)
-// until used; we draw them small on the top edge.
+// until used; parameterPortPlacement.ts says which they are and where they sit when shown.
 export function isInputVariablePort(component: Component, port: string): boolean {
     return component.parameters.some((p) => p.name === `${port}#Value`);
 }

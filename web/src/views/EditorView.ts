@@ -152,12 +152,22 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             const command = new UngroupSubsystem(store.path, sub.name);
             store.execute(command).then(() => store.select(command.movedNames), reportError);
         },
+        toggleParameterPorts: () => canvas.parameterPorts.toggle(store.path, [...store.selection]),
+        parameterPortsShown: (name: string) => canvas.parameterPorts.shownFor(store.path, name),
         plotPort: (ref: PortRef, anchor: HTMLElement) => {
             const r = anchor.getBoundingClientRect();
             showVariables(ref, { x: r.left - 200, y: r.top });
         },
     };
     const panel = new ParameterPanel(store, actions);
+    const parameterPortsButton = h('button', {
+        onclick: () => canvas.parameterPorts.showEverywhere(!canvas.parameterPorts.shownEverywhere),
+        'aria-pressed': 'false', 'data-testid': 'show-parameter-ports', title: 'Show the parameter ports of every component',
+    }, 'Show parameter ports');
+    canvas.parameterPorts.subscribe(() => {
+        parameterPortsButton.setAttribute('aria-pressed', String(canvas.parameterPorts.shownEverywhere));
+        panel.render();
+    });
 
     const copy = () => { clipboard = copySelection(store.model, store.path, store.selection); };
     const paste = async () => {
@@ -240,6 +250,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                 h('button', { onclick: () => canvas.zoomBy(1.25), title: 'Zoom in' }, '+'),
                 h('button', { onclick: () => canvas.zoomBy(0.8), title: 'Zoom out' }, '−'),
                 h('button', { onclick: () => canvas.fit(), title: 'Show all' }, 'Fit'),
+                parameterPortsButton,
                 h('button', {
                     onclick: async () => {
                         try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
@@ -308,6 +319,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         else if (e.key === 'Delete' || e.key === 'Backspace') actions.remove();
         else if (e.key === 'r' || e.key === 'R') actions.rotate();
         else if (e.key === 'f' || e.key === 'F') actions.flip();
+        else if (e.key === 'p' || e.key === 'P') actions.toggleParameterPorts();
         else if (e.key === 'Escape') store.select([]);
     };
     document.addEventListener('keydown', onKey);
