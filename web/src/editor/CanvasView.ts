@@ -11,7 +11,7 @@ import {
     type Anchors, type ComponentLayout, type Point,
 } from '../model/geometry';
 import { appearanceLayout } from '../model/appearanceLayout';
-import { isParameterPort, placeParameterPorts, PORT_MARKER_SIZE } from '../model/parameterPortPlacement';
+import { hiddenUnlessShown, placeParameterPorts, PORT_MARKER_SIZE } from '../model/parameterPortPlacement';
 import { ParameterPortVisibility } from './ParameterPortVisibility';
 import { pickPort, type PortTarget } from './portHitTest';
 import { placeLabels, type LabelSpot } from './labelPlacement';
@@ -361,8 +361,8 @@ export class CanvasView {
 
     private drawPort(comp: Component, port: Port, at: Point): SVGElement {
         const colour = nodeColour(port.node_type);
-        // an unconnected parameter port is drawn only when shown (see .port.parameter in styles.css)
-        const hideable = !port.connected && isParameterPort(comp, port);
+        // drawn only when shown (see .port.parameter in styles.css)
+        const hideable = hiddenUnlessShown(comp, port);
         const size = hideable ? 3 : 4.5;
         const attrs = {
             class: `port port-${port.kind}${port.connected ? ' connected' : ''}${hideable ? ' parameter' : ''}${port.multiport ? ' multiport' : ''}`,
@@ -571,7 +571,7 @@ export class CanvasView {
             const shown = withParameterPorts || this.parameterPorts.shownFor(this.store.path, comp.name);
             for (const port of comp.ports) {
                 const at = layout?.ports.get(port.name);
-                if (!at || (!shown && !port.connected && isParameterPort(comp, port))) continue;
+                if (!at || (!shown && hiddenUnlessShown(comp, port))) continue;
                 targets.push({ ref: { component: comp.name, port: port.name }, at: toScene(this.poseOf(comp), at), nodeType: port.node_type, power: port.kind === 'power' });
             }
         }

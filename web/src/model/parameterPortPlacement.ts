@@ -19,6 +19,11 @@ export function isParameterPort(component: Component, port: Port): boolean {
     return appearanceOf(component.type)?.ports[port.name] === undefined;
 }
 
+/** A parameter port not connected: drawn and hit only while shown (a connected one always is). */
+export function hiddenUnlessShown(component: Component, port: Port): boolean {
+    return !port.connected && isParameterPort(component, port);
+}
+
 /**
  * `layout` with the parameter ports moved to a row centred above the box; one whose saved line
  * ends elsewhere (`known`) stays there, where the author saw it.
