@@ -109,6 +109,8 @@ FMU_QUERY = [{"name": "parameters", "in": "query", "required": False,
               "description": "The FMU's modelIdentifier (default: from the model name)",
               "schema": {"type": "string"}}]
 ANY = {"type": "object"}
+# An assignment; `warnings` only in its teacher's replies (AssignmentWarning).
+ASSIGNMENT = {"type": "object", "properties": {"warnings": {"type": "array", "items": ref("AssignmentWarning")}}}
 HMF = {"application/xml": {"schema": {"type": "string", "description": ".hmf model file text"}}}
 
 paths = {
@@ -314,12 +316,13 @@ paths = {
         "get": op("The class's assignments (students: the opened ones, with their status and copy)",
                   {**ok("{assignments}", ANY), **errors("401", "404")}, params=[ID], tag="labs"),
         "post": op("Create an assignment from a template model (and a solution model whose run is the reference)",
-                   {**ok("The assignment", ANY, "201"), **errors("400", "401", "403", "404", "409")},
+                   {**ok("The assignment with warnings", ASSIGNMENT, "201"), **errors("400", "401", "403", "404", "409")},
                    body=json_body("AssignmentCreate"), params=[ID], tag="labs")},
     "/assignments/{id}": {
-        "get": op("An assignment", {**ok("The assignment", ANY), **errors("401", "404")}, params=[ID], tag="labs"),
+        "get": op("An assignment (its teacher: with warnings)", {**ok("The assignment", ASSIGNMENT), **errors("401", "404")},
+                  params=[ID], tag="labs"),
         "patch": op("Change an assignment; a template_model_id publishes a new template version",
-                    {**ok("The assignment", ANY), **errors("400", "401", "403", "404", "409")},
+                    {**ok("The assignment with warnings", ASSIGNMENT), **errors("400", "401", "403", "404", "409")},
                     body=json_body("AssignmentUpdate"), params=[ID], tag="labs"),
         "delete": op("Delete an assignment with its hand-ins", {"204": {"description": "Deleted"},
                                                               **errors("401", "403", "404")}, params=[ID], tag="labs")},

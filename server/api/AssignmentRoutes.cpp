@@ -68,6 +68,14 @@ nlohmann::json studentAssignmentJson(Services& s, const AssignmentInfo& a, const
     return out;
 }
 
+// The assignment as its teacher sees it: with what they are warned of (AssignmentWarnings.h).
+nlohmann::json teacherAssignmentJson(Services& s, const AssignmentInfo& a)
+{
+    nlohmann::json out = LabService::assignmentJson(a);
+    out["warnings"] = warningsJson(s.labs.warnings(a));
+    return out;
+}
+
 Response createAssignment(Services& s, Call& call)
 {
     const auto view = visibleClass(s, call);
@@ -98,7 +106,7 @@ Response createAssignment(Services& s, Call& call)
             return labErrorResponse(*failed);
         }
     }
-    return jsonResponse(http::status::created, LabService::assignmentJson(*s.labs.store().assignment(*id)));
+    return jsonResponse(http::status::created, teacherAssignmentJson(s, *s.labs.store().assignment(*id)));
 }
 
 Response listAssignments(Services& s, Call& call)
@@ -120,6 +128,7 @@ Response getAssignment(Services& s, Call& call)
     if (!view) return labNotFound("assignment");
     if (view->classView.isStudent())
         return jsonResponse(http::status::ok, studentAssignmentJson(s, view->assignment, call.who()));
+    if (view->classView.isTeacher()) return jsonResponse(http::status::ok, teacherAssignmentJson(s, view->assignment));
     return jsonResponse(http::status::ok, LabService::assignmentJson(view->assignment));
 }
 
@@ -145,7 +154,7 @@ Response updateAssignment(Services& s, Call& call)
         if (const auto failed = s.labs.setSolution(info.id, *solutionHmf)) return labErrorResponse(*failed);
     s.labs.store().updateAssignment(info);
     if (templateHmf) s.labs.publishTemplate(view->assignment, *templateHmf);
-    return jsonResponse(http::status::ok, LabService::assignmentJson(*s.labs.store().assignment(info.id)));
+    return jsonResponse(http::status::ok, teacherAssignmentJson(s, *s.labs.store().assignment(info.id)));
 }
 
 Response deleteAssignment(Services& s, Call& call)

@@ -39,7 +39,7 @@ public:
 bool allowedField(const std::string& kind, const std::string& measure, const std::string& field)
 {
     if (field == "kind" || field == "variable") return true;
-    if (kind == "curve") return field == "tolerance";
+    if (kind == "curve") return field == "tolerance" || field == "scale";
     if (field == "band") return measure == "settling_time";
     return field == "measure" || field == "min" || field == "max";
 }
@@ -55,6 +55,51 @@ std::string format(const char* pattern, double value)
 std::span<const double> samples(const ResultTable& table, const ResultColumn& column)
 {
     return std::span<const double>(column.data).first(std::min(column.data.size(), table.time.size()));
+}
+
+std::string notFiniteMessage(const std::string& variable, double t)
+{
+    return "'" + variable + "' is not a finite number at t = " + format("%g", t) + " s";
+}
+
+// "scale": "range": each sample may differ from the reference by the tolerance times the
+// reference's largest magnitude at the run's times, one yardstick for the whole curve.
+void judgeCurveByRange(const CheckDefinition& d, const std::vector<double>& time, std::span<const double> values,
+                       const std::vector<double>& refTime, const std::vector<double>& refData, CheckOutcome& out)
+{
+    std::vector<double> refAtRun(values.size());
+    double magnitude = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            out.message = notFiniteMessage(d.variable, time[i]);
+            return;
+        }
+        refAtRun[i] = interpolateReference(refTime, refData, time[i]);
+        // A NaN in the reference would drop out of the largest magnitude and let anything pass.
+        if (!std::isfinite(refAtRun[i])) {
+            out.message = "the reference run's " + notFiniteMessage(d.variable, time[i]);
+            return;
+        }
+        magnitude = std::max(magnitude, std::fabs(refAtRun[i]));
+    }
+    double worstDifference = -1.0, worstTime = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const double difference = std::fabs(values[i] - refAtRun[i]);
+        if (difference > worstDifference) {
+            worstDifference = difference;
+            worstTime = time[i];
+        }
+    }
+    // A reference that is zero throughout leaves no room: only an exact match passes.
+    const double deviation = magnitude > 0.0 ? worstDifference / magnitude
+                             : worstDifference > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+    out.deviation = deviation;
+    out.worstTime = worstTime;
+    out.passed = worstDifference <= d.tolerance * magnitude;
+    if (!out.passed)
+        out.message = d.variable + " differs by " + format("%.3g", deviation * 100.0) +
+                      " % of the reference's largest magnitude (" + format("%g", magnitude) + ") at t = " +
+                      format("%g", worstTime) + " s (tolerance " + format("%g", d.tolerance * 100.0) + " %)";
 }
 
 void judgeCurve(const CheckDefinition& d, const ResultTable& run, const ResultTable* reference, CheckOutcome& out)
@@ -81,6 +126,10 @@ void judgeCurve(const CheckDefinition& d, const ResultTable& run, const ResultTa
     }
     const std::vector<double> refTime(reference->time.begin(), reference->time.begin() + refValues.size());
     const std::vector<double> refData(refValues.begin(), refValues.end());
+    if (d.scale == "range") {
+        judgeCurveByRange(d, run.time, values, refTime, refData, out);
+        return;
+    }
 
     bool failed = false;
     double deviation = 0.0, worstTime = 0.0;
@@ -89,7 +138,7 @@ void judgeCurve(const CheckDefinition& d, const ResultTable& run, const ResultTa
         const double t = run.time[i];
         // The .hvc rule lets a NaN through (no comparison with it is true); a grade must not.
         if (!std::isfinite(values[i])) {
-            out.message = "'" + d.variable + "' is not a finite number at t = " + format("%g", t) + " s";
+            out.message = notFiniteMessage(d.variable, t);
             return;
         }
         const double ref = interpolateReference(refTime, refData, t);
@@ -208,6 +257,14 @@ std::optional<CheckDefinition> parseCheckDefinition(const nlohmann::json& json, 
                 return done();
             }
         }
+        if (json.contains("scale")) {
+            const Json& scale = json["scale"];
+            if (!scale.is_string() || (scale.get<std::string>() != "sample" && scale.get<std::string>() != "range")) {
+                r.fail("scale", "must be sample or range");
+                return done();
+            }
+            d.scale = scale.get<std::string>();
+        }
         return d;
     }
 
@@ -240,6 +297,8 @@ nlohmann::json checkDefinitionJson(const CheckDefinition& definition)
     Json j = {{"kind", definition.kind}, {"variable", definition.variable}};
     if (definition.kind == "curve") {
         j["tolerance"] = definition.tolerance;
+        // Absent stays absent: a check stored before the field existed reads back unchanged.
+        if (!definition.scale.empty()) j["scale"] = definition.scale;
         return j;
     }
     j["measure"] = definition.measure;

@@ -1,8 +1,10 @@
 #pragma once
 // The automatic checks of an assignment: what a check asks (its definition, as the teacher
 // writes it in JSON) and how a run is judged against it. A "curve" check compares a variable
-// over time with the teacher's reference run by the .hvc rule (core.md §7.4: relative
-// tolerance, reference interpolated at the run's times); a "scalar" check computes one measure
+// over time with the teacher's reference run (interpolated at the run's times), by default by
+// the .hvc rule (core.md §7.4: a tolerance relative to each reference sample) or, with
+// "scale": "range", relative to the reference's largest magnitude over the run (so a curve
+// through zero is not failed by tiny differences there); a "scalar" check computes one measure
 // of a variable of the run (final value, min, max, overshoot in %, settling time, rise time
 // 10-90 %) and requires it within bounds.
 #include "server/store/LabStore.h"
@@ -22,7 +24,10 @@ struct CheckDefinition {
     std::string kind;                    // "curve" or "scalar"
     std::string variable;                // a result column name, e.g. "Mass#P1#x"
     std::string measure;                 // scalar: final, min, max, overshoot, settling_time, rise_time
-    double tolerance = 0.01;             // curve: relative tolerance of the .hvc rule
+    double tolerance = 0.01;             // curve: relative tolerance
+    // curve: "" (not given: the .hvc rule, as before the field existed), "sample" (the same
+    // rule, named) or "range" (|run - reference| <= tolerance * max |reference| over the run)
+    std::string scale;
     std::optional<double> min, max;      // scalar: inclusive bounds (at least one)
     double band = 0.02;                  // settling_time: ± band around the final value, relative
 };
@@ -38,7 +43,9 @@ struct CheckOutcome {
     bool passed = false;
     double points = 0, awarded = 0;      // awarded = points when passed, else 0
     std::optional<double> value;         // scalar: the measure of the run
-    std::optional<double> deviation;     // curve: largest |1 - run/reference| among compared samples
+    // curve: largest |1 - run/reference| among compared samples, or with "scale": "range" the
+    // largest |run - reference| / max |reference|
+    std::optional<double> deviation;
     std::optional<double> worstTime;     // curve: the time of that sample
     std::string message;                 // why it failed ("" when passed)
 };

@@ -4,6 +4,7 @@
 #include "server/jobs/JobRunner.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/labs/Gradebook.h"
+#include "server/labs/ParameterLock.h"
 #include "server/store/ModelName.h"
 #include "server/store/ResultBlob.h"
 #include "server/store/UnixTime.h"
@@ -126,6 +127,26 @@ std::optional<std::int64_t> LabService::publishTemplate(const AssignmentInfo& as
         mLabs.setCopyTemplateVersion(assignment.id, copy.studentId, *version);
     }
     return version;
+}
+
+std::vector<AssignmentWarning> LabService::warnings(const AssignmentInfo& assignment)
+{
+    std::vector<AssignmentWarning> found;
+    const auto add = [&](std::vector<AssignmentWarning> more) {
+        found.insert(found.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    };
+    std::string why;
+    const auto lock = ParameterLock::parse(nlohmann::json::parse(assignment.parameters, nullptr, false), why);
+    if (assignment.editMode == "parameters" && lock) {
+        if (const auto hmf = mLabs.templateHmf(assignment.id)) add(parameterWarnings(*lock, *hmf, "template", mLimits.model));
+        if (const auto hmf = assignment.hasSolution ? mLabs.solutionHmf(assignment.id) : std::nullopt)
+            add(parameterWarnings(*lock, *hmf, "solution", mLimits.model));
+    }
+    const std::vector<AssignmentCheck> checks = mLabs.checks(assignment.id);
+    const auto blob = assignment.hasSolution && !checks.empty() ? mLabs.referenceResult(assignment.id) : std::nullopt;
+    if (const auto reference = blob ? decodeResult(*blob, checkedVariables(checks, false)) : std::nullopt)
+        add(solutionCheckWarnings(checks, *reference));
+    return found;
 }
 
 std::optional<LabError> LabService::setChecks(const AssignmentInfo& assignment, const std::vector<AssignmentCheck>& checks)

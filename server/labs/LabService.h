@@ -6,6 +6,7 @@
 // Access is the caller's business (LabAccess); these functions trust their arguments.
 #include "server/auth/User.h"
 #include "server/jobs/Job.h"
+#include "server/labs/AssignmentWarnings.h"
 #include "server/labs/LabChecks.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
@@ -46,6 +47,10 @@ public:
     std::optional<LabError> setSolution(std::int64_t assignmentId, const std::string& solutionHmf);
     // A new template version; copies still equal to the template they came from get it too.
     std::optional<std::int64_t> publishTemplate(const AssignmentInfo& assignment, const std::string& hmf);
+    // What the teacher is warned of (AssignmentWarnings.h): with edit mode "parameters", the
+    // template's and the solution's listed parameters against their bounds; the checks against
+    // the solution's reference run, stored when the solution was set, so nothing runs here.
+    std::vector<AssignmentWarning> warnings(const AssignmentInfo& assignment);
     // Checks the definitions against the reference run and stores them.
     std::optional<LabError> setChecks(const AssignmentInfo& assignment, const std::vector<AssignmentCheck>& checks);
 

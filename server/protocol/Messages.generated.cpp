@@ -1816,6 +1816,35 @@ void to_json(nlohmann::json& j, const ChecksUpdateChecksItem& v)
     j["definition"] = v.definition;
 }
 
+void from_json(const nlohmann::json& j, AssignmentWarning& v)
+{
+    j.at("code").get_to(v.code);
+    j.at("message").get_to(v.message);
+}
+
+void to_json(nlohmann::json& j, const AssignmentWarning& v)
+{
+    j = nlohmann::json::object();
+    j["code"] = v.code;
+    j["message"] = v.message;
+}
+
+void from_json(const nlohmann::json& j, CurveCheckDefinition& v)
+{
+    j.at("variable").get_to(v.variable);
+    if (const auto x = j.find("tolerance"); x != j.end()) v.tolerance = x->get<double>();
+    if (const auto x = j.find("scale"); x != j.end()) v.scale = x->get<nlohmann::json>();
+}
+
+void to_json(nlohmann::json& j, const CurveCheckDefinition& v)
+{
+    j = nlohmann::json::object();
+    j["kind"] = "curve";
+    j["variable"] = v.variable;
+    if (v.tolerance) j["tolerance"] = *v.tolerance;
+    if (v.scale) j["scale"] = *v.scale;
+}
+
 void from_json(const nlohmann::json& j, CommentCreate& v)
 {
     j.at("text").get_to(v.text);

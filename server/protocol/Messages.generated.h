@@ -16,6 +16,7 @@ struct AssignmentCreate;
 struct AssignmentCreateParametersItem;
 struct AssignmentUpdate;
 struct AssignmentUpdateParametersItem;
+struct AssignmentWarning;
 struct BinaryFrameHeader;
 struct BinaryFrameHeaderVariablesItem;
 struct CatalogueEntry;
@@ -38,6 +39,7 @@ struct ConnectRequest;
 struct ConnectedData;
 struct Connection;
 struct CurrentUser;
+struct CurveCheckDefinition;
 struct DisconnectRequest;
 struct DoneEvent;
 struct DownloadLink;
@@ -1196,6 +1198,28 @@ struct ChecksUpdateChecksItem {
 void from_json(const nlohmann::json& j, ChecksUpdateChecksItem& v);
 void to_json(nlohmann::json& j, const ChecksUpdateChecksItem& v);
 
+// What the teacher is warned of about their assignment (in its create, update and get replies,
+// to the class's teacher only): a model holding an allowed parameter outside its bounds or
+// lacking it (edit_mode parameters), or a check the solution's reference run fails. Warnings
+// never refuse a change.
+struct AssignmentWarning {
+    nlohmann::json code{};
+    std::string message{};
+};
+void from_json(const nlohmann::json& j, AssignmentWarning& v);
+void to_json(nlohmann::json& j, const AssignmentWarning& v);
+
+// The definition of a curve check (ChecksUpdate): a variable of the run against the solution's
+// reference run, interpolated at the run's times.
+struct CurveCheckDefinition {
+    // "kind": always "curve"
+    std::string variable{};
+    std::optional<double> tolerance;
+    std::optional<nlohmann::json> scale;
+};
+void from_json(const nlohmann::json& j, CurveCheckDefinition& v);
+void to_json(nlohmann::json& j, const CurveCheckDefinition& v);
+
 // A comment on a hand-in.
 struct CommentCreate {
     std::string text{};
@@ -1219,6 +1243,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<AssignmentCreateParametersItem>("AssignmentCreateParametersItem");
     visit.template operator()<AssignmentUpdate>("AssignmentUpdate");
     visit.template operator()<AssignmentUpdateParametersItem>("AssignmentUpdateParametersItem");
+    visit.template operator()<AssignmentWarning>("AssignmentWarning");
     visit.template operator()<BinaryFrameHeader>("BinaryFrameHeader");
     visit.template operator()<BinaryFrameHeaderVariablesItem>("BinaryFrameHeaderVariablesItem");
     visit.template operator()<CatalogueEntry>("CatalogueEntry");
@@ -1241,6 +1266,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ConnectedData>("ConnectedData");
     visit.template operator()<Connection>("Connection");
     visit.template operator()<CurrentUser>("CurrentUser");
+    visit.template operator()<CurveCheckDefinition>("CurveCheckDefinition");
     visit.template operator()<DisconnectRequest>("DisconnectRequest");
     visit.template operator()<DoneEvent>("DoneEvent");
     visit.template operator()<DownloadLink>("DownloadLink");

@@ -1,16 +1,18 @@
 // The form of an assignment, to create one or change it: title, instructions (Markdown, with
 // a preview), the template and solution models from the teacher's models, opening and due
 // times, and what students may change (everything, or listed parameters within bounds).
+// Changing an assignment, the teacher sees first what the server warned of (AssignmentWarnings).
 import { errorText, h } from '../ui/dom';
 import type { Model, ModelSummary, System } from '../protocol/types';
-import type { AllowedParameter, Assignment, AssignmentInput, EditMode } from './types';
+import type { AllowedParameter, AssignmentInput, EditMode } from './types';
 import { fromDatetimeLocal, optionalNumber, toDatetimeLocal } from './format';
 import { markdownBlock } from './markdown';
+import { assignmentWarnings, type TeacherAssignment } from './AssignmentWarnings';
 
 export interface AssignmentFormOptions {
     models: ModelSummary[];
     /** the assignment changed; absent: a new one */
-    initial?: Assignment;
+    initial?: TeacherAssignment;
     submitLabel: string;
     onSubmit: (input: AssignmentInput) => Promise<void>;
     onCancel: () => void;
@@ -147,6 +149,7 @@ export function assignmentForm(options: AssignmentFormOptions): HTMLElement {
             }
         },
     },
+    initial ? assignmentWarnings(initial) : null,
     h('label', {}, 'Title', title),
     h('div', { class: 'instructions-editor' },
         h('label', {}, 'Instructions (Markdown)', instructions),

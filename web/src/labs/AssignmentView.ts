@@ -12,6 +12,7 @@ import { studentAssignment } from './StudentAssignment';
 import { dashboard } from './Dashboard';
 import { checksEditor } from './ChecksEditor';
 import { assignmentForm } from './AssignmentForm';
+import { assignmentWarnings } from './AssignmentWarnings';
 
 /** What students may change, in words. */
 export function allowedText(a: Assignment): string {
@@ -88,7 +89,7 @@ async function showAssignment(root: HTMLElement, session: Session, assignmentId:
 
     root.replaceChildren(h('main', { class: 'model-list-page lab-page assignment-page', 'data-testid': 'assignment-page' },
         h('a', { href: `#/class/${theClass.id}`, class: 'back' }, `← ${theClass.name}`),
-        header, meta, instructions, ...parts));
+        header, meta, teacher ? assignmentWarnings(assignment) : null, instructions, ...parts));
     return page;
 }
 

@@ -2,7 +2,11 @@
 // pretest, and what it asks: a curve (a variable against the solution's reference run within
 // a relative tolerance) or a scalar (a measure of a variable within min/max). Saving runs the
 // solution on the server and stores its reference result with the checks.
+// A curve's tolerance is relative to the reference's largest magnitude ("scale": "range") for
+// new checks, since the older rule, relative to each reference sample, fails curves near zero;
+// a check made with the older rule shows it and keeps it.
 import { errorText, h, toast } from '../ui/dom';
+import type { CurveCheckDefinition } from '../protocol/types';
 import type { Check, CheckDefinition, ScalarMeasure } from './types';
 import { SCALAR_MEASURES } from './types';
 import { optionalNumber } from './format';
@@ -25,9 +29,22 @@ export interface ChecksEditorOptions {
 
 let editorCount = 0;
 
+type CurveScale = NonNullable<CurveCheckDefinition['scale']>;
+
+const SCALE_LABELS: Record<CurveScale, string> = {
+    range: 'the reference\'s largest magnitude',
+    sample: 'each reference sample (.hvc rule)',
+};
+
+/** The rule a check's tolerance follows: a curve check stored without `scale` keeps the sample rule; new ones get range. */
+export function curveScaleOf(definition?: CheckDefinition): CurveScale {
+    if (definition?.kind !== 'curve') return 'range';
+    return (definition as CurveCheckDefinition).scale ?? 'sample';
+}
+
 /** A check's definition from the row's fields; throws naming the field that is wrong. */
 export function readDefinition(fields: {
-    kind: string; variable: string; tolerance: string; measure: string; min: string; max: string; band: string;
+    kind: string; variable: string; tolerance: string; scale?: string; measure: string; min: string; max: string; band: string;
 }, name: string): CheckDefinition {
     const variable = fields.variable.trim();
     if (!variable) throw new Error(`${name}: name the variable (e.g. Mass#P1#x)`);
@@ -38,7 +55,11 @@ export function readDefinition(fields: {
     };
     if (fields.kind === 'curve') {
         const tolerance = number(fields.tolerance, 'the tolerance');
-        return tolerance === undefined ? { kind: 'curve', variable } : { kind: 'curve', variable, tolerance };
+        const curve: CurveCheckDefinition = { kind: 'curve', variable };
+        if (tolerance !== undefined) curve.tolerance = tolerance;
+        // the sample rule is what the server applies without `scale`: older checks stay as stored
+        if (fields.scale === 'range') curve.scale = 'range';
+        return curve;
     }
     const measure = fields.measure as ScalarMeasure;
     const min = number(fields.min, 'min');
@@ -82,7 +103,10 @@ export function checksEditor(options: ChecksEditorOptions): HTMLElement {
         const min = h('input', { 'aria-label': 'Min', inputmode: 'decimal', value: def?.kind === 'scalar' ? def.min ?? '' : '', disabled, class: 'num' });
         const max = h('input', { 'aria-label': 'Max', inputmode: 'decimal', value: def?.kind === 'scalar' ? def.max ?? '' : '', disabled, class: 'num' });
         const band = h('input', { 'aria-label': 'Band', inputmode: 'decimal', value: def?.kind === 'scalar' ? def.band ?? '' : '', placeholder: '0.02', disabled, class: 'num' });
-        const curveFields = h('span', { class: 'check-fields' }, h('label', {}, 'tolerance (relative) ', tolerance));
+        const scale = h('select', { 'aria-label': 'Relative to', disabled },
+            ...(['range', 'sample'] as const).map((rule) => h('option', { value: rule, selected: curveScaleOf(def) === rule }, SCALE_LABELS[rule])));
+        const curveFields = h('span', { class: 'check-fields' },
+            h('label', {}, 'tolerance ', tolerance), h('label', {}, 'relative to ', scale));
         const bandLabel = h('label', {}, 'band ', band);
         const scalarFields = h('span', { class: 'check-fields' }, h('label', {}, 'measure ', measure), h('label', {}, 'min ', min), h('label', {}, 'max ', max), bandLabel);
         const showKind = () => {
@@ -106,7 +130,7 @@ export function checksEditor(options: ChecksEditorOptions): HTMLElement {
             return {
                 name: checkName, points: p, pretest: pretest.checked,
                 definition: readDefinition({ kind: kind.value, variable: variable.value, tolerance: tolerance.value,
-                    measure: measure.value, min: min.value, max: max.value, band: band.value }, checkName),
+                    scale: scale.value, measure: measure.value, min: min.value, max: max.value, band: band.value }, checkName),
             };
         };
         list.append(row);

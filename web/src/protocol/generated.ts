@@ -225,6 +225,8 @@ export interface ProtocolDefinitions {
     AssignmentCreate?: AssignmentCreate;
     AssignmentUpdate?: AssignmentUpdate;
     ChecksUpdate?: ChecksUpdate;
+    AssignmentWarning?: AssignmentWarning;
+    CurveCheckDefinition?: CurveCheckDefinition;
     CommentCreate?: CommentCreate;
     GradeUpdate?: GradeUpdate;
 }
@@ -1272,8 +1274,41 @@ export interface ChecksUpdate {
         name: string;
         points: number;
         pretest?: boolean;
+        /**
+         * a CurveCheckDefinition, or a scalar check: {kind: scalar, variable, measure, min?, max?, band?} (docs/labs.md)
+         */
         definition: {};
     }[];
+}
+/**
+ * What the teacher is warned of about their assignment (in its create, update and get replies, to the class's teacher only): a model holding an allowed parameter outside its bounds or lacking it (edit_mode parameters), or a check the solution's reference run fails. Warnings never refuse a change.
+ */
+export interface AssignmentWarning {
+    code:
+        | 'template_outside_bounds'
+        | 'solution_outside_bounds'
+        | 'template_lacks_parameter'
+        | 'solution_lacks_parameter'
+        | 'solution_fails_check';
+    /**
+     * a sentence for the teacher
+     */
+    message: string;
+}
+/**
+ * The definition of a curve check (ChecksUpdate): a variable of the run against the solution's reference run, interpolated at the run's times.
+ */
+export interface CurveCheckDefinition {
+    kind: 'curve';
+    variable: string;
+    /**
+     * relative; default 0.01
+     */
+    tolerance?: number;
+    /**
+     * sample (also when absent): the .hvc rule, |1 - run/reference| <= tolerance at each reference sample (samples near zero are skipped); range: |run - reference| <= tolerance * the reference's largest magnitude over the run
+     */
+    scale?: 'sample' | 'range';
 }
 /**
  * A comment on a hand-in.

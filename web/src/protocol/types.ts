@@ -3,7 +3,7 @@
 import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Reply, ResyncEvent } from './generated';
 
 export type {
-    CatalogueEntry, Component, Connection, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
+    AssignmentWarning, CatalogueEntry, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
     ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, Preferences, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
     SysParam, System, SystemPort, User,
 } from './generated';
