@@ -1,7 +1,7 @@
 // The Hopsan GUI layout facts the app needs at run time (display name, library folder, icon
-// size, port positions), extracted from ../shared/reference/appearance.json. The app cannot
-// read ../shared (the Docker image has no copy), so the extract is committed; a unit test
-// fails when it is stale.
+// size, port positions, whether the graphic stays upright), extracted from
+// ../shared/reference/appearance.json. The app cannot read ../shared (the Docker image has no
+// copy), so the extract is committed; a unit test fails when it is stale.
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
@@ -20,6 +20,8 @@ export function extractAppearance() {
             height: t.icon?.height ?? 40,
             ports: Object.fromEntries(Object.entries(t.ports ?? {}).map(([name, p]) => [name, [p.x, p.y, p.a]])),
         };
+        // Hopsan turns the graphic only when iconRotation is exactly ON; written for the others only
+        if (t.iconRotation !== 'ON') types[key].upright = true;
     };
     for (const [key, t] of Object.entries(facts.types)) take(key, t, t.library);
     for (const [key, t] of Object.entries(facts.guiBuiltinTypes)) {

@@ -1,7 +1,8 @@
 // Component icons of our own: a frame of the component's size coloured by domain, with the
 // symbol of the type's family drawn inside it (ISO 1219 fluid power, mechanics, electrics,
-// block diagrams; see icons/). Types of no family keep a labelled box. The drawing is in the
-// component's frame: centre 0,0, box ±w,±h.
+// block diagrams, aircraft, controllers, widgets; see icons/). Types of no family (unknown to
+// Hopsan's library) keep a labelled box. The drawing is in the component's frame: centre 0,0,
+// box ±w,±h.
 import { s } from '../ui/dom';
 import { appearanceOf } from '../model/appearance';
 import { Pen, type Glyph } from './icons/draw';
@@ -14,6 +15,15 @@ import { battery, boundarySource, capacitor, electricSwitch, ground, inductor, m
 import { characteristic, comparator, delay, filter, gain, integrator, latch, lookupTable, mathFunction, operatorCircle, saturation, transferFunction } from './icons/signal';
 import { clock, constant, sink, waveform } from './icons/sources';
 import { gate } from './icons/logic';
+import { currentController, attitudeControl, pid, pwm } from './icons/control';
+import { counter, functionalFlowBlock, router, steadyState, stopSimulation } from './icons/flowLogic';
+import { globe, stateMonitor, timeAccelerator, waypoint } from './icons/navigation';
+import { dialGauge, display, lamp, numericInput, slider, toggle } from './icons/widgets';
+import { activityNode } from './icons/activityDiagram';
+import { aircraft, atmosphere, combustionChamber, flightRecorder, fuelTank, jetEngine, propeller, rocket, wind } from './icons/aero';
+import { combustionEngine, forkLift, swashPlate, valvePlate, vehicle } from './icons/machines';
+import { fmu, interfacePort } from './icons/connectivity';
+import { circularSegment, contours, passThrough, script, signalBus, systemPort } from './icons/special';
 
 export { iconFamily, type Family } from './icons/families';
 
@@ -58,6 +68,13 @@ const drawings: Record<Family, Draw> = {
     staircase: (p) => waveform(p, 'staircase'), clock, sink,
     and: (p) => gate(p, 'and'), or: (p) => gate(p, 'or'), not: (p) => gate(p, 'not'), xor: (p) => gate(p, 'xor'),
     comparator, latch, saturation, characteristic, 'lookup-table': lookupTable, 'math-function': mathFunction,
+    pid, 'attitude-control': attitudeControl, 'current-controller': currentController, pwm, 'functional-flow': functionalFlowBlock, router,
+    counter, 'steady-state': steadyState, stop: stopSimulation, globe, waypoint, 'state-monitor': stateMonitor, 'time-accelerator': timeAccelerator,
+    'dial-gauge': dialGauge, lamp, slider, toggle, display, 'numeric-input': numericInput, 'signal-bus': signalBus, 'circular-segment': circularSegment,
+    activity: activityNode,
+    aircraft, rocket, 'jet-engine': jetEngine, propeller, 'aero-fuel-tank': fuelTank, 'combustion-chamber': combustionChamber, atmosphere, wind,
+    'flight-recorder': flightRecorder, vehicle, engine: combustionEngine, 'fork-lift': forkLift, 'valve-plate': valvePlate, 'swash-plate': swashPlate,
+    interface: interfacePort, fmu, script, 'pass-through': passThrough, contours, 'system-port': systemPort,
 };
 
 /** The labelled box of types without a family. */

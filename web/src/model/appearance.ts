@@ -10,6 +10,8 @@ export interface TypeAppearance {
     height: number;
     /** Port name -> [x, y, angle]: x and y as fractions of the icon's width and height. */
     ports: Record<string, [number, number, number]>;
+    /** True when Hopsan keeps the graphic upright (iconRotation not ON): only box and ports turn. */
+    upright?: true;
 }
 
 const types = (extract as unknown as { types: Record<string, TypeAppearance> }).types;
@@ -24,4 +26,9 @@ export function displayNameOf(type: string): string {
 
 export function libraryOf(type: string): string {
     return types[type]?.library ?? 'Other';
+}
+
+/** Whether Hopsan draws the type's graphic upright whatever the component's rotation and flip. */
+export function keepsIconUpright(type: string): boolean {
+    return types[type]?.upright === true;
 }

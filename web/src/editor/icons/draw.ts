@@ -117,6 +117,21 @@ export class Pen {
         return this.line(pts, o);
     }
 
+    /** An ellipse around c with half axes rx, ry, as a closed polyline (tests can measure it). */
+    ellipse(c: Pt, rx: number, ry: number, o: Opts = {}): SVGElement {
+        const pts: Pt[] = [];
+        for (let i = 0; i < 32; i++) pts.push([c[0] + rx * Math.cos((i * Math.PI) / 16), c[1] + ry * Math.sin((i * Math.PI) / 16)]);
+        return this.poly(pts, o);
+    }
+
+    /** A rectangle with rounded corners of radius r, as a polygon. */
+    roundedRect(x0: number, y0: number, x1: number, y1: number, r: number, o: Opts = {}): SVGElement {
+        const k = Math.max(0, Math.min(r, (x1 - x0) / 2, (y1 - y0) / 2));
+        const q = Math.PI / 2;
+        return this.poly([...Pen.arc([x1 - k, y0 + k], k, -q, 0, 4), ...Pen.arc([x1 - k, y1 - k], k, 0, q, 4),
+            ...Pen.arc([x0 + k, y1 - k], k, q, 2 * q, 4), ...Pen.arc([x0 + k, y0 + k], k, 2 * q, 3 * q, 4)], o);
+    }
+
     /** Points of an arc around c from angle a0 to a1 (radians, y down). */
     static arc(c: Pt, r: number, a0: number, a1: number, n = 12): Pt[] {
         const pts: Pt[] = [];

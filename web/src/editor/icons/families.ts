@@ -16,11 +16,63 @@ export type Family =
     // signals (block diagrams)
     | 'gain' | 'sum' | 'product' | 'integrator' | 'delay' | 'transfer-function' | 'filter'
     | 'step' | 'sine' | 'ramp' | 'constant' | 'pulse' | 'square' | 'noise' | 'staircase' | 'clock' | 'sink'
-    | 'and' | 'or' | 'not' | 'xor' | 'comparator' | 'latch' | 'saturation' | 'characteristic' | 'lookup-table' | 'math-function';
+    | 'and' | 'or' | 'not' | 'xor' | 'comparator' | 'latch' | 'saturation' | 'characteristic' | 'lookup-table' | 'math-function'
+    // controllers, flow logic, navigation and widgets
+    | 'pid' | 'attitude-control' | 'current-controller' | 'pwm' | 'functional-flow' | 'router' | 'counter' | 'steady-state' | 'stop'
+    | 'globe' | 'waypoint' | 'state-monitor' | 'time-accelerator' | 'dial-gauge' | 'lamp' | 'slider' | 'toggle' | 'display' | 'numeric-input'
+    | 'signal-bus' | 'circular-segment' | 'activity'
+    // aircraft, vehicles and machines
+    | 'aircraft' | 'rocket' | 'jet-engine' | 'propeller' | 'aero-fuel-tank' | 'combustion-chamber' | 'atmosphere' | 'wind' | 'flight-recorder'
+    | 'vehicle' | 'engine' | 'fork-lift' | 'valve-plate' | 'swash-plate'
+    // links to other tools, scripts, benchmarks and test functions
+    | 'interface' | 'fmu' | 'script' | 'pass-through' | 'contours' | 'system-port';
 
 const rules: [Family | null, RegExp][] = [
-    // machine parts, interfaces, benchmarks and diagrams of other kinds keep the labelled box
-    [null, /ValvePlate|SwashPlate|Interface|Dummy|^ActivityDiagram|^Aero|^Optimization|Animation|^SignalFFB/],
+    // links, benchmarks and machine parts first: their names hold words of the families below
+    ['interface', /Interface/],
+    ['fmu', /^FMIWrapper/],
+    ['pass-through', /Dummy/],
+    ['valve-plate', /ValvePlate/],
+    ['swash-plate', /SwashPlate/],
+    ['system-port', /^HopsanGUISystemPort$/],
+    // aircraft and vehicles
+    ['aircraft', /^AeroAircraft/],
+    ['rocket', /^AeroVehicleTVC$/],
+    ['jet-engine', /^AeroJetEngine$/],
+    ['propeller', /^AeroPropeller$/],
+    ['aero-fuel-tank', /^AeroFuelTank$/],
+    ['combustion-chamber', /^AeroCombustionChamber/],
+    ['atmosphere', /^AeroAtmosphere$/],
+    ['wind', /^AeroWind$/],
+    ['flight-recorder', /^AeroFlightRecorder$/],
+    ['vehicle', /Vehicle1D$/],
+    ['engine', /^CombustionEngine$/],
+    ['fork-lift', /^Forks$/],
+    ['contours', /^OptimizationTestFunction/],
+    // controllers, flow logic, navigation, widgets
+    ['pid', /^SignalPI(D\d?|lead)$/],
+    ['attitude-control', /^SignalAttitude(TVC)?[Cc]ontrol$/],
+    ['current-controller', /^ElectricIcontroller$/],
+    ['pwm', /^ElectricPWM/],
+    ['activity', /^ActivityDiagram/],
+    ['functional-flow', /^SignalFFB/],
+    ['router', /^Signal(Dual|Triple|Quad)Route$/],
+    ['counter', /^SignalCounter$/],
+    ['steady-state', /^SignalSteadyStateIdentifier$/],
+    ['stop', /^SignalStopSimulation$/],
+    ['globe', /^SignalEarthCoordinates$/],
+    ['waypoint', /^SignalWaypoint$/],
+    ['state-monitor', /^SignalStateMonitor$/],
+    ['time-accelerator', /^SignalTimeAccelerator$/],
+    ['dial-gauge', /^SignalAnimationGauge$/],
+    ['lamp', /^SignalAnimationLamp$/],
+    ['slider', /^SignalAnimationSlider$/],
+    ['toggle', /^SignalAnimation(Momentary)?Switch/],
+    ['display', /^SignalDisplay$/],
+    ['numeric-input', /^SignalNumericalInput$/],
+    ['signal-bus', /^Signal2D(Read|Write|Split)/],
+    ['circular-segment', /Segare$/],
+    ['script', /^SignalNumHop/],
     // valves
     ['directional-valve', /^Hydraulic\d\dDirectional/],
     ['shuttle-valve', /ShuttleValve/],
@@ -93,7 +145,7 @@ const rules: [Family | null, RegExp][] = [
     ['math-function', /^Signal(Sin|Cos|Tan|Asin|Acos|Atan2?|Sinh|Cosh|Tanh|Exp|Log|Log10|Sqrt|Power|Square|Floor|Ceil|Round|Min|Max|SampleAndHold)$/],
 ];
 
-/** The symbol family of a type, or null for types drawn as a labelled box. */
+/** The symbol family of a type, or null for types drawn as a labelled box (unknown types). */
 export function iconFamily(type: string): Family | null {
     for (const [family, pattern] of rules) if (pattern.test(type)) return family;
     return null;
