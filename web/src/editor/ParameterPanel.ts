@@ -1,6 +1,8 @@
 // Right-hand panel: the selected component's name and parameters (values with units;
 // numbers, expressions and system-parameter names; errors inline), or the system's
-// parameters when nothing is selected.
+// parameters when nothing is selected. A refused value leaves the field at the model's value
+// with the reason beside it. In a locked copy (EditPermissions) only the allowed parameters
+// take input, their bounds beside them; everything else is read-only.
 import { EditorStore } from './EditorStore';
 import { RenameComponent, SetParameter, SetSystemParameter } from './commands';
 import { errorText, h } from '../ui/dom';
@@ -8,6 +10,7 @@ import { displayNameOf } from '../model/appearance';
 import { isParameterPort } from '../model/parameterPortPlacement';
 import { parameterLabel, shortName, splitParameters } from './parameterLabels';
 import { notFiniteError } from './finiteNumber';
+import { boundsText, EditPermissions, type StructuralEdit } from './EditPermissions';
 import type { Component, PortRef, System } from '../protocol/types';
 
 export interface PanelActions {
@@ -27,11 +30,12 @@ export class ParameterPanel {
     private readonly body = h('div', { class: 'parameter-panel-body' });
     readonly element = h('aside', { class: 'parameter-panel', 'aria-label': 'Parameters' }, this.body);
     private signature = '';
-    /** Values the server refused, kept with its message until changed. */
-    private readonly refused = new Map<string, { value: string; message: string }>();
+    /** Why the last value typed into a field was refused, until the field is changed again. */
+    private readonly refused = new Map<string, string>();
     private nameError = '';
 
-    constructor(private readonly store: EditorStore, private readonly actions: PanelActions) {
+    constructor(private readonly store: EditorStore, private readonly actions: PanelActions,
+        private readonly permissions: EditPermissions = EditPermissions.free) {
         store.subscribe(() => this.render());
         this.render();
     }
@@ -61,10 +65,10 @@ export class ParameterPanel {
 
     private componentView(comp: Component): HTMLElement[] {
         const path = this.store.path;
-        const name = h('input', { name: 'component-name', value: comp.name, 'aria-label': 'Component name' });
+        const name = h('input', { name: 'component-name', value: comp.name, 'aria-label': 'Component name', readonly: !this.may('rename') });
         const commitName = () => {
             const wanted = name.value.trim();
-            if (wanted === '' || wanted === comp.name) return;
+            if (wanted === '' || wanted === comp.name || !this.may('rename')) return;
             if (this.store.system.components.some((c) => c.name === wanted) || this.store.system.ports.some((p) => p.name === wanted)) {
                 this.nameError = `The name ${wanted} is already used in this system`;
                 this.render();
@@ -82,28 +86,27 @@ export class ParameterPanel {
         const row = (p: Component['parameters'][number]) => {
             const key = `${comp.name}.${p.name}`;
             const refused = this.refused.get(key);
-            const input = h('input', {
-                name: `param-${p.name}`, value: refused?.value ?? p.value, class: refused ? 'invalid' : '',
-                'aria-label': `${p.name} value`, 'aria-invalid': refused ? 'true' : 'false',
-            });
+            const rule = this.permissions.parameterRule(path, comp.name, p.name);
+            const input = this.valueField(`param-${p.name}`, `${p.name} value`, p.value, refused, rule !== null);
             const commit = () => {
                 const value = input.value.trim();
-                if (value === p.value && !refused) return;
-                if (value === p.value) { this.refused.delete(key); this.render(); return; }
+                if (value === p.value) { if (refused) { this.refused.delete(key); this.render(); } return; }
                 const notFinite = notFiniteError(`${comp.name}.${shortName(p)}`, p.type, value);
-                if (notFinite) { this.refused.set(key, { value, message: notFinite }); this.render(); return; }
+                if (notFinite) { this.refuse(key, notFinite); return; }
                 this.run(this.store.execute(new SetParameter(path, comp.name, p.name, value)).then(() => {
                     this.refused.delete(key);
                     this.render();
-                }), (message) => { this.refused.set(key, { value, message }); this.render(); });
+                }), (message) => this.refuse(key, message));
             };
-            input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
-            input.addEventListener('change', commit);
+            if (rule) {
+                input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+                input.addEventListener('change', commit);
+            }
             const label = parameterLabel(p);
-            return h('tr', { 'data-param': p.name, title: `${shortName(p)}${p.description ? `: ${p.description}` : ''}` },
+            return h('tr', { 'data-param': p.name, class: this.rowClass(rule !== null), title: `${shortName(p)}${p.description ? `: ${p.description}` : ''}` },
                 h('th', {}, h('span', { class: 'param-label' }, label),
                     label !== shortName(p) ? h('span', { class: 'param-name' }, shortName(p)) : null),
-                h('td', {}, input, refused ? h('div', { class: 'field-error', role: 'alert' }, refused.message) : null),
+                h('td', {}, input, this.boundsNote(rule), refused ? h('div', { class: 'field-error', role: 'alert' }, refused) : null),
                 h('td', { class: 'unit' }, p.unit));
         };
         const { parameters, startValues } = splitParameters(comp.parameters);
@@ -123,15 +126,15 @@ export class ParameterPanel {
             this.nameError ? h('div', { class: 'field-error', role: 'alert' }, this.nameError) : h('span'),
             h('p', { class: 'muted' }, `${displayNameOf(comp.type)} · ${comp.type} · ${comp.kind === 'system' ? 'subsystem' : `${comp.kind}-type`}`),
             h('div', { class: 'button-row' },
-                h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)' }, 'Rotate'),
-                h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)' }, 'Flip'),
+                h('button', { onclick: () => this.actions.rotate(), title: 'Rotate (R)', disabled: !this.may('rotate') }, 'Rotate'),
+                h('button', { onclick: () => this.actions.flip(), title: 'Flip (F)', disabled: !this.may('flip') }, 'Flip'),
                 comp.ports.some((p) => isParameterPort(comp, p)) ? h('button', {
                     onclick: () => this.actions.toggleParameterPorts(), title: 'Show or hide this component\'s parameter ports (P)',
                     'aria-pressed': String(this.actions.parameterPortsShown(comp.name)), 'data-testid': 'toggle-parameter-ports',
                 }, 'Parameter ports') : null,
                 comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
-                comp.system ? h('button', { onclick: () => this.actions.ungroup(), 'data-testid': 'ungroup' }, 'Ungroup') : null,
-                h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)' }, 'Delete')),
+                comp.system ? h('button', { onclick: () => this.actions.ungroup(), 'data-testid': 'ungroup', disabled: !this.may('ungroup') }, 'Ungroup') : null,
+                h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)', disabled: !this.may('delete') }, 'Delete')),
             h('h3', {}, 'Parameters'),
             parameters.length ? table(parameters) : h('p', { class: 'muted' }, 'No parameters.'),
             ...(startValues.length ? [h('h3', {}, 'Start values'), h('div', { class: 'start-values', 'data-testid': 'start-values' }, table(startValues))] : []),
@@ -144,10 +147,10 @@ export class ParameterPanel {
         return [
             h('h2', {}, `${count} components selected`),
             h('div', { class: 'button-row' },
-                h('button', { onclick: () => this.actions.rotate() }, 'Rotate'),
-                h('button', { onclick: () => this.actions.flip() }, 'Flip'),
-                h('button', { onclick: () => this.actions.group(), 'data-testid': 'group' }, 'Group into subsystem'),
-                h('button', { class: 'danger', onclick: () => this.actions.remove() }, 'Delete')),
+                h('button', { onclick: () => this.actions.rotate(), disabled: !this.may('rotate') }, 'Rotate'),
+                h('button', { onclick: () => this.actions.flip(), disabled: !this.may('flip') }, 'Flip'),
+                h('button', { onclick: () => this.actions.group(), 'data-testid': 'group', disabled: !this.may('group') }, 'Group into subsystem'),
+                h('button', { class: 'danger', onclick: () => this.actions.remove(), disabled: !this.may('delete') }, 'Delete')),
             h('p', { class: 'muted' }, 'Ctrl+C / Ctrl+V copies them with the connections among them.'),
         ];
     }
@@ -157,20 +160,23 @@ export class ParameterPanel {
         const rows = system.parameters.map((p) => {
             const key = `$sys.${p.name}`;
             const refused = this.refused.get(key);
-            const input = h('input', { name: `sysparam-${p.name}`, value: refused?.value ?? p.value, class: refused ? 'invalid' : '', 'aria-label': `${p.name} value` });
+            const rule = this.permissions.parameterRule(path, null, p.name);
+            const input = this.valueField(`sysparam-${p.name}`, `${p.name} value`, p.value, refused, rule !== null);
             const commit = () => {
                 const value = input.value.trim();
                 if (value === p.value) { if (refused) { this.refused.delete(key); this.render(); } return; }
                 const notFinite = notFiniteError(p.name, p.type, value);
-                if (notFinite) { this.refused.set(key, { value, message: notFinite }); this.render(); return; }
+                if (notFinite) { this.refuse(key, notFinite); return; }
                 this.run(this.store.execute(new SetSystemParameter(path, { ...p, value })).then(() => { this.refused.delete(key); this.render(); }),
-                    (message) => { this.refused.set(key, { value, message }); this.render(); });
+                    (message) => this.refuse(key, message));
             };
-            input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
-            input.addEventListener('change', commit);
-            return h('tr', { 'data-sysparam': p.name, title: p.description },
+            if (rule) {
+                input.addEventListener('keydown', (e) => { if (e.key === 'Enter') commit(); });
+                input.addEventListener('change', commit);
+            }
+            return h('tr', { 'data-sysparam': p.name, class: this.rowClass(rule !== null), title: p.description },
                 h('th', {}, p.name),
-                h('td', {}, input, refused ? h('div', { class: 'field-error', role: 'alert' }, refused.message) : null),
+                h('td', {}, input, this.boundsNote(rule), refused ? h('div', { class: 'field-error', role: 'alert' }, refused) : null),
                 h('td', { class: 'unit' }, p.unit));
         });
         const newName = h('input', { name: 'new-sysparam-name', placeholder: 'name', 'aria-label': 'New parameter name' });
@@ -185,9 +191,9 @@ export class ParameterPanel {
                 if (!name) return;
                 const param = { name, value: newValue.value.trim() || '0', type: 'double' as const, unit: newUnit.value.trim(), description: '' };
                 const notFinite = notFiniteError(name, param.type, param.value);
-                if (notFinite) { this.refused.set('$new', { value: name, message: notFinite }); this.render(); return; }
+                if (notFinite) { this.refuse('$new', notFinite); return; }
                 this.run(this.store.execute(new SetSystemParameter(path, param)).then(() => { this.refused.delete('$new'); this.render(); }),
-                    (message) => { this.refused.set('$new', { value: name, message }); this.render(); });
+                    (message) => this.refuse('$new', message));
             },
         }, newName, newValue, newUnit, h('button', { type: 'submit' }, 'Add'));
         return [
@@ -195,9 +201,42 @@ export class ParameterPanel {
             h('p', { class: 'muted' }, `${system.components.length} components, ${system.connections.length} connections`),
             h('h3', {}, 'System parameters'),
             rows.length ? h('table', { class: 'param-table' }, h('tbody', {}, ...rows)) : h('p', { class: 'muted' }, 'None.'),
-            add,
-            addError ? h('div', { class: 'field-error', role: 'alert' }, addError.message) : h('span'),
+            this.permissions.allows('system-parameters') ? add : h('span'),
+            addError ? h('div', { class: 'field-error', role: 'alert' }, addError) : h('span'),
             h('p', { class: 'muted hint' }, 'Parameter values accept numbers, expressions and system parameter names.'),
         ];
+    }
+
+    private may(edit: StructuralEdit): boolean {
+        return this.permissions.allows(edit);
+    }
+
+    /** Shows why a value was refused; the field goes back to the model's value (drawn anew even if the reason is the same). */
+    private refuse(key: string, message: string): void {
+        this.refused.set(key, message);
+        this.signature = '';
+        this.render();
+    }
+
+    /** A parameter's value field: read-only unless it may change, marked while its last value was refused. */
+    private valueField(name: string, label: string, value: string, refused: string | undefined, editable: boolean): HTMLInputElement {
+        return h('input', {
+            name, value, 'aria-label': label, readonly: !editable, class: refused ? 'invalid' : '',
+            'aria-invalid': refused ? 'true' : 'false',
+            title: editable ? undefined : 'Locked: this assignment does not let you change it',
+        });
+    }
+
+    /** In a locked copy the parameters that may change stand out from the read-only ones. */
+    private rowClass(editable: boolean): string {
+        if (!this.permissions.locked) return '';
+        return editable ? 'param-allowed' : 'param-locked';
+    }
+
+    /** The allowed range beside a field of a locked copy. */
+    private boundsNote(rule: ReturnType<EditPermissions['parameterRule']>): HTMLElement | null {
+        if (!this.permissions.locked || !rule) return null;
+        const bounds = boundsText(rule);
+        return h('span', { class: 'param-bounds', 'data-testid': 'param-bounds' }, bounds ? `allowed: ${bounds}` : 'allowed: any value');
     }
 }

@@ -1,6 +1,8 @@
-// The classes page: the caller's classes with their role in each, joining a class by its code
-// and, for teachers (server role teacher or admin), creating one.
+// The classes page: the caller's classes with their role in each (searched by class or teacher,
+// sorted by a column header), joining a class by its code and, for teachers (server role
+// teacher or admin), creating one.
 import { errorText, h } from '../ui/dom';
+import { filterRows, sortableTable, type Column } from '../ui/sortableTable';
 import { ApiError } from '../api/ApiError';
 import type { Session } from '../app/Session';
 import type { LabClass } from './types';
@@ -19,26 +21,37 @@ export function joinErrorText(e: unknown): string {
 export async function renderClassList(root: HTMLElement, session: Session): Promise<void> {
     const labs = session.labs;
     const list = h('div', { 'data-testid': 'class-list' }, h('p', { class: 'muted' }, 'Loading…'));
+    const roleOf = (c: LabClass) => c.role ?? (session.user?.role === 'admin' ? 'admin' : '');
+    const columns: Column<LabClass>[] = [
+        {
+            key: 'name', label: 'Class', value: (c) => c.name,
+            cell: (c) => h('span', {}, h('a', { href: `#/class/${c.id}`, class: 'class-link' }, c.name),
+                c.archived ? h('span', { class: 'badge' }, 'archived') : null),
+        },
+        { key: 'teacher', label: 'Teacher', value: (c) => c.owner?.username ?? '' },
+        { key: 'role', label: 'Your role', value: roleOf },
+        { key: 'created', label: 'Created', value: (c) => c.created_at, largestFirst: true, cell: (c) => formatTime(c.created_at) },
+    ];
     const refresh = async () => {
         try {
             const classes = await labs.listClasses();
-            list.replaceChildren(classes.length === 0
-                ? h('p', { class: 'muted' }, 'You are in no class yet. Join one with the code your teacher gave you.')
-                : table(classes));
+            if (classes.length === 0) {
+                list.replaceChildren(h('p', { class: 'muted' }, 'You are in no class yet. Join one with the code your teacher gave you.'));
+                return;
+            }
+            const table = sortableTable({
+                columns, rows: classes, order: { key: 'name', direction: 'ascending' }, empty: 'No class matches the search.',
+                rowAttrs: (c) => ({ dataset: { classId: String(c.id) } }),
+            });
+            const search = h('input', {
+                type: 'search', name: 'class-search', placeholder: 'Search classes by name or teacher', 'aria-label': 'Search classes',
+                oninput: () => table.show(filterRows(classes, search.value, (c) => `${c.name} ${c.owner?.username ?? ''} ${roleOf(c)}`)),
+            });
+            list.replaceChildren(h('div', { class: 'list-search' }, search), table.element);
         } catch (e) {
             list.replaceChildren(h('p', { class: 'form-error', role: 'alert' }, errorText(e)));
         }
     };
-
-    const table = (classes: LabClass[]) => h('table', { class: 'model-table' },
-        h('thead', {}, h('tr', {}, h('th', {}, 'Class'), h('th', {}, 'Teacher'), h('th', {}, 'Your role'), h('th', {}, 'Created'))),
-        h('tbody', {}, ...[...classes].sort((a, b) => a.name.localeCompare(b.name)).map((c) =>
-            h('tr', { dataset: { classId: String(c.id) } },
-                h('td', {}, h('a', { href: `#/class/${c.id}`, class: 'class-link' }, c.name),
-                    c.archived ? h('span', { class: 'badge' }, 'archived') : null),
-                h('td', {}, c.owner?.username ?? ''),
-                h('td', {}, c.role ?? (session.user?.role === 'admin' ? 'admin' : '')),
-                h('td', {}, formatTime(c.created_at))))));
 
     const code = h('input', { name: 'join-code', 'aria-label': 'Join code', placeholder: 'Code from your teacher', required: true, autocomplete: 'off', spellcheck: false });
     const joinError = h('p', { class: 'form-error', role: 'alert', 'data-testid': 'join-error' });

@@ -1,6 +1,6 @@
 // A class's page: its assignments (students: the open ones with their status), and for the
 // staff its members; the teacher also sees the join code, adds and removes members, imports
-// accounts, archives the class, exports the gradebook and creates assignments.
+// accounts, archives the class, sees the gradebook (and exports it) and creates assignments.
 import { downloadText, errorText, h, toast } from '../ui/dom';
 import type { Session } from '../app/Session';
 import type { Assignment, ClassMember, ClassRole, LabClass } from './types';
@@ -8,6 +8,7 @@ import { isStaff, isTeacher, STATUS_LABELS } from './types';
 import { formatTime } from './format';
 import { errorPage, noCleanup, section, type LabPage } from './LabPage';
 import { assignmentForm } from './AssignmentForm';
+import { gradebookTable } from './GradebookTable';
 
 const ROLES: ClassRole[] = ['student', 'assistant', 'teacher'];
 
@@ -106,6 +107,13 @@ export async function renderClass(root: HTMLElement, session: Session, classId: 
             },
         }, theClass.archived ? 'Unarchive' : 'Archive')) : null;
 
+    // ---- the gradebook (the teacher's), filled in when it comes
+    const gradebookSlot = h('div', {}, h('p', { class: 'muted' }, 'Loading…'));
+    if (teacher) {
+        labs.gradebook(classId).then((book) => gradebookSlot.replaceChildren(gradebookTable(book)),
+            (e) => gradebookSlot.replaceChildren(h('p', { class: 'form-error', role: 'alert' }, errorText(e))));
+    }
+
     // ---- members
     const members = staff ? membersSection(session, theClass, teacher, rerender) : null;
 
@@ -117,6 +125,7 @@ export async function renderClass(root: HTMLElement, session: Session, classId: 
             h('span', { class: 'muted' }, `teacher ${theClass.owner?.username ?? ''} · you: ${theClass.role ?? session.user?.role ?? ''}`)),
         teacherTools,
         section('Assignments', 'assignments', newAssignment ? h('div', { class: 'toolbar' }, newAssignment) : null, formSlot, assignmentTable),
+        teacher ? section('Gradebook', 'gradebook', gradebookSlot) : null,
         members));
     return noCleanup;
 }

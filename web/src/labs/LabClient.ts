@@ -2,7 +2,7 @@
 // its errors (ApiError with the server's code) and its 401 handling.
 import type { RestClient } from '../api/RestClient';
 import type {
-    Assignment, AssignmentInput, Check, ClassRole, Copy, DashboardRow, HandIn, HandInComment,
+    Assignment, AssignmentInput, Check, ClassRole, Copy, DashboardRow, Gradebook, HandIn, HandInComment,
     ImportedAccount, LabClass, Overlay, PretestResult,
 } from './types';
 
@@ -37,7 +37,7 @@ export class LabClient {
     gradebookCsv(classId: number): Promise<string> {
         return this.rest.call('GET', `/classes/${id(classId)}/gradebook?format=csv`, undefined, undefined, 'text/csv');
     }
-    gradebookJson(classId: number): Promise<unknown> {
+    gradebook(classId: number): Promise<Gradebook> {
         return this.rest.call('GET', `/classes/${id(classId)}/gradebook?format=json`);
     }
 

@@ -149,6 +149,17 @@ export interface DashboardRow {
     handin_id?: number | null;
 }
 
+/** GET /classes/{id}/gradebook?format=json: one cell per assignment, in `assignments`' order. */
+export interface GradebookCell {
+    /** the teacher's grade where set, else the latest hand-in's score; null: not handed in */
+    points: number | null;
+    late: boolean;
+}
+export interface Gradebook {
+    assignments: { id: number; title: string }[];
+    students: { student: UserRef; cells: GradebookCell[] }[];
+}
+
 export interface OverlaySeries { student: UserRef; job_id: number; time: number[]; values: number[] }
 export interface Overlay { variable: string; series: OverlaySeries[] }
 

@@ -1,16 +1,23 @@
-// The model list: the user's own models and the examples; create, rename, duplicate, delete,
-// upload a .hmf and download as .hmf.
+// The model list: the user's own models and the examples, searched by name or owner and
+// sorted by a column header; create, rename, duplicate, delete, upload a .hmf and download as .hmf.
 import { downloadText, errorText, h, toast } from '../ui/dom';
+import { filterRows, sortableTable, type Column, type SortOrder } from '../ui/sortableTable';
 import type { Session } from '../app/Session';
 import type { ModelSummary } from '../protocol/types';
 
 export async function renderModelList(root: HTMLElement, session: Session, open: (id: number) => void): Promise<void> {
     const rest = session.rest;
     const list = h('div', { class: 'model-tables' }, h('p', { class: 'muted' }, 'Loading…'));
+    const search = h('input', {
+        type: 'search', name: 'model-search', placeholder: 'Search models by name or owner', 'aria-label': 'Search models',
+        oninput: () => showModels(),
+    });
+    let models: ModelSummary[] = [];
+    const showModels = () => list.replaceChildren(...tables(filterRows(models, search.value, (m) => `${m.name} ${m.owner.username}`)));
     const refresh = async () => {
         try {
-            const models = await rest.listModels();
-            list.replaceChildren(...tables(models));
+            models = await rest.listModels();
+            showModels();
         } catch (e) {
             list.replaceChildren(h('p', { class: 'form-error' }, errorText(e)));
         }
@@ -26,11 +33,7 @@ export async function renderModelList(root: HTMLElement, session: Session, open:
     };
     const mine = (m: ModelSummary) => session.user?.role === 'admin' || m.owner.id === session.user?.id;
 
-    const row = (m: ModelSummary) => h('tr', { dataset: { modelId: String(m.id) } },
-        h('td', {}, h('a', { href: `#/model/${m.id}`, class: 'model-link' }, m.name)),
-        h('td', {}, m.owner.username),
-        h('td', {}, new Date(m.updated_at * 1000).toLocaleString()),
-        h('td', { class: 'actions' },
+    const actions = (m: ModelSummary) => h('div', { class: 'actions' },
             h('button', { onclick: () => open(m.id) }, 'Open'),
             mine(m) && (!m.is_example || session.user?.role === 'admin') ? h('button', {
                 onclick: () => {
@@ -52,19 +55,28 @@ export async function renderModelList(root: HTMLElement, session: Session, open:
                 onclick: () => {
                     if (confirm(`Delete model "${m.name}"?`)) void act(() => rest.deleteModel(m.id), 'Deleted');
                 },
-            }, 'Delete') : null));
+            }, 'Delete') : null);
 
-    const table = (title: string, models: ModelSummary[], testId: string) => h('section', { class: 'model-section', dataset: { testid: testId } },
+    const columns: Column<ModelSummary>[] = [
+        { key: 'name', label: 'Name', value: (m) => m.name, cell: (m) => h('a', { href: `#/model/${m.id}`, class: 'model-link' }, m.name) },
+        { key: 'owner', label: 'Owner', value: (m) => m.owner.username },
+        { key: 'changed', label: 'Changed', value: (m) => m.updated_at, largestFirst: true, cell: (m) => new Date(m.updated_at * 1000).toLocaleString() },
+        { key: 'actions', label: '', value: () => null, cell: actions, sortable: false },
+    ];
+    // each table keeps the order its headers were clicked to while the list is searched or changed
+    const orders = new Map<string, SortOrder>();
+    const table = (title: string, shown: ModelSummary[], testId: string) => h('section', { class: 'model-section', dataset: { testid: testId } },
         h('h2', {}, title),
-        models.length === 0 ? h('p', { class: 'muted' }, 'None yet.') : h('table', { class: 'model-table' },
-            h('thead', {}, h('tr', {}, h('th', {}, 'Name'), h('th', {}, 'Owner'), h('th', {}, 'Changed'), h('th', {}, ''))),
-            h('tbody', {}, ...models.map(row))));
+        shown.length === 0 ? h('p', { class: 'muted' }, search.value.trim() ? 'No model matches the search.' : 'None yet.') : sortableTable({
+            columns, rows: shown, order: orders.get(testId) ?? { key: 'name', direction: 'ascending' },
+            onOrder: (order) => orders.set(testId, order),
+            rowAttrs: (m) => ({ dataset: { modelId: String(m.id) } }),
+        }).element);
 
-    const tables = (models: ModelSummary[]) => {
-        const byName = (a: ModelSummary, b: ModelSummary) => a.name.localeCompare(b.name);
-        const own = models.filter((m) => !m.is_example && m.owner.id === session.user?.id).sort(byName);
-        const others = models.filter((m) => !m.is_example && m.owner.id !== session.user?.id).sort(byName);
-        const examples = models.filter((m) => m.is_example).sort(byName);
+    const tables = (shown: ModelSummary[]) => {
+        const own = shown.filter((m) => !m.is_example && m.owner.id === session.user?.id);
+        const others = shown.filter((m) => !m.is_example && m.owner.id !== session.user?.id);
+        const examples = shown.filter((m) => m.is_example);
         return [
             table('My models', own, 'own-models'),
             others.length > 0 ? table('Models of others', others, 'other-models') : null,
@@ -99,6 +111,6 @@ export async function renderModelList(root: HTMLElement, session: Session, open:
     }, newName, h('button', { type: 'submit', class: 'primary' }, 'Create'),
     h('label', { class: 'upload' }, 'Upload .hmf ', upload));
 
-    root.replaceChildren(h('main', { class: 'model-list-page' }, toolbar, list));
+    root.replaceChildren(h('main', { class: 'model-list-page' }, toolbar, h('div', { class: 'list-search' }, search), list));
     await refresh();
 }

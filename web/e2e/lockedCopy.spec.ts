@@ -1,0 +1,136 @@
+// A student's locked copy looks locked (docs/labs.md "Locks"): only the parameter the
+// assignment lists takes input, with its bounds beside it; the palette is gone and the other
+// fields are read-only; a value out of bounds goes back to the last good one with the reason;
+// the instructions are beside the editor. And the teacher's gradebook is a table in the page
+// that sorts by a column click. Classes, assignments and hand-ins are made through the API.
+import { test, expect, type APIRequestContext, type Browser, type Page } from './fixtures';
+import { fileURLToPath } from 'node:url';
+import { baseUrl } from './helpers';
+import { ADMIN_PASSWORD } from './globalSetup';
+
+const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));
+const password = (user: string) => `${user}-locked-password`;
+const INSTRUCTIONS = '# Tune the servo\nSet the **proportional gain** `GainP.k` so that the mass follows the step without a large overshoot.\n\n1. Change `GainP.k` (between 0 and 0.1).\n2. Run, save, pretest and hand in.';
+
+/** A REST call as one user; the reply as JSON (these are the API's own shapes, read loosely). */
+type Call = (method: string, path: string, data?: unknown) => Promise<any>;
+
+async function as(request: APIRequestContext, username: string, secret = password(username)): Promise<Call> {
+    const login = await request.post(`${baseUrl()}/api/v1/auth/login`, { data: { username, password: secret } });
+    expect(login.ok(), `login ${username}`).toBe(true);
+    const { token } = await login.json() as { token: string };
+    return async (method, path, data) => {
+        const response = await request.fetch(`${baseUrl()}/api/v1${path}`, { method, data, headers: { Authorization: `Bearer ${token}` } });
+        expect(response.ok(), `${method} ${path}: ${await response.text()}`).toBe(true);
+        return response.status() === 204 ? null : response.json();
+    };
+}
+
+/** A teacher, students who joined, and an assignment on Position Servo that lets them change GainP.k within 0 … 0.1. */
+async function lockedAssignment(request: APIRequestContext, prefix: string, students: string[]) {
+    const admin = await as(request, 'admin', ADMIN_PASSWORD);
+    const teacherName = `${prefix}teacher`;
+    for (const [username, role] of [[teacherName, 'teacher'], ...students.map((s) => [s, 'user'])]) {
+        await admin('POST', '/users', { username, password: password(username), role });
+    }
+    const teacher = await as(request, teacherName);
+    const models = await teacher('GET', '/models') as { id: number; name: string; is_example: boolean }[];
+    const servo = models.find((m) => m.is_example && m.name === 'Position Servo')!;
+    const theClass = await teacher('POST', '/classes', { name: 'Fluid power lab' });
+    const assignment = await teacher('POST', `/classes/${theClass.id}/assignments`, {
+        title: 'Tune the servo', instructions: INSTRUCTIONS, template_model_id: servo.id,
+        edit_mode: 'parameters', parameters: [{ name: 'GainP.k', min: 0, max: 0.1 }],
+    });
+    const copies = new Map<string, { call: Call; modelId: number }>();
+    for (const s of students) {
+        const call = await as(request, s);
+        await call('POST', '/classes/join', { code: theClass.join_code });
+        const { copy } = await call('POST', `/assignments/${assignment.id}/open`);
+        copies.set(s, { call, modelId: copy.model_id });
+    }
+    return { teacher, teacherName, classId: theClass.id as number, assignmentId: assignment.id as number, copies };
+}
+
+async function loggedIn(browser: Browser, username: string): Promise<Page> {
+    const page = await (await browser.newContext()).newPage();
+    await page.goto(`${baseUrl()}/#/login`);
+    await page.getByLabel('User name').fill(username);
+    await page.getByLabel('Password').fill(password(username));
+    await page.getByRole('button', { name: 'Log in' }).click();
+    await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    return page;
+}
+
+test('a student\'s locked copy: only the allowed field takes input, a refused value returns with the reason', async ({ browser, request }) => {
+    const { assignmentId, copies } = await lockedAssignment(request, 'lc', ['lcstudent']);
+    const page = await loggedIn(browser, 'lcstudent');
+    await page.goto(`${baseUrl()}/#/model/${copies.get('lcstudent')!.modelId}?assignment=${assignmentId}`);
+    await expect(page.locator('.canvas .component').first()).toBeVisible();
+    const components = await page.locator('.canvas .component').count();
+
+    // the instructions beside the editor; no palette to add from
+    await expect(page.getByTestId('instructions-panel').locator('h1')).toHaveText('Tune the servo');
+    await expect(page.locator('.palette')).toHaveCount(0);
+
+    // the allowed parameter takes input, its bounds beside it; structural buttons are off
+    await page.locator('.canvas .component[data-name="GainP"] .icon-frame').click();
+    const gain = page.getByLabel('k#Value value');
+    await expect(gain).toBeEditable();
+    await expect(page.getByTestId('param-bounds')).toHaveText('allowed: 0 … 0.1');
+    await expect(page.getByLabel('Component name')).not.toBeEditable();
+    for (const name of ['Rotate', 'Flip', 'Delete']) await expect(page.locator('.parameter-panel').getByRole('button', { name, exact: true })).toBeDisabled();
+    await gain.fill('0.05');
+    await gain.press('Enter');
+    await expect(page.getByTestId('dirty')).toHaveAttribute('data-dirty', 'true');
+    await expect(page.locator('.parameter-panel .field-error')).toHaveCount(0);
+
+    // out of bounds: back to the last good value, the reason beside it
+    await gain.fill('5');
+    await gain.press('Enter');
+    await expect(page.locator('.parameter-panel .field-error')).toHaveText('GainP.k#Value must stay within 0 … 0.1');
+    await expect(gain).toHaveValue('0.05');
+    await page.screenshot({ path: `${docsScreenshots}locked-copy.png` });
+
+    // another component's parameter is read-only, and a delete key changes nothing
+    await page.locator('.canvas .component[data-name="GainI"] .icon-frame').click();
+    await expect(page.getByLabel('k#Value value')).not.toBeEditable();
+    await page.keyboard.press('Delete');
+    await expect(page.getByTestId('editor-messages').getByRole('alert')).toContainText('Only the parameters this assignment lists');
+    await expect(page.locator('.canvas .component')).toHaveCount(components);
+
+    // a drag does not even start to move a component: the press stays a click (it selects)
+    const body = page.locator('.canvas .component[data-name="Pressure_Relief_Valve"] .icon-frame');
+    const centre = async () => {
+        const box = (await body.boundingBox())!;
+        return { x: Math.round(box.x + box.width / 2), y: Math.round(box.y + box.height / 2) };
+    };
+    const start = await centre();
+    await page.mouse.move(start.x, start.y);
+    await page.mouse.down();
+    await page.mouse.move(start.x + 80, start.y + 40, { steps: 5 });
+    expect(await centre()).toEqual(start);
+    await page.mouse.up();
+    expect(await centre()).toEqual(start);
+});
+
+test('the teacher\'s gradebook is a table that sorts by a column click', async ({ browser, request }) => {
+    const students = ['gbsam', 'gbstan', 'gbstella'];
+    const { teacher, teacherName, classId, assignmentId, copies } = await lockedAssignment(request, 'gb', students);
+    // two hand in; the teacher grades them (the gradebook takes the grade over the score)
+    for (const [student, grade] of [['gbstella', 4], ['gbstan', 2.5]] as const) {
+        const handIn = await copies.get(student)!.call('POST', `/assignments/${assignmentId}/handin`);
+        await teacher('PUT', `/handins/${handIn.id}/grade`, { grade });
+    }
+    const page = await loggedIn(browser, teacherName);
+    await page.goto(`${baseUrl()}/#/class/${classId}`);
+    const table = page.getByTestId('gradebook-table');
+    const order = () => table.locator('tbody tr').evaluateAll((rows) => rows.map((r) => r.getAttribute('data-username')));
+    await expect(table.locator('tbody tr')).toHaveCount(3);
+    expect(await order()).toEqual(students);
+    await table.getByRole('button', { name: 'Total' }).click();
+    await expect(table.locator('th[data-column="total"]')).toHaveAttribute('aria-sort', 'descending');
+    expect(await order()).toEqual(['gbstella', 'gbstan', 'gbsam']);
+    await expect(table.locator('tr[data-username="gbstella"]')).toContainText('4');
+    const box = (await page.getByTestId('gradebook').boundingBox())!;
+    await page.screenshot({ path: `${docsScreenshots}gradebook-table.png`, clip: { x: box.x - 12, y: box.y - 12, width: box.width + 24, height: box.height + 24 } });
+});
