@@ -167,10 +167,11 @@ test('adds a component from the palette and connects it; an illegal connection s
     await expect(page.locator('.canvas .connection[data-from="Position_Sensor.out"][data-to="Gain.in"]')).toHaveCount(1);
     await expect(port(page, 'Gain', 'in')).toHaveClass(/connected/);
 
-    // two outputs cannot be joined: the core's reason appears next to the port
+    // two outputs cannot be joined: the core's reason appears in the message area, the port is marked
     await dragPortToPort(page, ['Gain', 'out'], ['Step', 'out']);
-    const bubble = page.locator('.canvas .port-error');
+    const bubble = page.getByTestId('editor-messages').getByRole('alert');
     await expect(bubble).toBeVisible();
+    await expect(page.locator('.canvas .port-error-mark')).toBeVisible();
     await expect(bubble).toContainText('Gain');
     await expect(bubble).toContainText('Step');
     await expect(page.locator('.canvas .connection[data-from="Gain.out"]')).toHaveCount(0);

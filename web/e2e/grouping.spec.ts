@@ -58,7 +58,7 @@ test('a group that could not run is refused with the reason', async ({ page }) =
     await openExample(page, SERVO);
     await select(page, ['Mass', 'Cylinder_C']);
     await page.getByTestId('group').click();
-    await expect(page.locator('.toast-error')).toContainText('undefined C/Q/S kind');
+    await expect(page.getByTestId('editor-messages').getByRole('alert')).toContainText('undefined C/Q/S kind');
     await expect(page.locator('.canvas .component[data-name="Mass"]')).toBeVisible();
     await expect(page.locator('.canvas .component.subsystem')).toHaveCount(0);
 });

@@ -1,11 +1,13 @@
 // The model drawn on an SVG canvas, derived from the store on every change. Pointer input
-// becomes commands: move, connect (port to port), select (click, shift-drag box), pan, zoom.
+// becomes commands: move, connect (port to port), select (click, shift-drag box), pan, zoom;
+// the right button asks for the context menu of what is under it (editorMenus.ts).
 // A render keeps every element whose component or connection did not change and only updates
 // the attributes that did (pose, selection, name spot, line points): rebuilding the whole
 // drawing per pointer move or selection click is too slow on big models.
 import { EditorStore } from './EditorStore';
 import { AddComponent, Connect, MoveComponents, type Move } from './commands';
 import { componentIcon } from './icons';
+import { orientIcon } from './iconOrientation';
 import {
     anchorsFromSystem, connectionPath, layoutComponent, objectCentre, orientedPoints, poseTransform, toScene,
     type Anchors, type ComponentLayout, type Point,
@@ -13,6 +15,7 @@ import {
 import { appearanceLayout } from '../model/appearanceLayout';
 import { hiddenUnlessShown, placeParameterPorts, PORT_MARKER_SIZE } from '../model/parameterPortPlacement';
 import { ParameterPortVisibility } from './ParameterPortVisibility';
+import { NameVisibility } from './NameVisibility';
 import { pickPort, type PortTarget } from './portHitTest';
 import { placeLabels, type LabelSpot } from './labelPlacement';
 import { nodeColour } from '../model/nodeTypes';
@@ -26,7 +29,19 @@ export interface CanvasCallbacks {
     onPortClick(ref: PortRef, client: Point): void;
     /** A component was double-clicked (subsystems are entered by the canvas itself). */
     onComponentDoubleClick(name: string): void;
+    /** The context menu was asked for (right button, or the menu key on the canvas) on `target`. */
+    onContextMenu?(target: CanvasTarget, client: Point): void;
+    /** Whether a drag may move components or draw a connection (a locked copy: neither, so the
+     *  press stays a click); absent: always. */
+    allows?(edit: 'move' | 'connect'): boolean;
 }
+
+/** What a context menu was opened on. */
+export type CanvasTarget =
+    | { kind: 'component'; name: string }
+    | { kind: 'port'; ref: PortRef }
+    | { kind: 'connection'; from: PortRef; to: PortRef }
+    | { kind: 'canvas'; at: Point };
 
 type Drag =
     | { kind: 'move'; start: Point; names: string[]; origin: Map<string, Pose>; moved: boolean }
@@ -43,6 +58,12 @@ interface DrawnComponent { el: SVGGElement; body: SVGGElement; text: SVGTextElem
 /** `inputs`: what the line was drawn from (the system, both ends' components and poses, whether it is selected). */
 interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string; path: Point[]; inputs: unknown[] }
 
+/** The connection a drawn line stands for (its data-from and data-to, `component.port`). */
+function connectionOfElement(el: Element): { from: PortRef; to: PortRef } {
+    const split = (text: string) => ({ component: text.slice(0, text.lastIndexOf('.')), port: text.slice(text.lastIndexOf('.') + 1) });
+    return { from: split(el.getAttribute('data-from')!), to: split(el.getAttribute('data-to')!) };
+}
+
 /** Puts `children` in `parent` in this order, touching the DOM only when they differ. */
 function setChildren(parent: Element, children: Element[]): void {
     const current = parent.children;
@@ -57,6 +78,8 @@ export class CanvasView {
     private view = { tx: 0, ty: 0, scale: 1 };
     private readonly anchors = new Map<string, Anchors>();
     private readonly loadedPoses = new Map<string, Pose>();
+    /** The types the components had when their lines were loaded: a replaced one's port spots are not its own. */
+    private readonly loadedTypes = new Map<string, string>();
     private readonly poseOverride = new Map<string, Pose>();
     private drag: Drag | null = null;
     private lastPress: { name: string; time: number } | null = null;
@@ -71,6 +94,8 @@ export class CanvasView {
     layouts = new Map<string, ComponentLayout>();
     /** Which parameter ports are drawn (hidden unless shown). */
     readonly parameterPorts = new ParameterPortVisibility();
+    /** Which component names are hidden. */
+    readonly names = new NameVisibility();
 
     constructor(private readonly store: EditorStore, private readonly callbacks: CanvasCallbacks) {
         this.world = s('g', { class: 'world' });
@@ -92,7 +117,9 @@ export class CanvasView {
         this.world.append(this.connectionGroup, this.componentGroup, this.overlay);
         const unsubscribeStore = store.subscribe(() => this.render());
         const unsubscribeVisibility = this.parameterPorts.subscribe(() => this.render());
-        this.unsubscribe = () => { unsubscribeStore(); unsubscribeVisibility(); };
+        const unsubscribeNames = this.names.subscribe(() => this.render());
+        this.svg.addEventListener('contextmenu', (e) => this.onContextMenu(e));
+        this.unsubscribe = () => { unsubscribeStore(); unsubscribeVisibility(); unsubscribeNames(); };
         this.resizeObserver.observe(this.element);
     }
 
@@ -185,7 +212,10 @@ export class CanvasView {
         if (!anchors) {
             anchors = anchorsFromSystem(system);
             this.anchors.set(this.pathKey, anchors);
-            for (const c of system.components) this.loadedPoses.set(this.key(c.name), { ...c.pose });
+            for (const c of system.components) {
+                this.loadedPoses.set(this.key(c.name), { ...c.pose });
+                this.loadedTypes.set(this.key(c.name), c.type);
+            }
         }
         return anchors;
     }
@@ -215,6 +245,7 @@ export class CanvasView {
             if (this.generation !== this.store.generation) {
                 this.anchors.clear();
                 this.loadedPoses.clear();
+                this.loadedTypes.clear();
                 this.fittedPath = null;
             }
             this.generation = this.store.generation;
@@ -230,7 +261,7 @@ export class CanvasView {
         this.layouts = new Map(system.components.map((c) => {
             let layout = this.layoutCache.get(c);
             if (!layout) {
-                const known = anchors.get(c.name);
+                const known = this.loadedTypes.get(this.key(c.name)) === c.type ? anchors.get(c.name) : undefined;
                 layout = placeParameterPorts(c, appearanceLayout(c, known) ?? layoutComponent(c, known), known);
                 this.layoutCache.set(c, layout);
             }
@@ -265,7 +296,7 @@ export class CanvasView {
         this.applyView();
     }
 
-    /** Redraws only the overlay (drag line, marquee, error bubble). */
+    /** Redraws only the overlay (drag line, marquee, the mark of a refused connection's port). */
     private renderOverlay(): void {
         const fresh = this.drawOverlay(this.store.system);
         if (fresh.childElementCount === 0 && this.overlay.childElementCount === 0) return;
@@ -320,7 +351,10 @@ export class CanvasView {
         }
         if (this.portError) {
             const at = this.portPoint(system, this.portError.ref);
-            if (at) overlay.append(this.drawBubble(at, this.portError.message));
+            if (at) {
+                overlay.append(s('circle', { class: 'port-error-mark', cx: at.x, cy: at.y, r: 8 },
+                    s('title', {}, this.portError.message)));
+            }
         }
         return overlay;
     }
@@ -336,10 +370,12 @@ export class CanvasView {
     private drawComponent(comp: Component, label: LabelSpot, drawn: DrawnComponent | undefined): DrawnComponent {
         const pose = poseTransform(this.poseOf(comp));
         const shown = this.parameterPorts.shownFor(this.store.path, comp.name);
-        const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}${shown ? ' parameter-ports-shown' : ''}`;
+        const nameHidden = this.names.hiddenFor(this.store.path, comp.name);
+        const cls = `component${this.store.selection.has(comp.name) ? ' selected' : ''}${comp.system ? ' subsystem' : ''}${shown ? ' parameter-ports-shown' : ''}${nameHidden ? ' name-hidden' : ''}`;
         const spot = `${label.x},${label.y},${label.anchor}`;
         if (drawn && drawn.comp === comp) {
             if (drawn.pose !== pose) drawn.body.setAttribute('transform', pose);
+            if (drawn.pose !== pose) orientIcon(drawn.body, comp.type, this.poseOf(comp), this.layouts.get(comp.name)!);
             if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
             if (drawn.spot !== spot) {
                 drawn.text.setAttribute('x', String(label.x));
@@ -353,6 +389,7 @@ export class CanvasView {
         const body = s('g', { class: 'component-body', transform: pose },
             componentIcon(comp.type, layout.halfWidth, layout.halfHeight),
             ...comp.ports.map((p) => this.drawPort(comp, p, layout.ports.get(p.name) ?? { x: 0, y: 0 })));
+        orientIcon(body, comp.type, this.poseOf(comp), layout);
         const text = s('text', { class: 'component-label', x: label.x, y: label.y, 'text-anchor': label.anchor }, comp.name);
         const el = s('g', { class: cls, 'data-name': comp.name, 'data-type': comp.type },
             s('title', {}, `${comp.name} (${comp.type})`), body, text);
@@ -393,19 +430,16 @@ export class CanvasView {
             s('text', { class: 'component-label', x: pose.x, y: pose.y + r + 11, 'text-anchor': 'middle' }, name));
     }
 
-    private drawBubble(at: Point, message: string): SVGGElement {
-        const text = s('text', { x: at.x + 12, y: at.y - 14, class: 'port-error-text' }, message);
-        const width = Math.min(600, message.length * 6.2 + 12);
-        return s('g', { class: 'port-error', role: 'alert' },
-            s('rect', { x: at.x + 6, y: at.y - 28, width, height: 20, rx: 4 }), text);
-    }
-
-    /** Shows a refused connection's reason next to the port for a while. */
+    /**
+     * Marks the port a refused connection concerns for a while; the reason goes to the editor's
+     * message area (an `editor-error` event), where it wraps and is never cut off by the canvas.
+     */
     showPortError(ref: PortRef, message: string): void {
         if (this.portError) clearTimeout(this.portError.timer);
         const timer = window.setTimeout(() => { this.portError = null; this.render(); }, 10000);
         this.portError = { ref, message, timer };
         this.render();
+        this.element.dispatchEvent(new CustomEvent('editor-error', { bubbles: true, detail: message }));
     }
 
     // ---- commands started from the canvas ----
@@ -436,8 +470,7 @@ export class CanvasView {
         const compEl = target.closest('.component');
         const connEl = target.closest('.connection');
         if (e.button === 0 && connEl && !portEl) {
-            const split = (text: string) => ({ component: text.slice(0, text.lastIndexOf('.')), port: text.slice(text.lastIndexOf('.') + 1) });
-            this.selectedConnection = { from: split(connEl.getAttribute('data-from')!), to: split(connEl.getAttribute('data-to')!) };
+            this.selectedConnection = connectionOfElement(connEl);
             this.store.select([]);
             return;
         }
@@ -492,7 +525,8 @@ export class CanvasView {
             this.applyView();
         } else if (drag.kind === 'connect') {
             drag.current = scene;
-            if (!drag.moved && Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD) {
+            if (!drag.moved && Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) > DRAG_THRESHOLD
+                && this.allows('connect')) {
                 drag.moved = true;
                 this.svg.classList.toggle('offer-parameter-ports', this.offersParameterPorts(drag.from));
             }
@@ -500,7 +534,7 @@ export class CanvasView {
         } else if (drag.kind === 'move') {
             const dx = scene.x - drag.start.x;
             const dy = scene.y - drag.start.y;
-            if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD) drag.moved = true;
+            if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD && this.allows('move')) drag.moved = true;
             if (!drag.moved) return;
             for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + dx), y: Math.round(pose.y + dy) });
             this.render();
@@ -508,6 +542,10 @@ export class CanvasView {
             drag.current = scene;
             this.renderOverlay();
         }
+    }
+
+    private allows(edit: 'move' | 'connect'): boolean {
+        return this.callbacks.allows?.(edit) ?? true;
     }
 
     private async onPointerUp(e: PointerEvent): Promise<void> {
@@ -608,6 +646,65 @@ export class CanvasView {
         } else {
             this.callbacks.onComponentDoubleClick(name);
         }
+    }
+
+    /** Right button (or the menu key): the menu of what is under the pointer, which becomes the selection. */
+    private onContextMenu(e: MouseEvent): void {
+        e.preventDefault();
+        if (!this.callbacks.onContextMenu || this.drag) return;   // not in the middle of a drag
+        const target = e.target as Element;
+        const client = { x: e.clientX, y: e.clientY };
+        const scene = this.sceneFromClient(e.clientX, e.clientY);
+        const portEl = target.closest('[data-port]');
+        const compEl = target.closest('.component');
+        const connEl = target.closest('.connection');
+        let what: CanvasTarget;
+        if (portEl) {
+            // the port a press there would take: power ports first, as for plotting and connecting
+            const ref = pickPort(this.portTargets(false), scene, PORT_REACH)
+                ?? { component: portEl.getAttribute('data-component')!, port: portEl.getAttribute('data-port')! };
+            what = { kind: 'port', ref };
+        } else if (compEl?.classList.contains('system-port')) {
+            const name = compEl.getAttribute('data-name')!;
+            what = { kind: 'port', ref: { component: name, port: name } };
+        } else if (compEl) {
+            const name = compEl.getAttribute('data-name')!;
+            // a component of the selection keeps it (the menu acts on all); another becomes it
+            if (!this.store.selection.has(name)) this.store.select([name]);
+            what = { kind: 'component', name };
+        } else if (connEl) {
+            this.selectedConnection = connectionOfElement(connEl);
+            this.store.select([]);
+            what = { kind: 'connection', ...this.selectedConnection };
+        } else {
+            what = { kind: 'canvas', at: scene };
+        }
+        if (what.kind !== 'connection' && this.selectedConnection) {
+            this.selectedConnection = null;
+            this.render();
+        }
+        this.callbacks.onContextMenu(what, client);
+    }
+
+    /**
+     * What the keyboard's menu key (Shift+F10) opens a menu on, and where: the selected line or
+     * component, else the canvas at its middle.
+     */
+    contextTargetOfSelection(): { target: CanvasTarget; client: Point } {
+        const r = this.svg.getBoundingClientRect();
+        const middle = { x: r.left + r.width / 2, y: r.top + r.height / 2 };
+        const inside = (p: Point) => ({ x: Math.min(Math.max(p.x, r.left), r.right), y: Math.min(Math.max(p.y, r.top), r.bottom) });
+        const line = this.selectedConnection;
+        if (line) {
+            const system = this.store.system;
+            const a = this.portPoint(system, line.from);
+            const b = this.portPoint(system, line.to);
+            const at = a && b ? this.clientFromScene({ x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 }) : middle;
+            return { target: { kind: 'connection', ...line }, client: inside(at) };
+        }
+        const chosen = this.store.system.components.find((c) => this.store.selection.has(c.name));
+        if (chosen) return { target: { kind: 'component', name: chosen.name }, client: inside(this.clientFromScene(this.poseOf(chosen))) };
+        return { target: { kind: 'canvas', at: this.sceneFromClient(middle.x, middle.y) }, client: middle };
     }
 
     private onWheel(e: WheelEvent): void {

@@ -5,6 +5,7 @@ import {
     type EditRequestOf, type EditType, type SystemPath,
 } from '../model/modelState';
 import type { ReplyData } from '../protocol/requests.generated';
+import { portShapeOfModel, replacementPlan } from './replaceType';
 import type { Component, Connection, Model, Param, PortRef, Pose, SimulationSettings, SysParam } from '../protocol/types';
 
 export interface EditContext {
@@ -122,6 +123,20 @@ export class RenameComponent implements Command {
 
 export interface Move { name: string; from: Pose; to: Pose }
 
+/** A pose turned by quarter turns: +1 a quarter clockwise on screen (Hopsan's "rotate right"), -1 back. */
+export function rotatedPose(pose: Pose, quarterTurns: number): Pose {
+    return { ...pose, angle: (((pose.angle + 90 * quarterTurns) % 360) + 360) % 360 };
+}
+
+/**
+ * A pose mirrored left to right on screen (the model's `flipped`), or top to bottom, which is
+ * the same mirror turned half a turn, as Hopsan does it.
+ */
+export function flippedPose(pose: Pose, axis: 'horizontal' | 'vertical'): Pose {
+    const mirrored = { ...pose, flipped: !pose.flipped };
+    return axis === 'horizontal' ? mirrored : rotatedPose(mirrored, 2);
+}
+
 /** Moves, rotations and flips: all are new poses. */
 export class MoveComponents implements Command {
     readonly undoable = true;
@@ -233,12 +248,24 @@ export function copySelection(model: Model, path: SystemPath, names: Iterable<st
     return { components, connections };
 }
 
+/** The shift that puts the middle of the clipboard's components at `at` (a paste at the pointer). */
+export function offsetTo(clip: Clipboard, at: { x: number; y: number }): { x: number; y: number } {
+    const xs = clip.components.map((c) => c.pose.x);
+    const ys = clip.components.map((c) => c.pose.y);
+    const mid = { x: (Math.min(...xs) + Math.max(...xs)) / 2, y: (Math.min(...ys) + Math.max(...ys)) / 2 };
+    return { x: Math.round(at.x - mid.x), y: Math.round(at.y - mid.y) };
+}
+
 export class Paste implements Command {
     readonly label = 'Paste';
     readonly undoable = true;
     private added: string[] = [];
+    private readonly shift: { x: number; y: number };
 
-    constructor(private readonly path: SystemPath, private readonly clip: Clipboard, private readonly offset = 40) {}
+    /** `offset`: how far from the copied place, the same on both axes or per axis. */
+    constructor(private readonly path: SystemPath, private readonly clip: Clipboard, offset: number | { x: number; y: number } = 40) {
+        this.shift = typeof offset === 'number' ? { x: offset, y: offset } : offset;
+    }
 
     get addedNames(): string[] { return [...this.added]; }
 
@@ -248,7 +275,7 @@ export class Paste implements Command {
         for (const snap of this.clip.components) {
             const system = systemAt(ctx.model(), this.path)!;
             const name = uniqueName(system, snap.name);
-            const pose = { ...snap.pose, x: snap.pose.x + this.offset, y: snap.pose.y + this.offset };
+            const pose = { ...snap.pose, x: snap.pose.x + this.shift.x, y: snap.pose.y + this.shift.y };
             const actual = await restoreComponent(ctx, this.path, { ...snap, pose }, name);
             renamed.set(snap.name, actual);
             this.added.push(actual);
@@ -335,5 +362,78 @@ export class UngroupSubsystem implements Command {
     async undo(ctx: EditContext): Promise<void> {
         await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.moved), name: this.name });
         await ctx.send({ type: 'model.get' });
+    }
+}
+
+/** A connection as sent again: its ends and its line's points, when it has any. */
+function connectRequest(path: SystemPath, c: Connection): EditRequestOf<'connect'> {
+    return c.points.length > 0
+        ? { type: 'connect', system: path, from: c.from, to: c.to, points: c.points }
+        : { type: 'connect', system: path, from: c.from, to: c.to };
+}
+
+/**
+ * Puts a component of another type in a component's place (see replaceType.ts for the rule):
+ * same name and pose, the connections whose ports the new type has, the values of parameters
+ * of the same name and type. Undo puts the old component back with all its connections. A
+ * step the server refuses puts the old one back before the error is reported.
+ */
+export class ReplaceComponent implements Command {
+    readonly label: string;
+    readonly undoable = true;
+    private old: ComponentSnapshot | null = null;
+    private connections: Connection[] = [];
+    private actual = '';
+    private dropped: Connection[] = [];
+
+    constructor(private readonly path: SystemPath, private readonly name: string, private readonly type: string) {
+        this.label = `Replace ${name} by ${type}`;
+    }
+
+    /** The new component's name (the old one's, unless the server chose another). */
+    get newName(): string { return this.actual; }
+    /** The connections the new type had no port for. */
+    get droppedConnections(): Connection[] { return [...this.dropped]; }
+
+    async do(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        const comp = system && findComponent(system, this.name);
+        if (!system || !comp) throw new Error(`There is no component ${this.name} here.`);
+        if (comp.system) throw new Error(`${this.name} is a subsystem: only components can be replaced by another type.`);
+        this.old = snapshot(comp);
+        this.connections = connectionsOf(system, this.name).map((c) => structuredClone(c));
+        this.actual = '';
+        await ctx.send({ type: 'component.remove', system: this.path, name: this.name });
+        try {
+            const reply = await ctx.send({ type: 'component.add', system: this.path, component_type: this.type, name: this.name, pose: comp.pose });
+            const added = reply.component;
+            this.actual = added.name;
+            const plan = replacementPlan(comp, this.connections, added.ports.map(portShapeOfModel), added.parameters);
+            this.dropped = plan.dropped;
+            for (const p of plan.parameters) {
+                const fresh = added.parameters.find((q) => q.name === p.name);
+                if (fresh && fresh.value !== p.value) {
+                    await ctx.send({ type: 'parameter.set', system: this.path, component: added.name, parameter: p.name, value: p.value });
+                }
+            }
+            const rename = (ref: PortRef): PortRef => (ref.component === this.name ? { ...ref, component: added.name } : ref);
+            for (const c of plan.kept) await ctx.send(connectRequest(this.path, { ...c, from: rename(c.from), to: rename(c.to) }));
+        } catch (e) {
+            await this.putBack(ctx).catch(() => undefined);
+            throw e;
+        }
+    }
+
+    async undo(ctx: EditContext): Promise<void> {
+        await this.putBack(ctx);
+    }
+
+    // the new component (if it was added) out, the old one in with every connection it had
+    private async putBack(ctx: EditContext): Promise<void> {
+        if (!this.old) return;
+        if (this.actual) await ctx.send({ type: 'component.remove', system: this.path, name: this.actual });
+        this.actual = '';
+        await restoreComponent(ctx, this.path, this.old, this.old.name);
+        for (const c of this.connections) await ctx.send(connectRequest(this.path, c));
     }
 }

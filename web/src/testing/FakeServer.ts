@@ -12,6 +12,31 @@ export const fakeCatalogue: Record<string, TypeInfo> = {
     SignalGain: { kind: 'S', ports: [['in', 'read', 'NodeSignal'], ['out', 'write', 'NodeSignal']], params: [['k#Value', '1']] },
     HydraulicVolume: { kind: 'C', ports: [['P1', 'power', 'NodeHydraulic'], ['P2', 'power', 'NodeHydraulic']], params: [['V', '0.001']] },
     MechanicTranslationalMass: { kind: 'Q', ports: [['P1', 'power', 'NodeMechanic'], ['P2', 'power', 'NodeMechanic']], params: [['m', '1']] },
+    // two valves with the same power ports (replaceable by each other), and a relief valve
+    // whose replacement lacks its xv output (a check valve)
+    Hydraulic43Valve: {
+        kind: 'Q',
+        ports: [['PP', 'power', 'NodeHydraulic'], ['PT', 'power', 'NodeHydraulic'], ['PA', 'power', 'NodeHydraulic'], ['PB', 'power', 'NodeHydraulic'],
+            ['in', 'read', 'NodeSignal'], ['xv', 'write', 'NodeSignal'], ['x_pa', 'read', 'NodeSignal']],
+        params: [['in#Value', '0'], ['xv#Value', '0'], ['x_pa#Value', '-1e-06'], ['omega_h', '100'], ['delta_h', '1']],
+    },
+    Hydraulic43ValveNeutralToTank: {
+        kind: 'Q',
+        ports: [['PP', 'power', 'NodeHydraulic'], ['PT', 'power', 'NodeHydraulic'], ['PA', 'power', 'NodeHydraulic'], ['PB', 'power', 'NodeHydraulic'],
+            ['xv', 'write', 'NodeSignal'], ['in', 'read', 'NodeSignal'], ['x_pa', 'read', 'NodeSignal'], ['p_c', 'read', 'NodeSignal']],
+        params: [['in#Value', '0'], ['xv#Value', '0'], ['x_pa#Value', '-1e-06'], ['p_c#Value', '0.001'], ['omega_h', '100']],
+    },
+    HydraulicPressureReliefValve: {
+        kind: 'Q',
+        ports: [['P1', 'power', 'NodeHydraulic'], ['P2', 'power', 'NodeHydraulic'], ['xv', 'write', 'NodeSignal'], ['p_max', 'read', 'NodeSignal']],
+        params: [['p_max#Value', '2e7'], ['k_cs', '1e-8']],
+    },
+    HydraulicCheckValve: {
+        kind: 'Q',
+        ports: [['P1', 'power', 'NodeHydraulic'], ['P2', 'power', 'NodeHydraulic'], ['K_s', 'read', 'NodeSignal'], ['x', 'write', 'NodeSignal']],
+        params: [['K_s#Value', '5e-7']],
+    },
+    HydraulicTankC: { kind: 'C', ports: [['P1', 'power', 'NodeHydraulic']], params: [['p', '1e5']] },
 };
 
 export function emptyModel(name = 'Test'): Model {

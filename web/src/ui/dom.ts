@@ -1,4 +1,6 @@
 // Tiny DOM helpers: build elements from a tag, attributes and children.
+import { inWords } from './errorWords';
+
 type Child = Node | string | number | null | undefined | false;
 type Attrs = Record<string, unknown>;
 
@@ -72,6 +74,7 @@ export function toast(message: string, kind: 'info' | 'error' = 'info'): void {
     setTimeout(() => item.remove(), kind === 'error' ? 8000 : 4000);
 }
 
+/** An error's message as the user reads it: server validation paths and type names in words (errorWords.ts). */
 export function errorText(e: unknown): string {
-    return e instanceof Error ? e.message : String(e);
+    return inWords(e instanceof Error ? e.message : String(e));
 }

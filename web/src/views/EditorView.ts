@@ -6,7 +6,13 @@ import { EditorStore } from '../editor/EditorStore';
 import { CanvasView } from '../editor/CanvasView';
 import { ParameterPanel } from '../editor/ParameterPanel';
 import { createPalette } from '../editor/Palette';
-import { copySelection, Disconnect, GroupComponents, MoveComponents, Paste, RemoveComponents, SetSimulationSettings, UngroupSubsystem, type Clipboard } from '../editor/commands';
+import { SetSimulationSettings } from '../editor/commands';
+import { EditorActions } from '../editor/EditorActions';
+import { ContextMenu } from '../editor/ContextMenu';
+import { menuFor, type MenuContext } from '../editor/editorMenus';
+import { MessageArea } from '../editor/MessageArea';
+import { ShortcutHelp } from '../editor/ShortcutHelp';
+import { shortcutFor, type ShortcutId } from '../editor/shortcuts';
 import { RunController } from '../run/RunController';
 import { PlotArea } from '../run/PlotArea';
 import { signalSources } from '../analysis/bodeDefaults';
@@ -19,10 +25,10 @@ import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
 import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
+import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
+import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
 import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
-
-let clipboard: Clipboard | null = null;
 
 export interface EditorPage { dispose(): void; dirty(): boolean }
 
@@ -56,6 +62,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         ws.connect().then(() => ws.request('model.open', { model_id: modelId })),
     ]);
     opening.catch(() => undefined);   // a failure is shown below, once the summary is in
+    // an assignment's copy (#/model/<id>?assignment=<aid>) brings what may change and the instructions
+    const assignmentId = /[?&]assignment=(\d+)/.exec(location.hash)?.[1];
+    const assignmentLoading = assignmentId ? session.labs.getAssignment(Number(assignmentId)).catch(() => null) : Promise.resolve(null);
     let summary: ModelSummary;
     try {
         summary = await rest.getModel(modelId);
@@ -77,8 +86,11 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         return { dispose: () => undefined, dirty: () => false };
     }
 
-    // An edit request carries its fields beside its type; the client sets the type itself.
-    const store = new EditorStore(opened.model, (request) => ws.request(request.type, request));
+    const assignment = await assignmentLoading;
+    const permissions = EditPermissions.forAssignment(assignment, summary.owner.id === session.user?.id);
+    // An edit request carries its fields beside its type; the client sets the type itself. What
+    // a locked copy may not change is refused before it is sent.
+    const store = new EditorStore(opened.model, permittedTransport(permissions, (request) => ws.request(request.type, request)));
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
         onResubscribe: ws.onResubscribe.bind(ws) });
     const plots = new PlotArea(runs, session.units, () => savePlots(localStorage, summary.id, plots.layout()),
@@ -88,12 +100,14 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         (changed) => store.execute(new SetSimulationSettings(changed)));
     store.subscribe(() => runPanel.showModelSettings(store.model.system.simulation));
 
-    const reportError = (e: unknown) => toast(errorText(e), 'error');
+    // edit errors in words, in a box over the canvas that nothing clips (MessageArea.ts)
+    const messages = new MessageArea();
+    const reportError = (e: unknown) => messages.error(e);
     const picker = h('div', { class: 'variable-picker', hidden: true, role: 'menu' });
     const showVariables = (ref: PortRef, at: { x: number; y: number }) => {
         const vars = portVariables(store.model, store.path, ref);
         if (!vars.ok) {
-            toast(vars.reason);
+            messages.note(vars.reason);
             return;
         }
         const ordered = [...vars.variables].sort((a, b) => Number(primaryVariables.has(b.name)) - Number(primaryVariables.has(a.name)));
@@ -109,57 +123,55 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const closePicker = (e: PointerEvent) => { if (!picker.contains(e.target as Node)) picker.hidden = true; };
     document.addEventListener('pointerdown', closePicker, true);
 
+    const menu = new ContextMenu();
+    const help = new ShortcutHelp();
     const canvas = new CanvasView(store, {
         onPortClick: showVariables,
         onComponentDoubleClick: () => panel.focusName(),
+        onContextMenu: (target, client) => {
+            picker.hidden = true;
+            const { items, label } = menuFor(menuContext, target);
+            menu.open(items, client, label);
+        },
+        allows: (edit) => permissions.allows(edit),
     });
+    canvas.element.append(messages.element);
 
-    // ---- actions shared by buttons and keys ----
-    const selectedComponents = () => store.system.components.filter((c) => store.selection.has(c.name));
-    const transformSelection = (label: string, change: (p: { x: number; y: number; angle: number; flipped: boolean }) => typeof p) => {
-        const moves = selectedComponents().map((c) => ({ name: c.name, from: c.pose, to: change({ ...c.pose }) }));
-        if (moves.length) store.execute(new MoveComponents(store.path, moves, label)).catch(reportError);
+    // ---- actions shared by keys, buttons, the panel and the context menus (EditorActions.ts) ----
+    // the parameter panel on a component, its first field that takes input in focus
+    const focusParameters = () => {
+        const field = panel.element.querySelector<HTMLInputElement>('input[name^="param-"]:not([readonly])')
+            ?? panel.element.querySelector<HTMLInputElement>('input[name="component-name"]');
+        field?.focus();
+        field?.select();
     };
+    const editor = new EditorActions({
+        store, canvas, catalogue,
+        report: reportError,
+        note: (message) => messages.note(message),
+        confirm: (question) => confirm(question),
+        openParameters: focusParameters,
+        allows: (edit) => permissions.allows(edit),
+    });
     const actions = {
-        rotate: () => transformSelection('Rotate', (p) => ({ ...p, angle: (p.angle + 90) % 360 })),
-        flip: () => transformSelection('Flip', (p) => ({ ...p, flipped: !p.flipped })),
-        remove: () => {
-            if (canvas.selectedConnection) {
-                const c = canvas.selectedConnection;
-                canvas.selectedConnection = null;
-                store.execute(new Disconnect(store.path, c.from, c.to)).catch(reportError);
-                return;
-            }
-            const names = [...store.selection];
-            if (names.length === 0) return;
-            const command = new RemoveComponents(store.path, names);
-            const hasSub = selectedComponents().some((c) => c.system);
-            if (hasSub && !confirm('Deleting a subsystem cannot be undone. Delete?')) return;
-            store.execute(command).catch(reportError);
-        },
-        group: () => {
-            const names = selectedComponents().map((c) => c.name);
-            if (names.length === 0) return;
-            const command = new GroupComponents(store.path, names);
-            store.execute(command).then(() => {
-                store.select([command.subsystemName]);
-                toast(`Grouped ${names.length} components into ${command.subsystemName}`);
-            }, reportError);
-        },
-        ungroup: () => {
-            const sub = selectedComponents().find((c) => c.system);
-            if (!sub) return;
-            const command = new UngroupSubsystem(store.path, sub.name);
-            store.execute(command).then(() => store.select(command.movedNames), reportError);
-        },
-        toggleParameterPorts: () => canvas.parameterPorts.toggle(store.path, [...store.selection]),
+        rotate: () => void editor.rotate(1),
+        flip: () => void editor.flip('horizontal'),
+        remove: () => void editor.remove(),
+        group: () => void editor.group(),
+        ungroup: () => void editor.ungroup(),
+        toggleParameterPorts: () => editor.toggleParameterPorts(),
         parameterPortsShown: (name: string) => canvas.parameterPorts.shownFor(store.path, name),
         plotPort: (ref: PortRef, anchor: HTMLElement) => {
             const r = anchor.getBoundingClientRect();
             showVariables(ref, { x: r.left - 200, y: r.top });
         },
     };
-    const panel = new ParameterPanel(store, actions);
+    const menuContext: MenuContext = {
+        actions: editor, store, canvas,
+        plot: (variable, label, unit) => plots.addVariable(variable, label, unit),
+        showHelp: () => help.open(),
+    };
+    const panel = new ParameterPanel(store, actions, permissions);
     const parameterPortsButton = h('button', {
         onclick: () => canvas.parameterPorts.showEverywhere(!canvas.parameterPorts.shownEverywhere),
         'aria-pressed': 'false', 'data-testid': 'show-parameter-ports', title: 'Show the parameter ports of every component',
@@ -169,17 +181,6 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         panel.render();
     });
 
-    const copy = () => { clipboard = copySelection(store.model, store.path, store.selection); };
-    const paste = async () => {
-        if (!clipboard) return;
-        const command = new Paste(store.path, clipboard);
-        try {
-            await store.execute(command);
-            store.select(command.addedNames);
-        } catch (e) {
-            reportError(e);
-        }
-    };
 
     // ---- saving ----
     // the server says whether the user may change the model (examples: admin only)
@@ -252,6 +253,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                 h('button', { onclick: () => canvas.fit(), title: 'Show all' }, 'Fit'),
                 parameterPortsButton,
                 h('button', {
+                    onclick: () => help.toggle(), 'aria-label': 'Keyboard shortcuts', title: 'Keyboard shortcuts (?)', 'data-testid': 'shortcuts-button',
+                }, '?'),
+                h('button', {
                     onclick: async () => {
                         try { downloadText(`${summary.name}.hmf`, await rest.downloadHmf(summary.id), 'application/xml'); } catch (e) { reportError(e); }
                     },
@@ -276,11 +280,13 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     store.subscribe(renderHeader);
     renderHeader();
 
-    const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: pan · Shift+drag: select · Wheel: zoom · Drag port to port: connect · Click port: plot · Double-click subsystem: enter');
-    const editorBody = h('div', { class: 'editor-body' },
-        createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())),
+    const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: pan · Shift+drag: select · Wheel: zoom · Drag port to port: connect · Click port: plot · Double-click subsystem: enter · Right click: menu · ?: keys');
+    // a locked copy takes no new components: no palette; an assignment's instructions sit at the right
+    const editorBody = h('div', { class: `editor-body${assignment ? ' with-instructions' : ''}${permissions.locked ? ' locked-copy' : ''}` },
+        permissions.allows('add') ? createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())) : null,
         h('section', { class: 'canvas-column' }, breadcrumb, canvas.element, canvasHint),
-        panel.element);
+        panel.element,
+        assignment ? instructionsPanel(assignment) : null);
     const historyPanel = new HistoryPanel(rest, runs, { modelId: () => summary.id, username: () => session.user?.username,
         parameters: () => parameterTexts(store.model), plotted: () => plots.allVariables() });
     const runArea = h('section', { class: 'run-area' }, runPanel.element, h('div', { class: 'run-body' }, historyPanel.element, plots.element));
@@ -303,24 +309,50 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     else plots.addWindow();
     rest.runHistory(summary.id, HISTORY_PAGE).then((history) => runs.restore(history),
         (e) => toast(`Earlier runs: ${errorText(e)}`, 'error'));
-    layout.addEventListener('editor-error', (e) => toast((e as CustomEvent<string>).detail, 'error'));
+    layout.addEventListener('editor-error', (e) => messages.show((e as CustomEvent<string>).detail, 'error'));
 
     // ---- keys ----
+    // the keys' table (shortcuts.ts) is also what the menus and the help panel show
+    const onShortcut: Record<ShortcutId, () => void> = {
+        'save': () => void save(),
+        'undo': () => { store.undo().catch(reportError); },
+        'redo': () => { store.redo().catch(reportError); },
+        'copy': () => void editor.copy(),
+        'cut': () => void editor.cut(),
+        'paste': () => void editor.paste(),
+        'select-all': () => editor.selectAll(),
+        'group': () => void editor.group(),
+        'delete': () => void editor.remove(),
+        'rotate-right': () => void editor.rotate(1),
+        'rotate-left': () => void editor.rotate(-1),
+        'flip-horizontal': () => void editor.flip('horizontal'),
+        'flip-vertical': () => void editor.flip('vertical'),
+        'parameter-ports': () => editor.toggleParameterPorts(),
+        'all-parameter-ports': () => editor.toggleAllParameterPorts(),
+        'names': () => editor.toggleNames(),
+        'open': () => {
+            const [only, ...more] = editor.selected();
+            if (!only || more.length > 0) return;
+            if (only.system) editor.enter(only.name); else editor.openParameters(only.name);
+        },
+        'fit': () => editor.fit(),
+        'deselect': () => { canvas.selectedConnection = null; store.select([]); },
+        'menu': () => {
+            const { target, client } = canvas.contextTargetOfSelection();
+            const { items, label } = menuFor(menuContext, target);
+            menu.open(items, client, label);
+        },
+        'help': () => help.toggle(),
+    };
     const onKey = (e: KeyboardEvent) => {
-        const typing = (e.target as HTMLElement).closest('input, textarea, select');
-        const mod = e.ctrlKey || e.metaKey;
-        if (mod && e.key.toLowerCase() === 's') { e.preventDefault(); void save(); return; }
-        if (typing) return;
-        if (mod && e.key.toLowerCase() === 'z' && !e.shiftKey) { e.preventDefault(); store.undo().catch(reportError); }
-        else if (mod && (e.key.toLowerCase() === 'y' || (e.key.toLowerCase() === 'z' && e.shiftKey))) { e.preventDefault(); store.redo().catch(reportError); }
-        else if (mod && e.key.toLowerCase() === 'c') copy();
-        else if (mod && e.key.toLowerCase() === 'v') void paste();
-        else if (mod && e.key.toLowerCase() === 'a') { e.preventDefault(); store.select(store.system.components.map((c) => c.name)); }
-        else if (e.key === 'Delete' || e.key === 'Backspace') actions.remove();
-        else if (e.key === 'r' || e.key === 'R') actions.rotate();
-        else if (e.key === 'f' || e.key === 'F') actions.flip();
-        else if (e.key === 'p' || e.key === 'P') actions.toggleParameterPorts();
-        else if (e.key === 'Escape') store.select([]);
+        const target = e.target as HTMLElement;
+        const focus = target.closest('input, textarea, select, [contenteditable="true"]') ? 'field'
+            : target.closest('button, a, [role="menuitem"], [role="tab"], .plot-window') ? 'control' : 'canvas';
+        const shortcut = shortcutFor(e, focus);
+        if (!shortcut) return;
+        // the browser's own meaning of these keys (save page, select the page's text …) is not wanted here
+        if (shortcut.id !== 'copy' || store.selection.size > 0) e.preventDefault();
+        onShortcut[shortcut.id]();
     };
     document.addEventListener('keydown', onKey);
     const onBeforeUnload = (e: BeforeUnloadEvent) => {
@@ -367,6 +399,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         dirty: () => store.dirty,
         dispose: () => {
             document.removeEventListener('keydown', onKey);
+            menu.close(false);
+            help.dispose();
+            messages.dispose();
             document.removeEventListener('pointerdown', closePicker, true);
             window.removeEventListener('beforeunload', onBeforeUnload);
             offStatus();
