@@ -3,6 +3,7 @@
 # and over https through tests/tools/tls_proxy.py.
 if(TARGET tlmhub-server)
   file(GLOB TLMHUB_CLI_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/cli/*.cpp)
+  tlmhub_threads_only_sources(TLMHUB_CLI_TEST_SOURCES)
   add_executable(tlmhub-cli-tests ${TLMHUB_CLI_TEST_SOURCES})
   target_include_directories(tlmhub-cli-tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(tlmhub-cli-tests PRIVATE tlmhub_test_support tlmhub_cli_remote GTest::gtest GTest::gtest_main)

@@ -2,6 +2,7 @@
 # import side build for it (the runtime library, the hand-written test FMU) is in their own
 # files.
 file(GLOB TLMHUB_FMU_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fmu/*.cpp)
+tlmhub_threads_only_sources(TLMHUB_FMU_TEST_SOURCES)
 if(TLMHUB_FMU_TEST_SOURCES)
   add_executable(tlmhub-fmu-tests ${TLMHUB_FMU_TEST_SOURCES})
   target_link_libraries(tlmhub-fmu-tests PRIVATE tlmhub::core tlmhub::fmu GTest::gtest GTest::gtest_main)
