@@ -9,9 +9,14 @@ export function baseUrl(): string {
 }
 
 export async function login(page: Page, user: keyof typeof USERS): Promise<void> {
+    await loginWith(page, user, USERS[user]);
+}
+
+/** Logs in through the login page as any account (one a test made), to the model list. */
+export async function loginWith(page: Page, username: string, password: string): Promise<void> {
     await page.goto(`${baseUrl()}/#/login`);
-    await page.getByLabel('User name').fill(user);
-    await page.getByLabel('Password').fill(USERS[user]);
+    await page.getByLabel('User name').fill(username);
+    await page.getByLabel('Password').fill(password);
     await page.getByRole('button', { name: 'Log in' }).click();
     await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
 }

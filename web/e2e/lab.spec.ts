@@ -7,7 +7,7 @@
 import { test, expect, type Browser, type Page, type APIRequestContext } from './fixtures';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { baseUrl, runAndWait } from './helpers';
+import { baseUrl, loginWith, runAndWait } from './helpers';
 import { ADMIN_PASSWORD } from './globalSetup';
 
 const TEACHER = 'tina';
@@ -34,11 +34,7 @@ async function createAccounts(request: APIRequestContext): Promise<void> {
 async function loggedIn(browser: Browser, username: string): Promise<Page> {
     const context = await browser.newContext({ acceptDownloads: true });
     const page = await context.newPage();
-    await page.goto(`${baseUrl()}/#/login`);
-    await page.getByLabel('User name').fill(username);
-    await page.getByLabel('Password').fill(password(username));
-    await page.getByRole('button', { name: 'Log in' }).click();
-    await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    await loginWith(page, username, password(username));
     return page;
 }
 

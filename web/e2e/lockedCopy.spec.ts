@@ -5,7 +5,7 @@
 // that sorts by a column click. Classes, assignments and hand-ins are made through the API.
 import { test, expect, type APIRequestContext, type Browser, type Page } from './fixtures';
 import { fileURLToPath } from 'node:url';
-import { baseUrl } from './helpers';
+import { baseUrl, loginWith } from './helpers';
 import { ADMIN_PASSWORD } from './globalSetup';
 
 const docsScreenshots = fileURLToPath(new URL('../../docs/screenshots/', import.meta.url));
@@ -53,11 +53,7 @@ async function lockedAssignment(request: APIRequestContext, prefix: string, stud
 
 async function loggedIn(browser: Browser, username: string): Promise<Page> {
     const page = await (await browser.newContext()).newPage();
-    await page.goto(`${baseUrl()}/#/login`);
-    await page.getByLabel('User name').fill(username);
-    await page.getByLabel('Password').fill(password(username));
-    await page.getByRole('button', { name: 'Log in' }).click();
-    await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    await loginWith(page, username, password(username));
     return page;
 }
 

@@ -1,7 +1,7 @@
 // Issue 39 item 7: a teacher who bounds a parameter so that the template's own value lies
 // outside is warned in words, on the assignment's page and in its form.
 import { test, expect } from './fixtures';
-import { baseUrl } from './helpers';
+import { baseUrl, loginWith } from './helpers';
 import { ADMIN_PASSWORD } from './globalSetup';
 
 const TEACHER = 'wanda';
@@ -18,11 +18,7 @@ test('a teacher is warned that the template lies outside the bounds they set', a
     await call('/users', { username: TEACHER, password: PASSWORD, role: 'teacher' }, await login('admin', ADMIN_PASSWORD));
     const theClass = await call('/classes', { name: 'Warned class' }, await login(TEACHER, PASSWORD));
 
-    await page.goto(`${baseUrl()}/#/login`);
-    await page.getByLabel('User name').fill(TEACHER);
-    await page.getByLabel('Password').fill(PASSWORD);
-    await page.getByRole('button', { name: 'Log in' }).click();
-    await expect(page.getByRole('heading', { name: 'Examples' })).toBeVisible();
+    await loginWith(page, TEACHER, PASSWORD);
     await page.goto(`${baseUrl()}/#/class/${String(theClass.id)}`);
 
     // Position Servo's GainP.k is 0.0264249: above the maximum 0.01 set here.
