@@ -1,4 +1,4 @@
-// App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>], #/account,
+// App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>][&path=<subsystems>], #/account,
 // #/classes, #/class/<id>, #/assignment/<id>.
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
@@ -12,6 +12,7 @@ import { renderClass } from './labs/ClassView';
 import { allowedText, renderAssignment } from './labs/AssignmentView';
 import type { LabPage } from './labs/LabPage';
 import { h } from './ui/dom';
+import { parseModelRoute, sameModel } from './app/modelRoute';
 
 const session = new Session();
 const app = document.getElementById('app')!;
@@ -58,6 +59,13 @@ async function route(): Promise<void> {
         return;
     }
     const hash = location.hash || '#/models';
+    const modelRoute = parseModelRoute(hash);
+    if (editor && sameModel(modelRoute, parseModelRoute(currentHash))) {
+        // another level of the open model (a subsystem entered, Back or Forward): stay in the editor
+        currentHash = hash;
+        editor.showPath(modelRoute!.path);
+        return;
+    }
     if (editor && hash !== currentHash) {
         if (editor.dirty() && !confirm('The model has unsaved changes. Leave anyway?')) {
             ignoreNextHash = true;
@@ -75,21 +83,20 @@ async function route(): Promise<void> {
         return;
     }
     renderTopbar();
-    const model = /^#\/model\/(\d+)(?:\?assignment=(\d+))?$/.exec(hash);
     const lab = /^#\/(class|assignment)\/(\d+)$/.exec(hash);
     if (hash === '#/login') {
         renderLogin(page, session, () => { location.hash = '#/models'; });
     } else if (hash === '#/account') {
         renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
-    } else if (model) {
+    } else if (modelRoute) {
         let back: BackLink | undefined;
-        if (model[2]) {
+        if (modelRoute.assignment !== undefined) {
             // an assignment's copy: back to the assignment, with what the student may change
-            const assignment = await session.labs.getAssignment(Number(model[2])).catch(() => null);
-            back = { href: `#/assignment/${model[2]}`, label: assignment?.title ?? 'Assignment',
+            const assignment = await session.labs.getAssignment(modelRoute.assignment).catch(() => null);
+            back = { href: `#/assignment/${modelRoute.assignment}`, label: assignment?.title ?? 'Assignment',
                 note: assignment ? `Assignment copy. ${allowedText(assignment)}` : undefined };
         }
-        const opened = await renderEditor(page, session, Number(model[1]), navigate, back);
+        const opened = await renderEditor(page, session, modelRoute.id, navigate, back, modelRoute.path);
         if (currentHash === hash) {
             editor = opened;
         } else {

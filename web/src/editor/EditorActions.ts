@@ -28,8 +28,6 @@ export interface ActionHost {
     report(e: unknown): void;
     /** What an action did, when it is worth saying. */
     note(message: string): void;
-    /** Asks before a change that cannot be undone. */
-    confirm(question: string): boolean;
     /** Opens the parameter panel on a component. */
     openParameters(name: string): void;
     /** Whether this kind of change may be made (a locked copy allows few); all when absent. */
@@ -89,9 +87,7 @@ export class EditorActions {
         }
         const names = [...this.store.selection];
         if (names.length === 0) return false;
-        const command = new RemoveComponents(this.store.path, names);
-        if (this.selected().some((c) => c.system) && !this.host.confirm('Deleting a subsystem cannot be undone. Delete?')) return false;
-        return this.run(command);
+        return this.run(new RemoveComponents(this.store.path, names));
     }
 
     get canPaste(): boolean { return clipboard !== null; }

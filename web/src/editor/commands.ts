@@ -6,7 +6,9 @@ import {
 } from '../model/modelState';
 import type { ReplyData } from '../protocol/requests.generated';
 import { portShapeOfModel, replacementPlan } from './replaceType';
-import type { Component, Connection, Model, Param, PortRef, Pose, SimulationSettings, SysParam } from '../protocol/types';
+import { systemPortPlan } from './systemPortPlacement';
+import { connectRequest, restoreComponent, restoreSubsystem, snapshot, type ComponentSnapshot } from './restore';
+import type { Component, Connection, Model, PortRef, Pose, SimulationSettings, SysParam } from '../protocol/types';
 
 export interface EditContext {
     /** Sends one edit request; the reply is applied to the local model before this resolves. */
@@ -44,38 +46,19 @@ export class AddComponent implements Command {
     }
 }
 
-/** What is needed to put a component back: its type, name, pose, parameters. */
-export interface ComponentSnapshot { type: string; name: string; pose: Pose; parameters: Param[] }
-
-function snapshot(c: Component): ComponentSnapshot {
-    return { type: c.type, name: c.name, pose: { ...c.pose }, parameters: c.parameters.map((p) => ({ ...p })) };
-}
-
-// Adds a component as in a snapshot: add, then set the parameters whose value differs.
-async function restoreComponent(ctx: EditContext, path: SystemPath, snap: ComponentSnapshot, name: string): Promise<string> {
-    const reply = await ctx.send({ type: 'component.add', system: path, component_type: snap.type, name, pose: snap.pose });
-    const added = reply.component;
-    for (const p of snap.parameters) {
-        const fresh = added.parameters.find((q) => q.name === p.name);
-        if (fresh && fresh.value !== p.value) {
-            await ctx.send({ type: 'parameter.set', system: path, component: added.name, parameter: p.name, value: p.value });
-        }
-    }
-    return added.name;
-}
-
+/**
+ * Deletes components, subsystems included; undo puts them back with their parameters and
+ * connections (a subsystem with its content, see restore.ts).
+ */
 export class RemoveComponents implements Command {
     readonly label: string;
-    private removed: ComponentSnapshot[] = [];
+    readonly undoable = true;
+    private removed: Component[] = [];
     private cut: Connection[] = [];
-    private hasSubsystem = false;
 
     constructor(private readonly path: SystemPath, private readonly names: string[]) {
         this.label = names.length === 1 ? `Delete ${names[0]}` : `Delete ${names.length} components`;
     }
-
-    // Subsystems cannot be re-created through the protocol, so removing one is final.
-    get undoable(): boolean { return !this.hasSubsystem; }
 
     async do(ctx: EditContext): Promise<void> {
         const system = systemAt(ctx.model(), this.path);
@@ -85,18 +68,38 @@ export class RemoveComponents implements Command {
         for (const name of this.names) {
             const c = findComponent(system, name);
             if (!c) continue;
-            if (c.system) this.hasSubsystem = true;
-            this.removed.push(snapshot(c));
+            this.removed.push(structuredClone(c));
             for (const conn of connectionsOf(system, name)) {
-                if (!this.cut.some((k) => sameRef(k.from, conn.from) && sameRef(k.to, conn.to))) this.cut.push(conn);
+                if (!this.cut.some((k) => sameRef(k.from, conn.from) && sameRef(k.to, conn.to))) this.cut.push(structuredClone(conn));
             }
         }
-        for (const snap of this.removed) await ctx.send({ type: 'component.remove', system: this.path, name: snap.name });
+        for (const c of this.removed) await ctx.send({ type: 'component.remove', system: this.path, name: c.name });
     }
 
     async undo(ctx: EditContext): Promise<void> {
-        for (const snap of this.removed) await restoreComponent(ctx, this.path, snap, snap.name);
-        for (const conn of this.cut) await ctx.send({ type: 'connect', system: this.path, from: conn.from, to: conn.to });
+        for (const c of this.removed.filter((k) => !k.system)) await restoreComponent(ctx, this.path, snapshot(c), c.name);
+        // A subsystem joins its outside connections as it is rebuilt; one between two removed
+        // subsystems is joined by the later one, with the earlier one's ports as renamed.
+        const subsystems = this.removed.filter((k) => k.system);
+        const renamedPorts = new Map<string, Map<string, string>>();
+        const now = (ref: PortRef): PortRef => ({ component: ref.component, port: renamedPorts.get(ref.component)?.get(ref.port) ?? ref.port });
+        const pending = new Set(subsystems.map((k) => k.name));
+        for (const sub of subsystems) {
+            pending.delete(sub.name);
+            const outside = new Map<string, PortRef[]>();
+            for (const conn of this.cut) {
+                const [mine, other] = conn.from.component === sub.name ? [conn.from, conn.to] : conn.to.component === sub.name ? [conn.to, conn.from] : [null, null];
+                if (!mine || !other || pending.has(other.component)) continue;
+                outside.set(mine.port, [...(outside.get(mine.port) ?? []), now(other)]);
+            }
+            const rebuilt = await restoreSubsystem(ctx, this.path, sub, outside);
+            renamedPorts.set(sub.name, rebuilt.ports);
+        }
+        const isSubsystem = new Set(subsystems.map((k) => k.name));
+        for (const conn of this.cut) {
+            if (isSubsystem.has(conn.from.component) || isSubsystem.has(conn.to.component)) continue;
+            await ctx.send(connectRequest(this.path, conn));
+        }
     }
 }
 
@@ -310,6 +313,14 @@ export class SetSimulationSettings implements Command {
     }
 }
 
+// The server leaves a new subsystem's system ports on one spot; they are moved apart here.
+async function placeSystemPorts(ctx: EditContext, path: SystemPath, subsystem: string): Promise<void> {
+    const parent = systemAt(ctx.model(), path);
+    for (const [name, pose] of parent ? systemPortPlan(parent, subsystem) : []) {
+        await ctx.send({ type: 'component.move', system: [...path, subsystem], name, pose });
+    }
+}
+
 // model.group names at least one component; the editor offers grouping only for a selection.
 function nonEmpty(names: string[]): [string, ...string[]] {
     const [first, ...rest] = names;
@@ -317,7 +328,10 @@ function nonEmpty(names: string[]): [string, ...string[]] {
     return [first, ...rest];
 }
 
-/** Moves components into a new subsystem on the server; undo ungroups it again. */
+/**
+ * Moves components into a new subsystem on the server and places its system ports apart
+ * (systemPortPlacement.ts); undo ungroups it again.
+ */
 export class GroupComponents implements Command {
     readonly label: string;
     readonly undoable = true;
@@ -333,6 +347,7 @@ export class GroupComponents implements Command {
         const reply = await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.names), name: this.name });
         this.actual = reply.name;
         await ctx.send({ type: 'model.get' });   // the system changed in more places than one reply says
+        await placeSystemPorts(ctx, this.path, this.actual);
     }
 
     async undo(ctx: EditContext): Promise<void> {
@@ -360,16 +375,10 @@ export class UngroupSubsystem implements Command {
     }
 
     async undo(ctx: EditContext): Promise<void> {
-        await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.moved), name: this.name });
+        const reply = await ctx.send({ type: 'model.group', system: this.path, names: nonEmpty(this.moved), name: this.name });
         await ctx.send({ type: 'model.get' });
+        await placeSystemPorts(ctx, this.path, reply.name);
     }
-}
-
-/** A connection as sent again: its ends and its line's points, when it has any. */
-function connectRequest(path: SystemPath, c: Connection): EditRequestOf<'connect'> {
-    return c.points.length > 0
-        ? { type: 'connect', system: path, from: c.from, to: c.to, points: c.points }
-        : { type: 'connect', system: path, from: c.from, to: c.to };
 }
 
 /**

@@ -28,7 +28,7 @@ async function editor(allowed: (edit: EditKind) => boolean = () => true) {
     const canvas = { parameterPorts: new ParameterPortVisibility(), names: new NameVisibility(), selectedConnection: null, fit: () => undefined } as unknown as CanvasView;
     const notes: string[] = [];
     const actions = new EditorActions({
-        store, canvas, catalogue, report: (e) => notes.push(String(e)), note: (m) => notes.push(m), confirm: () => true,
+        store, canvas, catalogue, report: (e) => notes.push(String(e)), note: (m) => notes.push(m),
         openParameters: () => undefined, allows: allowed,
     });
     const ctx = { actions, store, canvas, plot: () => undefined, showHelp: () => undefined };

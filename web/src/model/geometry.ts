@@ -89,8 +89,25 @@ export function isInputVariablePort(component: Component, port: string): boolean
     return component.parameters.some((p) => p.name === `${port}#Value`);
 }
 
+// A subsystem's port sits on the side of its box where its system port sits inside, seen from
+// the middle of the content (Hopsan places a subsystem's ports so); undefined when it cannot tell.
+function subsystemPortPlace(component: Component, port: string): { side: Side; along: number } | undefined {
+    const inner = component.system;
+    const at = inner?.ports.find((p) => p.name === port)?.pose;
+    if (!inner || !at || inner.components.length === 0) return undefined;
+    const xs = inner.components.map((c) => c.pose.x);
+    const ys = inner.components.map((c) => c.pose.y);
+    const dx = at.x - (Math.min(...xs) + Math.max(...xs)) / 2;
+    const dy = at.y - (Math.min(...ys) + Math.max(...ys)) / 2;
+    if (dx === 0 && dy === 0) return undefined;
+    if (Math.abs(dx) >= Math.abs(dy)) return { side: dx < 0 ? 'left' : 'right', along: at.y };
+    return { side: dy < 0 ? 'top' : 'bottom', along: at.x };
+}
+
 function sideOf(component: Component, index: number): Side {
     const port = component.ports[index];
+    const inSubsystem = port.kind === 'system' ? subsystemPortPlace(component, port.name) : undefined;
+    if (inSubsystem) return inSubsystem.side;
     if (port.kind === 'read') return isInputVariablePort(component, port.name) ? 'top' : 'left';
     if (port.kind === 'write') return 'right';
     // power ports (and two-way signal ports) alternate left and right
@@ -114,8 +131,13 @@ export function layoutComponent(component: Component, known: Map<string, Point> 
     }
     const bySide: Record<Side, string[]> = { left: [], right: [], top: [], bottom: [] };
     component.ports.forEach((port, i) => { if (!ports.has(port.name)) bySide[sideOf(component, i)].push(port.name); });
+    if (component.system) {
+        // in the order they sit inside, so the lines into the box do not cross
+        const along = (name: string) => subsystemPortPlace(component, name)?.along ?? 0;
+        for (const names of Object.values(bySide)) names.sort((a, b) => along(a) - along(b));
+    }
     halfHeight = Math.max(halfHeight, ((Math.max(bySide.left.length, bySide.right.length) + 1) * PORT_GAP) / 2);
-    halfWidth = Math.max(halfWidth, ((bySide.top.length + 1) * PORT_GAP) / 2);
+    halfWidth = Math.max(halfWidth, ((Math.max(bySide.top.length, bySide.bottom.length) + 1) * PORT_GAP) / 2);
     halfWidth = Math.min(halfWidth, MAX_HALF);
     halfHeight = Math.min(halfHeight, MAX_HALF);
     const spread = (names: string[], place: (t: number) => Point) => {

@@ -118,8 +118,12 @@ const appliers: { [T in EditType]: Apply<T> } = {
             connections: s.connections.map((c) => ({ ...c, from: rename(c.from), to: rename(c.to) })),
         }));
     },
+    // the name is a component's or a system port's (both are moved by the same request)
     'component.move': (model, request) =>
-        updateSystem(model, request.system ?? [], (s) => mapComponent(s, request.name, (c) => ({ ...c, pose: request.pose }))),
+        updateSystem(model, request.system ?? [], (s) => ({
+            ...mapComponent(s, request.name, (c) => ({ ...c, pose: request.pose })),
+            ports: s.ports.map((p) => (p.name === request.name ? { ...p, pose: request.pose } : p)),
+        })),
     'connect': (model, request, reply) =>
         updateSystem(model, request.system ?? [], (s) => refreshConnected({ ...s, connections: [...s.connections, reply.connection] })),
     'disconnect': (model, request) => {

@@ -114,9 +114,17 @@ export class FakeServer {
             c.name = wanted;
             return { name: wanted };
         }
-        case 'component.move':
-            this.component(system, request.name as string).pose = structuredClone(request.pose as Component['pose']);
+        case 'component.move': {
+            const pose = structuredClone(request.pose as Component['pose']);
+            const port = system.ports.find((p) => p.name === request.name);
+            if (port) port.pose = pose;
+            else this.component(system, request.name as string).pose = pose;
             return {};
+        }
+        case 'model.get':
+            return { model: structuredClone(this.model) };
+        case 'model.group':
+            return { name: this.group(system, request.names as string[], request.name as string, request.pose as Component['pose'] | undefined) };
         case 'connect': {
             const from = request.from as PortRef;
             const to = request.to as PortRef;
@@ -182,6 +190,46 @@ export class FakeServer {
             throw new ApiError('unknown_message_type', `unknown message type ${request.type}`);
         }
     };
+
+    // Moves `names` into a new subsystem; each inner port with connections leaving the group
+    // gets one system port (named after it), as the server's grouping does per node.
+    private group(system: System, names: string[], wanted: string, pose: Component['pose'] | undefined): string {
+        let name = wanted;
+        for (let i = 1; system.components.some((c) => c.name === name); ++i) name = `${wanted}_${i}`;
+        const inside = new Set(names);
+        const sub: System = {
+            name, type: 'Subsystem', timestep: 0.001, inherit_timestep: true, parameters: [], ports: [],
+            components: system.components.filter((c) => inside.has(c.name)),
+            connections: system.connections.filter((c) => inside.has(c.from.component) && inside.has(c.to.component)),
+        };
+        const outsideConnections: System['connections'] = [];
+        const portOf = new Map<string, string>();
+        for (const c of system.connections) {
+            const [mine, other] = inside.has(c.from.component) && !inside.has(c.to.component) ? [c.from, c.to]
+                : inside.has(c.to.component) && !inside.has(c.from.component) ? [c.to, c.from] : [null, null];
+            if (!mine || !other) continue;
+            const key = `${mine.component}.${mine.port}`;
+            let port = portOf.get(key);
+            if (!port) {
+                port = mine.port;
+                for (let i = 1; sub.ports.some((p) => p.name === port) || sub.components.some((k) => k.name === port); ++i) port = `${mine.port}_${i}`;
+                portOf.set(key, port);
+                const nodeType = sub.components.find((k) => k.name === mine.component)!.ports.find((p) => p.name === mine.port)!.node_type;
+                sub.ports.push({ name: port, node_type: nodeType, pose: { x: 0, y: 0, angle: 0, flipped: false } });
+                sub.connections.push({ from: { component: port, port }, to: { ...mine }, points: [] });
+            }
+            outsideConnections.push({ from: { component: name, port }, to: { ...other }, points: [] });
+        }
+        const component: Component = {
+            name, type: 'Subsystem', kind: 'system', pose: pose ?? { x: 0, y: 0, angle: 0, flipped: false },
+            ports: sub.ports.map((p) => ({ name: p.name, kind: 'system', node_type: p.node_type ?? 'NodeHydraulic', multiport: false, connected: true })),
+            parameters: [], system: sub,
+        };
+        system.components = [...system.components.filter((c) => !inside.has(c.name)), component];
+        system.connections = [...system.connections.filter((c) => !inside.has(c.from.component) && !inside.has(c.to.component)), ...outsideConnections];
+        this.refresh(system);
+        return name;
+    }
 
     private refresh(system: System): void {
         for (const c of system.components) {

@@ -28,15 +28,23 @@ import { openFmuDialog } from '../fmu/FmuDialog';
 import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
 import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
+import { modelRouteHash, parseModelRoute } from '../app/modelRoute';
+import { systemAt } from '../model/modelState';
 import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
 
-export interface EditorPage { dispose(): void; dirty(): boolean }
+export interface EditorPage {
+    dispose(): void;
+    dirty(): boolean;
+    /** Shows the subsystem at `path` (the address changed: Back, Forward); the top level if it is gone. */
+    showPath(path: string[]): void;
+}
 
 /** Where the header's back link leads (default: the model list); `note` says what the model is for. */
 export interface BackLink { href: string; label: string; note?: string }
 
 export async function renderEditor(root: HTMLElement, session: Session, modelId: number,
-    navigate: (hash: string, replace?: boolean) => void, back: BackLink = { href: '#/models', label: 'Models' }): Promise<EditorPage> {
+    navigate: (hash: string, replace?: boolean) => void, back: BackLink = { href: '#/models', label: 'Models' },
+    initialPath: string[] = []): Promise<EditorPage> {
     root.replaceChildren(h('main', { class: 'loading' }, h('p', { class: 'muted' }, 'Opening model…')));
     const rest = session.rest;
     // the summary, the catalogue and the model are asked for at once: one after the other
@@ -73,7 +81,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         const message = e instanceof ApiError && e.code === 'not_found' ? 'Model not found (it does not exist or is not yours).' : errorText(e);
         root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
             h('p', { class: 'form-error', role: 'alert', 'data-testid': 'open-error' }, message), h('a', { href: '#/models' }, 'Back to the models')));
-        return { dispose: () => undefined, dirty: () => false };
+        return { dispose: () => undefined, dirty: () => false, showPath: () => undefined };
     }
     let catalogue: CatalogueEntry[];
     let opened: ModelOpenedData;
@@ -83,7 +91,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         ws.close();
         root.replaceChildren(h('main', { class: 'error-page' }, h('h1', {}, 'Cannot open the model'),
             h('p', { class: 'form-error', role: 'alert', 'data-testid': 'open-error' }, errorText(e)), h('a', { href: '#/models' }, 'Back to the models')));
-        return { dispose: () => undefined, dirty: () => false };
+        return { dispose: () => undefined, dirty: () => false, showPath: () => undefined };
     }
 
     const assignment = await assignmentLoading;
@@ -91,6 +99,28 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     // An edit request carries its fields beside its type; the client sets the type itself. What
     // a locked copy may not change is refused before it is sent.
     const store = new EditorStore(opened.model, permittedTransport(permissions, (request) => ws.request(request.type, request)));
+    // The subsystem on screen is in the address (modelRoute.ts): entering one is a step that
+    // Back returns from, and the address, when Back or Forward changes it, says what to show.
+    let pathInAddress = JSON.stringify(initialPath);
+    const addressOf = (path: string[]) => {
+        const route = parseModelRoute(location.hash);
+        return route && modelRouteHash({ ...route, path });
+    };
+    const showPath = (path: string[]): void => {
+        const shown = systemAt(store.model, path) ? path : [];
+        pathInAddress = JSON.stringify(shown);
+        if (JSON.stringify(store.path) !== pathInAddress) store.enterSystem(shown);
+        const corrected = shown === path ? null : addressOf(shown);   // a subsystem that is gone
+        if (corrected) navigate(corrected, true);
+    };
+    showPath(initialPath);
+    store.subscribe(() => {
+        const path = JSON.stringify(store.path);
+        if (path === pathInAddress) return;
+        pathInAddress = path;
+        const address = addressOf(store.path);
+        if (address) navigate(address);
+    });
     const runs = new RunController({ request: ws.request.bind(ws), onEvent: ws.onEvent.bind(ws), resultsJson: rest.resultsJson.bind(rest),
         onResubscribe: ws.onResubscribe.bind(ws) });
     const plots = new PlotArea(runs, session.units, () => savePlots(localStorage, summary.id, plots.layout()),
@@ -149,7 +179,6 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         store, canvas, catalogue,
         report: reportError,
         note: (message) => messages.note(message),
-        confirm: (question) => confirm(question),
         openParameters: focusParameters,
         allows: (edit) => permissions.allows(edit),
     });
@@ -397,6 +426,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
 
     return {
         dirty: () => store.dirty,
+        showPath,
         dispose: () => {
             document.removeEventListener('keydown', onKey);
             menu.close(false);
