@@ -1,6 +1,7 @@
 #include "server/labs/AssignmentWarnings.h"
 
 #include "server/labs/LabChecks.h"
+#include "server/labs/NumberText.h"
 
 #include "core/Component.h"
 #include "core/Parameter.h"
@@ -8,25 +9,16 @@
 #include "core/ParameterPath.h"
 #include "core/System.h"
 
-#include <cstdio>
-
 namespace tlmhub::server {
 
 namespace {
 
-std::string warningNumber(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 // "between 0 and 0.1", "at least 0" or "at most 0.1".
 std::string warningBounds(const AllowedParameter& p)
 {
-    if (p.min && p.max) return "between " + warningNumber(*p.min) + " and " + warningNumber(*p.max);
-    if (p.min) return "at least " + warningNumber(*p.min);
-    return "at most " + warningNumber(*p.max);
+    if (p.min && p.max) return "between " + numberText(*p.min) + " and " + numberText(*p.max);
+    if (p.min) return "at least " + numberText(*p.min);
+    return "at most " + numberText(*p.max);
 }
 
 } // namespace
@@ -53,7 +45,7 @@ std::vector<AssignmentWarning> parameterWarnings(const ParameterLock& lock, cons
         if (!value) continue;
         if ((p.min && *value < *p.min) || (p.max && *value > *p.max))
             warnings.push_back({role + "_outside_bounds",
-                                article + " sets " + p.name + " to " + warningNumber(*value) +
+                                article + " sets " + p.name + " to " + numberText(*value) +
                                     ", outside the bounds you set (" + warningBounds(p) + ")."});
     }
     return warnings;

@@ -1,20 +1,9 @@
 #include "server/labs/Gradebook.h"
+#include "server/labs/NumberText.h"
 
-#include <cstdio>
 #include <string_view>
 
 namespace tlmhub::server {
-
-namespace {
-
-std::string number(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-} // namespace
 
 std::string spreadsheetSafeCell(const std::string& text)
 {
@@ -58,13 +47,13 @@ std::string gradebookCsv(const std::vector<std::string>& assignmentTitles, const
         for (const GradebookCell& cell : row.cells) {
             csv += ',';
             if (cell.points) {
-                csv += number(*cell.points);
+                csv += numberText(*cell.points);
                 total += *cell.points;
             }
             csv += cell.late ? ",late" : ",";
         }
         csv += ',';
-        csv += number(total);
+        csv += numberText(total);
         csv += '\n';
     }
     return csv;

@@ -1,4 +1,5 @@
 #include "server/labs/ParameterLock.h"
+#include "server/labs/NumberText.h"
 
 #include "core/Model.h"
 #include "core/ParameterPath.h"
@@ -24,10 +25,7 @@ std::optional<double> plainNumber(const std::string& text)
 std::string boundsText(const AllowedParameter& p)
 {
     const auto bound = [](std::optional<double> value, const char* none) {
-        if (!value) return std::string(none);
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", *value);
-        return std::string(text);
+        return value ? numberText(*value) : std::string(none);
     };
     return "[" + bound(p.min, "-inf") + ", " + bound(p.max, "inf") + "]";
 }
