@@ -44,26 +44,37 @@ use_tmpfs_scratch() {
   scratch_dir=$dir
 }
 scratch_dir=
-background_pid=
-# On any exit: stop a build still running in the background, then remove the scratch files.
+declare -A background_pids=()
+# On any exit: stop the builds still running in the background, then remove the scratch files.
 cleanup() {
-  if [ -n "$background_pid" ]; then
+  local pid
+  for pid in "${background_pids[@]}"; do
     # The group, or the process itself if it has not yet made its group.
-    kill -TERM -- "-$background_pid" 2>/dev/null || kill -TERM "$background_pid" 2>/dev/null || true
-    wait "$background_pid" 2>/dev/null || true
-  fi
+    kill -TERM -- "-$pid" 2>/dev/null || kill -TERM "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+  done
   [ -z "$scratch_dir" ] || rm -rf "$scratch_dir"
 }
 trap cleanup EXIT
 use_tmpfs_scratch
 
+# The machine's busy and total CPU time so far, in clock ticks (/proc/stat: busy is all but
+# idle and iowait), as "busy total".
+machine_ticks() {
+  awk '/^cpu / {print $2 + $3 + $4 + $7 + $8 + $9, $2 + $3 + $4 + $5 + $6 + $7 + $8 + $9}' /proc/stat
+}
 # Prints a stage's wall time and the CPU time of everything it ran (user + system of the
-# processes it waited for): a stage far below twice its wall time leaves a core idle.
+# processes it waited for), and how many cores the whole machine kept busy meanwhile (a build
+# running beside the stage included): below the core count, CPU went unused.
 stage() {
   local name=$1
   shift
-  local TIMEFORMAT="stage $name: %0R s (CPU %0U s user + %0S s system)"
+  local TIMEFORMAT="stage $name: %0R s (CPU %0U s user + %0S s system)" before
+  before=$(machine_ticks)
+  # Not `time ... || status=$?`: a function called on the left of || runs without errexit.
   time "$@"
+  echo "$before $(machine_ticks)" | awk -v name="$name" -v cores="$jobs" \
+    '$4 > $2 {printf "stage %s: the machine kept %.2f of %d cores busy\n", name, cores * ($3 - $1) / ($4 - $2), cores}'
 }
 
 # Every compile and link of build directory $1 is timed into $1/build-times.tsv: sets the
@@ -148,30 +159,30 @@ tsan_test() {
     run_tests tsan-test build-tsan -j"$jobs" -L '^threads$' -LE "$sanitizer_excluded"
 }
 
-# A sanitizer build runs beside the test stage before it, in the idle scheduling class
-# (SCHED_IDLE): it gets only the CPU the tests leave, which is much of it, since they wait on
-# sockets, servers and the browser (the Release tests kept 1.3 of 2 cores busy, TSan's 1.7),
-# and a test thread that wakes takes its core back at once. Its output is printed when it ends;
-# its wall time counts from its start, beside the other stage.
+# The sanitizer builds run beside the Release tests, in the idle scheduling class (SCHED_IDLE):
+# they get only the CPU the tests leave, which is much of it, since the tests wait on sockets,
+# servers and the browser (the Release tests alone kept 1.1 of 2 cores busy), and a test thread
+# that wakes takes its core back at once. Both start at once, so that neither the tests' idle
+# time nor the gap while the TSan build finishes alone leaves a core unused; the ASan build
+# goes on beside the TSan tests. A build's output is printed when it ends; its wall time
+# counts from its start.
 start_background_stage() {
-  background_name=$1
-  background_log=$root/build/$1.log
   # Job control puts it in a process group of its own, which cleanup() stops as a whole. Not
   # setsid: a new session is a scheduling group of its own (autogroup), which the kernel weighs
   # as an equal of the tests' whole group, idle class or not (seen: the Release tests 37 % slower).
   set -m
   bash -c 'chrt --idle -p 0 $$ >/dev/null && exec bash "$@"' background \
-    "$root/scripts/test.sh" --background-stage "$1" >"$background_log" 2>&1 &
-  background_pid=$!
+    "$root/scripts/test.sh" --background-stage "$1" >"$root/build/$1.log" 2>&1 &
+  background_pids[$1]=$!
   set +m
 }
 finish_background_stage() {
   local status=0
-  wait "$background_pid" || status=$?
-  background_pid=
-  cat "$background_log"
+  wait "${background_pids[$1]}" || status=$?
+  unset "background_pids[$1]"
+  cat "$root/build/$1.log"
   if [ "$status" -ne 0 ]; then
-    echo "stage $background_name failed (exit $status)"
+    echo "stage $1 failed (exit $status)"
     return "$status"
   fi
 }
@@ -180,7 +191,7 @@ if [ "${1:-}" = --background-stage ]; then
   trap - EXIT
   case $2 in
     tsan-build) stage "tsan-build (beside the Release tests, idle priority)" tsan_build ;;
-    asan-build) stage "asan-build (beside the TSan tests, idle priority)" asan_build ;;
+    asan-build) stage "asan-build (beside the Release and TSan tests, idle priority)" asan_build ;;
     *) echo "unknown background stage: $2" >&2; exit 2 ;;
   esac
   exit 0
@@ -189,11 +200,11 @@ fi
 stage install scripts/install-deps.sh --with-browser --with-clang
 stage build release_build
 start_background_stage tsan-build
-stage test release_test
-finish_background_stage
 start_background_stage asan-build
+stage test release_test
+finish_background_stage tsan-build
 stage tsan-test tsan_test
-finish_background_stage
+finish_background_stage asan-build
 stage asan-test asan_test
 echo "total: $SECONDS s"
 if [ "$SECONDS" -gt "$budget_seconds" ]; then
