@@ -135,6 +135,7 @@ Result EditSession::handle(const json& request)
         {"component.move", decoding(&EditSession::componentMove)},
         {"connect", decoding(&EditSession::connect)},
         {"disconnect", decoding(&EditSession::disconnect)},
+        {"connection.route", decoding(&EditSession::connectionRoute)},
         {"parameter.get", decoding(&EditSession::parameterGet)},
         {"parameter.set", decoding(&EditSession::parameterSet)},
         {"sysparam.set", decoding(&EditSession::sysparamSet)},
@@ -288,6 +289,40 @@ Result EditSession::disconnect(System& system, const protocol::DisconnectRequest
         return fail(disconnected);
     eraseConnectionExtras(system, e);
     return success();
+}
+
+Result EditSession::connectionRoute(System& system, const protocol::ConnectionRouteRequest& request)
+{
+    const ConnectionEnds e = endsOf(request.from, request.to);
+    const std::vector<ConnectionEnds> existing = connectionsOf(system);
+    const bool connected = std::any_of(existing.begin(), existing.end(), [&e](const ConnectionEnds& c) {
+        return (c.fromComponent == e.fromComponent && c.fromPort == e.fromPort && c.toComponent == e.toComponent &&
+                c.toPort == e.toPort) ||
+               (c.fromComponent == e.toComponent && c.fromPort == e.toPort && c.toComponent == e.fromComponent &&
+                c.toPort == e.fromPort);
+    });
+    if (!connected)
+        return fail("not_found", e.fromComponent + "." + e.fromPort + " and " + e.toComponent + "." + e.toPort +
+                                     " are not connected in system '" + system.name() + "'");
+    for (const std::vector<double>& p : request.points)
+        if (!std::isfinite(p.at(0)) || !std::isfinite(p.at(1)))
+            return fail("bad_request", "points: every coordinate must be a finite number");
+    // The points go where the connection's extras already are (kept in the order of the file's
+    // ends), so what else the file kept for the line stays with it.
+    bool reversed = false;
+    std::string key = preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort);
+    if (!system.connectionExtras.contains(key)) {
+        const std::string other = preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort);
+        if (system.connectionExtras.contains(other)) {
+            key = other;
+            reversed = true;
+        }
+    }
+    std::vector<LinePoint> points;
+    for (const std::vector<double>& p : request.points) points.push_back({p.at(0), p.at(1)});
+    if (reversed) std::reverse(points.begin(), points.end());
+    system.connectionExtras[key].layout.points = std::move(points);
+    return success(protocol::ConnectedData{.connection = describeConnection(system, e)});
 }
 
 // ---------------------------------------------------------------- parameters

@@ -50,6 +50,7 @@ private:
     Result componentMove(System& system, const protocol::ComponentMoveRequest& request);
     Result connect(System& system, const protocol::ConnectRequest& request);
     Result disconnect(System& system, const protocol::DisconnectRequest& request);
+    Result connectionRoute(System& system, const protocol::ConnectionRouteRequest& request);
     Result parameterGet(System& system, const protocol::ParameterGetRequest& request);
     Result parameterSet(System& system, const protocol::ParameterSetRequest& request);
     Result sysparamSet(System& system, const protocol::SysParamSetRequest& request);

@@ -1001,6 +1001,26 @@ void to_json(nlohmann::json& j, const DisconnectRequest& v)
     if (v.system) j["system"] = *v.system;
 }
 
+void from_json(const nlohmann::json& j, ConnectionRouteRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("from").get_to(v.from);
+    j.at("to").get_to(v.to);
+    if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
+    j.at("points").get_to(v.points);
+}
+
+void to_json(nlohmann::json& j, const ConnectionRouteRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "connection.route";
+    j["from"] = v.from;
+    j["to"] = v.to;
+    if (v.system) j["system"] = *v.system;
+    j["points"] = v.points;
+}
+
 void from_json(const nlohmann::json& j, ParameterGetRequest& v)
 {
     if (const auto x = j.find("id"); x != j.end()) v.id = *x;

@@ -38,6 +38,7 @@ struct ComponentRenamedData;
 struct ConnectRequest;
 struct ConnectedData;
 struct Connection;
+struct ConnectionRouteRequest;
 struct CurrentUser;
 struct CurveCheckDefinition;
 struct DisconnectRequest;
@@ -716,6 +717,20 @@ struct DisconnectRequest {
 void from_json(const nlohmann::json& j, DisconnectRequest& v);
 void to_json(nlohmann::json& j, const DisconnectRequest& v);
 
+// Replace the GUI line points of an existing connection, given from `from` to `to` (either
+// order of the ends names the connection); [] leaves a line drawn from port to port. Saved as
+// Hopsan saves them.
+struct ConnectionRouteRequest {
+    nlohmann::json id{};
+    // "type": always "connection.route"
+    PortRef from{};
+    PortRef to{};
+    std::optional<std::vector<std::string>> system;
+    std::vector<std::vector<double>> points;
+};
+void from_json(const nlohmann::json& j, ConnectionRouteRequest& v);
+void to_json(nlohmann::json& j, const ConnectionRouteRequest& v);
+
 struct ParameterGetRequest {
     nlohmann::json id{};
     // "type": always "parameter.get"
@@ -1265,6 +1280,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ConnectRequest>("ConnectRequest");
     visit.template operator()<ConnectedData>("ConnectedData");
     visit.template operator()<Connection>("Connection");
+    visit.template operator()<ConnectionRouteRequest>("ConnectionRouteRequest");
     visit.template operator()<CurrentUser>("CurrentUser");
     visit.template operator()<CurveCheckDefinition>("CurveCheckDefinition");
     visit.template operator()<DisconnectRequest>("DisconnectRequest");

@@ -136,6 +136,7 @@ const std::map<std::string, WsCase>& wsCases()
         {"component.move", WsCase::OpenModel},
         {"connect", WsCase::OpenModel},
         {"disconnect", WsCase::OpenModel},
+        {"connection.route", WsCase::OpenModel},
         {"parameter.get", WsCase::OpenModel},
         {"parameter.set", WsCase::OpenModel},
         {"sysparam.set", WsCase::OpenModel},

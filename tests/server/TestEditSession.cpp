@@ -262,6 +262,65 @@ TEST(EditSession, ConnectAndDisconnectWithLinePoints)
     EXPECT_EQ(unknown.code, "not_found");
 }
 
+TEST(EditSession, RouteReplacesALinesPointsAndTheyAreSavedAsHopsanSavesThem)
+{
+    EditSession session = openServo();
+    const json loaded = rootSystem(session);
+    const json* before = findConnection(loaded, "Mass", "P1", "Cylinder_C", "P3");
+    ASSERT_NE(before, nullptr);
+    const json from = before->at("from");
+    const json to = before->at("to");
+    const json points = {{10, 20}, {40, 20}, {40, 60}, {70, 60}};
+    // Named from its "to" end: the reply gives the points in the order they were sent.
+    const auto r = session.handle({{"id", 1}, {"type", "connection.route"}, {"from", to}, {"to", from},
+                                   {"points", points}});
+    expectReplyShape("connection.route", r);
+    EXPECT_EQ(r.data["connection"]["points"], points);
+    const json routed = rootSystem(session);
+    const json* now = findConnection(routed, "Mass", "P1", "Cylinder_C", "P3");
+    ASSERT_NE(now, nullptr);
+    EXPECT_EQ(now->at("points"), json({{70, 60}, {40, 60}, {40, 20}, {10, 20}}));   // from -> to as listed
+
+    // The file gets the coordinates and each segment's direction, as Hopsan writes them.
+    const std::string hmf = session.saveHmf();
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(hmf.c_str()));
+    bool found = false;
+    for (const pugi::xpath_node& n : doc.select_nodes("//connect")) {
+        const pugi::xml_node c = n.node();
+        const std::string a = c.attribute("startcomponent").value();
+        const std::string b = c.attribute("endcomponent").value();
+        if (!((a == "Mass" && b == "Cylinder_C") || (a == "Cylinder_C" && b == "Mass"))) continue;
+        found = true;
+        std::vector<std::string> geometries;
+        for (const pugi::xml_node g : c.child("hopsangui").child("geometries").children("geometry"))
+            geometries.push_back(g.text().get());
+        EXPECT_EQ(geometries, (std::vector<std::string>{"vertical", "horizontal", "vertical"}));
+    }
+    EXPECT_TRUE(found);
+    EditSession reloaded;
+    std::string error;
+    ASSERT_TRUE(reloaded.openHmf(hmf, "again", error)) << error;
+    const json reloadedSystem = rootSystem(reloaded);
+    const json* again = findConnection(reloadedSystem, "Mass", "P1", "Cylinder_C", "P3");
+    ASSERT_NE(again, nullptr);
+    EXPECT_EQ(again->at("from"), now->at("from"));
+    EXPECT_EQ(again->at("points"), now->at("points"));
+
+    // No points: the line is drawn from port to port, and saved without coordinates.
+    ASSERT_TRUE(session.handle({{"id", 2}, {"type", "connection.route"}, {"from", from}, {"to", to},
+                                {"points", json::array()}}).ok);
+    const json straightened = rootSystem(session);
+    EXPECT_TRUE(findConnection(straightened, "Mass", "P1", "Cylinder_C", "P3")->at("points").empty());
+
+    const auto unconnected = session.handle({{"id", 3}, {"type", "connection.route"},
+                                             {"from", {{"component", "Mass"}, {"port", "P1"}}},
+                                             {"to", {{"component", "Step"}, {"port", "out"}}},
+                                             {"points", points}});
+    EXPECT_EQ(unconnected.code, "not_found");
+    EXPECT_NE(unconnected.message.find("not connected"), std::string::npos) << unconnected.message;
+}
+
 TEST(EditSession, RemoveDropsTheComponentAndItsConnections)
 {
     EditSession session = openServo();

@@ -85,6 +85,7 @@ export type ClientMessage =
     | ComponentMoveRequest
     | ConnectRequest
     | DisconnectRequest
+    | ConnectionRouteRequest
     | ParameterGetRequest
     | ParameterSetRequest
     | SysParamSetRequest
@@ -176,6 +177,7 @@ export interface ProtocolDefinitions {
     ComponentMoveRequest?: ComponentMoveRequest;
     ConnectRequest?: ConnectRequest;
     DisconnectRequest?: DisconnectRequest;
+    ConnectionRouteRequest?: ConnectionRouteRequest;
     ParameterGetRequest?: ParameterGetRequest;
     ParameterSetRequest?: ParameterSetRequest;
     SysParamSetRequest?: SysParamSetRequest;
@@ -824,6 +826,20 @@ export interface DisconnectRequest {
     from: PortRef;
     to: PortRef;
     system?: SystemPath;
+}
+/**
+ * Replace the GUI line points of an existing connection, given from `from` to `to` (either order of the ends names the connection); [] leaves a line drawn from port to port. Saved as Hopsan saves them.
+ */
+export interface ConnectionRouteRequest {
+    id: RequestId;
+    type: 'connection.route';
+    from: PortRef;
+    to: PortRef;
+    system?: SystemPath;
+    /**
+     * @maxItems 1000
+     */
+    points: Point[];
 }
 export interface ParameterGetRequest {
     id: RequestId;

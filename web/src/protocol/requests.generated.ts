@@ -9,6 +9,7 @@ import type {
     ComponentRenamedData,
     ConnectRequest,
     ConnectedData,
+    ConnectionRouteRequest,
     DisconnectRequest,
     EmptyData,
     LogSubscribeRequest,
@@ -52,6 +53,7 @@ export interface RequestMap {
     'component.move': { request: ComponentMoveRequest; reply: EmptyData };
     'connect': { request: ConnectRequest; reply: ConnectedData };
     'disconnect': { request: DisconnectRequest; reply: EmptyData };
+    'connection.route': { request: ConnectionRouteRequest; reply: ConnectedData };
     'parameter.get': { request: ParameterGetRequest; reply: ParameterData };
     'parameter.set': { request: ParameterSetRequest; reply: ParameterData };
     'sysparam.set': { request: SysParamSetRequest; reply: SysParamData };
