@@ -1,15 +1,19 @@
 // The model drawn on an SVG canvas, derived from the store on every change. Pointer input
-// becomes commands: move, connect (port to port), select (click, shift-drag box), pan, zoom;
-// the right button asks for the context menu of what is under it (editorMenus.ts).
+// becomes commands: move (with alignment guides), connect (port to port), reshape a line
+// (lineRouting.ts), select (click, a box dragged on the empty canvas), pan (Space+drag or the
+// middle button), zoom; the right button asks for the context menu of what is under it
+// (editorMenus.ts).
 // A render keeps every element whose component or connection did not change and only updates
 // the attributes that did (pose, selection, name spot, line points): rebuilding the whole
 // drawing per pointer move or selection click is too slow on big models.
 import { EditorStore } from './EditorStore';
-import { AddComponent, Connect, MoveComponents, type Move } from './commands';
+import { AddComponent, Connect, MoveComponents, RouteConnection, type Move } from './commands';
+import { dragGrip, gripAt, routePoints, type LineGrip } from './lineRouting';
+import { snapToAlignment, type Guide } from './alignmentGuides';
 import { componentIcon } from './icons';
 import { orientIcon } from './iconOrientation';
 import {
-    anchorsFromSystem, connectionPath, layoutComponent, objectCentre, orientedPoints, poseTransform, toScene,
+    anchorsFromSystem, connectionPath, layoutComponent, orientedPoints, poseTransform, toScene,
     type Anchors, type ComponentLayout, type Point,
 } from '../model/geometry';
 import { appearanceLayout } from '../model/appearanceLayout';
@@ -31,32 +35,48 @@ export interface CanvasCallbacks {
     onComponentDoubleClick(name: string): void;
     /** The context menu was asked for (right button, or the menu key on the canvas) on `target`. */
     onContextMenu?(target: CanvasTarget, client: Point): void;
-    /** Whether a drag may move components or draw a connection (a locked copy: neither, so the
-     *  press stays a click); absent: always. */
-    allows?(edit: 'move' | 'connect'): boolean;
+    /** Whether a drag may move components, draw a connection or reshape a line (a locked copy:
+     *  none, so the press stays a click); absent: always. */
+    allows?(edit: CanvasEdit): boolean;
 }
 
-/** What a context menu was opened on. */
+/** The edits a drag on the canvas makes. */
+export type CanvasEdit = 'move' | 'connect' | 'lines';
+
+/** What a context menu was opened on (`at`: where on a line, in scene coordinates). */
 export type CanvasTarget =
     | { kind: 'component'; name: string }
     | { kind: 'port'; ref: PortRef }
-    | { kind: 'connection'; from: PortRef; to: PortRef }
+    | { kind: 'connection'; from: PortRef; to: PortRef; at: Point }
     | { kind: 'canvas'; at: Point };
 
 type Drag =
-    | { kind: 'move'; start: Point; names: string[]; origin: Map<string, Pose>; moved: boolean }
+    | { kind: 'move'; start: Point; names: string[]; origin: Map<string, Pose>; moved: boolean; primary: string; guides: Guide[] }
     | { kind: 'connect'; from: PortRef; fromPoint: Point; current: Point; startClient: Point; moved: boolean }
+    | { kind: 'route'; line: Connection; base: Point[]; grip: LineGrip; start: Point; moved: boolean }
     | { kind: 'pan'; startClient: Point; tx: number; ty: number }
-    | { kind: 'marquee'; start: Point; current: Point };
+    | { kind: 'marquee'; start: Point; current: Point; startClient: Point; additive: boolean };
 
 const DRAG_THRESHOLD = 4;   // CSS pixels before a press becomes a drag
 /** Scene distance from a port's centre that still hits it: its marker's extent. */
 const PORT_REACH = PORT_MARKER_SIZE / 2 + 1;
+/** Screen distance (CSS pixels) within which a press takes a line's corner, or a drag snaps to a guide. */
+const CORNER_REACH = 6;
+const GUIDE_REACH = 6;
 
 /** A drawn component or line with the attribute values it was last given. */
 interface DrawnComponent { el: SVGGElement; body: SVGGElement; text: SVGTextElement; comp: Component; pose: string; cls: string; spot: string }
-/** `inputs`: what the line was drawn from (the system, both ends' components and poses, whether it is selected). */
-interface DrawnConnection { el: SVGPolylineElement; points: string; cls: string; path: Point[]; inputs: unknown[] }
+/**
+ * `hit`: an invisible wider copy of the line over it that takes the pointer, so that a thin line
+ * is easy to press. `inputs`: what the line was drawn from (the system, both ends' components
+ * and poses, whether it is selected).
+ */
+interface DrawnConnection { el: SVGPolylineElement; hit: SVGPolylineElement; points: string; cls: string; path: Point[]; inputs: unknown[] }
+
+/** The drawn line (or its hit area) an event's target belongs to. */
+function lineElementOf(target: Element): Element | null {
+    return target.closest('.connection, .line-hit');
+}
 
 /** The connection a drawn line stands for (its data-from and data-to, `component.port`). */
 function connectionOfElement(el: Element): { from: PortRef; to: PortRef } {
@@ -77,11 +97,14 @@ export class CanvasView {
     private readonly world: SVGGElement;
     private view = { tx: 0, ty: 0, scale: 1 };
     private readonly anchors = new Map<string, Anchors>();
-    private readonly loadedPoses = new Map<string, Pose>();
     /** The types the components had when their lines were loaded: a replaced one's port spots are not its own. */
     private readonly loadedTypes = new Map<string, string>();
     private readonly poseOverride = new Map<string, Pose>();
     private drag: Drag | null = null;
+    /** Space is held: a drag pans. */
+    private spaceHeld = false;
+    /** A line being reshaped, drawn along this path until the server has the new points. */
+    private routeOverride: { line: Connection; path: Point[] } | null = null;
     private lastPress: { name: string; time: number } | null = null;
     private generation = 0;
     private drawnPath: string | null = null;
@@ -119,7 +142,21 @@ export class CanvasView {
         const unsubscribeVisibility = this.parameterPorts.subscribe(() => this.render());
         const unsubscribeNames = this.names.subscribe(() => this.render());
         this.svg.addEventListener('contextmenu', (e) => this.onContextMenu(e));
-        this.unsubscribe = () => { unsubscribeStore(); unsubscribeVisibility(); unsubscribeNames(); };
+        // Space held over the focused canvas makes a drag pan (its keyup may come anywhere)
+        this.svg.addEventListener('keydown', (e) => {
+            if (e.key !== ' ' || e.ctrlKey || e.metaKey || e.altKey) return;
+            e.preventDefault();
+            this.setSpaceHeld(true);
+        });
+        const onKeyUp = (e: KeyboardEvent) => { if (e.key === ' ') this.setSpaceHeld(false); };
+        const onBlur = () => this.setSpaceHeld(false);
+        window.addEventListener('keyup', onKeyUp);
+        window.addEventListener('blur', onBlur);
+        this.unsubscribe = () => {
+            unsubscribeStore(); unsubscribeVisibility(); unsubscribeNames();
+            window.removeEventListener('keyup', onKeyUp);
+            window.removeEventListener('blur', onBlur);
+        };
         this.resizeObserver.observe(this.element);
     }
 
@@ -213,20 +250,32 @@ export class CanvasView {
             anchors = anchorsFromSystem(system);
             this.anchors.set(this.pathKey, anchors);
             for (const c of system.components) {
-                this.loadedPoses.set(this.key(c.name), { ...c.pose });
                 this.loadedTypes.set(this.key(c.name), c.type);
             }
         }
         return anchors;
     }
 
-    // where a component was when its lines were drawn (the points were oriented then)
-    private loadedCentre(system: System, name: string): Point | undefined {
-        const loaded = this.loadedPoses.get(this.key(name));
-        return loaded ? { x: loaded.x, y: loaded.y } : objectCentre(system, name);
+    private poseOf(c: Component): Pose { return this.poseOverride.get(c.name) ?? c.pose; }
+
+    private setSpaceHeld(held: boolean): void {
+        this.spaceHeld = held;
+        this.svg.classList.toggle('pan-ready', held);
     }
 
-    private poseOf(c: Component): Pose { return this.poseOverride.get(c.name) ?? c.pose; }
+    /** A line as drawn, from its connection's `from` port to its `to` port; null if not drawn. */
+    linePath(from: PortRef, to: PortRef): Point[] | null {
+        for (const [c, d] of this.drawnConnections) {
+            if (sameRef(c.from, from) && sameRef(c.to, to)) return d.path;
+            if (sameRef(c.from, to) && sameRef(c.to, from)) return [...d.path].reverse();
+        }
+        return null;
+    }
+
+    /** The scene distance that `pixels` CSS pixels span at the current zoom. */
+    sceneDistance(pixels: number): number {
+        return pixels / this.view.scale;
+    }
 
     /** Scene position of a port (a system port is its own pose). */
     portPoint(system: System, ref: PortRef): Point | null {
@@ -244,7 +293,6 @@ export class CanvasView {
             // another model (or the same one reopened) or another subsystem: drawn afresh
             if (this.generation !== this.store.generation) {
                 this.anchors.clear();
-                this.loadedPoses.clear();
                 this.loadedTypes.clear();
                 this.fittedPath = null;
             }
@@ -277,7 +325,7 @@ export class CanvasView {
             if (drawn) connections.set(conn, drawn);
         }
         this.drawnConnections = connections;
-        setChildren(this.connectionGroup, [...connections.values()].map((d) => d.el));
+        setChildren(this.connectionGroup, [...connections.values()].flatMap((d) => [d.el, d.hit]));
 
         // names keep off the lines where they can
         const lines = [...connections.values()].map((d) => d.path);
@@ -304,38 +352,37 @@ export class CanvasView {
         this.overlay = fresh;
     }
 
-    /** A connection's line: the one drawn before (`drawn`) with its points and class brought up to date. */
+    /**
+     * A connection's line: the one drawn before (`drawn`) with its points and class brought up
+     * to date. Its corners stay where they were put when an end moves, as in Hopsan: the line
+     * is rejoined to the moved port.
+     */
     private drawConnection(system: System, conn: Connection, drawn: DrawnConnection | undefined): DrawnConnection | null {
         // while neither end moved, the line is as drawn (a drag moves few of the many lines)
         const ends = [conn.from.component, conn.to.component].map((name) => this.byName.get(name));
         const chosen = this.selectedConnection !== null && sameRef(this.selectedConnection.from, conn.from) && sameRef(this.selectedConnection.to, conn.to);
-        const inputs = [system, chosen, ...ends, ...ends.map((c) => c && this.poseOf(c))];
+        const override = this.routeOverride?.line === conn ? this.routeOverride.path : null;
+        const inputs = [system, chosen, override, ...ends, ...ends.map((c) => c && this.poseOf(c))];
         if (drawn && inputs.every((x, i) => x === drawn.inputs[i])) return drawn;
         const a = this.portPoint(system, conn.from);
         const b = this.portPoint(system, conn.to);
         if (!a || !b) return null;
-        const unmoved = [conn.from.component, conn.to.component].every((name) => {
-            const comp = this.byName.get(name);
-            const loaded = this.loadedPoses.get(this.key(name));
-            if (!comp) return true;   // system port
-            const pose = this.poseOf(comp);
-            return loaded !== undefined && loaded.x === pose.x && loaded.y === pose.y && loaded.angle === pose.angle && loaded.flipped === pose.flipped;
-        });
-        const pts = connectionPath(orientedPoints(conn, this.loadedCentre(system, conn.from.component), this.loadedCentre(system, conn.to.component)), a, b, unmoved);
+        const pts = override ?? connectionPath(orientedPoints(conn, a, b), a, b, true);
         const nodeType = this.portOf(conn.from)?.node_type ?? this.portOf(conn.to)?.node_type;
         const points = pts.map((p) => `${p.x},${p.y}`).join(' ');
         const cls = `connection ${nodeType === 'NodeSignal' ? 'signal' : 'power'}${chosen ? ' selected' : ''}`;
         if (drawn) {
-            if (drawn.points !== points) drawn.el.setAttribute('points', points);
+            if (drawn.points !== points) {
+                drawn.el.setAttribute('points', points);
+                drawn.hit.setAttribute('points', points);
+            }
             if (drawn.cls !== cls) drawn.el.setAttribute('class', cls);
-            return { el: drawn.el, points, cls, path: pts, inputs };
+            return { ...drawn, points, cls, path: pts, inputs };
         }
-        const el = s('polyline', {
-            class: cls, points, stroke: nodeColour(nodeType),
-            'data-from': `${conn.from.component}.${conn.from.port}`,
-            'data-to': `${conn.to.component}.${conn.to.port}`,
-        });
-        return { el, points, cls, path: pts, inputs };
+        const endAttributes = { 'data-from': `${conn.from.component}.${conn.from.port}`, 'data-to': `${conn.to.component}.${conn.to.port}` };
+        const el = s('polyline', { class: cls, points, stroke: nodeColour(nodeType), ...endAttributes });
+        const hit = s('polyline', { class: 'line-hit', points, ...endAttributes });
+        return { el, hit, points, cls, path: pts, inputs };
     }
 
     private drawOverlay(system: System): SVGGElement {
@@ -348,6 +395,21 @@ export class CanvasView {
             const [x0, y0, x1, y1] = [Math.min(drag.start.x, drag.current.x), Math.min(drag.start.y, drag.current.y),
                 Math.max(drag.start.x, drag.current.x), Math.max(drag.start.y, drag.current.y)];
             overlay.append(s('rect', { class: 'marquee', x: x0, y: y0, width: x1 - x0, height: y1 - y0 }));
+        }
+        if (drag?.kind === 'move') {
+            for (const g of drag.guides) {
+                const [x1, y1, x2, y2] = g.axis === 'x' ? [g.at, g.from - 20, g.at, g.to + 20] : [g.from - 20, g.at, g.to + 20, g.at];
+                overlay.append(s('line', { class: 'alignment-guide', 'data-axis': g.axis, x1, y1, x2, y2 }));
+            }
+        }
+        // the selected line's corners, which a drag takes hold of
+        const chosen = this.selectedConnection;
+        const line = chosen && [...this.drawnConnections].find(([c]) => sameRef(c.from, chosen.from) && sameRef(c.to, chosen.to))?.[1];
+        if (line) {
+            const size = 5 / this.view.scale;
+            for (const p of line.path.slice(1, -1)) {
+                overlay.append(s('rect', { class: 'line-corner', x: p.x - size / 2, y: p.y - size / 2, width: size, height: size }));
+            }
         }
         if (this.portError) {
             const at = this.portPoint(system, this.portError.ref);
@@ -468,19 +530,25 @@ export class CanvasView {
         const scene = this.sceneFromClient(e.clientX, e.clientY);
         const portEl = target.closest('[data-port]');
         const compEl = target.closest('.component');
-        const connEl = target.closest('.connection');
+        const connEl = lineElementOf(target);
+        if (e.button === 1 || (e.button === 0 && this.spaceHeld)) {
+            e.preventDefault();   // no middle-button autoscroll
+            this.drag = { kind: 'pan', startClient: { x: e.clientX, y: e.clientY }, tx: this.view.tx, ty: this.view.ty };
+            this.svg.setPointerCapture(e.pointerId);
+            return;
+        }
         if (e.button === 0 && connEl && !portEl) {
             this.selectedConnection = connectionOfElement(connEl);
             this.store.select([]);
+            this.render();
+            this.startRoute(connEl, scene, e.pointerId);
             return;
         }
         if (this.selectedConnection) {
             this.selectedConnection = null;
             this.render();
         }
-        if (e.button === 1 || (e.button === 0 && !portEl && !compEl && !e.shiftKey)) {
-            this.drag = { kind: 'pan', startClient: { x: e.clientX, y: e.clientY }, tx: this.view.tx, ty: this.view.ty };
-        } else if (e.button !== 0) {
+        if (e.button !== 0) {
             return;
         } else if (portEl) {
             const from = pickPort(this.portTargets(false), scene, PORT_REACH)
@@ -508,11 +576,23 @@ export class CanvasView {
             if (!this.store.selection.has(name)) this.store.select([name]);
             const names = [...this.store.selection];
             const origin = new Map(this.store.system.components.filter((c) => names.includes(c.name)).map((c) => [c.name, { ...c.pose }]));
-            this.drag = { kind: 'move', start: scene, names, origin, moved: false };
+            this.drag = { kind: 'move', start: scene, names, origin, moved: false, primary: name, guides: [] };
         } else {
-            this.drag = { kind: 'marquee', start: scene, current: scene };
+            this.drag = { kind: 'marquee', start: scene, current: scene, startClient: { x: e.clientX, y: e.clientY }, additive: e.shiftKey || e.ctrlKey || e.metaKey };
         }
         this.svg.setPointerCapture(e.pointerId);
+    }
+
+    /** A press on a line: takes hold of the corner or the segment between corners under it, if any. */
+    private startRoute(connEl: Element, scene: Point, pointerId: number): void {
+        if (!this.allows('lines')) return;
+        const drawn = [...this.drawnConnections].find(([, d]) => d.el === connEl || d.hit === connEl);
+        if (!drawn) return;
+        const [line, { path }] = drawn;
+        const grip = gripAt(path, scene, CORNER_REACH / this.view.scale);
+        if (!grip) return;
+        this.drag = { kind: 'route', line, base: path, grip, start: scene, moved: false };
+        this.svg.setPointerCapture(pointerId);
     }
 
     private onPointerMove(e: PointerEvent): void {
@@ -536,7 +616,14 @@ export class CanvasView {
             const dy = scene.y - drag.start.y;
             if (Math.hypot(dx, dy) * this.view.scale > DRAG_THRESHOLD && this.allows('move')) drag.moved = true;
             if (!drag.moved) return;
-            for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + dx), y: Math.round(pose.y + dy) });
+            const offset = this.alignedOffset(drag, { x: dx, y: dy });
+            for (const [name, pose] of drag.origin) this.poseOverride.set(name, { ...pose, x: Math.round(pose.x + offset.x), y: Math.round(pose.y + offset.y) });
+            this.render();
+        } else if (drag.kind === 'route') {
+            const delta = { x: scene.x - drag.start.x, y: scene.y - drag.start.y };
+            if (Math.hypot(delta.x, delta.y) * this.view.scale > DRAG_THRESHOLD) drag.moved = true;
+            if (!drag.moved) return;
+            this.routeOverride = { line: drag.line, path: dragGrip(drag.base, drag.grip, delta) };
             this.render();
         } else {
             drag.current = scene;
@@ -544,8 +631,25 @@ export class CanvasView {
         }
     }
 
-    private allows(edit: 'move' | 'connect'): boolean {
+    private allows(edit: CanvasEdit): boolean {
         return this.callbacks.allows?.(edit) ?? true;
+    }
+
+    /**
+     * The move's offset snapped so that the pressed component's centre lines up with another
+     * object's centre when it comes within a few pixels; the guides are kept for the overlay.
+     */
+    private alignedOffset(drag: Extract<Drag, { kind: 'move' }>, offset: Point): Point {
+        const origin = drag.origin.get(drag.primary);
+        if (!origin) return offset;
+        const moving = new Set(drag.names);
+        const others = [
+            ...this.store.system.components.filter((c) => !moving.has(c.name)).map((c) => ({ x: c.pose.x, y: c.pose.y })),
+            ...this.store.system.ports.map((p) => ({ x: p.pose.x, y: p.pose.y })),
+        ];
+        const snap = snapToAlignment({ x: origin.x, y: origin.y }, offset, others, GUIDE_REACH / this.view.scale);
+        drag.guides = snap.guides;
+        return snap.offset;
     }
 
     private async onPointerUp(e: PointerEvent): Promise<void> {
@@ -554,9 +658,27 @@ export class CanvasView {
         if (this.svg.hasPointerCapture(e.pointerId)) this.svg.releasePointerCapture(e.pointerId);
         if (!drag) return;
         if (drag.kind === 'pan') {
-            if (Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) <= DRAG_THRESHOLD) this.store.select([]);
+            return;
         } else if (drag.kind === 'marquee') {
-            this.selectInBox(drag.start, drag.current);
+            const clicked = Math.hypot(e.clientX - drag.startClient.x, e.clientY - drag.startClient.y) <= DRAG_THRESHOLD;
+            if (clicked) {
+                if (!drag.additive) this.store.select([]);
+            } else {
+                this.selectInBox(drag.start, drag.current, drag.additive);
+            }
+            this.renderOverlay();
+        } else if (drag.kind === 'route') {
+            const path = this.routeOverride?.line === drag.line ? this.routeOverride.path : null;
+            if (!drag.moved || !path) return;
+            const line = drag.line;
+            try {
+                await this.store.execute(new RouteConnection(this.store.path, line.from, line.to, line.points, routePoints(path)));
+            } catch (err) {
+                this.notifyError(err);
+            } finally {
+                this.routeOverride = null;
+                this.render();
+            }
         } else if (drag.kind === 'connect') {
             const offered = this.offersParameterPorts(drag.from);
             this.svg.classList.remove('offer-parameter-ports');
@@ -631,12 +753,13 @@ export class CanvasView {
         return element ? { component: element.getAttribute('data-component')!, port: element.getAttribute('data-port')! } : null;
     }
 
-    private selectInBox(a: Point, b: Point): void {
+    /** Selects the components whose centres lie in the box; `additive`: added to the selection. */
+    private selectInBox(a: Point, b: Point, additive: boolean): void {
         const [x0, x1, y0, y1] = [Math.min(a.x, b.x), Math.max(a.x, b.x), Math.min(a.y, b.y), Math.max(a.y, b.y)];
         const inside = this.store.system.components
             .filter((c) => c.pose.x >= x0 && c.pose.x <= x1 && c.pose.y >= y0 && c.pose.y <= y1)
             .map((c) => c.name);
-        this.store.select(inside);
+        this.store.select(additive ? [...this.store.selection, ...inside] : inside);
     }
 
     private onDoubleClick(name: string): void {
@@ -657,7 +780,7 @@ export class CanvasView {
         const scene = this.sceneFromClient(e.clientX, e.clientY);
         const portEl = target.closest('[data-port]');
         const compEl = target.closest('.component');
-        const connEl = target.closest('.connection');
+        const connEl = lineElementOf(target);
         let what: CanvasTarget;
         if (portEl) {
             // the port a press there would take: power ports first, as for plotting and connecting
@@ -675,7 +798,7 @@ export class CanvasView {
         } else if (connEl) {
             this.selectedConnection = connectionOfElement(connEl);
             this.store.select([]);
-            what = { kind: 'connection', ...this.selectedConnection };
+            what = { kind: 'connection', ...this.selectedConnection, at: scene };
         } else {
             what = { kind: 'canvas', at: scene };
         }
@@ -699,8 +822,8 @@ export class CanvasView {
             const system = this.store.system;
             const a = this.portPoint(system, line.from);
             const b = this.portPoint(system, line.to);
-            const at = a && b ? this.clientFromScene({ x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 }) : middle;
-            return { target: { kind: 'connection', ...line }, client: inside(at) };
+            const mid = a && b ? { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 } : this.sceneFromClient(middle.x, middle.y);
+            return { target: { kind: 'connection', ...line, at: mid }, client: inside(this.clientFromScene(mid)) };
         }
         const chosen = this.store.system.components.find((c) => this.store.selection.has(c.name));
         if (chosen) return { target: { kind: 'component', name: chosen.name }, client: inside(this.clientFromScene(this.poseOf(chosen))) };

@@ -21,6 +21,7 @@ const REQUEST_EDITS: Partial<Record<EditRequest['type'], StructuralEdit>> = {
     'component.move': 'move',
     'connect': 'connect',
     'disconnect': 'disconnect',
+    'connection.route': 'lines',
     'sysparam.remove': 'system-parameters',
     'model.group': 'group',
     'model.ungroup': 'ungroup',

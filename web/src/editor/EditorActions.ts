@@ -5,11 +5,13 @@ import type { EditorStore } from './EditorStore';
 import type { CanvasView } from './CanvasView';
 import {
     copySelection, Disconnect, flippedPose, GroupComponents, MoveComponents, offsetTo, Paste, RemoveComponents,
-    ReplaceComponent, rotatedPose, UngroupSubsystem, type Clipboard, type Command,
+    ReplaceComponent, rotatedPose, RouteConnection, UngroupSubsystem, type Clipboard, type Command,
 } from './commands';
+import { routePoints } from './lineRouting';
+import { joins } from '../model/modelState';
 import { replacementTypes } from './replaceType';
 import { displayNameOf } from '../model/appearance';
-import type { CatalogueEntry, Component, Pose } from '../protocol/types';
+import type { CatalogueEntry, Component, PortRef, Pose } from '../protocol/types';
 import type { Point } from '../model/geometry';
 
 /**
@@ -67,6 +69,14 @@ export class EditorActions {
         const moves = this.selected().map((c) => ({ name: c.name, from: c.pose, to: change({ ...c.pose }) }));
         if (moves.length === 0) return Promise.resolve(false);
         return this.run(new MoveComponents(this.store.path, moves, label));
+    }
+
+    /** Reshapes the line between two ports: `change` turns the drawn path (from the connection's `from`) into the new one. */
+    reshapeLine(a: PortRef, b: PortRef, label: string, change: (path: Point[]) => Point[]): Promise<boolean> {
+        const line = this.store.system.connections.find((c) => joins(c, a, b));
+        const path = line && this.host.canvas.linePath(line.from, line.to);
+        if (!line || !path) return Promise.resolve(false);
+        return this.run(new RouteConnection(this.store.path, line.from, line.to, line.points, routePoints(change(path)), label));
     }
 
     /** Turns the selection a quarter clockwise (1, "rotate right") or anticlockwise (-1). */

@@ -1,7 +1,7 @@
 // Editor commands: each user action is one object that makes its change through edit requests
 // and knows how to take it back (undo = the inverse requests).
 import {
-    connectionsOf, findComponent, sameRef, systemAt, uniqueName,
+    connectionsOf, findComponent, joins, sameRef, systemAt, uniqueName,
     type EditRequestOf, type EditType, type SystemPath,
 } from '../model/modelState';
 import type { ReplyData } from '../protocol/requests.generated';
@@ -173,15 +173,41 @@ export class Connect implements Command {
 export class Disconnect implements Command {
     readonly label = 'Disconnect';
     readonly undoable = true;
+    private removed: Connection | null = null;
 
     constructor(private readonly path: SystemPath, private readonly from: PortRef, private readonly to: PortRef) {}
 
     async do(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        const line = system?.connections.find((c) => joins(c, this.from, this.to));
+        this.removed = line ? structuredClone(line) : null;
         await ctx.send({ type: 'disconnect', system: this.path, from: this.from, to: this.to });
     }
 
+    /** Connected again with the line's points. */
     async undo(ctx: EditContext): Promise<void> {
-        await ctx.send({ type: 'connect', system: this.path, from: this.from, to: this.to });
+        await ctx.send(connectRequest(this.path, this.removed ?? { from: this.from, to: this.to, points: [] }));
+    }
+}
+
+/** A line reshaped (segments or corners dragged, corners added or removed): new points from `from` to `to`. */
+export class RouteConnection implements Command {
+    readonly undoable = true;
+
+    constructor(private readonly path: SystemPath, private readonly from: PortRef, private readonly to: PortRef,
+        private readonly before: [number, number][], private readonly after: [number, number][], readonly label = 'Reshape line') {}
+
+    async do(ctx: EditContext): Promise<void> {
+        await ctx.send({ type: 'connection.route', system: this.path, from: this.from, to: this.to, points: this.after });
+    }
+
+    /** `before` as the model held them, which is from its connection's `from` end. */
+    async undo(ctx: EditContext): Promise<void> {
+        const system = systemAt(ctx.model(), this.path);
+        const line = system?.connections.find((c) => joins(c, this.from, this.to));
+        const from = line?.from ?? this.from;
+        const to = line?.to ?? this.to;
+        await ctx.send({ type: 'connection.route', system: this.path, from, to, points: this.before });
     }
 }
 

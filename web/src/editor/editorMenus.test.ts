@@ -25,7 +25,12 @@ async function editor(allowed: (edit: EditKind) => boolean = () => true) {
     await store.execute(new AddComponent([], 'Hydraulic43Valve', 'Valve', { x: 0, y: 0, angle: 0, flipped: false }));
     await store.execute(new AddComponent([], 'HydraulicTankC', 'Tank', { x: 0, y: 80, angle: 0, flipped: false }));
     await store.execute(new Connect([], { component: 'Tank', port: 'P1' }, { component: 'Valve', port: 'PT' }));
-    const canvas = { parameterPorts: new ParameterPortVisibility(), names: new NameVisibility(), selectedConnection: null, fit: () => undefined } as unknown as CanvasView;
+    // the Tank-Valve line as drawn: from Tank.P1 up to Valve.PT, with two corners
+    const line = [{ x: 0, y: 80 }, { x: 40, y: 80 }, { x: 40, y: 20 }, { x: 0, y: 20 }];
+    const canvas = {
+        parameterPorts: new ParameterPortVisibility(), names: new NameVisibility(), selectedConnection: null, fit: () => undefined,
+        linePath: () => line, sceneDistance: (pixels: number) => pixels,
+    } as unknown as CanvasView;
     const notes: string[] = [];
     const actions = new EditorActions({
         store, canvas, catalogue, report: (e) => notes.push(String(e)), note: (m) => notes.push(m),
@@ -88,7 +93,8 @@ describe('the editor\'s context menus', () => {
             expect(enabled(byId(items, id)), id).toBe(false);
         }
         for (const id of ['parameters', 'plot', 'parameter-ports', 'name', 'copy']) expect(enabled(byId(items, id)), id).toBe(true);
-        expect(enabled(byId(connectionMenu(ctx, { component: 'Tank', port: 'P1' }, { component: 'Valve', port: 'PT' }), 'delete'))).toBe(false);
+        const lineMenu = connectionMenu(ctx, { component: 'Tank', port: 'P1' }, { component: 'Valve', port: 'PT' }, { x: 40, y: 21 });
+        for (const id of ['delete', 'add-corner', 'remove-corner']) expect(enabled(byId(lineMenu, id)), id).toBe(false);
         expect(enabled(byId(canvasMenu(ctx, { x: 0, y: 0 }), 'select-all'))).toBe(true);
     });
 
@@ -102,6 +108,28 @@ describe('the editor\'s context menus', () => {
         await store.idle();
         const pasted = store.system.components.find((c) => c.name === 'Valve_1')!;
         expect(pasted.pose).toMatchObject({ x: 300, y: 300 });
+    });
+
+    it('a line\'s menu adds a corner where it was opened and removes the corner there, each one undo step', async () => {
+        const { ctx, store } = await editor();
+        const tank = { component: 'Tank', port: 'P1' };
+        const valve = { component: 'Valve', port: 'PT' };
+        const points = () => store.system.connections[0].points;
+        const away = connectionMenu(ctx, tank, valve, { x: 20, y: 50 });
+        expect(enabled(byId(away, 'add-corner'))).toBe(true);
+        expect(enabled(byId(away, 'remove-corner'))).toBe(false);   // no corner near there
+        // opened from the Valve end: the points still run from the connection's own "from"
+        byId(connectionMenu(ctx, valve, tank, { x: 20, y: 81 }), 'add-corner').run!();
+        await store.idle();
+        expect(points()).toEqual([[0, 80], [20, 80], [40, 80], [40, 20], [0, 20]]);
+        expect(store.history.undoLabel).toBe('Add corner');
+        byId(connectionMenu(ctx, tank, valve, { x: 40, y: 21 }), 'remove-corner').run!();
+        await store.idle();
+        expect(points()).toEqual([[0, 80], [40, 80], [0, 20]]);
+        await store.undo();
+        expect(points()).toEqual([[0, 80], [20, 80], [40, 80], [40, 20], [0, 20]]);
+        await store.undo();
+        expect(points()).toEqual([]);
     });
 
     it('names and all parameter ports are toggled from the menus', async () => {

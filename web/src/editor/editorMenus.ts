@@ -2,8 +2,6 @@
 // on a connection line, on a port and on the empty canvas. Each entry runs an EditorActions
 // action (the same as the key shown beside it), so every change is one undoable command; an
 // entry whose kind of change the open model does not allow (a locked copy) is disabled.
-// Lines have no corner entries yet: the editor draws a line's saved points but has no edit
-// for them (no request changes a connection's points).
 import type { MenuEntry, MenuItem } from './ContextMenu';
 import type { EditorActions, EditKind } from './EditorActions';
 import type { EditorStore } from './EditorStore';
@@ -15,6 +13,7 @@ import { portVariables } from '../model/variables';
 import { primaryVariables } from '../model/nodeTypes';
 import { displayNameOf } from '../model/appearance';
 import { connectionsOf } from '../model/modelState';
+import { addCorner, cornerAt, removeCorner } from './lineRouting';
 import type { Point } from '../model/geometry';
 import type { PortRef } from '../protocol/types';
 
@@ -37,7 +36,7 @@ function edit(ctx: MenuContext, kind: EditKind, entry: MenuEntry): MenuEntry {
 export function menuFor(ctx: MenuContext, target: CanvasTarget): { items: MenuItem[]; label: string } {
     switch (target.kind) {
     case 'component': return { items: componentMenu(ctx, target.name), label: `${target.name} menu` };
-    case 'connection': return { items: connectionMenu(ctx, target.from, target.to), label: 'Connection menu' };
+    case 'connection': return { items: connectionMenu(ctx, target.from, target.to, target.at), label: 'Connection menu' };
     case 'port': return { items: portMenu(ctx, target.ref), label: `${target.ref.component}.${target.ref.port} menu` };
     case 'canvas': return { items: canvasMenu(ctx, target.at), label: 'Canvas menu' };
     }
@@ -124,8 +123,21 @@ export function componentMenu(ctx: MenuContext, name: string): MenuItem[] {
     return items;
 }
 
-export function connectionMenu(ctx: MenuContext, from: PortRef, to: PortRef): MenuItem[] {
+/** `at`: where on the line the menu was opened (a corner is added there, or the one there removed). */
+export function connectionMenu(ctx: MenuContext, from: PortRef, to: PortRef, at: Point): MenuItem[] {
+    const path = ctx.canvas.linePath(from, to);
+    const corner = path ? cornerAt(path, at, ctx.canvas.sceneDistance(8)) : null;
     return [
+        edit(ctx, 'lines', {
+            label: 'Add corner here', id: 'add-corner', disabled: () => !path,
+            run: () => void ctx.actions.reshapeLine(from, to, 'Add corner', (p) => addCorner(p, at)),
+        }),
+        edit(ctx, 'lines', {
+            label: 'Remove corner', id: 'remove-corner', disabled: () => corner === null,
+            hint: corner === null ? 'Right click on a corner of the line' : undefined,
+            run: () => void ctx.actions.reshapeLine(from, to, 'Remove corner', (p) => (corner === null ? p : removeCorner(p, corner))),
+        }),
+        'separator',
         edit(ctx, 'disconnect', {
             label: 'Delete connection', shortcut: keysOf('delete'), id: 'delete',
             hint: `${from.component}.${from.port} – ${to.component}.${to.port}`,

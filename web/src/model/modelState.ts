@@ -42,6 +42,11 @@ export function sameRef(a: PortRef, b: PortRef): boolean {
     return a.component === b.component && a.port === b.port;
 }
 
+/** Whether connection `c` joins ports `a` and `b`, in either order. */
+export function joins(c: { from: PortRef; to: PortRef }, a: PortRef, b: PortRef): boolean {
+    return (sameRef(c.from, a) && sameRef(c.to, b)) || (sameRef(c.from, b) && sameRef(c.to, a));
+}
+
 export function connectionTouches(c: Connection, component: string): boolean {
     return c.from.component === component || c.to.component === component;
 }
@@ -88,7 +93,7 @@ function mapComponent(system: System, name: string, change: (c: Component) => Co
 
 /** The request types that read or change the open model. */
 export type EditType = 'model.get' | 'model.settings' | 'component.add' | 'component.remove' | 'component.rename'
-    | 'component.move' | 'connect' | 'disconnect' | 'parameter.get' | 'parameter.set' | 'sysparam.set'
+    | 'component.move' | 'connect' | 'disconnect' | 'connection.route' | 'parameter.get' | 'parameter.set' | 'sysparam.set'
     | 'sysparam.remove' | 'model.group' | 'model.ungroup';
 /** An edit request as the editor sends it: the message type and the request's fields. */
 export type EditRequestOf<T extends EditType> = { type: T } & RequestFields<T>;
@@ -131,10 +136,18 @@ const appliers: { [T in EditType]: Apply<T> } = {
         const b = request.to;
         return updateSystem(model, request.system ?? [], (s) => refreshConnected({
             ...s,
-            connections: s.connections.filter((c) =>
-                !((sameRef(c.from, a) && sameRef(c.to, b)) || (sameRef(c.from, b) && sameRef(c.to, a)))),
+            connections: s.connections.filter((c) => !joins(c, a, b)),
         }));
     },
+    // the reply gives the points from the request's `from`; the model keeps its own from -> to
+    'connection.route': (model, request, reply) => updateSystem(model, request.system ?? [], (s) => ({
+        ...s,
+        connections: s.connections.map((c) => {
+            if (!joins(c, reply.connection.from, reply.connection.to)) return c;
+            const same = sameRef(c.from, reply.connection.from);
+            return { ...c, points: same ? reply.connection.points : [...reply.connection.points].reverse() };
+        }),
+    })),
     'parameter.get': unchanged,
     'parameter.set': (model, request, reply) =>
         updateSystem(model, request.system ?? [], (s) => mapComponent(s, request.component, (c) => ({

@@ -137,7 +137,7 @@ export class FakeServer {
             if (a.kind === 'write' && b.kind === 'write') {
                 throw new ApiError('illegal_connection', `${from.component}.${from.port} and ${to.component}.${to.port} are both write ports`);
             }
-            const connection = { from: { ...from }, to: { ...to }, points: [] };
+            const connection = { from: { ...from }, to: { ...to }, points: (request.points as [number, number][] | undefined) ?? [] };
             system.connections.push(connection);
             this.refresh(system);
             return { connection: structuredClone(connection) };
@@ -150,6 +150,16 @@ export class FakeServer {
             if (system.connections.length === before) throw new ApiError('not_found', 'no such connection');
             this.refresh(system);
             return {};
+        }
+        case 'connection.route': {
+            const from = request.from as PortRef;
+            const to = request.to as PortRef;
+            const same = (a: PortRef, b: PortRef) => a.component === b.component && a.port === b.port;
+            const line = system.connections.find((c) => (same(c.from, from) && same(c.to, to)) || (same(c.from, to) && same(c.to, from)));
+            if (!line) throw new ApiError('not_found', 'not connected');
+            const points = structuredClone(request.points as [number, number][]);
+            line.points = same(line.from, from) ? points : [...points].reverse();
+            return { connection: { from: { ...from }, to: { ...to }, points } };
         }
         case 'parameter.set': {
             const c = this.component(system, request.component as string);

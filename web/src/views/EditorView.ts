@@ -309,7 +309,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     store.subscribe(renderHeader);
     renderHeader();
 
-    const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: pan · Shift+drag: select · Wheel: zoom · Drag port to port: connect · Click port: plot · Double-click subsystem: enter · Right click: menu · ?: keys');
+    const canvasHint = h('div', { class: 'canvas-hint muted' }, 'Drag: select · Space+drag, middle drag: pan · Wheel: zoom · Port to port: connect · Drag a line: reshape · Click a port: plot · Right click: menu · ?: keys');
     // a locked copy takes no new components: no palette; an assignment's instructions sit at the right
     const editorBody = h('div', { class: `editor-body${assignment ? ' with-instructions' : ''}${permissions.locked ? ' locked-copy' : ''}` },
         permissions.allows('add') ? createPalette(catalogue, (type) => void canvas.addComponent(type, canvas.viewCentre())) : null,
