@@ -56,19 +56,27 @@ export async function restoreSubsystem(ctx: EditContext, path: SystemPath, sub: 
     };
     const touches = (c: Connection, name: string) => c.from.component === name || c.to.component === name;
     const otherEnd = (c: Connection, mine: PortRef): PortRef => (sameRef(c.from, mine) ? c.to : c.from);
+    // system ports whose outside ends were joined to a nested subsystem as it was rebuilt
+    const delegated = new Set<string>();
     try {
         for (const c of inner.components.filter((k) => !k.system)) {
             names.set(c.name, await restoreComponent(ctx, path, snapshot(c), uniqueName(here(), c.name)));
         }
         for (const n of inner.components.filter((k) => k.system)) {
             // its connections to what is back already; the rest join it when they come back
+            // (one led out through this subsystem's own port: to the ports outside it, as it must
+            // have a port of its own for that line before it is grouped)
             const ends = new Map<string, PortRef[]>();
             for (const sp of n.system!.ports) {
                 const at = { component: n.name, port: sp.name };
                 const refs = inner.connections.filter((c) => sameRef(c.from, at) || sameRef(c.to, at))
                     .map((c) => otherEnd(c, at))
-                    .filter((r) => !isSystemPort(r))
-                    .map(mapped).filter((r): r is PortRef => r !== null);
+                    .flatMap((r): PortRef[] => {
+                        if (!isSystemPort(r)) return [mapped(r)].filter((m): m is PortRef => m !== null);
+                        if (delegated.has(r.component)) return [];
+                        delegated.add(r.component);
+                        return outside.get(r.component) ?? [];
+                    });
                 ends.set(sp.name, refs);
             }
             const rebuilt = await restoreSubsystem(ctx, path, { ...n, name: uniqueName(here(), n.name) }, ends);
@@ -86,9 +94,11 @@ export async function restoreSubsystem(ctx: EditContext, path: SystemPath, sub: 
             const insideEnds = inner.connections
                 .filter((c) => touches(c, sp.name))
                 .map((c) => otherEnd(c, { component: sp.name, port: sp.name }));
-            const ends = [...insideEnds.map(mapped).filter((r): r is PortRef => r !== null), ...(outside.get(sp.name) ?? [])];
+            // outside ends already joined to a nested subsystem's port are on this node
+            const outsideEnds = delegated.has(sp.name) ? [] : (outside.get(sp.name) ?? []);
+            const ends = [...insideEnds.map(mapped).filter((r): r is PortRef => r !== null), ...outsideEnds];
             const first = insideEnds[0];
-            if (!first || ends.length < 2) continue;
+            if (!first || (ends.length < 2 && !delegated.has(sp.name))) continue;
             hubs.set(sp.name, first);
             const hub = ends.find((r) => portKind(ctx, path, r) === 'write') ?? ends[0];
             for (const end of ends) if (end !== hub) await ctx.send({ type: 'connect', system: path, from: hub, to: end });

@@ -7,6 +7,8 @@ import type { Connection, Pose } from '../protocol/types';
 
 const at = (x: number, y: number): Pose => ({ x, y, angle: 0, flipped: false });
 const ends = (connections: Connection[]) => connections.map((c) => `${c.from.component}.${c.from.port}-${c.to.component}.${c.to.port}`).sort();
+/** The connections as pairs of ports, whichever end is `from` (a power line either way round). */
+const links = (connections: Connection[]) => connections.map((c) => [`${c.from.component}.${c.from.port}`, `${c.to.component}.${c.to.port}`].sort().join(' - ')).sort();
 
 // A - [B - C] - D, with B and C grouped into a subsystem that has a parameter of its own.
 async function modelWithSubsystem() {
@@ -49,5 +51,30 @@ describe('deleting a subsystem', () => {
         // and redo deletes it again
         await store.redo();
         expect(systemAt(store.model, ['Sub'])).toBeNull();
+    });
+
+    it('is undone with a subsystem inside it, whose content, parameters and connections come back too', async () => {
+        const { server, store } = await modelWithSubsystem();
+        await store.execute(new GroupComponents(['Sub'], ['B'], 'Inner'));
+        await store.execute(new SetSystemParameter(['Sub', 'Inner'], { name: 'depth', value: '2', type: 'double', unit: '', description: '' }));
+        const before = structuredClone(systemAt(store.model, ['Sub'])!);
+        const innerBefore = structuredClone(systemAt(store.model, ['Sub', 'Inner'])!);
+        const outsideBefore = ends(store.model.system.connections);
+
+        await store.execute(new RemoveComponents([], ['Sub']));
+        expect(systemAt(store.model, ['Sub'])).toBeNull();
+        await store.undo();
+
+        const sub = systemAt(store.model, ['Sub'])!;
+        const inner = systemAt(store.model, ['Sub', 'Inner']);
+        expect(inner).not.toBeNull();
+        expect(sub.components.map((c) => c.name).sort()).toEqual(before.components.map((c) => c.name).sort());
+        expect(inner!.components.map((c) => c.name)).toEqual(['B']);
+        expect(inner!.components[0].parameters.find((p) => p.name === 'V')!.value).toBe('0.25');
+        expect(inner!.parameters).toEqual(innerBefore.parameters);
+        expect(ends(inner!.connections)).toEqual(ends(innerBefore.connections));
+        expect(links(sub.connections)).toEqual(links(before.connections));
+        expect(ends(store.model.system.connections)).toEqual(outsideBefore);
+        expect(store.model).toEqual(server.model);
     });
 });
