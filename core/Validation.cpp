@@ -37,10 +37,12 @@ double interpolateReference(const std::vector<double>& t, const std::vector<doub
     if (t.empty()) return 0.0;
     if (x < t.front()) return v.front();
     if (x >= t.back()) return v.back();
-    // i with t[i] < x <= t[i+1] (i = 0 when x == t[0]).
+    if (t.size() == 1) return v.front();   // only a NaN x gets here
+    // i with t[i] < x <= t[i+1] (i = 0 when x == t[0]). Times out of order, or a NaN x, can
+    // leave the search at the end: i stays on the last segment rather than read past it.
     auto it = std::lower_bound(t.begin(), t.end(), x);
     std::size_t k = static_cast<std::size_t>(it - t.begin());
-    std::size_t i = k == 0 ? 0 : k - 1;
+    std::size_t i = std::min(k == 0 ? std::size_t{0} : k - 1, t.size() - 2);
     return v[i] + (x - t[i]) * (v[i + 1] - v[i]) / (t[i + 1] - t[i]);
 }
 

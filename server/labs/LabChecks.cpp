@@ -141,6 +141,10 @@ void judgeCurve(const CheckDefinition& d, const ResultTable& run, const ResultTa
             out.message = notFiniteMessage(d.variable, t);
             return;
         }
+        if (!std::isfinite(t)) {
+            out.message = "the run's time is not a finite number at sample " + std::to_string(i + 1);
+            return;
+        }
         const double ref = interpolateReference(refTime, refData, t);
         failed = sampleFails(values[i], ref, d.tolerance) || failed;
         // The samples the rule compares (core.md §7.4); tiny values on either side are skipped.

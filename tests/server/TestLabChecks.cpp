@@ -2,6 +2,7 @@
 // are built as result tables from analytic step responses, so the expected measures are known.
 #include "server/labs/Gradebook.h"
 #include "server/labs/LabChecks.h"
+#include "core/Validation.h"
 
 #include <gtest/gtest.h>
 
@@ -225,6 +226,27 @@ TEST(LabChecks, CurveSkipsTinyReferenceValuesAndFailsOnNaN)
     outcome = judged(definition, broken, &ones);
     EXPECT_FALSE(outcome.passed);
     EXPECT_EQ(outcome.message, "'Mass#P1#x' is not a finite number at t = 0.4 s");
+}
+
+// Found by fuzz/check-outcomes under ASan: a run time that is NaN, against a reference of one
+// sample, sent the interpolation past that sample.
+TEST(LabChecks, CurveAgainstADamagedTableFailsOrPassesWithoutReadingPastIt)
+{
+    const nlohmann::json definition = {{"kind", "curve"}, {"variable", kVariable}};
+    const auto ones = sampled(0, 1, 0.1, [](double) { return 1.0; });
+    auto shuffled = ones;
+    std::swap(shuffled.time[2], shuffled.time[8]);   // the same values at times out of order
+    auto outcome = judged(definition, ones, &shuffled);
+    EXPECT_TRUE(outcome.passed) << outcome.message;   // every reference value is 1
+
+    auto nanTime = ones;
+    nanTime.time[3] = std::nan("");
+    const auto oneSample = sampled(0, 0, 0.1, [](double) { return 1.0; });
+    outcome = judged(definition, nanTime, &oneSample);
+    EXPECT_FALSE(outcome.passed);
+    EXPECT_EQ(outcome.message, "the run's time is not a finite number at sample 4");
+    EXPECT_EQ(tlmhub::interpolateReference({1.0}, {5.0}, std::nan("")), 5.0);
+    EXPECT_TRUE(std::isnan(tlmhub::interpolateReference({0.0, 1.0, 2.0}, {5.0, 6.0, 7.0}, std::nan(""))));
 }
 
 TEST(LabChecks, MissingVariablesFailWithTheirName)
