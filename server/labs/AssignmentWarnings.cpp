@@ -1,7 +1,7 @@
 #include "server/labs/AssignmentWarnings.h"
 
 #include "server/labs/LabChecks.h"
-#include "server/labs/NumberText.h"
+#include "server/NumberText.h"
 
 #include "core/Component.h"
 #include "core/Parameter.h"

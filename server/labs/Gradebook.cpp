@@ -1,5 +1,5 @@
 #include "server/labs/Gradebook.h"
-#include "server/labs/NumberText.h"
+#include "server/NumberText.h"
 
 #include <string_view>
 

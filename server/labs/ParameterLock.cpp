@@ -1,5 +1,5 @@
 #include "server/labs/ParameterLock.h"
-#include "server/labs/NumberText.h"
+#include "server/NumberText.h"
 
 #include "core/Model.h"
 #include "core/ParameterPath.h"

@@ -2,7 +2,7 @@
 
 #include "server/jobs/JobRunner.h"
 #include "server/store/ResultBlob.h"
-#include "server/studies/ExactNumber.h"
+#include "server/NumberText.h"
 #include "server/studies/RunMeasures.h"
 
 #include "core/ResultView.h"

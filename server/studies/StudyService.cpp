@@ -4,7 +4,7 @@
 #include "server/jobs/ModelLimits.h"
 #include "server/jobs/PreparedJob.h"
 #include "server/jobs/StorageQuota.h"
-#include "server/studies/ExactNumber.h"
+#include "server/NumberText.h"
 #include "server/studies/RunMeasures.h"
 
 #include "core/ResultView.h"
