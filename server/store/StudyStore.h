@@ -64,6 +64,9 @@ public:
     virtual bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) = 0;
     // Start-up after a crash: running studies become interrupted. Returns how many.
     virtual int markRunningInterrupted() = 0;
+    // Resume: an interrupted or cancelled study is queued again, with its runs and counters,
+    // to run the runs it lacks (error and finished_at cleared). False in any other state.
+    virtual bool reopen(std::int64_t id) = 0;
 
     // Runs with index >= fromIndex in index order, at most `limit` (no blobs).
     virtual std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) = 0;

@@ -194,6 +194,7 @@ public:
     void setSummary(std::int64_t id, const std::string& summary) override;
     bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) override;
     int markRunningInterrupted() override;
+    bool reopen(std::int64_t id) override;
     std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) override;
     std::optional<std::string> runResult(std::int64_t studyId, std::int64_t index) override;
     std::size_t storedBytes(std::int64_t ownerId) override;

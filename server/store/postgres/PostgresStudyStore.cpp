@@ -35,6 +35,9 @@ constexpr PgStatement kMarkRunningInterrupted{"studies_mark_running_interrupted"
                                               "UPDATE studies SET state = 'interrupted', finished_at = $1,"
                                               " error = 'the server stopped while the study was running'"
                                               " WHERE state = 'running'"};
+constexpr PgStatement kReopen{"studies_reopen",
+                              "UPDATE studies SET state = 'queued', error = '', finished_at = 0"
+                              " WHERE id = $1 AND state IN ('interrupted', 'cancelled')"};
 constexpr PgStatement kRuns{"studies_runs",
                             "SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL FROM study_runs"
                             " WHERE study_id = $1 AND run_index >= $2 ORDER BY run_index LIMIT $3"};
@@ -179,6 +182,14 @@ int PostgresStudyStore::markRunningInterrupted()
         pqxx::nontransaction tx(c.raw());
         return static_cast<int>(
             c.exec(tx, kMarkRunningInterrupted, static_cast<std::int64_t>(unixNow())).affected_rows());
+    });
+}
+
+bool PostgresStudyStore::reopen(std::int64_t id)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kReopen, id).affected_rows() == 1;
     });
 }
 

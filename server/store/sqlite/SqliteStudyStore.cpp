@@ -188,6 +188,16 @@ int SqliteStudyStore::markRunningInterrupted()
     });
 }
 
+bool SqliteStudyStore::reopen(std::int64_t id)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET state = 'queued', error = '', finished_at = 0"
+                            " WHERE id = ? AND state IN ('interrupted', 'cancelled')");
+        q->bind(1, id);
+        return q->exec() == 1;
+    });
+}
+
 std::vector<StudyRun> SqliteStudyStore::runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit)
 {
     return mDb.run([&](SqliteConnection& c) {

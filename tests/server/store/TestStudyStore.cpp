@@ -311,6 +311,43 @@ TEST_P(StudyStoreConformance, MarkRunningInterruptedEndsOnlyRunningStudies)
     EXPECT_EQ(store().studies().markRunningInterrupted(), 0);
 }
 
+TEST_P(StudyStoreConformance, ReopenQueuesAnInterruptedOrCancelledStudyWithItsRunsKept)
+{
+    const User alice = addUser("alice");
+    const auto interrupted = addRunningStudy(alice.id);
+    ASSERT_TRUE(store().studies().addRun(interrupted, okRun(0), nullptr));
+    ASSERT_TRUE(store().studies().addRun(interrupted, okRun(1), nullptr));
+    ASSERT_EQ(store().studies().markRunningInterrupted(), 1);
+    const auto cancelled = addStudy(alice.id);
+    ASSERT_TRUE(store().studies().finish(cancelled, JobState::Cancelled, "", "{}"));
+    const auto done = addRunningStudy(alice.id);
+    ASSERT_TRUE(store().studies().finish(done, JobState::Done, "", "{}"));
+    const auto running = addRunningStudy(alice.id);
+    const auto queued = addStudy(alice.id);
+
+    for (const auto id : {interrupted, cancelled}) {
+        EXPECT_TRUE(store().studies().reopen(id));
+        const auto info = store().studies().info(id);
+        EXPECT_EQ(info->state, JobState::Queued);
+        EXPECT_EQ(info->error, "");
+        EXPECT_EQ(info->finishedAt, 0);
+        EXPECT_FALSE(store().studies().reopen(id)) << "queued already";
+    }
+    const auto resumed = store().studies().info(interrupted);
+    EXPECT_EQ(resumed->runsDone, 2) << "the runs it has stay counted";
+    EXPECT_EQ(store().studies().runs(interrupted, 0, 10).size(), 2u);
+    // It runs again: the runs it lacks are added, the ones it has are refused.
+    ASSERT_TRUE(store().studies().markRunning(interrupted));
+    EXPECT_FALSE(store().studies().addRun(interrupted, okRun(1), nullptr));
+    EXPECT_TRUE(store().studies().addRun(interrupted, okRun(2), nullptr));
+    EXPECT_EQ(store().studies().info(interrupted)->runsDone, 3);
+
+    for (const auto id : {done, running, queued}) EXPECT_FALSE(store().studies().reopen(id));
+    EXPECT_EQ(store().studies().info(done)->state, JobState::Done);
+    EXPECT_EQ(store().studies().info(running)->state, JobState::Running);
+    EXPECT_FALSE(store().studies().reopen(queued + 1000)) << "no such study";
+}
+
 TEST_P(StudyStoreConformance, RemoveDeletesTheStudyWithItsRunsAndResults)
 {
     const User alice = addUser("alice");
