@@ -1544,6 +1544,7 @@ void from_json(const nlohmann::json& j, StudyCreate& v)
     if (const auto x = j.find("sensitivity"); x != j.end()) v.sensitivity = x->get<nlohmann::json>();
     if (const auto x = j.find("optimise"); x != j.end()) v.optimise = x->get<nlohmann::json>();
     if (const auto x = j.find("objective"); x != j.end()) v.objective = x->get<nlohmann::json>();
+    if (const auto x = j.find("max_failed_fraction"); x != j.end()) v.maxFailedFraction = x->get<double>();
 }
 
 void to_json(nlohmann::json& j, const StudyCreate& v)
@@ -1563,6 +1564,7 @@ void to_json(nlohmann::json& j, const StudyCreate& v)
     if (v.sensitivity) j["sensitivity"] = *v.sensitivity;
     if (v.optimise) j["optimise"] = *v.optimise;
     if (v.objective) j["objective"] = *v.objective;
+    if (v.maxFailedFraction) j["max_failed_fraction"] = *v.maxFailedFraction;
 }
 
 void from_json(const nlohmann::json& j, StudyCreated& v)
@@ -1664,6 +1666,7 @@ void from_json(const nlohmann::json& j, StudyProgressEvent& v)
     if (const auto x = j.find("columns"); x != j.end()) v.columns = x->get<std::vector<std::string>>();
     j.at("rows").get_to(v.rows);
     if (const auto x = j.find("best"); x != j.end()) v.best = x->get<nlohmann::json>();
+    if (const auto x = j.find("failure_reasons"); x != j.end()) v.failureReasons = x->get<std::vector<nlohmann::json>>();
     if (const auto x = j.find("error"); x != j.end()) v.error = x->get<std::string>();
 }
 
@@ -1679,6 +1682,7 @@ void to_json(nlohmann::json& j, const StudyProgressEvent& v)
     if (v.columns) j["columns"] = *v.columns;
     j["rows"] = v.rows;
     if (v.best) j["best"] = *v.best;
+    if (v.failureReasons) j["failure_reasons"] = *v.failureReasons;
     if (v.error) j["error"] = *v.error;
 }
 

@@ -1054,6 +1054,7 @@ struct StudyCreate {
     std::optional<nlohmann::json> sensitivity;
     std::optional<nlohmann::json> optimise;
     std::optional<nlohmann::json> objective;
+    std::optional<double> maxFailedFraction;
 };
 void from_json(const nlohmann::json& j, StudyCreate& v);
 void to_json(nlohmann::json& j, const StudyCreate& v);
@@ -1119,6 +1120,7 @@ struct StudyProgressEvent {
     std::optional<std::vector<std::string>> columns;
     std::vector<std::vector<nlohmann::json>> rows;
     std::optional<nlohmann::json> best;
+    std::optional<std::vector<nlohmann::json>> failureReasons;
     std::optional<std::string> error;
 };
 void from_json(const nlohmann::json& j, StudyProgressEvent& v);

@@ -7,6 +7,7 @@
 
 #include "core/ResultView.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -21,6 +22,25 @@ nlohmann::json number(double value)
 }
 
 constexpr auto kEventPeriod = std::chrono::milliseconds(100);
+
+// A summary as stored: text a model put in a run's error may not be UTF-8.
+std::string dumped(const nlohmann::json& j)
+{
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+// `text` cut to at most `bytes` (not inside a UTF-8 sequence), invalid UTF-8 replaced.
+std::string boundedText(const std::string& text, std::size_t bytes)
+{
+    std::string cut = text;
+    if (cut.size() > bytes) {
+        std::size_t end = bytes;
+        while (end > 0 && (static_cast<unsigned char>(cut[end]) & 0xC0) == 0x80) --end;
+        cut.resize(end);
+        cut += "...";
+    }
+    return nlohmann::json::parse(dumped(nlohmann::json(cut))).get<std::string>();
+}
 
 } // namespace
 
@@ -207,6 +227,15 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
     mPlan.completed(run.index, outcome.ok ? objective : std::numeric_limits<double>::quiet_NaN());
     if (mStop.stop_requested()) return;
     (outcome.ok ? mRunsDone : mRunsFailed) += 1;
+    if (!outcome.ok) countFailure(run.index, outcome.error);
+    // max_failed_fraction: once enough runs have finished to judge, too many failures end it.
+    const std::int64_t finished = mRunsDone + mRunsFailed;
+    if (mFailure.empty() && mRunsFailed > 0 && finished >= StudyRequest::kMinRunsForFailedFraction &&
+        static_cast<double>(mRunsFailed) > mRequest.maxFailedFraction * static_cast<double>(finished)) {
+        mFailure = std::to_string(mRunsFailed) + " of " + std::to_string(finished) +
+                   " finished runs failed, more than max_failed_fraction " + numberText(mRequest.maxFailedFraction) +
+                   " allows; most often " + mostCommonFailure();
+    }
 
     nlohmann::json row = nlohmann::json::array({run.index, outcome.ok ? 1 : 0});
     for (double v : run.values) row.push_back(v);
@@ -221,7 +250,8 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
             mBestRun = run.index;
             mBestObjective = objective;
             mBestValues = run.values;
-            mStore.setSummary(mId, summary().dump());
+            mStore.setSummary(mId, dumped(summary()));
+            mFailuresChanged = false;
         }
     }
     if (outcome.ok && mRequest.kind == StudyKind::Sensitivity) {
@@ -230,6 +260,10 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
     }
     if (Clock::now() - mLastEvent >= kEventPeriod) {
         mLastEvent = Clock::now();
+        if (mFailuresChanged) {
+            mStore.setSummary(mId, dumped(summary()));
+            mFailuresChanged = false;
+        }
         mHub.publish(mId, progressEvent(false));
     }
 }
@@ -239,6 +273,53 @@ nlohmann::json StudyExecution::bestRun() const
     nlohmann::json parameters = nlohmann::json::object();
     for (std::size_t i = 0; i < mParameterNames.size(); ++i) parameters[mParameterNames[i]] = mBestValues[i];
     return {{"run", *mBestRun}, {"parameters", parameters}, {"objective", number(mBestObjective)}};
+}
+
+void StudyExecution::countFailure(std::int64_t run, const std::string& error)
+{
+    const std::string message = boundedText(error.empty() ? "the run failed without a message" : error,
+                                            kMaxFailureMessageBytes);
+    mFailuresChanged = true;
+    for (FailureReason& reason : mFailureReasons) {
+        if (reason.message == message) {
+            ++reason.count;
+            reason.firstRun = std::min(reason.firstRun, run);
+            return;
+        }
+    }
+    if (mFailureReasons.size() < kMaxFailureReasons) {
+        mFailureReasons.push_back({message, 1, run});
+        return;
+    }
+    mOtherFailures.firstRun = mOtherFailures.count == 0 ? run : std::min(mOtherFailures.firstRun, run);
+    ++mOtherFailures.count;
+}
+
+nlohmann::json StudyExecution::failureReasons() const
+{
+    std::vector<const FailureReason*> sorted;
+    for (const FailureReason& reason : mFailureReasons) sorted.push_back(&reason);
+    std::sort(sorted.begin(), sorted.end(), [](const FailureReason* a, const FailureReason* b) {
+        return a->count != b->count ? a->count > b->count : a->firstRun < b->firstRun;
+    });
+    nlohmann::json list = nlohmann::json::array();
+    for (const FailureReason* reason : sorted)
+        list.push_back({{"message", reason->message}, {"count", reason->count}, {"first_run", reason->firstRun}});
+    if (mOtherFailures.count > 0)
+        list.push_back({{"message", "other reasons"}, {"count", mOtherFailures.count}, {"first_run", mOtherFailures.firstRun}});
+    return list;
+}
+
+std::string StudyExecution::mostCommonFailure() const
+{
+    const FailureReason* most = nullptr;
+    for (const FailureReason& reason : mFailureReasons) {
+        if (!most || reason.count > most->count || (reason.count == most->count && reason.firstRun < most->firstRun))
+            most = &reason;
+    }
+    if (!most) return {};
+    return "\"" + most->message + "\" (" + std::to_string(most->count) + (most->count == 1 ? " run" : " runs") +
+           ", the first run " + std::to_string(most->firstRun) + ")";
 }
 
 nlohmann::json StudyExecution::summary()
@@ -262,7 +343,11 @@ nlohmann::json StudyExecution::summary()
             correlations[mParameterNames[p]] = perOutput;
         }
         s["correlations"] = correlations;
+        // The runs they come from: the successful ones (a pair with a value that is not a
+        // finite number is left out of its r).
+        s["correlations_n"] = mSampledParameters.size();
     }
+    if (mRunsFailed > 0) s["failure_reasons"] = failureReasons();
     return s;
 }
 
@@ -278,6 +363,7 @@ nlohmann::json StudyExecution::progressEvent(bool last)
                             {"rows", std::move(mPendingRows)}};
     mPendingRows.clear();
     if (mBestRun) event["best"] = bestRun();
+    if (mRunsFailed > 0) event["failure_reasons"] = failureReasons();
     return event;
 }
 
@@ -293,10 +379,18 @@ void StudyExecution::finalise()
     } else if (!mFailure.empty()) {
         state = JobState::Failed;
         error = mFailure;
+    } else if (mRunsFailed > 0 && mRunsDone == 0) {
+        state = JobState::Failed;
+        error = mRunsFailed == 1 ? "the study's run failed: " + mostCommonFailure()
+                                 : "all " + std::to_string(mRunsFailed) + " runs failed; most often " + mostCommonFailure();
+    } else if (mRequest.kind == StudyKind::Optimise && !mBestRun && mRunsDone > 0) {
+        state = JobState::Failed;
+        error = "no run's objective was a finite number: the optimisation has no best point";
     }
     nlohmann::json s = summary();
     if (mRequest.kind == StudyKind::Sensitivity && !mBandTime.empty() && mBands.front().count() > 0) {
         nlohmann::json bands = nlohmann::json::object();
+        bands["n"] = mBands.front().count();   // the runs they come from
         bands["time"] = mBandTime;
         nlohmann::json variables = nlohmann::json::object();
         for (std::size_t v = 0; v < mBands.size(); ++v) {
@@ -306,7 +400,7 @@ void StudyExecution::finalise()
         bands["variables"] = variables;
         s["bands"] = bands;
     }
-    mStore.finish(mId, state, error, s.dump());
+    mStore.finish(mId, state, error, dumped(s));
     nlohmann::json event = progressEvent(true);
     event["state"] = jobStateName(state);
     if (!error.empty()) event["error"] = error;

@@ -87,6 +87,12 @@ private:
     nlohmann::json progressEvent(bool last);   // caller holds mMutex; takes the pending rows
     nlohmann::json summary();                   // caller holds mMutex
     nlohmann::json bestRun() const;             // {run, parameters, objective}; caller holds mMutex
+    // Failed runs by reason (caller holds mMutex): counts a failed run's message.
+    void countFailure(std::int64_t run, const std::string& error);
+    // [{message, count, first_run}], most frequent first, "other reasons" last.
+    nlohmann::json failureReasons() const;
+    // "N runs: message (first run i)" of the most frequent reason; empty with none.
+    std::string mostCommonFailure() const;
 
     const std::int64_t mId, mOwnerId;
     const StudyRequest mRequest;
@@ -109,6 +115,18 @@ private:
     std::optional<JobState> mStopReason;
     std::string mFailure;               // a reason the whole study fails
     std::int64_t mRunsDone = 0, mRunsFailed = 0;
+    // Failed runs grouped by message: at most kMaxFailureReasons distinct ones, the rest
+    // counted together, so that a study cannot grow the list without bound.
+    struct FailureReason {
+        std::string message;
+        std::int64_t count = 0;
+        std::int64_t firstRun = 0;   // the lowest run index that failed so
+    };
+    static constexpr std::size_t kMaxFailureReasons = 20;
+    static constexpr std::size_t kMaxFailureMessageBytes = 500;
+    std::vector<FailureReason> mFailureReasons;
+    FailureReason mOtherFailures;        // message unused
+    bool mFailuresChanged = false;       // since the summary was last stored
     std::size_t mStoredBytes = 0;
     std::vector<nlohmann::json> mPendingRows;
     Clock::time_point mLastEvent{};

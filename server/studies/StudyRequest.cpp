@@ -477,6 +477,11 @@ bool parseStudyRequest(const nlohmann::json& body, StudyRequest& out, std::strin
         if (!readSettings(r, body, out.settings) || !readFixedParameters(r, body, out.fixedParameters) ||
             !readOutputs(r, body, out.outputs))
             return false;
+        if (body.contains("max_failed_fraction")) {
+            if (!r.number(body["max_failed_fraction"], "max_failed_fraction", out.maxFailedFraction)) return false;
+            if (!(out.maxFailedFraction >= 0.0 && out.maxFailedFraction <= 1.0))
+                return r.fail("max_failed_fraction must be from 0 to 1");
+        }
         if (body.contains("objective")) {
             if (out.kind == StudyKind::Optimise) return r.fail("an optimisation's objective goes in optimise.objective");
             if (!readObjective(r, body["objective"], out.objective.emplace())) return false;

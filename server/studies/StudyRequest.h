@@ -68,6 +68,10 @@ struct StudyRequest {
     // An optimisation's objective; a sweep or sensitivity study may have one too (its table
     // then has the column "objective", e.g. to compare a sweep with an optimisation).
     std::optional<StudyObjective> objective;
+    // The study ends failed once at least kMinRunsForFailedFraction runs have finished and
+    // more than this fraction of them failed; 1 (the default) never stops it.
+    double maxFailedFraction = 1.0;
+    static constexpr std::int64_t kMinRunsForFailedFraction = 10;
 
     // The varied parameters' names, in the order of a run's values.
     std::vector<std::string> parameterNames() const;

@@ -163,6 +163,9 @@ nlohmann::json StudyService::infoJson(const StudyInfo& info)
 {
     auto time = [](std::int64_t t) { return t ? nlohmann::json(t) : nlohmann::json(); };
     nlohmann::json summary = info.summary.empty() ? nlohmann::json::object() : parseOr(info.summary, nlohmann::json::object());
+    // The bands are long: GET /studies/{id}/bands gives them; here only how many runs they count.
+    if (summary.contains("bands") && summary["bands"].is_object() && summary["bands"].contains("n"))
+        summary["bands_n"] = summary["bands"]["n"];
     summary.erase("bands");
     const std::int64_t finished = info.runsDone + info.runsFailed;
     double progress = info.runsTotal > 0 ? static_cast<double>(finished) / static_cast<double>(info.runsTotal) : 0.0;
@@ -235,6 +238,7 @@ std::optional<nlohmann::json> StudyService::bandsJson(const StudyInfo& info)
     if (!summary.contains("bands")) return std::nullopt;
     const nlohmann::json& bands = summary["bands"];
     nlohmann::json out = {{"time", bands["time"]}, {"variables", nlohmann::json::object()}};
+    if (bands.contains("n")) out["n"] = bands["n"];   // the runs they come from (not in older studies)
     for (const auto& [name, stats] : bands["variables"].items()) {
         const std::vector<double> mean = stats["mean"].get<std::vector<double>>();
         const std::vector<double> sd = stats["sd"].get<std::vector<double>>();

@@ -384,3 +384,196 @@ TEST_F(Studies, OptimisersReachTheMinimumOfAFineSweep)
         EXPECT_EQ(found, lowest) << algorithm;
     }
 }
+
+namespace {
+
+// Round.in rounded is Divide's denominator: a run with |Round.in| < 0.5 divides by zero and
+// fails ("Division by zero"); one with Round.in in [0.5, 1.5) gives Divide.in1.
+const std::string kDivider = R"(<?xml version="1.0" encoding="UTF-8"?>
+<hopsanmodelfile hmfversion="0.4" hopsanguiversion="2.0" hopsancoreversion="2.0">
+  <system name="Divider" typename="Subsystem">
+    <simulationtime start="0" timestep="0.001" stop="0.1" inherit_timestep="true"/>
+    <objects>
+      <component typename="SignalRound" name="Round">
+        <parameters><parameter name="in#Value" value="1"/></parameters>
+      </component>
+      <component typename="SignalDivide" name="Divide">
+        <parameters><parameter name="in1#Value" value="1"/></parameters>
+      </component>
+    </objects>
+    <connections>
+      <connect startcomponent="Round" startport="out" endcomponent="Divide" endport="in2"/>
+    </connections>
+  </system>
+</hopsanmodelfile>
+)";
+const std::string kQuotient = "Divide#out#Value";
+
+bool mentions(const nlohmann::json& text, const std::string& words)
+{
+    return text.is_string() && text.get<std::string>().find(words) != std::string::npos;
+}
+
+} // namespace
+
+// Every run fails: the study fails too, naming the reason, and its failed runs are counted
+// by reason with the first run that failed so.
+TEST_F(Studies, AStudyWhoseRunsAllFailEndsFailedWithItsReasonsCounted)
+{
+    HttpClient alice = as("alice");
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", kDivider},
+                                   {"outputs", {{"variables", {kQuotient}}}},
+                                   {"sweep", {{"parameters", {{"Round.in", {0.1, -0.2, 0.3, 0.4, 0.0}}}}}}});
+    const auto study = waitForStudy(alice, id);
+    EXPECT_EQ(study["state"], "failed") << study.dump();
+    EXPECT_EQ(study["runs_done"], 0);
+    EXPECT_EQ(study["runs_failed"], 5);
+    EXPECT_TRUE(mentions(study["error"], "Division by zero")) << study.dump();
+    const nlohmann::json& reasons = study["summary"]["failure_reasons"];
+    ASSERT_EQ(reasons.size(), 1u) << study.dump();
+    EXPECT_TRUE(mentions(reasons[0]["message"], "Division by zero")) << reasons.dump();
+    EXPECT_EQ(reasons[0]["count"], 5);
+    EXPECT_EQ(reasons[0]["first_run"], 0);
+}
+
+// The progress events of a running study carry its failed runs by reason, as its summary.
+TEST_F(Studies, ProgressEventsCountTheFailedRunsByReason)
+{
+    HttpClient alice = as("alice");
+    WsClient ws(server->port(), alice.login("alice", testPassword("alice")));
+    // Run 1 fails, the others succeed; long enough to be running when the subscription comes.
+    std::vector<double> values(4000, 1.0);
+    values[1] = 0.3;
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", kDivider},
+                                   {"stop", 10},
+                                   {"outputs", {{"variables", {kQuotient}}}},
+                                   {"sweep", {{"parameters", {{"Round.in", values}}}}}});
+    const auto reply = ws.call("study.subscribe", {{"study_id", id}});
+    ASSERT_EQ(reply["type"], "reply") << reply.dump();
+    nlohmann::json reasons;
+    auto take = [&](const nlohmann::json& event) {
+        if (event.value("type", "") == "event.study.progress" && event.contains("failure_reasons"))
+            reasons = event["failure_reasons"];
+    };
+    for (const auto& event : ws.events) take(event);
+    while (reasons.is_null()) {
+        const auto event = ws.receive(60000);
+        ASSERT_FALSE(event.is_null()) << "no event with failure_reasons";
+        ASSERT_NE(event.value("state", ""), "done") << "the study ended with no event carrying failure_reasons: " << event.dump();
+        take(event);
+    }
+    ASSERT_EQ(reasons.size(), 1u) << reasons.dump();
+    EXPECT_TRUE(mentions(reasons[0]["message"], "Division by zero")) << reasons.dump();
+    EXPECT_EQ(reasons[0]["count"], 1);
+    EXPECT_EQ(reasons[0]["first_run"], 1);
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    EXPECT_EQ(alice.get(path).json()["summary"]["failure_reasons"], reasons);
+    const auto cancelled = alice.request(http::verb::delete_, path);
+    EXPECT_TRUE(cancelled.status == 200 || cancelled.status == 202) << cancelled.body;
+    EXPECT_EQ(waitForStudy(alice, id, 60)["state"], "cancelled");
+}
+
+// A sensitivity study some of whose runs failed says from how many runs its bands and
+// correlations come: the successful ones, whose rows the table marks ok.
+TEST_F(Studies, SensitivityBandsAndCorrelationsCountOnlyTheRunsThatSucceeded)
+{
+    HttpClient alice = as("alice");
+    const int runs = 20;
+    const auto id = submit(alice, {{"kind", "sensitivity"},
+                                   {"hmf", kDivider},
+                                   {"outputs", {{"variables", {kQuotient}}, {"values", {"final"}}}},
+                                   {"sensitivity", {{"runs", runs}, {"seed", 7},
+                                                    {"parameters", {{"Round.in", {{"distribution", "uniform"}, {"min", 0.0}, {"max", 1.4}}},
+                                                                    {"Divide.in1", {{"distribution", "normal"}, {"mean", 3}, {"sd", 1}}}}}}}});
+    const auto study = waitForStudy(alice, id);
+    ASSERT_EQ(study["state"], "done") << study.dump();
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    const auto table = alice.get(path + "/results?format=json").json();
+    ASSERT_EQ(table["rows"].size(), static_cast<std::size_t>(runs));
+    int succeeded = 0;
+    std::int64_t firstFailed = -1;
+    for (const auto& row : table["rows"]) {
+        if (row[1] == 1) ++succeeded;
+        else if (firstFailed < 0) firstFailed = row[0].get<std::int64_t>();
+    }
+    // The seed gives both kinds of run.
+    ASSERT_GT(succeeded, 1);
+    ASSERT_LT(succeeded, runs);
+    EXPECT_EQ(study["runs_done"], succeeded);
+    EXPECT_EQ(study["runs_failed"], runs - succeeded);
+
+    const auto bands = alice.get(path + "/bands?format=json");
+    ASSERT_EQ(bands.status, 200) << bands.body;
+    EXPECT_EQ(bands.json()["n"], succeeded) << bands.body;
+    EXPECT_EQ(study["summary"]["correlations_n"], succeeded) << study.dump();
+    EXPECT_TRUE(study["summary"]["correlations"]["Divide.in1"][kQuotient + ":final"].is_number()) << study.dump();
+
+    const nlohmann::json& reasons = study["summary"]["failure_reasons"];
+    ASSERT_EQ(reasons.size(), 1u) << study.dump();
+    EXPECT_TRUE(mentions(reasons[0]["message"], "Division by zero")) << reasons.dump();
+    EXPECT_EQ(reasons[0]["count"], runs - succeeded);
+    EXPECT_EQ(reasons[0]["first_run"], firstFailed);
+}
+
+// An optimisation none of whose runs succeeded has no best point: it fails, saying why.
+TEST_F(Studies, AnOptimisationWithNoSuccessfulRunEndsFailed)
+{
+    HttpClient alice = as("alice");
+    const auto id = submit(alice, {{"kind", "optimise"},
+                                   {"hmf", kDivider},
+                                   {"optimise", {{"parameters", {{"Round.in", {{"min", -0.4}, {"max", 0.4}}}}},
+                                                 {"objective", {{"terms", {{{"function", "final"}, {"variable", kQuotient}}}}}},
+                                                 {"max_evaluations", 12}, {"seed", 1}}}});
+    const auto study = waitForStudy(alice, id);
+    EXPECT_EQ(study["state"], "failed") << study.dump();
+    EXPECT_EQ(study["runs_done"], 0);
+    EXPECT_GT(study["runs_failed"].get<int>(), 0);
+    EXPECT_TRUE(mentions(study["error"], "Division by zero")) << study.dump();
+    EXPECT_FALSE(study["summary"].contains("best")) << study.dump();
+    ASSERT_EQ(study["summary"]["failure_reasons"].size(), 1u) << study.dump();
+    EXPECT_EQ(study["summary"]["failure_reasons"][0]["count"], study["runs_failed"]);
+}
+
+// max_failed_fraction: once 10 runs have finished, a study whose failed share passes it ends
+// failed without the rest of its runs (which here would all succeed).
+TEST_F(Studies, MaxFailedFractionEndsAStudyEarly)
+{
+    HttpClient alice = as("alice");
+    std::vector<double> values(12, 0.2);
+    values.resize(60, 1.0);
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", kDivider},
+                                   {"max_failed_fraction", 0.5},
+                                   {"outputs", {{"variables", {kQuotient}}}},
+                                   {"sweep", {{"parameters", {{"Round.in", values}}}}}});
+    const auto study = waitForStudy(alice, id);
+    EXPECT_EQ(study["state"], "failed") << study.dump();
+    EXPECT_TRUE(mentions(study["error"], "max_failed_fraction")) << study.dump();
+    EXPECT_TRUE(mentions(study["error"], "Division by zero")) << study.dump();
+    const int finished = study["runs_done"].get<int>() + study["runs_failed"].get<int>();
+    EXPECT_GE(finished, 10);
+    EXPECT_LT(finished, 60);
+    EXPECT_GE(study["runs_failed"].get<int>(), 10);
+}
+
+TEST_F(Studies, MaxFailedFractionOutsideZeroToOneIsRefused)
+{
+    HttpClient alice = as("alice");
+    const nlohmann::json sweep = {{"parameters", {{"Round.in", {1.0, 1.2}}}}};
+    for (const nlohmann::json& bad : {nlohmann::json(1.5), nlohmann::json(-0.1), nlohmann::json("half"), nlohmann::json(nullptr)}) {
+        const auto r = alice.post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", kDivider}, {"sweep", sweep},
+                                                      {"max_failed_fraction", bad}});
+        EXPECT_EQ(r.status, 400) << bad.dump() << ": " << r.body;
+        // The schema refuses it (StudyCreate), and the request's own check too (TestStudyParts).
+        const std::string code = r.json()["error"].value("code", "");
+        EXPECT_TRUE(code == "schema_violation" || code == "bad_request") << r.body;
+        EXPECT_TRUE(mentions(r.json()["error"]["message"], "max_failed_fraction")) << r.body;
+    }
+    // 0 and 1 are in range.
+    for (const double fine : {0.0, 1.0}) {
+        const auto id = submit(alice, {{"kind", "sweep"}, {"hmf", kDivider}, {"sweep", sweep}, {"max_failed_fraction", fine}});
+        EXPECT_EQ(waitForStudy(alice, id)["state"], "done");
+    }
+}

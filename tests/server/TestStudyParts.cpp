@@ -122,6 +122,23 @@ TEST(StudyRequest, RefusalsNameWhatIsWrong)
               std::string::npos);
 }
 
+// max_failed_fraction: a number from 0 to 1, 1 (never stop) when absent.
+TEST(StudyRequest, MaxFailedFractionIsANumberFromZeroToOne)
+{
+    const nlohmann::json sweep = {{"kind", "sweep"}, {"hmf", "x"}, {"sweep", {{"parameters", {{"P.a", {1}}}}}}};
+    EXPECT_EQ(parsed(sweep).maxFailedFraction, 1.0);
+    for (const double fine : {0.0, 0.25, 1.0}) {
+        nlohmann::json body = sweep;
+        body["max_failed_fraction"] = fine;
+        EXPECT_EQ(parsed(body).maxFailedFraction, fine);
+    }
+    for (const nlohmann::json& bad : {nlohmann::json(-0.01), nlohmann::json(1.01), nlohmann::json("0.5"), nlohmann::json(nullptr)}) {
+        nlohmann::json body = sweep;
+        body["max_failed_fraction"] = bad;
+        EXPECT_NE(refusal(body).find("max_failed_fraction"), std::string::npos) << bad.dump();
+    }
+}
+
 // A sweep hands out each set once, in index order; runs may come back in any order.
 TEST(StudyPlan, HandsOutEverySweepSetOnce)
 {

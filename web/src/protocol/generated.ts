@@ -1108,6 +1108,10 @@ export interface StudyProgressEvent {
     columns?: string[];
     rows: unknown[][];
     best?: {};
+    /**
+     * The failed runs so far by reason, most frequent first: {message, count, first_run}; at most 20 messages, then one entry "other reasons".
+     */
+    failure_reasons?: {}[];
     error?: string;
 }
 export interface ModelSettingsData {
@@ -1166,6 +1170,10 @@ export interface StudyCreate {
      * A sweep's or sensitivity study's objective, as optimise.objective: its table gets the column objective.
      */
     objective?: {};
+    /**
+     * The study ends failed once at least 10 runs have finished and more than this fraction of them failed; 1 (default) never stops it.
+     */
+    max_failed_fraction?: number;
 }
 export interface StudyCreated {
     id: number;
