@@ -249,6 +249,11 @@ paths = {
                      "finished one with its runs (204)",
                      {**ok("The study", "StudyInfo"), "202": {"description": "Cancelling"},
                       "204": {"description": "Deleted"}, **errors("401", "404")}, params=[ID], tag="studies")},
+    "/studies/{id}/resume": {"post": op(
+        "Queue an interrupted or cancelled study again from its stored request and model text; it runs only the "
+        "runs it lacks (an optimisation walks on from its stored runs to the trace an uninterrupted one gives)",
+        {**ok("The study, queued", "StudyInfo", "202"), **errors("401", "404", "409", "429")},
+        params=[ID], tag="studies")},
     "/studies/{id}/results": {"get": op(
         "The table of runs finished so far: run, ok, parameters, outputs[, objective]; CSV (%.17g) or JSON "
         "{columns, rows, errors}",

@@ -25,6 +25,7 @@ void remoteUsage(std::ostream& os)
           "                          [--max-evaluations N] [--seed S] [--csv TABLE.csv]\n"
           "  tlmhub-cli remote jobs\n"
           "  tlmhub-cli remote results JOB_ID [--csv OUT.csv] [--variables a,b]\n"
+          "  tlmhub-cli remote studies list | resume STUDY_ID\n"
           "The server and token come from 'remote login' ($XDG_CONFIG_HOME/tlmhub/credentials or\n"
           "~/.config/tlmhub/credentials), or TLMHUB_URL and TLMHUB_TOKEN.\n";
 }
@@ -37,6 +38,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& args)
     if (command == "optimise") return remote::optimise(args);
     if (command == "jobs") return remote::jobs(args);
     if (command == "results") return remote::results(args);
+    if (command == "studies") return remote::studies(args);
     throw remote::UsageError("unknown remote command '" + command + "'");
 }
 

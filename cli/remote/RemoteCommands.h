@@ -12,5 +12,6 @@ int sweep(const std::vector<std::string>& args);
 int optimise(const std::vector<std::string>& args);
 int jobs(const std::vector<std::string>& args);
 int results(const std::vector<std::string>& args);
+int studies(const std::vector<std::string>& args);
 
 } // namespace tlmhub::cli::remote

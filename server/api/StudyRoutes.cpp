@@ -1,4 +1,4 @@
-// /studies: submit, list, status, cancel or delete, results as one table, a run's full result,
+// /studies: submit, list, status, cancel or delete, resume, results as one table, a run's full result,
 // a sensitivity study's bands (docs/studies.md).
 #include "server/api/ApiSupport.h"
 
@@ -91,6 +91,17 @@ Response cancelOrDeleteStudy(Services& s, Call& call)
     return noContent();
 }
 
+// An interrupted or cancelled study runs the runs it lacks (409 in any other state).
+Response resumeStudy(Services& s, Call& call)
+{
+    const auto study = visibleStudy(s, call.who(), call.params.path["id"]);
+    if (!study) return notFound();
+    const auto resumed = s.studies.resume(*study);
+    if (!resumed.id) return refusal(resumed.code, resumed.message);
+    const auto now = s.studies.store().info(study->id);
+    return jsonResponse(http::status::accepted, StudyService::infoJson(now ? *now : *study));
+}
+
 Response studyResults(Services& s, Call& call)
 {
     const auto study = visibleStudy(s, call.who(), call.params.path["id"]);
@@ -161,6 +172,7 @@ void addStudyRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::get, "/studies", true, listStudies});
     routes.push_back({http::verb::get, "/studies/{id}", true, getStudy});
     routes.push_back({http::verb::delete_, "/studies/{id}", true, cancelOrDeleteStudy});
+    routes.push_back({http::verb::post, "/studies/{id}/resume", true, resumeStudy});
     routes.push_back({http::verb::get, "/studies/{id}/results", true, studyResults, RouteWork::LargeReply});
     routes.push_back({http::verb::get, "/studies/{id}/runs/{index}/results", true, runResults, RouteWork::LargeReply});
     routes.push_back({http::verb::get, "/studies/{id}/bands", true, studyBands});

@@ -310,6 +310,7 @@ void JobQueue::workerLoop(unsigned worker)
         mWake.wait(lock, [&] { return (picked = pickNext(work)) || mStopping; });
         if (!picked) return;
         if (work.kind == Work::Kind::StudyRun) runStudy(worker, work, lock);
+        else if (work.kind == Work::Kind::EndStudy) endStudyIfComplete(work.study, lock);
         else runJob(work, lock);
         updateWaiting();
         mWake.notify_all();
@@ -367,12 +368,16 @@ void JobQueue::runStudy(unsigned worker, Work& work, std::unique_lock<std::mutex
     lock.lock();
     --mStudyRunsInFlight;
     // The worker of the last run stores the study's end (a cancelled one's too).
-    if (mStudies.count(work.study->id()) && work.study->complete()) {
-        retireStudy(work.study);
-        lock.unlock();
-        work.study->finalise();
-        lock.lock();
-    }
+    endStudyIfComplete(work.study, lock);
+}
+
+void JobQueue::endStudyIfComplete(const std::shared_ptr<StudyExecution>& study, std::unique_lock<std::mutex>& lock)
+{
+    if (!mStudies.count(study->id()) || !study->complete()) return;
+    retireStudy(study);
+    lock.unlock();
+    study->finalise();
+    lock.lock();
 }
 
 std::size_t JobQueue::compiledQueued()
@@ -433,6 +438,11 @@ bool JobQueue::takeStudyRun(std::deque<std::shared_ptr<StudyExecution>>& studies
             work.kind = Work::Kind::StudyRun;
             work.study = std::move(study);
             work.run = std::move(*run);
+            return true;
+        }
+        if (study->started() && study->complete()) {
+            work.kind = Work::Kind::EndStudy;
+            work.study = std::move(study);
             return true;
         }
     }

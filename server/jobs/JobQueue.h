@@ -125,7 +125,9 @@ public:
 private:
     // What a worker takes next: a job to start or to continue, or a run of a study.
     struct Work {
-        enum class Kind { StartJob, ContinueJob, StudyRun } kind = Kind::StartJob;
+        // EndStudy: a study with nothing left to run and none in flight (a resumed one whose
+        // remaining runs were all stored) is finalised by the worker that found it so.
+        enum class Kind { StartJob, ContinueJob, StudyRun, EndStudy } kind = Kind::StartJob;
         std::int64_t jobId = 0, ownerId = 0;
         std::shared_ptr<StudyExecution> study;
         PlannedRun run;
@@ -148,6 +150,8 @@ private:
     void keepCompiled(std::int64_t jobId, std::unique_ptr<PreparedJob> prepared);   // holds mMutex
     void runJob(Work& work, std::unique_lock<std::mutex>& lock);
     void runStudy(unsigned worker, Work& work, std::unique_lock<std::mutex>& lock);
+    // Retires and finalises the study once if it is complete (caller holds `lock`).
+    void endStudyIfComplete(const std::shared_ptr<StudyExecution>& study, std::unique_lock<std::mutex>& lock);
     // Next work by the fairness rule. Caller holds mMutex.
     bool pickNext(Work& work);
     // A run of one of the owner's studies, if one has a run ready. Caller holds mMutex.

@@ -49,7 +49,8 @@ StudyExecution::StudyExecution(PreparedStudy prepared, const JobLimits& jobLimit
     : mId(prepared.id), mOwnerId(prepared.ownerId), mRequest(std::move(prepared.request)),
       mParameterNames(mRequest.parameterNames()), mModel(std::move(prepared.model)),
       mSettings(prepared.settings), mJobLimits(jobLimits), mStudyLimits(studyLimits), mStore(store), mHub(hub),
-      mSimulations(workers), mSpare(std::move(prepared.compiled)), mPlan(mRequest)
+      mSimulations(workers), mSpare(std::move(prepared.compiled)), mStoredRuns(std::move(prepared.storedRuns)),
+      mPlan(mRequest)
 {
     if (mRequest.kind == StudyKind::Sensitivity) mBands.resize(mRequest.outputs.variables.size());
 }
@@ -74,7 +75,47 @@ std::optional<PlannedRun> StudyExecution::take()
             return std::nullopt;
         }
     }
-    return mPlan.next();
+    while (std::optional<PlannedRun> run = mPlan.next()) {
+        const auto stored = mStoredRuns.find(run->index);
+        if (stored == mStoredRuns.end()) return run;
+        replay(*run, stored->second);
+        mStoredRuns.erase(stored);
+        if (mStopReason || !mFailure.empty()) break;
+    }
+    return std::nullopt;
+}
+
+void StudyExecution::replay(const PlannedRun& run, const StudyRun& stored)
+{
+    RunOutcome outcome;
+    outcome.ok = stored.ok;
+    outcome.error = stored.error;
+    const nlohmann::json outputs = nlohmann::json::parse(stored.outputs, nullptr, false);
+    const auto value = [&](const std::string& name) {
+        const bool known = outputs.is_object() && outputs.contains(name) && outputs[name].is_number();
+        return known ? outputs[name].get<double>() : std::numeric_limits<double>::quiet_NaN();
+    };
+    if (stored.ok) {
+        for (const std::string& column : mRequest.outputs.columnNames()) outcome.outputs.push_back(value(column));
+        if (mRequest.objective) outcome.objective = value("objective");
+    }
+    if (stored.ok && stored.hasResult && mRequest.kind == StudyKind::Sensitivity) {
+        // The bands need the run's curves: a study that kept them (outputs.full) has them.
+        const auto blob = mStore.runResult(mId, stored.index);
+        const auto table = blob ? decodeResult(*blob, mRequest.outputs.variables) : std::nullopt;
+        std::vector<std::vector<double>> curves;
+        for (const std::string& name : mRequest.outputs.variables)
+            if (const ResultColumn* column = table ? table->column(name) : nullptr) curves.push_back(column->data);
+        if (table && curves.size() == mRequest.outputs.variables.size()) addToBands(table->time, curves);
+    }
+    ++mRunsReused;
+    record(run, outcome);
+}
+
+void StudyExecution::addToBands(const std::vector<double>& time, const std::vector<std::vector<double>>& curves)
+{
+    if (mBandTime.empty()) mBandTime = time;
+    for (std::size_t v = 0; v < mBands.size(); ++v) mBands[v].add(curves[v]);
 }
 
 bool StudyExecution::hasWork()
@@ -179,9 +220,11 @@ StudyExecution::RunOutcome StudyExecution::simulate(unsigned worker, const Plann
         if (!outcome.objective) return outcome;
     }
     if (mRequest.kind == StudyKind::Sensitivity) {
+        std::vector<std::vector<double>> curves;
+        for (const std::string& name : mRequest.outputs.variables) curves.push_back(*results.data(name));
+        const std::vector<double> time(results.time().begin(), results.time().end());
         std::lock_guard lock(mMutex);
-        if (mBandTime.empty()) mBandTime.assign(results.time().begin(), results.time().end());
-        for (std::size_t v = 0; v < mBands.size(); ++v) mBands[v].add(*results.data(mRequest.outputs.variables[v]));
+        addToBands(time, curves);
     }
     if (mRequest.outputs.full) encodeResult(results, outcome.blob);
     outcome.ok = true;
@@ -348,6 +391,7 @@ nlohmann::json StudyExecution::summary()
         s["correlations_n"] = mSampledParameters.size();
     }
     if (mRunsFailed > 0) s["failure_reasons"] = failureReasons();
+    if (mRunsReused > 0) s["runs_reused"] = mRunsReused;   // resumed: stored runs not run again
     return s;
 }
 

@@ -19,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -41,6 +42,9 @@ struct PreparedStudy {
     std::shared_ptr<const Model> model;
     SimulationSettings settings;                // resolved: start, stop, step, log samples
     std::optional<Simulation> compiled;         // the submit check's compile, for a first worker
+    // Resumed: the runs stored before it stopped, by index. They are not run again; the plan
+    // takes their stored outcome in their turn, so an optimiser walks the same trace.
+    std::map<std::int64_t, StudyRun> storedRuns;
 };
 
 class StudyExecution {
@@ -81,6 +85,10 @@ private:
         std::string blob;
     };
     RunOutcome simulate(unsigned worker, const PlannedRun& run);
+    // A run stored before a resume, counted as it was (caller holds mMutex).
+    void replay(const PlannedRun& run, const StudyRun& stored);
+    // A sensitivity run's variables added to the bands (caller holds mMutex).
+    void addToBands(const std::vector<double>& time, const std::vector<std::vector<double>>& curves);
     Simulation* simulationFor(unsigned worker, std::string& error);
     // Records an ended run (caller holds mMutex); publishes an event when one is due.
     void record(const PlannedRun& run, const RunOutcome& outcome);
@@ -110,6 +118,8 @@ private:
 
     std::mutex mMutex;   // everything below
     std::optional<Simulation> mSpare;   // the submit check's compile
+    std::map<std::int64_t, StudyRun> mStoredRuns;   // resumed: runs not to run again
+    std::int64_t mRunsReused = 0;                  // of those, taken in their turn so far
     StudyPlan mPlan;
     bool mStarted = false;
     std::optional<JobState> mStopReason;

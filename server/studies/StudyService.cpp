@@ -34,19 +34,54 @@ void StudyService::start()
 {
     mStore.markRunningInterrupted();
     for (const StudyInfo& info : mStore.listInState(JobState::Queued)) {
-        const auto text = mStore.request(info.id);
-        const nlohmann::json body = text ? parseOr(*text, nullptr) : nlohmann::json();
-        PreparedStudy prepared;
-        const Submitted checked = body.is_object() ? prepare(info.ownerId, body, body.value("hmf", ""), prepared)
-                                                   : Submitted{std::nullopt, 0, "internal", "the stored request is unreadable"};
-        if (!checked.code.empty()) {
-            mStore.finish(info.id, JobState::Failed, checked.message, "{}");
-            continue;
-        }
-        prepared.id = info.id;
-        prepared.ownerId = info.ownerId;
-        mQueue.addStudy(std::make_shared<StudyExecution>(std::move(prepared), mJobLimits, mLimits, mWorkers, mStore, mHub));
+        if (const Submitted queued = enqueueStored(info); !queued.code.empty())
+            mStore.finish(info.id, JobState::Failed, queued.message, "{}");
     }
+}
+
+StudyService::Submitted StudyService::enqueueStored(const StudyInfo& info)
+{
+    const auto text = mStore.request(info.id);
+    const nlohmann::json body = text ? parseOr(*text, nullptr) : nlohmann::json();
+    if (!body.is_object()) return {std::nullopt, 0, "internal", "the stored request is unreadable"};
+    PreparedStudy prepared;
+    Submitted checked = prepare(info.ownerId, body, body.value("hmf", ""), prepared);
+    if (!checked.code.empty()) return checked;
+    prepared.id = info.id;
+    prepared.ownerId = info.ownerId;
+    constexpr std::size_t kPage = 1000;
+    for (std::int64_t from = 0;;) {
+        std::vector<StudyRun> page = mStore.runs(info.id, from, kPage);
+        for (StudyRun& run : page) prepared.storedRuns.emplace(run.index, std::move(run));
+        if (page.size() < kPage) break;
+        from = prepared.storedRuns.rbegin()->first + 1;
+    }
+    mQueue.addStudy(std::make_shared<StudyExecution>(std::move(prepared), mJobLimits, mLimits, mWorkers, mStore, mHub));
+    checked.id = info.id;
+    return checked;
+}
+
+std::optional<StudyService::Submitted> StudyService::overActiveLimit(std::int64_t ownerId)
+{
+    if (mQueue.activeStudies(ownerId) < mLimits.maxActivePerUser) return std::nullopt;
+    // Temporary: room comes as the user's studies end.
+    return Submitted{std::nullopt, 0, "rate_limited",
+                     "you have " + std::to_string(mLimits.maxActivePerUser) + " studies queued or running; the limit is " +
+                         std::to_string(mLimits.maxActivePerUser) +
+                         " (--max-studies-per-user): try again when one has ended"};
+}
+
+StudyService::Submitted StudyService::resume(const StudyInfo& info)
+{
+    if (info.state != JobState::Interrupted && info.state != JobState::Cancelled)
+        return {std::nullopt, 0, "conflict",
+                "the study is " + std::string(jobStateName(info.state)) + ": only an interrupted or cancelled study resumes"};
+    if (auto refused = overActiveLimit(info.ownerId)) return *refused;
+    if (!mStore.reopen(info.id))
+        return {std::nullopt, 0, "conflict", "the study changed state meanwhile: only an interrupted or cancelled study resumes"};
+    Submitted queued = enqueueStored(info);
+    if (!queued.code.empty()) mStore.finish(info.id, JobState::Failed, queued.message, "{}");
+    return queued;
 }
 
 StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf,
@@ -130,11 +165,7 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
 
 StudyService::Submitted StudyService::submit(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf)
 {
-    if (mQueue.activeStudies(ownerId) >= mLimits.maxActivePerUser)
-        // Temporary: room comes as the user's studies end.
-        return {std::nullopt, 0, "rate_limited",
-                "you have " + std::to_string(mLimits.maxActivePerUser) + " studies queued or running; the limit is " +
-                    std::to_string(mLimits.maxActivePerUser) + " (--max-studies-per-user): try again when one has ended"};
+    if (auto refused = overActiveLimit(ownerId)) return *refused;
     PreparedStudy prepared;
     Submitted checked = prepare(ownerId, body, hmf, prepared);
     if (!checked.code.empty()) return checked;

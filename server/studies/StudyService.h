@@ -34,6 +34,9 @@ public:
     Submitted submit(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf);
     // Cancels a queued or running study; false when it is neither.
     bool cancel(std::int64_t id);
+    // Queues an interrupted or cancelled study again, from the request and model text stored
+    // at submission, to run only the runs it lacks (code "conflict" in any other state).
+    Submitted resume(const StudyInfo& info);
 
     // {id, kind, name, model_id, state, runs_total, runs_done, runs_failed, progress, error,
     //  created_at, started_at, finished_at, summary} (the summary without its bands).
@@ -56,6 +59,10 @@ public:
     const StudyLimits& limits() const { return mLimits; }
 
 private:
+    // A stored queued study into the queue, with the runs it has already; a code on failure.
+    Submitted enqueueStored(const StudyInfo& info);
+    // Refusal while the owner has as many studies queued or running as allowed.
+    std::optional<Submitted> overActiveLimit(std::int64_t ownerId);
     // Parses, checks and compiles; fills `prepared` (id and owner aside).
     Submitted prepare(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf,
                       PreparedStudy& prepared);

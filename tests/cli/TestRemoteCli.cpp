@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
+#include <thread>
 
 namespace tlmhub::test {
 namespace {
@@ -134,6 +135,40 @@ TEST_F(RemoteCli, JobsListsTheCallersJobs)
     ASSERT_EQ(jobs.exitCode, 0) << jobs.err;
     EXPECT_EQ(jobs.out.rfind("      ID  STATE", 0), 0u) << jobs.out;
     EXPECT_TRUE(std::regex_search(jobs.out, std::regex("\n +" + jobId(run) + "  done +100 %"))) << jobs.out;
+}
+
+// A cancelled study is listed as such, and `studies resume` queues it to run the runs it lacks.
+TEST_F(RemoteCli, StudiesListsTheCallersStudiesAndResumesACancelledOne)
+{
+    const auto submitted = mAdmin->post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", readFile(kModel)},
+                                                            {"sweep", {{"parameters", {{"pump_flow", {{"from", 1e-4}, {"to", 2e-4}, {"steps", 300}}}}}}}});
+    ASSERT_EQ(submitted.status, 201) << submitted.body;
+    const std::string id = std::to_string(submitted.json()["id"].get<long long>());
+    const std::string path = "/api/v1/studies/" + id;
+    ASSERT_LT(mAdmin->request(boost::beast::http::verb::delete_, path).status, 300);
+    nlohmann::json study;
+    for (int i = 0; i < 3000 && (study = mAdmin->get(path).json())["state"] != "cancelled"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_EQ(study["state"], "cancelled") << study.dump();
+
+    const CliResult listed = remote({"studies", "list"}, loggedIn());
+    ASSERT_EQ(listed.exitCode, 0) << listed.err;
+    EXPECT_EQ(listed.out.rfind("      ID  KIND         STATE", 0), 0u) << listed.out;
+    EXPECT_TRUE(std::regex_search(listed.out, std::regex("\n +" + id + "  sweep +cancelled "))) << listed.out;
+
+    const CliResult resumed = remote({"studies", "resume", id}, loggedIn());
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    EXPECT_TRUE(std::regex_search(resumed.out, std::regex("^study " + id + " resumed: [0-9]+ of 300 runs stored"))) << resumed.out;
+    for (int i = 0; i < 6000 && (study = mAdmin->get(path).json())["state"] != "done"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_EQ(study["state"], "done") << study.dump();
+    EXPECT_EQ(study["runs_done"], 300);
+
+    const CliResult again = remote({"studies", "resume", id}, loggedIn());
+    EXPECT_EQ(again.exitCode, 1);
+    EXPECT_NE(again.err.find("error: conflict: the study is done"), std::string::npos) << again.err;
+    EXPECT_EQ(remote({"studies", "resume", "x"}, loggedIn()).exitCode, 2);
+    EXPECT_EQ(remote({"studies", "pause", id}, loggedIn()).exitCode, 2);
 }
 
 TEST_F(RemoteCli, ResultsWritesAJobsCsvWhole)

@@ -72,6 +72,7 @@ const std::map<std::string, RouteCase>& routeCases()
         {"GET /studies", {Case::Own, "lists the caller's studies"}},
         {"GET /studies/{id}", {Case::Foreign, ""}},
         {"DELETE /studies/{id}", {Case::Foreign, ""}},
+        {"POST /studies/{id}/resume", {Case::Foreign, ""}},
         {"GET /studies/{id}/results", {Case::Foreign, ""}},
         {"GET /studies/{id}/runs/{index}/results", {Case::Foreign, ""}},
         {"GET /studies/{id}/bands", {Case::Foreign, ""}},

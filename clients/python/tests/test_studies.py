@@ -131,6 +131,23 @@ class Waiting(unittest.TestCase):
         self.assertEqual(caught.exception.state, "cancelled")
         self.assertLess(len(study.table().rows), 400)
 
+    def test_a_cancelled_study_resumes_and_runs_only_what_it_lacks(self):
+        study = self.sweep(400, stop=3)
+        study.cancel()
+        with self.assertRaises(tlmhub.SimulationFailed):
+            study.wait(timeout=60)
+        kept = study.info["runs_done"]
+        self.assertLess(kept, 400)
+        study.resume()
+        self.assertIn(study.state, ("queued", "running"))
+        study.wait(timeout=120)
+        self.assertEqual((study.state, study.info["runs_done"]), ("done", 400))
+        self.assertEqual(study.summary.get("runs_reused", 0), kept)
+        self.assertEqual(sorted(row[0] for row in study.table().rows), list(range(400)))
+        with self.assertRaises(tlmhub.ApiError) as caught:   # a finished study does not resume
+            study.resume()
+        self.assertEqual(caught.exception.status, 409)
+
     def test_a_bad_request_is_an_api_error(self):
         with self.assertRaises(tlmhub.ApiError) as caught:   # list mode needs equal lengths
             self.client.sweep(self.model, parameters={"GainP.k": [0.01, 0.02], "GainI.k": [0.0]},

@@ -139,6 +139,13 @@ class Study:
             self.info["state"] = reply["state"]
         return self
 
+    def resume(self) -> "Study":
+        """Queues an interrupted or cancelled study again: it runs only the runs it lacks
+        (an optimisation walks on from its stored runs, to the trace an uninterrupted one with
+        the same seed gives). `wait()` for it. Any other state is refused (409)."""
+        self.info = self._client._transport.json("POST", f"/studies/{self.id}/resume", json_body={})
+        return self
+
     def delete(self) -> None:
         """Deletes a finished study with its runs."""
         self._client._transport.request("DELETE", f"/studies/{self.id}")
