@@ -95,7 +95,6 @@ http::status submitErrorStatus(const std::string& code)
     if (code == "not_found") return http::status::not_found;
     if (code == "locked") return http::status::forbidden;
     if (code == "conflict") return http::status::conflict;
-    if (code == "internal") return http::status::internal_server_error;
     return http::status::bad_request;
 }
 
