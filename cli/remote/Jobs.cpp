@@ -52,7 +52,7 @@ int results(const std::vector<std::string>& argv)
     if (args.has("variables")) path += "&variables=" + percentEncode(args.value("variables"));
     ApiClient api = connectWithCredentials();
     const std::string csv = api.getText(path);
-    if (args.has("csv")) writeFile(args.value("csv"), csv);
+    if (args.has("csv") && args.value("csv") != "-") writeFile(args.value("csv"), csv);
     else writeStandardOutput(csv);
     return 0;
 }

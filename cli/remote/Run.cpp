@@ -31,11 +31,15 @@ int run(const std::vector<std::string>& argv)
         return 1;
     }
     const std::string csv = args.value("csv");
-    if (!csv.empty()) writeFile(csv, api.getText(path + "/results?format=csv"));
+    // --csv -: the result on standard output, the report on standard error.
+    const bool onStandardOutput = csv == "-";
+    if (onStandardOutput) writeStandardOutput(api.getText(path + "/results?format=csv"));
+    else if (!csv.empty()) writeFile(csv, api.getText(path + "/results?format=csv"));
     const nlohmann::json settings = info.contains("settings") ? info["settings"] : nlohmann::json();
-    std::printf("ok: %s: job %lld (model %lld), %lld steps, t=[%g, %g]%s%s\n", model.c_str(), id, modelId,
-                field(info, "steps", 0LL), field(settings, "start", 0.0), field(settings, "stop", 0.0),
-                csv.empty() ? "" : ", csv ", csv.c_str());
+    std::fprintf(onStandardOutput ? stderr : stdout, "ok: %s: job %lld (model %lld), %lld steps, t=[%g, %g]%s%s\n",
+                 model.c_str(), id, modelId, field(info, "steps", 0LL), field(settings, "start", 0.0),
+                 field(settings, "stop", 0.0), csv.empty() ? "" : ", csv ",
+                 onStandardOutput ? "on standard output" : csv.c_str());
     return 0;
 }
 

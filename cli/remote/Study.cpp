@@ -5,13 +5,16 @@
 #include "cli/remote/Session.h"
 #include "cli/remote/StudyRequest.h"
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 namespace tlmhub::cli::remote {
 
 namespace {
+
+// `--csv -`: the table on standard output, as a Unix tool takes "-".
+const std::string kStandardOutput = "-";
 
 std::string modelName(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
@@ -52,9 +55,9 @@ int sweep(const std::vector<std::string>& argv)
     ApiClient api = connectWithCredentials();
     const std::optional<nlohmann::json> info = runStudy(api, model, request);
     if (!info) return 1;
-    // Without --csv the table is the output, for a pipe.
+    // Without --csv (or with --csv -) the table is the output, for a pipe.
     const std::string csv = args.value("csv");
-    if (csv.empty()) {
+    if (csv.empty() || csv == kStandardOutput) {
         writeStandardOutput(table(api, *info));
         return 0;
     }
@@ -75,19 +78,26 @@ int optimise(const std::vector<std::string>& argv)
     const std::optional<nlohmann::json> info = runStudy(api, model, request);
     if (!info) return 1;
     const std::string csv = args.value("csv");
-    if (!csv.empty()) writeFile(csv, table(api, *info));
+    // With --csv - the table is the standard output, and the report goes to standard error.
+    const bool tableOnStandardOutput = csv == kStandardOutput;
+    std::FILE* report = tableOnStandardOutput ? stderr : stdout;
+    if (tableOnStandardOutput) writeStandardOutput(table(api, *info));
+    else if (!csv.empty()) writeFile(csv, table(api, *info));
     const nlohmann::json summary = info->contains("summary") ? info->at("summary") : nlohmann::json();
-    std::printf("ok: %s: study %lld, %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
-                describeRuns(*info).c_str(), csv.empty() ? "" : ", table ", csv.c_str());
+    std::fprintf(report, "ok: %s: study %lld, %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
+                 describeRuns(*info).c_str(), csv.empty() ? "" : ", table ",
+                 tableOnStandardOutput ? "on standard output" : csv.c_str());
     if (!summary.is_object() || !summary.contains("best")) {
         std::fprintf(stderr, "error: the study reports no best point\n");
         return 1;
     }
     const nlohmann::json& best = summary.at("best");
-    std::printf("best: run %lld, objective %.17g\n", field(best, "run", -1LL), field(best, "objective", NAN));
+    // %.17g of the JSON's double: the digits read back to the same bits.
+    std::fprintf(report, "best: run %lld, objective %.17g\n", field(best, "run", -1LL),
+                 field(best, "objective", std::numeric_limits<double>::quiet_NaN()));
     if (best.contains("parameters") && best["parameters"].is_object())
         for (const auto& [name, value] : best["parameters"].items())
-            std::printf("  %s = %s\n", name.c_str(), value.dump().c_str());
+            std::fprintf(report, "  %s = %s\n", name.c_str(), value.dump().c_str());
     return 0;
 }
 

@@ -429,5 +429,35 @@ TEST_F(RemoteCli, OptimisePrintsTheBestPoint)
     EXPECT_EQ(csv.substr(0, csv.find('\n')), "run,ok,pump_flow,objective");
 }
 
+// `--csv -` puts the table alone on standard output (the report goes to standard error), and
+// the best objective printed reads back to the bits of the study's JSON.
+TEST_F(RemoteCli, CsvDashPipesTheTableAndTheBestObjectiveIsPrintedExactly)
+{
+    const CliResult optimise =
+        remote({"optimise", kModel, "--bound", "pump_flow=5e-5:2e-4", "--objective", "final:ChamberPressure#P1#Pressure",
+                "--algorithm", "nelder-mead", "--max-evaluations", "20", "--seed", "1", "--csv", "-"},
+               loggedIn());
+    ASSERT_EQ(optimise.exitCode, 0) << optimise.err;
+    EXPECT_EQ(optimise.out.rfind("run,ok,pump_flow,objective\n", 0), 0u) << optimise.out;
+    EXPECT_FALSE(std::filesystem::exists("-")) << "a file named '-' was written";
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(optimise.err, m, std::regex("study ([0-9]+),.*\nbest: run [0-9]+, objective ([^\n]+)\n")))
+        << optimise.err;
+    const auto study = mAdmin->get("/api/v1/studies/" + m[1].str()).json();
+    EXPECT_EQ(std::strtod(m[2].str().c_str(), nullptr), study["summary"]["best"]["objective"].get<double>()) << m[2];
+    EXPECT_EQ(std::count(optimise.out.begin(), optimise.out.end(), '\n'), 21) << "header and 20 runs only";
+
+    const CliResult sweep = remote({"sweep", kModel, "--vary", "pump_flow=1e-4,2e-4", "--csv", "-"}, loggedIn());
+    ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+    EXPECT_EQ(sweep.out, "run,ok,pump_flow\n0,1,0.0001\n1,1,0.00020000000000000001\n");
+
+    const CliResult run = remote({"run", kModel, "--csv", "-"}, loggedIn());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("\nok: "), std::string::npos) << run.err;   // after the progress lines
+    std::smatch job;
+    ASSERT_TRUE(std::regex_search(run.err, job, std::regex("job ([0-9]+) "))) << run.err;
+    EXPECT_EQ(run.out, mAdmin->get("/api/v1/jobs/" + job[1].str() + "/results?format=csv").body);
+}
+
 } // namespace
 } // namespace tlmhub::test
