@@ -47,7 +47,8 @@ std::string describeRuns(const nlohmann::json& info)
 
 int sweep(const std::vector<std::string>& argv)
 {
-    const Arguments args(argv, {"mode", "csv"}, {"vary", "output"}, {"full"});
+    const Arguments args(argv, {"mode", "csv", "samples", "seed", "start", "step", "stop"}, {"vary", "output", "param"},
+                         {"full"});
     if (args.positional().size() != 1) throw UsageError("sweep needs one model file");
     const std::string& model = args.positional()[0];
     const nlohmann::json request = sweepRequest(modelName(model), args);
@@ -69,7 +70,8 @@ int sweep(const std::vector<std::string>& argv)
 
 int optimise(const std::vector<std::string>& argv)
 {
-    const Arguments args(argv, {"algorithm", "max-evaluations", "seed", "csv"}, {"bound", "objective"}, {"maximise"});
+    const Arguments args(argv, {"algorithm", "max-evaluations", "seed", "tolerance", "csv", "start", "step", "stop"},
+                         {"bound", "objective", "param"}, {"maximise"});
     if (args.positional().size() != 1) throw UsageError("optimise needs one model file");
     const std::string& model = args.positional()[0];
     const nlohmann::json request = optimiseRequest(modelName(model), args);

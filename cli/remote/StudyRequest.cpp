@@ -41,10 +41,13 @@ nlohmann::json numberOrText(const std::string& text)
     return value ? nlohmann::json(*value) : nlohmann::json(text);
 }
 
-nlohmann::json sweepValues(const std::string& text, const std::string& whole)
+// A random sweep samples `from:to` (its steps are not needed).
+nlohmann::json sweepValues(const std::string& text, const std::string& whole, bool random)
 {
     if (text.find(':') != std::string::npos) {
         const std::vector<std::string> range = split(text, ':');
+        if (random && range.size() == 2)
+            return {{"from", number("vary", range[0], whole)}, {"to", number("vary", range[1], whole)}};
         const std::optional<double> steps = range.size() == 3 ? parseNumber(range[2]) : std::nullopt;
         if (!steps || *steps < 1 || *steps != std::floor(*steps))
             throw UsageError("--vary needs Comp.P=from:to:steps with a whole number of steps, got '" + whole + "'");
@@ -105,11 +108,24 @@ nlohmann::json objectiveTerm(const std::string& text)
 
 long long wholeNumber(const Arguments& args, const std::string& option, double least)
 {
-    const double value = *args.number(option);
-    if (value < least || value != std::floor(value) || value > 1e15)
+    const double value = args.number(option).value_or(NAN);
+    if (!(value >= least) || value != std::floor(value) || value > 1e15)
         throw UsageError("--" + option + " needs a whole number" + (least > 0 ? " of at least 1" : "") + ", got '" +
                          args.value(option) + "'");
     return static_cast<long long>(value);
+}
+
+// What every study takes as a job does: fixed parameters and the simulation times.
+void addRunSettings(nlohmann::json& request, const Arguments& args)
+{
+    if (!args.values("param").empty()) request["parameters"] = parameterValues(args.values("param"));
+    for (const char* setting : {"start", "step", "stop"}) {
+        if (!args.has(setting)) continue;
+        const std::optional<double> value = args.number(setting);
+        if (!value || !std::isfinite(*value))
+            throw UsageError(std::string("--") + setting + " needs a number, got '" + args.value(setting) + "'");
+        request[setting] = *value;
+    }
 }
 
 } // namespace
@@ -128,16 +144,23 @@ nlohmann::json sweepRequest(const std::string& name, const Arguments& args)
 {
     if (args.values("vary").empty()) throw UsageError("sweep needs at least one --vary");
     const std::string mode = args.has("mode") ? args.value("mode") : "grid";
-    if (mode != "grid" && mode != "list") throw UsageError("--mode is grid or list, got '" + mode + "'");
+    if (mode != "grid" && mode != "list" && mode != "random")
+        throw UsageError("--mode is grid, list or random, got '" + mode + "'");
+    const bool random = mode == "random";
+    if (random != args.has("samples")) throw UsageError("--samples N goes with --mode random, and only with it");
+    if (args.has("seed") && !random) throw UsageError("--seed goes with --mode random (or optimise)");
     nlohmann::json parameters = nlohmann::json::object();
     for (const std::string& vary : args.values("vary")) {
         const auto [parameter, values] = assignment("vary", vary, "Comp.P=from:to:steps or Comp.P=v1,v2,...");
         if (parameters.contains(parameter)) throw UsageError("--vary: " + parameter + " is varied twice");
-        parameters[parameter] = sweepValues(values, vary);
+        parameters[parameter] = sweepValues(values, vary, random);
     }
     nlohmann::json request = {{"kind", "sweep"}, {"name", name}};
+    addRunSettings(request, args);
     if (nlohmann::json out = outputs(args); !out.empty()) request["outputs"] = out;
     request["sweep"] = {{"mode", mode}, {"parameters", parameters}};
+    if (random) request["sweep"]["samples"] = wholeNumber(args, "samples", 1);
+    if (args.has("seed")) request["sweep"]["seed"] = wholeNumber(args, "seed", 0);
     return request;
 }
 
@@ -166,7 +189,15 @@ nlohmann::json optimiseRequest(const std::string& name, const Arguments& args)
                                {"objective", {{"goal", goal}, {"terms", terms}}}};
     if (args.has("max-evaluations")) optimise["max_evaluations"] = wholeNumber(args, "max-evaluations", 1);
     if (args.has("seed")) optimise["seed"] = wholeNumber(args, "seed", 0);
-    return {{"kind", "optimise"}, {"name", name}, {"optimise", optimise}};
+    if (args.has("tolerance")) {
+        const std::optional<double> tolerance = args.number("tolerance");
+        if (!tolerance || !(*tolerance > 0) || !std::isfinite(*tolerance))
+            throw UsageError("--tolerance needs a positive number, got '" + args.value("tolerance") + "'");
+        optimise["tolerance"] = *tolerance;
+    }
+    nlohmann::json request = {{"kind", "optimise"}, {"name", name}, {"optimise", optimise}};
+    addRunSettings(request, args);
+    return request;
 }
 
 } // namespace tlmhub::cli::remote

@@ -19,10 +19,13 @@ nlohmann::json parameterValues(const std::vector<std::string>& assignments);
 // The study requests leave out "model_id": the caller adds it once the options have been
 // checked and the model is uploaded.
 
-// --vary "Comp.P=1:5:10" -> {"from": 1, "to": 5, "steps": 10}; "Comp.P=1,2,3" -> [1, 2, 3].
+// Both take --param Comp.P=value (fixed for every run) and --start/--step/--stop.
+// --vary "Comp.P=1:5:10" -> {"from": 1, "to": 5, "steps": 10}; "Comp.P=1,2,3" -> [1, 2, 3];
+// --mode random --samples N [--seed S] samples --vary "Comp.P=from:to".
 nlohmann::json sweepRequest(const std::string& name, const Arguments& args);
 
-// --bound "Comp.P=min:max", --objective "FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT]".
+// --bound "Comp.P=min:max", --objective "FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT]",
+// --algorithm, --maximise, --max-evaluations, --seed, --tolerance.
 nlohmann::json optimiseRequest(const std::string& name, const Arguments& args);
 
 } // namespace tlmhub::cli::remote

@@ -171,6 +171,59 @@ TEST_F(RemoteCli, StudiesListsTheCallersStudiesAndResumesACancelledOne)
     EXPECT_EQ(remote({"studies", "pause", id}, loggedIn()).exitCode, 2);
 }
 
+// A sweep takes what a run takes (--param, --stop): its one run's final pressure is the one a
+// `remote run` with the same parameters and stop time ends with. A random sweep samples its
+// range --samples times, the same values for the same --seed.
+TEST_F(RemoteCli, StudiesTakeParametersTimesAndRandomSamples)
+{
+    const std::string pressure = "ChamberPressure#P1#Pressure";
+    const CliResult sweep = remote({"sweep", kModel, "--vary", "pump_flow=1.5e-4", "--mode", "list", "--param",
+                                    "relief_pressure=5e6", "--stop", "1", "--output", pressure + ":final", "--csv", "-"},
+                                   loggedIn());
+    ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+    const std::string row = sweep.out.substr(sweep.out.find('\n') + 1);
+    const double swept = std::strtod(row.substr(row.rfind(',') + 1).c_str(), nullptr);
+    const CliResult run = remote({"run", kModel, "--param", "pump_flow=1.5e-4", "--param", "relief_pressure=5e6",
+                                  "--stop", "1", "--csv", "-"},
+                                 loggedIn());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    // The run's last row, in the column of the pressure.
+    const auto cellsOf = [](const std::string& text) {
+        std::vector<std::string> cells;
+        std::istringstream in(text);
+        for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+        return cells;
+    };
+    const std::string header = run.out.substr(0, run.out.find('\n'));
+    const std::string trimmed = run.out.substr(0, run.out.size() - 1);
+    const std::vector<std::string> names = cellsOf(header), last = cellsOf(trimmed.substr(trimmed.rfind('\n') + 1));
+    const auto column = std::find(names.begin(), names.end(), pressure) - names.begin();
+    ASSERT_LT(static_cast<std::size_t>(column), last.size()) << header;
+    EXPECT_NEAR(std::strtod(last[0].c_str(), nullptr), 1.0, 1e-9) << "the run stops at 1 s";
+    EXPECT_EQ(swept, std::strtod(last[column].c_str(), nullptr)) << "sweep row " << row;
+
+    const std::vector<std::string> random = {"sweep", kModel, "--mode", "random", "--samples", "5", "--seed", "3",
+                                             "--vary", "pump_flow=1e-4:2e-4", "--stop", "0.1", "--csv", "-"};
+    const CliResult first = remote(random, loggedIn()), second = remote(random, loggedIn());
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    EXPECT_EQ(std::count(first.out.begin(), first.out.end(), '\n'), 6) << first.out;
+    EXPECT_EQ(first.out, second.out) << "the same seed samples the same values";
+    std::istringstream rows(first.out);
+    std::string line;
+    std::getline(rows, line);
+    while (std::getline(rows, line)) {
+        const double value = std::strtod(line.substr(line.rfind(',') + 1).c_str(), nullptr);
+        EXPECT_TRUE(value >= 1e-4 && value <= 2e-4) << line;
+    }
+    for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+             {"sweep", kModel, "--mode", "random", "--vary", "pump_flow=1:2"},
+             {"sweep", kModel, "--vary", "pump_flow=1,2", "--samples", "3"},
+             {"sweep", kModel, "--vary", "pump_flow=1,2", "--stop", "x"},
+             {"optimise", kModel, "--bound", "pump_flow=1:2", "--objective", "final:Volume#P1#p", "--tolerance", "0"},
+             {"optimise", kModel, "--bound", "pump_flow=1:2", "--objective", "final:Volume#P1#p", "--max-evaluations", "x"}})
+        EXPECT_EQ(remote(bad, loggedIn()).exitCode, 2) << bad.back();
+}
+
 TEST_F(RemoteCli, ResultsWritesAJobsCsvWhole)
 {
     const CliResult run = remote({"run", kModel}, loggedIn());
