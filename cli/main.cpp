@@ -21,7 +21,7 @@ void usage(std::ostream& os)
           "  tlmhub-cli bench MODEL.hmf [--repeat K] [--threads N|auto[,...]] [--vary Comp.param=a:b:n]\n"
           "  tlmhub-cli batch MODEL.hmf [MODEL.hmf ...] [--copies K] [--threads N]\n"
           "  tlmhub-cli fmu MODEL.hmf -o OUT.fmu [--parameter Comp.param]... [--identifier NAME]\n"
-          "  tlmhub-cli remote login|run|sweep|optimise|jobs|results|studies ...   (tlmhub-cli remote --help)\n";
+          "  tlmhub-cli remote login|run|sweep|sensitivity|optimise|jobs|results|studies ...   (tlmhub-cli remote --help)\n";
 }
 
 } // namespace

@@ -50,6 +50,11 @@ nlohmann::json ApiClient::post(const std::string& path, const nlohmann::json& bo
     return parse(call(HttpMethod::Post, path, body.dump(), "application/json"), path);
 }
 
+nlohmann::json ApiClient::del(const std::string& path)
+{
+    return parse(call(HttpMethod::Delete, path, "", ""), path);
+}
+
 nlohmann::json ApiClient::postXml(const std::string& path, const std::string& xml)
 {
     return parse(call(HttpMethod::Post, path, xml, "application/xml"), path);

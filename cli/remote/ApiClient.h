@@ -43,6 +43,7 @@ public:
     nlohmann::json get(const std::string& path);
     nlohmann::json post(const std::string& path, const nlohmann::json& body);
     nlohmann::json postXml(const std::string& path, const std::string& xml);
+    nlohmann::json del(const std::string& path);
     // The body as it came (CSV), byte for byte.
     std::string getText(const std::string& path);
 

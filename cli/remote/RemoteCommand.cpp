@@ -21,6 +21,9 @@ void remoteUsage(std::ostream& os)
           "                          | --mode random --samples N [--seed S] --vary Comp.P=from:to\n"
           "                          [--output VARIABLE:final,max,...]... [--full] [--csv TABLE.csv|-]\n"
           "                          [--param Comp.P=value]... [--start S --step H --stop T]\n"
+          "  tlmhub-cli remote sensitivity MODEL.hmf --runs N --distribution Comp.P=normal:MEAN:SD|uniform:MIN:MAX...\n"
+          "                          --output VARIABLE:final,max,... [--seed S] [--full] [--csv TABLE.csv|-]\n"
+          "                          [--bands BANDS.csv] [--param Comp.P=value]... [--start S --step H --stop T]\n"
           "  tlmhub-cli remote optimise MODEL.hmf --bound Comp.P=min:max... "
           "--objective FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT]...\n"
           "                          [--algorithm complex-rf|nelder-mead|particle-swarm] [--maximise]\n"
@@ -28,7 +31,7 @@ void remoteUsage(std::ostream& os)
           "                          [--param Comp.P=value]... [--start S --step H --stop T]\n"
           "  tlmhub-cli remote jobs\n"
           "  tlmhub-cli remote results JOB_ID [--csv OUT.csv] [--variables a,b]\n"
-          "  tlmhub-cli remote studies list | resume STUDY_ID\n"
+          "  tlmhub-cli remote studies list | show ID | cancel ID | resume ID | results ID [--csv TABLE.csv|-]\n"
           "The server and token come from 'remote login' ($XDG_CONFIG_HOME/tlmhub/credentials or\n"
           "~/.config/tlmhub/credentials), or TLMHUB_URL and TLMHUB_TOKEN.\n";
 }
@@ -38,6 +41,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& args)
     if (command == "login") return remote::login(args);
     if (command == "run") return remote::run(args);
     if (command == "sweep") return remote::sweep(args);
+    if (command == "sensitivity") return remote::sensitivity(args);
     if (command == "optimise") return remote::optimise(args);
     if (command == "jobs") return remote::jobs(args);
     if (command == "results") return remote::results(args);

@@ -9,6 +9,7 @@ namespace tlmhub::cli::remote {
 int login(const std::vector<std::string>& args);
 int run(const std::vector<std::string>& args);
 int sweep(const std::vector<std::string>& args);
+int sensitivity(const std::vector<std::string>& args);
 int optimise(const std::vector<std::string>& args);
 int jobs(const std::vector<std::string>& args);
 int results(const std::vector<std::string>& args);

@@ -1,4 +1,4 @@
-// remote sweep and remote optimise: upload the model, submit the study, wait, and fetch its
+// remote sweep, sensitivity and optimise: upload the model, submit the study, wait, and fetch its
 // table (one row per run).
 #include "cli/remote/Arguments.h"
 #include "cli/remote/RemoteCommands.h"
@@ -65,6 +65,31 @@ int sweep(const std::vector<std::string>& argv)
     writeFile(csv, table(api, *info));
     std::printf("ok: %s: study %lld, %s, table %s\n", model.c_str(), info->at("id").get<long long>(),
                 describeRuns(*info).c_str(), csv.c_str());
+    return 0;
+}
+
+int sensitivity(const std::vector<std::string>& argv)
+{
+    const Arguments args(argv, {"runs", "seed", "csv", "bands", "start", "step", "stop"},
+                         {"distribution", "output", "param"}, {"full"});
+    if (args.positional().size() != 1) throw UsageError("sensitivity needs one model file");
+    const std::string& model = args.positional()[0];
+    const nlohmann::json request = sensitivityRequest(modelName(model), args);
+
+    ApiClient api = connectWithCredentials();
+    const std::optional<nlohmann::json> info = runStudy(api, model, request);
+    if (!info) return 1;
+    const std::string path = "/studies/" + std::to_string(info->at("id").get<long long>());
+    if (args.has("bands")) writeFile(args.value("bands"), api.getText(path + "/bands?format=csv"));
+    const std::string csv = args.value("csv");
+    if (csv.empty() || csv == kStandardOutput) {
+        writeStandardOutput(table(api, *info));
+        return 0;
+    }
+    writeFile(csv, table(api, *info));
+    std::printf("ok: %s: study %lld, %s, table %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
+                describeRuns(*info).c_str(), csv.c_str(), args.has("bands") ? ", bands " : "",
+                args.value("bands").c_str());
     return 0;
 }
 

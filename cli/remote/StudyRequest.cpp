@@ -164,6 +164,31 @@ nlohmann::json sweepRequest(const std::string& name, const Arguments& args)
     return request;
 }
 
+nlohmann::json sensitivityRequest(const std::string& name, const Arguments& args)
+{
+    if (args.values("distribution").empty()) throw UsageError("sensitivity needs at least one --distribution");
+    if (args.values("output").empty()) throw UsageError("sensitivity needs at least one --output");
+    if (!args.has("runs")) throw UsageError("sensitivity needs --runs N");
+    nlohmann::json parameters = nlohmann::json::object();
+    for (const std::string& text : args.values("distribution")) {
+        const char* form = "Comp.P=normal:MEAN:SD or Comp.P=uniform:MIN:MAX";
+        const auto [parameter, spec] = assignment("distribution", text, form);
+        const std::vector<std::string> parts = split(spec, ':');
+        if (parts.size() != 3 || (parts[0] != "normal" && parts[0] != "uniform"))
+            throw UsageError(std::string("--distribution needs ") + form + ", got '" + text + "'");
+        if (parameters.contains(parameter)) throw UsageError("--distribution: " + parameter + " is given twice");
+        const double a = number("distribution", parts[1], text), b = number("distribution", parts[2], text);
+        parameters[parameter] = parts[0] == "normal" ? nlohmann::json{{"distribution", "normal"}, {"mean", a}, {"sd", b}}
+                                                     : nlohmann::json{{"distribution", "uniform"}, {"min", a}, {"max", b}};
+    }
+    nlohmann::json request = {{"kind", "sensitivity"}, {"name", name}};
+    addRunSettings(request, args);
+    request["outputs"] = outputs(args);
+    request["sensitivity"] = {{"runs", wholeNumber(args, "runs", 1)}, {"parameters", parameters}};
+    if (args.has("seed")) request["sensitivity"]["seed"] = wholeNumber(args, "seed", 0);
+    return request;
+}
+
 nlohmann::json optimiseRequest(const std::string& name, const Arguments& args)
 {
     if (args.values("bound").empty()) throw UsageError("optimise needs at least one --bound");

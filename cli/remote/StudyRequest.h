@@ -24,6 +24,10 @@ nlohmann::json parameterValues(const std::vector<std::string>& assignments);
 // --mode random --samples N [--seed S] samples --vary "Comp.P=from:to".
 nlohmann::json sweepRequest(const std::string& name, const Arguments& args);
 
+// --distribution "Comp.P=normal:MEAN:SD" or "Comp.P=uniform:MIN:MAX", --runs N, --seed S,
+// --output as a sweep's (at least one).
+nlohmann::json sensitivityRequest(const std::string& name, const Arguments& args);
+
 // --bound "Comp.P=min:max", --objective "FUNCTION:VARIABLE[:REFERENCE_VARIABLE][*WEIGHT]",
 // --algorithm, --maximise, --max-evaluations, --seed, --tolerance.
 nlohmann::json optimiseRequest(const std::string& name, const Arguments& args);

@@ -224,6 +224,61 @@ TEST_F(RemoteCli, StudiesTakeParametersTimesAndRandomSamples)
         EXPECT_EQ(remote(bad, loggedIn()).exitCode, 2) << bad.back();
 }
 
+// studies show, cancel and results act on one study by id, as the REST API does.
+TEST_F(RemoteCli, StudiesShowCancelAndFetchTheResultsOfOneStudy)
+{
+    const auto submitted = mAdmin->post("/api/v1/studies", {{"kind", "sweep"}, {"hmf", readFile(kModel)}, {"stop", 2},
+                                                            {"sweep", {{"parameters", {{"pump_flow", {{"from", 1e-4}, {"to", 2e-4}, {"steps", 2000}}}}}}}});
+    ASSERT_EQ(submitted.status, 201) << submitted.body;
+    const std::string id = std::to_string(submitted.json()["id"].get<long long>());
+    const CliResult cancel = remote({"studies", "cancel", id}, loggedIn());
+    ASSERT_EQ(cancel.exitCode, 0) << cancel.err;
+    EXPECT_TRUE(std::regex_match(cancel.out, std::regex("studies/" + id + " (cancelled|cancelling)\n"))) << cancel.out;
+    nlohmann::json study;
+    for (int i = 0; i < 3000 && (study = mAdmin->get("/api/v1/studies/" + id).json())["state"] != "cancelled"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_EQ(study["state"], "cancelled");
+
+    const CliResult again = remote({"studies", "cancel", id}, loggedIn());
+    EXPECT_EQ(again.exitCode, 1);
+    EXPECT_NE(again.err.find("the study is cancelled"), std::string::npos) << again.err;
+    EXPECT_EQ(mAdmin->get("/api/v1/studies/" + id).status, 200) << "a second cancel must not delete it";
+
+    const CliResult show = remote({"studies", "show", id}, loggedIn());
+    ASSERT_EQ(show.exitCode, 0) << show.err;
+    EXPECT_EQ(nlohmann::json::parse(show.out)["state"], "cancelled") << show.out;
+    const CliResult results = remote({"studies", "results", id}, loggedIn());
+    ASSERT_EQ(results.exitCode, 0) << results.err;
+    EXPECT_EQ(results.out, mAdmin->get("/api/v1/studies/" + id + "/results?format=csv").body);
+    EXPECT_EQ(remote({"studies", "show"}, loggedIn()).exitCode, 2);
+    EXPECT_EQ(remote({"studies", "show", "999999"}, loggedIn()).exitCode, 1);
+}
+
+// remote sensitivity: the study's table, and its bands as the server's CSV.
+TEST_F(RemoteCli, SensitivityWritesItsTableAndBands)
+{
+    const auto table = mDir / "sensitivity.csv", bands = mDir / "bands.csv";
+    const CliResult sensitivity =
+        remote({"sensitivity", kModel, "--runs", "8", "--distribution", "pump_flow=uniform:1e-4:2e-4", "--seed", "2",
+                "--output", "ChamberPressure#P1#Pressure:final", "--stop", "0.5", "--csv", table.string(), "--bands",
+                bands.string()},
+               loggedIn());
+    ASSERT_EQ(sensitivity.exitCode, 0) << sensitivity.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(sensitivity.out, m, std::regex("^ok: .*: study ([0-9]+), 8 runs, 0 failed, table ")))
+        << sensitivity.out;
+    const std::string csv = readFile(table);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9) << csv;
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "run,ok,pump_flow,ChamberPressure#P1#Pressure:final");
+    EXPECT_EQ(readFile(bands), mAdmin->get("/api/v1/studies/" + m[1].str() + "/bands?format=csv").body);
+    for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+             {"sensitivity", kModel, "--distribution", "pump_flow=uniform:1:2", "--output", "V#P1#p:final"},
+             {"sensitivity", kModel, "--runs", "8", "--output", "V#P1#p:final"},
+             {"sensitivity", kModel, "--runs", "8", "--distribution", "pump_flow=gamma:1:2", "--output", "V#P1#p:final"},
+             {"sensitivity", kModel, "--runs", "8", "--distribution", "pump_flow=normal:1:2"}})
+        EXPECT_EQ(remote(bad, loggedIn()).exitCode, 2) << bad[3];
+}
+
 TEST_F(RemoteCli, ResultsWritesAJobsCsvWhole)
 {
     const CliResult run = remote({"run", kModel}, loggedIn());
