@@ -32,6 +32,7 @@ void remoteUsage(std::ostream& os)
           "  tlmhub-cli remote jobs\n"
           "  tlmhub-cli remote results JOB_ID [--csv OUT.csv] [--variables a,b]\n"
           "  tlmhub-cli remote studies list | show ID | cancel ID | resume ID | results ID [--csv TABLE.csv|-]\n"
+          "MODEL.hmf is a file, uploaded as a model named after it, or a stored model's id (nothing uploaded).\n"
           "The server and token come from 'remote login' ($XDG_CONFIG_HOME/tlmhub/credentials or\n"
           "~/.config/tlmhub/credentials), or TLMHUB_URL and TLMHUB_TOKEN.\n";
 }

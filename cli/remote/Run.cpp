@@ -19,7 +19,7 @@ int run(const std::vector<std::string>& argv)
         if (const std::optional<double> value = args.number(setting)) job[setting] = *value;
 
     ApiClient api = connectWithCredentials();
-    const long long modelId = uploadModel(api, model);
+    const long long modelId = remote::modelId(api, model);
     job["model_id"] = modelId;
     const long long id = api.post("/jobs", job).at("id").get<long long>();
     const std::string path = "/jobs/" + std::to_string(id);

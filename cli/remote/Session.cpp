@@ -23,6 +23,8 @@ ApiClient connectWithCredentials()
     return ApiClient(*url, credentials->token);
 }
 
+namespace {
+
 long long uploadModel(ApiClient& api, const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -31,6 +33,15 @@ long long uploadModel(ApiClient& api, const std::string& path)
     const std::string name = std::filesystem::path(path).stem().string();
     const nlohmann::json model = api.postXml("/models?name=" + percentEncode(name), text.str());
     return model.at("id").get<long long>();
+}
+
+} // namespace
+
+long long modelId(ApiClient& api, const std::string& model)
+{
+    const bool digits = !model.empty() && model.find_first_not_of("0123456789") == std::string::npos;
+    if (digits && !std::filesystem::exists(model)) return api.get("/models/" + model).at("id").get<long long>();
+    return uploadModel(api, model);
 }
 
 nlohmann::json waitUntilFinished(ApiClient& api, const std::string& path, const std::string& label)

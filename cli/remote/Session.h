@@ -11,8 +11,10 @@ namespace tlmhub::cli::remote {
 // A client for the server and token of loadCredentials(); throws when there are none.
 ApiClient connectWithCredentials();
 
-// Uploads the .hmf file as a model named after the file (its stem); returns the model id.
-long long uploadModel(ApiClient& api, const std::string& path);
+// The model a command names: a stored model's id (digits that name no file; 404 when the
+// caller has no such model), or an .hmf file, uploaded as a model named after the file (its
+// stem). Returns the model id.
+long long modelId(ApiClient& api, const std::string& model);
 
 // Polls `path` (a JobInfo or StudyInfo) until its state is final (done, failed, cancelled,
 // interrupted), showing the progress as `label`; returns the last answer.

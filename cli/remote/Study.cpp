@@ -22,7 +22,7 @@ std::string modelName(const std::string& path) { return std::filesystem::path(pa
 // reporting a study that did not finish.
 std::optional<nlohmann::json> runStudy(ApiClient& api, const std::string& model, nlohmann::json request)
 {
-    request["model_id"] = uploadModel(api, model);
+    request["model_id"] = modelId(api, model);
     const long long id = api.post("/studies", request).at("id").get<long long>();
     nlohmann::json info = waitUntilFinished(api, "/studies/" + std::to_string(id), "study " + std::to_string(id));
     const std::string state = info.at("state").get<std::string>();

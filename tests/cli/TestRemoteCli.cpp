@@ -279,6 +279,29 @@ TEST_F(RemoteCli, SensitivityWritesItsTableAndBands)
         EXPECT_EQ(remote(bad, loggedIn()).exitCode, 2) << bad[3];
 }
 
+// A stored model is named by its id: nothing is uploaded again, and the run is the same.
+TEST_F(RemoteCli, AModelIdRunsTheStoredModelWithoutAnotherUpload)
+{
+    const CliResult first = remote({"run", kModel, "--csv", "-"}, loggedIn());
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(first.err, m, std::regex("\\(model ([0-9]+)\\)"))) << first.err;
+    const std::string model = m[1].str();
+    const auto models = mAdmin->get("/api/v1/models").json().size();
+
+    const CliResult byId = remote({"run", model, "--csv", "-"}, loggedIn());
+    ASSERT_EQ(byId.exitCode, 0) << byId.err;
+    EXPECT_NE(byId.err.find("(model " + model + ")"), std::string::npos) << byId.err;
+    EXPECT_EQ(byId.out, first.out);
+    const CliResult swept = remote({"sweep", model, "--vary", "pump_flow=1e-4,2e-4", "--csv", "-"}, loggedIn());
+    ASSERT_EQ(swept.exitCode, 0) << swept.err;
+    EXPECT_EQ(mAdmin->get("/api/v1/models").json().size(), models) << "a model id uploads nothing";
+
+    const CliResult missing = remote({"run", "999999"}, loggedIn());
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("not_found"), std::string::npos) << missing.err;
+}
+
 TEST_F(RemoteCli, ResultsWritesAJobsCsvWhole)
 {
     const CliResult run = remote({"run", kModel}, loggedIn());
