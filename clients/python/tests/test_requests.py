@@ -4,6 +4,9 @@ they hold today, before the server has /tokens and /studies. test_tokens and tes
 check the same against the real server."""
 import contextlib
 import io
+import json
+import math
+import numbers
 import unittest
 from unittest import mock
 
@@ -101,6 +104,76 @@ class Requests(unittest.TestCase):
             client.sensitivity(12, parameters={"Mass.m": ("poisson", 1, 2)}, runs=2, outputs=["x"])
         with self.assertRaises(ValueError):
             client.optimise(12, parameters={"Kp.k": (0,)}, objective=[])
+
+
+class Float32:
+    """Stands in for a NumPy scalar (NumPy is optional): a real number json cannot encode."""
+
+    def __init__(self, value):
+        self.value = value
+
+    def __float__(self):
+        return float(self.value)
+
+
+class Int64(Float32):
+    def __int__(self):
+        return int(self.value)
+
+    def __index__(self):
+        return int(self.value)
+
+    def __lt__(self, other):
+        return int(self.value) < other
+
+
+numbers.Real.register(Float32)
+numbers.Integral.register(Int64)
+
+
+class Values(unittest.TestCase):
+    """Values are checked before anything is sent, and a mistake names its parameter."""
+
+    def refused(self, error, words, call):
+        recorder = Recorder()
+        with self.assertRaises(error) as caught:
+            call(client_with(recorder))
+        self.assertIn(words, str(caught.exception))
+        self.assertEqual(recorder.calls, [], "nothing is sent")
+
+    def test_nan_and_infinity_are_refused_naming_the_parameter(self):
+        self.refused(ValueError, "GainP.k", lambda c: c.jobs.submit(12, {"GainP.k": math.nan}))
+        self.refused(ValueError, "GainP.k[1]", lambda c: c.sweep(12, {"GainP.k": [0.1, math.inf]}, wait=False))
+        self.refused(ValueError, "Mass.m sd", lambda c: c.sensitivity(12, {"Mass.m": ("normal", 1, math.nan)},
+                                                                      runs=4, outputs=["x"], wait=False))
+        self.refused(ValueError, "Kp.k max", lambda c: c.optimise(12, {"Kp.k": (0, -math.inf)}, objective=[],
+                                                                  wait=False))
+        self.refused(TypeError, "GainP.k", lambda c: c.jobs.submit(12, {"GainP.k": [1, 2]}))
+
+    def test_times_and_counts_are_checked(self):
+        self.refused(ValueError, "step", lambda c: c.jobs.submit(12, step=0))
+        self.refused(ValueError, "stop", lambda c: c.jobs.submit(12, start=2, stop=1))
+        self.refused(ValueError, "runs", lambda c: c.sensitivity(12, {"Mass.m": ("uniform", 1, 2)}, runs=1,
+                                                                 outputs=["x"], wait=False))
+        self.refused(TypeError, "samples", lambda c: c.sweep(12, {"GainP.k": {"from": 0, "to": 1}}, mode="random",
+                                                             samples=2.5, wait=False))
+        self.refused(ValueError, "min", lambda c: c.optimise(12, {"Kp.k": {"min": 2, "max": 1}}, objective=[],
+                                                             wait=False))
+
+    def test_numpy_scalars_and_bound_dicts_are_sent_as_plain_numbers(self):
+        recorder = Recorder()
+        client = client_with(recorder)
+        client.jobs.submit(12, {"GainP.k": Float32(0.25), "Steps.n": Int64(3), "Expr.x": "2*pi"},
+                           stop=Float32(2.0), log_samples=Int64(100))
+        body = recorder.calls[-1][2]["json_body"]
+        self.assertEqual(body["parameters"], {"GainP.k": 0.25, "Steps.n": 3.0, "Expr.x": "2*pi"})
+        self.assertEqual((body["stop"], body["log_samples"]), (2.0, 100))
+        json.dumps(body)   # what the transport sends
+        client.optimise(12, {"Kp.k": {"min": Float32(0.5), "max": 2}}, objective=[], seed=Int64(4), wait=False)
+        request = recorder.calls[-1][2]["json_body"]
+        self.assertEqual(request["optimise"]["parameters"], {"Kp.k": {"min": 0.5, "max": 2.0}})
+        self.assertEqual(request["optimise"]["seed"], 4)
+        json.dumps(request)
 
 
 class Polling(unittest.TestCase):

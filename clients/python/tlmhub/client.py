@@ -8,7 +8,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Mapping, Sequence, Union
 
-from . import _websocket
+from . import _values, _websocket
 from ._http import Transport
 from .errors import SimulationFailed
 from .results import Result, variables_query
@@ -46,13 +46,6 @@ def model_source(model: ModelRef) -> dict[str, Any]:
         return {"hmf": model}
     with open(model, encoding="utf-8") as hmf:
         return {"hmf": hmf.read()}
-
-
-def _settings(start: float | None, step: float | None, stop: float | None,
-              log_samples: int | None) -> dict[str, Any]:
-    """Simulation settings for a request; absent ones are the model's own."""
-    values = {"start": start, "step": step, "stop": stop, "log_samples": log_samples}
-    return {k: v for k, v in values.items() if v is not None}
 
 
 class Job:
@@ -157,9 +150,9 @@ class Jobs(_Collection):
                start: float | None = None, step: float | None = None,
                stop: float | None = None, log_samples: int | None = None) -> Job:
         """Queues a job (`client.run(..., wait=False)` is the same)."""
-        body = {**model_source(model), **_settings(start, step, stop, log_samples)}
+        body = {**model_source(model), **_values.settings(start, step, stop, log_samples)}
         if parameters:
-            body["parameters"] = dict(parameters)
+            body["parameters"] = _values.parameters(parameters)
         created = self._transport.json("POST", "/jobs", json_body=body)
         return Job(self._client, created)
 
@@ -273,15 +266,14 @@ class Client:
         (the i-th values together) or `random` (`samples` runs, `seed`). Each of `outputs`
         (result variables) gives a table column per `values` entry (`final`, `min`, `max`,
         `mean`); `full=True` keeps each run's whole result (`Study.run_result`)."""
-        swept = {k: v if isinstance(v, Mapping) else [float(x) for x in v]
-                 for k, v in parameters.items()}
+        swept = {k: _values.swept(k, v) for k, v in parameters.items()}
         sweep: dict[str, Any] = {"mode": mode, "parameters": swept}
         if samples is not None:
-            sweep["samples"] = samples
+            sweep["samples"] = _values.whole("samples", samples, 1)
         if seed is not None:
-            sweep["seed"] = seed
+            sweep["seed"] = _values.whole("seed", seed, 0)
         return self._study("sweep", sweep, model, name, fixed, outputs, values, full,
-                           _settings(start, step, stop, log_samples), wait)
+                           _values.settings(start, step, stop, log_samples), wait)
 
     def sensitivity(self, model: ModelRef, parameters: Mapping[str, Any], runs: int,
                     outputs: Sequence[str], seed: int | None = None,
@@ -294,13 +286,14 @@ class Client:
         `("normal", mean, sd)` or `("uniform", min, max)`. Results: `Study.bands()` and the
         correlations in `study.summary["correlations"]`."""
         sensitivity: dict[str, Any] = {
-            "runs": runs, "parameters": {k: _distribution(k, v) for k, v in parameters.items()}}
+            "runs": _values.whole("runs", runs, 2),
+            "parameters": {k: _distribution(k, v) for k, v in parameters.items()}}
         if seed is not None:
-            sensitivity["seed"] = seed
+            sensitivity["seed"] = _values.whole("seed", seed, 0)
         return self._study("sensitivity", sensitivity, model, name, fixed, outputs, values, full,
-                           _settings(start, step, stop, log_samples), wait)
+                           _values.settings(start, step, stop, log_samples), wait)
 
-    def optimise(self, model: ModelRef, parameters: Mapping[str, Sequence[float]],
+    def optimise(self, model: ModelRef, parameters: Mapping[str, Any],
                  objective: Sequence[Mapping[str, Any]], algorithm: str = "complex-rf",
                  goal: str = "minimise", max_evaluations: int = 200, seed: int = 1,
                  tolerance: float | None = None, options: Mapping[str, Any] | None = None,
@@ -309,25 +302,25 @@ class Client:
                  start: float | None = None, step: float | None = None,
                  stop: float | None = None, log_samples: int | None = None,
                  wait: bool = True) -> Study:
-        """An optimisation: `parameters` maps names to `(min, max)` or `(min, max, start)`;
+        """An optimisation: `parameters` maps names to `(min, max)`, `(min, max, start)` or
+        `{"min": a, "max": b[, "start": c]}`;
         `objective` is a list of terms as docs/studies.md gives them, e.g.
         `{"function": "ise", "variable": "Mass#P2#Position", "reference_variable":
         "Step#out#Value"}`. The best run: `study.best`."""
-        bounds = {}
-        for key, bound in parameters.items():
-            if len(bound) not in (2, 3):
-                raise ValueError(f"{key}: give (min, max) or (min, max, start)")
-            bounds[key] = dict(zip(("min", "max", "start"), (float(b) for b in bound)))
+        bounds = {key: _values.bound(key, bound) for key, bound in parameters.items()}
         optimise: dict[str, Any] = {
             "algorithm": algorithm, "parameters": bounds,
             "objective": {"goal": goal, "terms": [dict(t) for t in objective]},
-            "max_evaluations": max_evaluations, "seed": seed}
+            "max_evaluations": _values.whole("max_evaluations", max_evaluations, 1),
+            "seed": _values.whole("seed", seed, 0)}
         if tolerance is not None:
-            optimise["tolerance"] = tolerance
+            optimise["tolerance"] = _values.number("tolerance", tolerance)
+            if optimise["tolerance"] <= 0:
+                raise ValueError(f"tolerance: {optimise['tolerance']} is not positive")
         if options:
             optimise["options"] = dict(options)
         return self._study("optimise", optimise, model, name, fixed, outputs, values, False,
-                           _settings(start, step, stop, log_samples), wait)
+                           _values.settings(start, step, stop, log_samples), wait)
 
     def _study(self, kind: str, spec: dict[str, Any], model: ModelRef, name: str | None,
                fixed: Mapping[str, Any] | None, outputs: Sequence[str], values: Sequence[str],
@@ -335,7 +328,7 @@ class Client:
         request: dict[str, Any] = {"kind": kind, "name": name or f"{kind} (python)",
                                    **model_source(model), **settings, kind: spec}
         if fixed:
-            request["parameters"] = dict(fixed)
+            request["parameters"] = _values.parameters(fixed)
         if outputs or full:
             request["outputs"] = {"variables": list(outputs), "values": list(values), "full": full}
         study = self.studies.create(request)
@@ -349,7 +342,9 @@ def _distribution(name: str, spec: Any) -> dict[str, Any]:
         return dict(spec)
     kind, a, b = spec
     if kind == "normal":
-        return {"distribution": "normal", "mean": float(a), "sd": float(b)}
+        return {"distribution": "normal", "mean": _values.number(f"{name} mean", a),
+                "sd": _values.number(f"{name} sd", b)}
     if kind == "uniform":
-        return {"distribution": "uniform", "min": float(a), "max": float(b)}
+        return {"distribution": "uniform", "min": _values.number(f"{name} min", a),
+                "max": _values.number(f"{name} max", b)}
     raise ValueError(f"{name}: distribution must be 'normal' or 'uniform', not {kind!r}")
