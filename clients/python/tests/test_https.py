@@ -3,7 +3,6 @@ trusted through SSL_CERT_FILE, as the system trust store would trust a real one.
 import os
 import ssl
 import unittest
-import urllib.error
 from unittest import mock
 
 import tlmhub
@@ -33,7 +32,7 @@ class Https(unittest.TestCase):
 
     def test_an_untrusted_certificate_is_refused(self):
         with mock.patch.dict(os.environ, {"SSL_CERT_FILE": os.devnull}):
-            with self.assertRaises(urllib.error.URLError) as caught:
+            with self.assertRaises(tlmhub.ConnectionFailed) as caught:
                 tlmhub.Client.login(https_url, "admin", ADMIN_PASSWORD)
         self.assertIsInstance(caught.exception.reason, ssl.SSLCertVerificationError)
 

@@ -9,8 +9,10 @@ on a tlmhub server from scripts.
 REST uses only the standard library; `client.stream` and live study progress need
 websocket-client (`tlmhub[stream]`), NumPy columns need NumPy (`tlmhub[numpy]`)."""
 from .client import Client, Job, Model
-from .errors import ApiError, SimulationFailed
+from .errors import (ApiError, ConnectionFailed, LimitExceeded, NotFound, Refused, SimulationFailed,
+                     Unauthorized)
 from .results import Result, Table
 from .studies import Study
 
-__all__ = ["ApiError", "Client", "Job", "Model", "Result", "SimulationFailed", "Study", "Table"]
+__all__ = ["ApiError", "Client", "ConnectionFailed", "Job", "LimitExceeded", "Model", "NotFound", "Refused", "Result",
+           "SimulationFailed", "Study", "Table", "Unauthorized"]

@@ -9,7 +9,7 @@ import urllib.parse
 import urllib.request
 from typing import Any, Mapping
 
-from .errors import ApiError
+from .errors import ApiError, ConnectionFailed, error_for
 
 
 def api_base(url: str) -> str:
@@ -58,19 +58,31 @@ class Transport:
                                         context=self.ssl_context) as response:
                 return response.status, response.read()
         except urllib.error.HTTPError as error:
-            raise _api_error(error.code, error.read()) from None
+            raise _api_error(error.code, error.read(), error.headers.get("Retry-After")) from None
+        except (urllib.error.URLError, OSError) as error:
+            reason = getattr(error, "reason", error)
+            host = urllib.parse.urlsplit(self.base).netloc
+            raise ConnectionFailed(f"cannot reach {host}: {reason}", reason) from None
 
     def json(self, method: str, path: str, **kwargs: Any) -> Any:
         """The decoded JSON answer, or None for an empty one (204)."""
-        _, data = self.request(method, path, **kwargs)
-        return json.loads(data) if data else None
+        status, data = self.request(method, path, **kwargs)
+        if not data:
+            return None
+        try:
+            return json.loads(data)
+        except ValueError:
+            # A web page where the API should answer: most often a URL that is not the server's.
+            raise ApiError(status, "bad_reply", f"the answer to {method} {self.base + path} is not JSON: is "
+                           f"{self.base[: -len('/api/v1')]} the tlmhub server's address?") from None
 
 
-def _api_error(status: int, data: bytes) -> ApiError:
+def _api_error(status: int, data: bytes, retry_after: str | None = None) -> ApiError:
     """The ApiError of an error body; a body that is not the server's (a proxy's page, say)
     keeps its text as the message."""
+    wait = float(retry_after) if retry_after and retry_after.strip().isdigit() else None
     try:
         error = json.loads(data)["error"]
-        return ApiError(status, str(error["code"]), str(error["message"]))
+        return error_for(status, str(error["code"]), str(error["message"]), wait)
     except (ValueError, KeyError, TypeError):
-        return ApiError(status, "http_error", data.decode(errors="replace").strip()[:500])
+        return error_for(status, "http_error", data.decode(errors="replace").strip()[:500], wait)

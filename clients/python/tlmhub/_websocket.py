@@ -12,7 +12,7 @@ import time
 from typing import Any, Iterator
 
 from ._http import Transport
-from .errors import ApiError, SimulationFailed
+from .errors import ApiError, SimulationFailed, error_for
 
 try:
     import websocket
@@ -41,8 +41,8 @@ class Socket:
                 url, header=[f"Authorization: Bearer {transport.token}"], timeout=timeout,
                 sslopt=sslopt)
         except websocket.WebSocketBadStatusException as error:
-            raise ApiError(error.status_code, "unauthorized" if error.status_code == 401
-                           else "http_error", f"WebSocket upgrade refused: {error}") from None
+            raise error_for(error.status_code, "unauthorized" if error.status_code == 401
+                            else "http_error", f"WebSocket upgrade refused: {error}") from None
         except websocket.WebSocketException as error:
             raise ApiError(0, "websocket_error", f"WebSocket to {url}: {error}") from None
         self._ids = itertools.count(1)

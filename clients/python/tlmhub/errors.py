@@ -1,4 +1,5 @@
-"""The two errors a script sees: the server refused a call, or a simulation did not end well."""
+"""The errors a script sees: the server could not be reached or refused a call (ApiError and
+its kinds, to catch by what to do about them), or a simulation did not end well."""
 from __future__ import annotations
 
 
@@ -12,6 +13,51 @@ class ApiError(Exception):
         self.status = status
         self.code = code
         self.message = message
+
+
+class ConnectionFailed(ApiError):
+    """No answer: the server could not be reached (refused, unknown host, timed out, TLS).
+    Status 0, code `connection_failed`; `reason` is the underlying error (an OSError, an
+    ssl.SSLCertVerificationError, ...)."""
+
+    def __init__(self, message: str, reason: object = None):
+        super().__init__(0, "connection_failed", message)
+        self.reason = reason
+
+
+class Unauthorized(ApiError):
+    """401: no token, or one that is wrong, expired or revoked: log in again."""
+
+
+class NotFound(ApiError):
+    """404: no such object for this user (another user's objects are not found either)."""
+
+
+class LimitExceeded(ApiError):
+    """413 or 422 (`limit_exceeded`): the request can never succeed as sent (a step count,
+    a body size); the message names the limit and its flag. 429 (`rate_limited`): a limit of
+    what runs at once, which frees up; `retry_after` is the server's wait in seconds."""
+
+    def __init__(self, status: int, code: str, message: str, retry_after: float | None = None):
+        super().__init__(status, code, message)
+        self.retry_after = retry_after
+
+
+class Refused(ApiError):
+    """Another 4xx: the request is wrong as sent (400 bad_request, 403, 409 conflict, ...)."""
+
+
+def error_for(status: int, code: str, message: str, retry_after: float | None = None) -> ApiError:
+    """The ApiError kind of an error answer."""
+    if status == 401:
+        return Unauthorized(status, code, message)
+    if status == 404:
+        return NotFound(status, code, message)
+    if status in (413, 422, 429) or code in ("limit_exceeded", "rate_limited"):
+        return LimitExceeded(status, code, message, retry_after)
+    if 400 <= status < 500:
+        return Refused(status, code, message)
+    return ApiError(status, code, message)
 
 
 class SimulationFailed(Exception):
