@@ -3,16 +3,17 @@
 tree, and checks each is what its tests expect (tests/python.cmake runs this as a ctest):
 
   DIR/system    `--system-site-packages`: Debian's python3-numpy and python3-websocket
-                are visible; the package is installed as the README says,
-                `pip install --no-index --no-build-isolation clients/python`.
-  DIR/isolated  no system packages, so neither NumPy nor websocket-client. Debian's venv
-                has setuptools but not `wheel`, which setuptools 66 needs to build, so this
-                one installs the wheel the system venv builds.
+                are visible.
+  DIR/isolated  a plain venv: no system packages, so neither NumPy nor websocket-client,
+                and no `wheel` package either.
+Both install the package as docs/scripting.md says,
+`pip install --no-index --no-build-isolation clients/python`: the package's own build
+backend (_build/tlmhub_build.py) needs nothing beyond the standard library.
 
     make_venvs.py [--python /usr/bin/python3] DIR
 
-Both are made anew each time. The package is built from a copy in DIR/src, so setuptools'
-build/ and egg-info never land in the source tree."""
+Both are made anew each time. The package is built from a copy in DIR/src, so nothing a
+build writes lands in the source tree."""
 import argparse
 import shutil
 import subprocess
@@ -68,13 +69,9 @@ def main() -> None:
     run(system / "bin" / "pip", "install", "--no-index", "--no-build-isolation", src)
     check(system / "bin" / "python", numpy=True, websocket=True)
 
-    wheels = root / "wheels"
-    shutil.rmtree(wheels, ignore_errors=True)
-    run(system / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-deps",
-        "-w", wheels, src)
     if making_isolated.wait() != 0:
         sys.exit(f"{args.python} -m venv {isolated} failed")
-    run(isolated / "bin" / "pip", "install", "--no-index", *sorted(wheels.glob("tlmhub-*.whl")))
+    run(isolated / "bin" / "pip", "install", "--no-index", "--no-build-isolation", src)
     check(isolated / "bin" / "python", numpy=False, websocket=False)
 
 
