@@ -148,6 +148,29 @@ class Waiting(unittest.TestCase):
             study.resume()
         self.assertEqual(caught.exception.status, 409)
 
+    def test_ctrl_c_while_waiting_cancels_the_study_unless_detached(self):
+        study = self.sweep(400, stop=3)
+        with mock.patch("tlmhub._websocket.available", return_value=False), \
+                mock.patch("tlmhub.studies.time.sleep", side_effect=KeyboardInterrupt):
+            with self.assertRaises(KeyboardInterrupt):
+                study.wait(timeout=60)
+        self.assertIn(study.refresh().state, ("cancelling", "cancelled"))
+
+        detached = self.sweep(400, stop=3)
+        with mock.patch("tlmhub._websocket.available", return_value=False), \
+                mock.patch("tlmhub.studies.time.sleep", side_effect=KeyboardInterrupt):
+            with self.assertRaises(KeyboardInterrupt):
+                detached.wait(timeout=60, on_interrupt="detach")
+        self.assertIn(detached.refresh().state, ("queued", "running"))
+        detached.cancel()
+
+    def test_ctrl_c_while_waiting_for_a_job_cancels_it(self):
+        job = self.client.run(self.model, stop=20, wait=False)
+        with mock.patch("tlmhub.client.time.sleep", side_effect=KeyboardInterrupt):
+            with self.assertRaises(KeyboardInterrupt):
+                job.wait(timeout=60)
+        self.assertIn(job.refresh().state, ("cancelling", "cancelled"))
+
     def test_a_bad_request_is_an_api_error(self):
         with self.assertRaises(tlmhub.ApiError) as caught:   # list mode needs equal lengths
             self.client.sweep(self.model, parameters={"GainP.k": [0.01, 0.02], "GainI.k": [0.0]},

@@ -64,15 +64,23 @@ class Job:
         self.info = self._client.jobs.get(self.id).info
         return self
 
-    def wait(self, timeout: float | None = None) -> "Job":
-        """Polls until the job ends; raises SimulationFailed unless it ended `done`."""
+    def wait(self, timeout: float | None = None, on_interrupt: str = "cancel") -> "Job":
+        """Polls until the job ends; raises SimulationFailed unless it ended `done`.
+        Ctrl-C (KeyboardInterrupt) while waiting cancels the job before it is raised again;
+        `on_interrupt="detach"` leaves it running."""
+        _check_on_interrupt(on_interrupt)
         deadline = None if timeout is None else time.monotonic() + timeout
         interval = 0.02
-        while self.refresh().state not in JOB_FINAL_STATES:
-            if deadline is not None and time.monotonic() > deadline:
-                raise TimeoutError(f"job {self.id} did not finish in time")
-            time.sleep(interval)
-            interval = min(interval * 2, 0.5)
+        try:
+            while self.refresh().state not in JOB_FINAL_STATES:
+                if deadline is not None and time.monotonic() > deadline:
+                    raise TimeoutError(f"job {self.id} did not finish in time")
+                time.sleep(interval)
+                interval = min(interval * 2, 0.5)
+        except KeyboardInterrupt:
+            if on_interrupt == "cancel":
+                self.cancel()
+            raise
         if self.state != "done":
             raise SimulationFailed("job", self.id, self.state, self.info.get("error") or "")
         return self
@@ -86,6 +94,11 @@ class Job:
 
     def __repr__(self) -> str:
         return f"<Job {self.id} {self.state}>"
+
+
+def _check_on_interrupt(on_interrupt: str) -> None:
+    if on_interrupt not in ("cancel", "detach"):
+        raise ValueError(f"on_interrupt: 'cancel' or 'detach', not {on_interrupt!r}")
 
 
 class _Collection:

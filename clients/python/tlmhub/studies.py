@@ -43,16 +43,29 @@ class Study:
         self.info = self._client._transport.json("GET", f"/studies/{self.id}")
         return self
 
-    def wait(self, progress: bool = False, timeout: float | None = None) -> "Study":
+    def wait(self, progress: bool = False, timeout: float | None = None,
+             on_interrupt: str = "cancel") -> "Study":
         """Waits until the study ends and returns it; raises SimulationFailed unless it ended
         `done` (runs that failed inside a done study are rows with `ok` 0, not an error).
 
         With websocket-client installed it listens to `event.study.progress`, otherwise it
-        polls GET /studies/{id}. `progress=True` draws a one-line bar on stderr."""
+        polls GET /studies/{id}. `progress=True` draws a one-line bar on stderr. Ctrl-C
+        (KeyboardInterrupt) while waiting cancels the study before it is raised again, so an
+        interrupted script leaves nothing running against its study limit;
+        `on_interrupt="detach"` leaves it running (`resume()` continues a cancelled one)."""
+        if on_interrupt not in ("cancel", "detach"):
+            raise ValueError(f"on_interrupt: 'cancel' or 'detach', not {on_interrupt!r}")
         deadline = None if timeout is None else time.monotonic() + timeout
         bar = _ProgressBar() if progress else None
-        if not (_websocket.available() and self._wait_for_events(deadline, bar)):
-            self._poll(deadline, bar)
+        try:
+            if not (_websocket.available() and self._wait_for_events(deadline, bar)):
+                self._poll(deadline, bar)
+        except KeyboardInterrupt:
+            if bar:
+                bar.finish()
+            if on_interrupt == "cancel":
+                self.cancel()
+            raise
         if bar:
             bar.draw(self.info)
             bar.finish()
