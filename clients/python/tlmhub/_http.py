@@ -1,9 +1,12 @@
 """The REST transport: one small wrapper over urllib so that every call sends the token the
-same way and every failure becomes the same ApiError."""
+same way, every failure becomes an ApiError of its kind, and a call that may safely be sent
+again (GET, DELETE) is, after a failure that passes: no answer, or 429/502/503/504."""
 from __future__ import annotations
 
 import json
+import random
 import ssl
+import time
 import urllib.error
 import urllib.parse
 import urllib.request
@@ -29,18 +32,48 @@ class Transport:
     https uses `ssl.create_default_context()`: the system's trust store, or the file
     `SSL_CERT_FILE` names (OpenSSL reads that variable), unless a context is given."""
 
+    # Idempotent methods only: a POST sent twice could create two jobs.
+    RETRIED_METHODS = ("GET", "HEAD", "DELETE")
+    RETRIED_STATUSES = (429, 502, 503, 504)
+
     def __init__(self, url: str, token: str | None, *, timeout: float = 60.0,
-                 ssl_context: ssl.SSLContext | None = None):
+                 ssl_context: ssl.SSLContext | None = None, retries: int = 5,
+                 backoff: float = 0.5, max_backoff: float = 30.0):
         self.base = api_base(url)
         self.token = token
         self.timeout = timeout
         self.ssl_context = ssl_context or (ssl.create_default_context()
                                            if self.base.startswith("https:") else None)
+        self.retries = retries
+        self.backoff = backoff
+        self.max_backoff = max_backoff
 
-    def request(self, method: str, path: str, *, query: Mapping[str, Any] | None = None,
-                json_body: Any = None, body: bytes | None = None,
-                content_type: str | None = None) -> tuple[int, bytes]:
-        """The status and raw body of a successful (2xx) answer; raises ApiError otherwise."""
+    def request(self, method: str, path: str, **kwargs: Any) -> tuple[int, bytes]:
+        """The status and raw body of a successful (2xx) answer; raises ApiError otherwise.
+        GET and DELETE are sent again up to `retries` times after no answer or 429/502/503/
+        504, waiting the server's Retry-After or an exponential backoff with jitter."""
+        attempt = 0
+        while True:
+            try:
+                return self._send(method, path, **kwargs)
+            except ApiError as error:
+                # An untrusted certificate does not pass; a refused connection may.
+                unreachable = isinstance(error, ConnectionFailed) and not isinstance(error.reason, ssl.SSLError)
+                passing = unreachable or error.status in self.RETRIED_STATUSES
+                if method not in self.RETRIED_METHODS or not passing or attempt >= self.retries:
+                    raise
+                time.sleep(self._pause(attempt, error))
+                attempt += 1
+
+    def _pause(self, attempt: int, error: ApiError) -> float:
+        if error.retry_after is not None:
+            return min(error.retry_after, self.max_backoff)
+        # Full jitter: clients that failed together do not come back together.
+        return random.uniform(0, min(self.max_backoff, self.backoff * 2 ** attempt))
+
+    def _send(self, method: str, path: str, *, query: Mapping[str, Any] | None = None,
+              json_body: Any = None, body: bytes | None = None,
+              content_type: str | None = None) -> tuple[int, bytes]:
         url = self.base + path
         if query:
             url += "?" + urllib.parse.urlencode({k: v for k, v in query.items() if v is not None})

@@ -215,11 +215,12 @@ class Client:
 
     `Client(url, token)` with an API token (`tlmh_...`), or `Client.login(url, user,
     password)` for a login session. `url` is the server's address (`http://host:8080`),
-    with or without `/api/v1`."""
+    with or without `/api/v1`. `retries`: how many times a GET or DELETE is sent again after
+    no answer or 429/502/503/504 (0: never)."""
 
     def __init__(self, url: str, token: str, *, timeout: float = 60.0,
-                 ssl_context: ssl.SSLContext | None = None):
-        self._transport = Transport(url, token, timeout=timeout, ssl_context=ssl_context)
+                 ssl_context: ssl.SSLContext | None = None, retries: int = 5):
+        self._transport = Transport(url, token, timeout=timeout, ssl_context=ssl_context, retries=retries)
         self.tokens = Tokens(self)
         self.models = Models(self)
         self.jobs = Jobs(self)

@@ -6,13 +6,15 @@ from __future__ import annotations
 class ApiError(Exception):
     """An error answer of the server: the HTTP status and the body's stable `code`
     (`not_found`, `unauthorized`, ...) and human `message` (protocol/README.md, "Errors").
-    Status 0: an error reply on the WebSocket, which has no HTTP status."""
+    Status 0: an error reply on the WebSocket, which has no HTTP status. `retry_after`: the
+    seconds the server's Retry-After asked for (429, 503), or None."""
 
-    def __init__(self, status: int, code: str, message: str):
+    def __init__(self, status: int, code: str, message: str, retry_after: float | None = None):
         super().__init__(f"{status} {code}: {message}")
         self.status = status
         self.code = code
         self.message = message
+        self.retry_after = retry_after
 
 
 class ConnectionFailed(ApiError):
@@ -38,10 +40,6 @@ class LimitExceeded(ApiError):
     a body size); the message names the limit and its flag. 429 (`rate_limited`): a limit of
     what runs at once, which frees up; `retry_after` is the server's wait in seconds."""
 
-    def __init__(self, status: int, code: str, message: str, retry_after: float | None = None):
-        super().__init__(status, code, message)
-        self.retry_after = retry_after
-
 
 class Refused(ApiError):
     """Another 4xx: the request is wrong as sent (400 bad_request, 403, 409 conflict, ...)."""
@@ -50,14 +48,16 @@ class Refused(ApiError):
 def error_for(status: int, code: str, message: str, retry_after: float | None = None) -> ApiError:
     """The ApiError kind of an error answer."""
     if status == 401:
-        return Unauthorized(status, code, message)
-    if status == 404:
-        return NotFound(status, code, message)
-    if status in (413, 422, 429) or code in ("limit_exceeded", "rate_limited"):
-        return LimitExceeded(status, code, message, retry_after)
-    if 400 <= status < 500:
-        return Refused(status, code, message)
-    return ApiError(status, code, message)
+        kind = Unauthorized
+    elif status == 404:
+        kind = NotFound
+    elif status in (413, 422, 429) or code in ("limit_exceeded", "rate_limited"):
+        kind = LimitExceeded
+    elif 400 <= status < 500:
+        kind = Refused
+    else:
+        kind = ApiError
+    return kind(status, code, message, retry_after)
 
 
 class SimulationFailed(Exception):
