@@ -154,7 +154,9 @@ class Waiting(unittest.TestCase):
                 mock.patch("tlmhub.studies.time.sleep", side_effect=KeyboardInterrupt):
             with self.assertRaises(KeyboardInterrupt):
                 study.wait(timeout=60)
-        self.assertIn(study.refresh().state, ("cancelling", "cancelled"))
+        with self.assertRaises(tlmhub.SimulationFailed) as ended:   # its runs in flight stop first
+            study.wait(timeout=60)
+        self.assertEqual(ended.exception.state, "cancelled")
 
         detached = self.sweep(400, stop=3)
         with mock.patch("tlmhub._websocket.available", return_value=False), \
@@ -169,7 +171,9 @@ class Waiting(unittest.TestCase):
         with mock.patch("tlmhub.client.time.sleep", side_effect=KeyboardInterrupt):
             with self.assertRaises(KeyboardInterrupt):
                 job.wait(timeout=60)
-        self.assertIn(job.refresh().state, ("cancelling", "cancelled"))
+        with self.assertRaises(tlmhub.SimulationFailed) as ended:
+            job.wait(timeout=60)
+        self.assertEqual(ended.exception.state, "cancelled")
 
     def test_a_bad_request_is_an_api_error(self):
         with self.assertRaises(tlmhub.ApiError) as caught:   # list mode needs equal lengths
