@@ -14,6 +14,9 @@ inline const std::filesystem::path kExampleModels = kSharedDir / "hopsan-models"
 inline const std::filesystem::path kPositionServo = kExampleModels / "Position Servo.hmf";
 // A model to export as an FMU: input u through a gain to output y, and a hydraulic line.
 inline const std::filesystem::path kFmuGain = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/server/data/FmuGain.hmf";
+// Divide#out#Value = Divide.in1 / round(Round.in): a run fails (division by zero) when
+// |Round.in| < 0.5, so a study can have failing runs where it chooses.
+inline const std::filesystem::path kRoundDivide = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/server/data/RoundDivide.hmf";
 
 // The whole file; a file that cannot be read fails the test (and gives "").
 inline std::string readFile(const std::filesystem::path& path)

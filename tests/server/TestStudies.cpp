@@ -387,26 +387,9 @@ TEST_F(Studies, OptimisersReachTheMinimumOfAFineSweep)
 
 namespace {
 
-// Round.in rounded is Divide's denominator: a run with |Round.in| < 0.5 divides by zero and
-// fails ("Division by zero"); one with Round.in in [0.5, 1.5) gives Divide.in1.
-const std::string kDivider = R"(<?xml version="1.0" encoding="UTF-8"?>
-<hopsanmodelfile hmfversion="0.4" hopsanguiversion="2.0" hopsancoreversion="2.0">
-  <system name="Divider" typename="Subsystem">
-    <simulationtime start="0" timestep="0.001" stop="0.1" inherit_timestep="true"/>
-    <objects>
-      <component typename="SignalRound" name="Round">
-        <parameters><parameter name="in#Value" value="1"/></parameters>
-      </component>
-      <component typename="SignalDivide" name="Divide">
-        <parameters><parameter name="in1#Value" value="1"/></parameters>
-      </component>
-    </objects>
-    <connections>
-      <connect startcomponent="Round" startport="out" endcomponent="Divide" endport="in2"/>
-    </connections>
-  </system>
-</hopsanmodelfile>
-)";
+// data/RoundDivide.hmf: a run with |Round.in| < 0.5 divides by zero and fails ("Division by
+// zero"); one with Round.in in [0.5, 1.5) gives Divide.in1.
+const std::string kDivider = readFile(kRoundDivide);
 const std::string kQuotient = "Divide#out#Value";
 
 bool mentions(const nlohmann::json& text, const std::string& words)

@@ -15,25 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Divide#out#Value = 1 / round(Round.in): each run's output tells which value it ran with.
-const std::string kReciprocalModel = R"(<?xml version="1.0" encoding="UTF-8"?>
-<hopsanmodelfile hmfversion="0.4" hopsanguiversion="2.0" hopsancoreversion="2.0">
-  <system name="Reciprocal" typename="Subsystem">
-    <simulationtime start="0" timestep="0.001" stop="0.1" inherit_timestep="true"/>
-    <objects>
-      <component typename="SignalRound" name="Round">
-        <parameters><parameter name="in#Value" value="1"/></parameters>
-      </component>
-      <component typename="SignalDivide" name="Divide">
-        <parameters><parameter name="in1#Value" value="1"/></parameters>
-      </component>
-    </objects>
-    <connections>
-      <connect startcomponent="Round" startport="out" endcomponent="Divide" endport="in2"/>
-    </connections>
-  </system>
-</hopsanmodelfile>
-)";
+// data/RoundDivide.hmf: Divide#out#Value = 1 / round(Round.in), so each run's output tells
+// which value it ran with.
+const std::string kReciprocalModel = readFile(kRoundDivide);
 
 class StudyResume : public ::testing::Test {
 protected:
