@@ -2,13 +2,15 @@
 
 #include <sqlite3.h>
 
+#include <thread>
+
 namespace tlmhub::server {
 
 SqliteConnection::SqliteConnection(const std::string& path, bool syncEveryCommit)
     : mDb(path, SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE | SQLite::OPEN_NOMUTEX)
 {
     // Before anything else: a writer on another connection makes this one wait, not fail.
-    mDb.setBusyTimeout(kBusyTimeoutMs);
+    sqlite3_busy_handler(mDb.getHandle(), &SqliteConnection::retryWhileBusy, this);
     // Results are blobs of megabytes: large pages write them in few system calls. Takes
     // effect for a new database only (set before the journal mode).
     mDb.exec("PRAGMA page_size=65536");
@@ -17,6 +19,21 @@ SqliteConnection::SqliteConnection(const std::string& path, bool syncEveryCommit
     mDb.exec("PRAGMA foreign_keys=ON");
     // The WAL shrinks back after checkpoints instead of keeping its largest size.
     mDb.exec("PRAGMA journal_size_limit=16777216");
+}
+
+std::chrono::microseconds SqliteConnection::busyRetryDelay(int attempt)
+{
+    return std::chrono::microseconds(attempt < 10 ? 100 : 1000);
+}
+
+int SqliteConnection::retryWhileBusy(void* connection, int attempt)
+{
+    auto& self = *static_cast<SqliteConnection*>(connection);
+    const auto now = std::chrono::steady_clock::now();
+    if (attempt == 0) self.mBusySince = now;
+    if (now - self.mBusySince >= std::chrono::milliseconds(kBusyTimeoutMs)) return 0;
+    std::this_thread::sleep_for(busyRetryDelay(attempt));
+    return 1;
 }
 
 SqliteConnection::Statement SqliteConnection::prepared(const char* sql)
