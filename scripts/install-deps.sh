@@ -7,6 +7,9 @@ packages=(build-essential cmake ninja-build lld pkg-config libmuparser-dev libpu
           libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
           libsqlitecpp-dev libsodium-dev libzstd-dev libzip-dev postgresql-15 libpqxx-dev libssl-dev nginx-light
           python3-venv python3-websocket python3-numpy)
+# Without their Recommends: pandas would bring scipy, matplotlib and numba (89 packages),
+# which nothing here uses.
+lean_packages=(python3-pandas)
 # The web app needs Node.js and npm; a machine that already has them (any install) keeps them.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 for flag in "$@"; do
@@ -16,12 +19,14 @@ for flag in "$@"; do
     *) echo "install-deps.sh: unknown flag $flag" >&2; exit 1 ;;
   esac
 done
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+missing=() missing_lean=()
+for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
+for p in "${lean_packages[@]}"; do installed "$p" || missing_lean+=("$p"); done
+if [ $((${#missing[@]} + ${#missing_lean[@]})) -gt 0 ]; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
+  [ ${#missing[@]} -eq 0 ] || DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}"
+  [ ${#missing_lean[@]} -eq 0 ] ||
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing_lean[@]}"
 fi

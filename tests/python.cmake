@@ -1,12 +1,12 @@
 # The Python client (clients/python) and docs/scripting.md, tested against a real
 # tlmhub-server (label `python`). `python/venvs` builds two venvs in the build tree with
-# Debian's Python, offline: `system` (--system-site-packages: Debian's NumPy and
-# websocket-client) and `isolated` (neither). Then every test module of
+# Debian's Python, offline: `system` (--system-site-packages: Debian's NumPy,
+# websocket-client and pandas) and `isolated` (none of them). Then every test module of
 # clients/python/tests runs in each venv as its own ctest, told what the venv must have, and
 # the scripting guide's examples run in order in the system venv.
 if(TARGET tlmhub-server)
   set(TLMHUB_DEBIAN_PYTHON /usr/bin/python3 CACHE FILEPATH
-      "Debian's Python 3.11 for the Python client's venvs (python3-venv, python3-numpy, python3-websocket)")
+      "Debian's Python 3.11 for the Python client's venvs (python3-venv, python3-numpy, python3-websocket, python3-pandas)")
   set(TLMHUB_PYTHON_CLIENT ${PROJECT_SOURCE_DIR}/clients/python)
   set(TLMHUB_PYTHON_VENVS ${CMAKE_CURRENT_BINARY_DIR}/python-venvs)
   set(TLMHUB_PYTHON_TEST_ENV
@@ -36,7 +36,7 @@ if(TARGET tlmhub-server)
                WORKING_DIRECTORY ${TLMHUB_PYTHON_CLIENT}/tests)
       set_tests_properties(python/${venv}/${module} PROPERTIES LABELS "python" TIMEOUT 180
         FIXTURES_REQUIRED tlmhub-python-venvs
-        ENVIRONMENT "${TLMHUB_PYTHON_TEST_ENV};TLMHUB_EXPECT_NUMPY=${has};TLMHUB_EXPECT_WEBSOCKET=${has}")
+        ENVIRONMENT "${TLMHUB_PYTHON_TEST_ENV};TLMHUB_EXPECT_NUMPY=${has};TLMHUB_EXPECT_WEBSOCKET=${has};TLMHUB_EXPECT_PANDAS=${has}")
     endforeach()
   endforeach()
 

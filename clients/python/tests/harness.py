@@ -5,9 +5,9 @@ The environment names what to test against, and a missing piece fails the tests,
 skips them:
   TLMHUB_SERVER_BIN   the tlmhub-server binary
   TLMHUB_SHARED_DIR   ../shared (the Hopsan models)
-  TLMHUB_EXPECT_NUMPY, TLMHUB_EXPECT_WEBSOCKET   "1" or "0": whether this environment must
-                      have NumPy / websocket-client (ctest sets them per venv; when unset the
-                      tests follow what is installed)"""
+  TLMHUB_EXPECT_NUMPY, TLMHUB_EXPECT_WEBSOCKET, TLMHUB_EXPECT_PANDAS   "1" or "0": whether
+                      this environment must have NumPy / websocket-client / pandas (ctest
+                      sets them per venv; when unset the tests follow what is installed)"""
 from __future__ import annotations
 
 import importlib.util

@@ -2,10 +2,10 @@
 """Builds the two virtual environments the client's tests run in, offline, from the source
 tree, and checks each is what its tests expect (tests/python.cmake runs this as a ctest):
 
-  DIR/system    `--system-site-packages`: Debian's python3-numpy and python3-websocket
-                are visible.
-  DIR/isolated  a plain venv: no system packages, so neither NumPy nor websocket-client,
-                and no `wheel` package either.
+  DIR/system    `--system-site-packages`: Debian's python3-numpy, python3-websocket and
+                python3-pandas are visible.
+  DIR/isolated  a plain venv: no system packages, so neither NumPy nor websocket-client nor
+                pandas, and no `wheel` package either.
 Both install the package as docs/scripting.md says,
 `pip install --no-index --no-build-isolation clients/python`: the package's own build
 backend (_build/tlmhub_build.py) needs nothing beyond the standard library.
@@ -33,12 +33,13 @@ def importable(python: Path, module: str) -> bool:
                           capture_output=True).returncode == 0
 
 
-def check(python: Path, *, numpy: bool, websocket: bool) -> None:
+def check(python: Path, *, numpy: bool, websocket: bool, pandas: bool) -> None:
     """Fails unless the venv has exactly the optional modules its tests are told to expect,
     and has tlmhub installed in it."""
     problems = []
     for module, wanted, package in (("numpy", numpy, "python3-numpy"),
-                                     ("websocket", websocket, "python3-websocket")):
+                                     ("websocket", websocket, "python3-websocket"),
+                                     ("pandas", pandas, "python3-pandas")):
         if importable(python, module) != wanted:
             problems.append(f"{module} {'missing (apt-get install ' + package + ')' if wanted else 'present'}")
     where = subprocess.run([str(python), "-c", "import tlmhub, sys; print(tlmhub.__file__.startswith(sys.prefix))"],
@@ -67,12 +68,12 @@ def main() -> None:
     system = root / "system"
     run(args.python, "-m", "venv", "--clear", "--system-site-packages", system)
     run(system / "bin" / "pip", "install", "--no-index", "--no-build-isolation", src)
-    check(system / "bin" / "python", numpy=True, websocket=True)
+    check(system / "bin" / "python", numpy=True, websocket=True, pandas=True)
 
     if making_isolated.wait() != 0:
         sys.exit(f"{args.python} -m venv {isolated} failed")
     run(isolated / "bin" / "pip", "install", "--no-index", "--no-build-isolation", src)
-    check(isolated / "bin" / "python", numpy=False, websocket=False)
+    check(isolated / "bin" / "python", numpy=False, websocket=False, pandas=False)
 
 
 if __name__ == "__main__":

@@ -7,12 +7,13 @@ on a tlmhub server from scripts.
     print(result["Mass#P2#Position"][-1])
 
 REST uses only the standard library; `client.stream` and live study progress need
-websocket-client (`tlmhub[stream]`), NumPy columns need NumPy (`tlmhub[numpy]`)."""
+websocket-client (`tlmhub[stream]`), NumPy columns need NumPy (`tlmhub[numpy]`),
+`to_pandas()` needs pandas (`tlmhub[pandas]`)."""
 from .client import Client, Job, Model
 from .errors import (ApiError, ConnectionFailed, LimitExceeded, NotFound, Refused, SimulationFailed,
                      Unauthorized)
-from .results import Result, Table
+from .results import Grid, Result, Table
 from .studies import Study
 
-__all__ = ["ApiError", "Client", "ConnectionFailed", "Job", "LimitExceeded", "Model", "NotFound", "Refused", "Result",
+__all__ = ["ApiError", "Client", "ConnectionFailed", "Grid", "Job", "LimitExceeded", "Model", "NotFound", "Refused", "Result",
            "SimulationFailed", "Study", "Table", "Unauthorized"]
