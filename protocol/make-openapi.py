@@ -101,6 +101,10 @@ def op(summary, responses, body=None, params=None, public=False, tag=None):
 
 ID = {"name": "id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
 USER_ID = {"name": "user_id", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}
+IDEMPOTENCY_KEY = {"name": "Idempotency-Key", "in": "header", "required": False,
+                   "schema": {"type": "string", "minLength": 1, "maxLength": 200},
+                   "description": "Makes the submit safe to send again: the same key and body within 24 h answer "
+                                  "what the first request made (protocol/README.md, 'Retrying a submit')"}
 FORMAT = {"name": "format", "in": "query", "required": False, "schema": {"type": "string", "enum": ["csv", "json"]}}
 FMU_QUERY = [{"name": "parameters", "in": "query", "required": False,
               "description": "Comma-separated component parameters to offer as FMU parameters (Comp.param)",
@@ -214,8 +218,8 @@ paths = {
                            "description": "With model_id: only runs with a lower id (the next page: the last id of this one)"}],
                   tag="jobs"),
         "post": op("Queue a simulation of a stored model or of .hmf text",
-                   {**ok("Queued", "JobCreated", "201"), **errors("400", "401", "403", "404", "413", "422", "429")},
-                   body=json_body("JobRequest"), tag="jobs")},
+                   {**ok("Queued", "JobCreated", "201"), **errors("400", "401", "403", "404", "410", "413", "422", "429", "503")},
+                   body=json_body("JobRequest"), params=[IDEMPOTENCY_KEY], tag="jobs")},
     "/jobs/{id}": {
         "get": op("A job", {**ok("The job", "JobInfo"), **errors("401", "404")}, params=[ID], tag="jobs"),
         "patch": op("Name or pin a run (the owner): a pinned run keeps its results",
@@ -241,8 +245,8 @@ paths = {
     "/studies": {
         "get": op("The caller's studies, newest first", {**ok("Studies", "StudyList"), **errors("401")}, tag="studies"),
         "post": op("Queue a study: a sweep, a sensitivity analysis or an optimisation of one model (docs/studies.md)",
-                   {**ok("Queued", "StudyCreated", "201"), **errors("400", "401", "403", "404", "413", "422", "429")},
-                   body=json_body("StudyCreate"), tag="studies")},
+                   {**ok("Queued", "StudyCreated", "201"), **errors("400", "401", "403", "404", "410", "413", "422", "429", "503")},
+                   body=json_body("StudyCreate"), params=[IDEMPOTENCY_KEY], tag="studies")},
     "/studies/{id}": {
         "get": op("A study", {**ok("The study", "StudyInfo"), **errors("401", "404")}, params=[ID], tag="studies"),
         "delete": op("Cancel a queued or running study (200 when cancelled, 202 while its runs stop); delete a "

@@ -12,6 +12,7 @@
 #include "server/jobs/JobQueue.h"
 #include "server/jobs/StreamHub.h"
 #include "server/protocol/Messages.generated.h"
+#include "server/store/IdempotencyKeyStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/StoreError.h"
 
@@ -49,6 +50,7 @@ struct Services {
     const DownloadLinks& downloadLinks;
     HandlerPools& pools;                // where slow work goes instead of an I/O thread
     JobStreams& jobStreams;             // log.subscribe: the local hub, or relays from other nodes
+    IdempotencyKeyStore& idempotencyKeys;   // Idempotency-Key of POST /jobs and /studies
 };
 
 struct Call {

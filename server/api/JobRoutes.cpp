@@ -1,5 +1,6 @@
 // /jobs: submit, list, status, cancel, re-run, results as CSV or JSON.
 #include "server/api/ApiSupport.h"
+#include "server/api/IdempotentPost.h"
 
 #include "server/app/ServerOptions.h"
 #include "server/auth/AccessPolicy.h"
@@ -29,22 +30,22 @@ std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::strin
     return std::nullopt;
 }
 
-Response submitJob(Services& s, Call& call)
+Created createJob(Services& s, Call& call)
 {
     protocol::JobRequest body;
     Response error;
-    if (!readBody(call, "JobRequest", body, error)) return error;
+    if (!readBody(call, "JobRequest", body, error)) return {error, std::nullopt};
     JobRequest request;
     request.ownerId = call.who().id;
     if (body.modelId) {
         const auto model = readableModel(s, call.who(), *body.modelId);
-        if (!model) return apiError(http::status::not_found, "not_found", "no such model");
+        if (!model) return {apiError(http::status::not_found, "not_found", "no such model"), std::nullopt};
         request.modelId = model->id;
         request.hmf = s.models.hmf(model->id).value_or("");
     } else if (body.hmf) {
         request.hmf = *body.hmf;
     } else {
-        return apiError(http::status::bad_request, "bad_request", "give model_id or hmf");
+        return {apiError(http::status::bad_request, "bad_request", "give model_id or hmf"), std::nullopt};
     }
     for (const auto& [name, value] : body.parameters.value_or(std::map<std::string, nlohmann::json>{}))
         request.parameters[name] = value.is_string() ? value.get<std::string>() : value.dump();
@@ -54,7 +55,7 @@ Response submitJob(Services& s, Call& call)
         if (access.lock) {
             for (const auto& [name, value] : request.parameters)
                 if (const std::string problem = access.lock->valueProblem(name, value); !problem.empty())
-                    return apiError(http::status::forbidden, "locked", problem);
+                    return {apiError(http::status::forbidden, "locked", problem), std::nullopt};
             request.settingsFixed = true;
         }
     }
@@ -63,8 +64,19 @@ Response submitJob(Services& s, Call& call)
     if (body.stop) request.settings.stop = *body.stop;
     if (body.logSamples) request.settings.logSamples = static_cast<std::size_t>(*body.logSamples);
     const auto submitted = s.queue.submit(request);
-    if (!submitted.id) return refusal(submitted.code, submitted.message);
-    return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
+    if (!submitted.id) return {refusal(submitted.code, submitted.message), std::nullopt};
+    return {jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson()), submitted.id};
+}
+
+Response submitJob(Services& s, Call& call)
+{
+    return idempotentPost(
+        s, call, "POST /jobs", [&] { return createJob(s, call); },
+        [&](std::int64_t id) {
+            const auto job = s.queue.store().info(id);
+            if (!job) return apiError(http::status::gone, "gone", "the job this Idempotency-Key made was deleted");
+            return jsonResponse(http::status::created, job->toJson());
+        });
 }
 
 constexpr int kDefaultHistoryPage = 20;

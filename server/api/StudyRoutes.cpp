@@ -1,6 +1,7 @@
 // /studies: submit, list, status, cancel or delete, resume, results as one table, a run's full result,
 // a sensitivity study's bands (docs/studies.md).
 #include "server/api/ApiSupport.h"
+#include "server/api/IdempotentPost.h"
 
 #include "server/auth/AccessPolicy.h"
 #include "server/http/HeaderValues.h"
@@ -34,30 +35,42 @@ std::string queryValue(const Call& call, const std::string& key, const std::stri
     return it == call.params.query.end() ? fallback : it->second;
 }
 
-Response submitStudy(Services& s, Call& call)
+Created createStudy(Services& s, Call& call)
 {
     nlohmann::json body;
     Response error;
-    if (!readJsonBody(call, "StudyCreate", body, error)) return error;
+    if (!readJsonBody(call, "StudyCreate", body, error)) return {error, std::nullopt};
     std::string hmf;
     if (body.contains("model_id") && body["model_id"].is_number_integer()) {
         const auto model = readableModel(s, call.who(), body["model_id"].get<std::int64_t>());
-        if (!model) return apiError(http::status::not_found, "not_found", "no such model");
+        if (!model) return {apiError(http::status::not_found, "not_found", "no such model"), std::nullopt};
         hmf = s.models.hmf(model->id).value_or("");
         // A student's copy is studied only in the parameters its assignment lets them change.
         if (const CopyAccess access = copyAccess(s.labs.store(), call.who(), model->id); access.lock) {
             StudyRequest request;
             std::string why;
-            if (!parseStudyRequest(body, request, why)) return apiError(http::status::bad_request, "bad_request", why);
+            if (!parseStudyRequest(body, request, why))
+                return {apiError(http::status::bad_request, "bad_request", why), std::nullopt};
             if (const std::string problem = studyLockProblem(request, *access.lock); !problem.empty())
-                return apiError(http::status::forbidden, "locked", problem);
+                return {apiError(http::status::forbidden, "locked", problem), std::nullopt};
         }
     } else if (body.contains("hmf") && body["hmf"].is_string()) {
         hmf = body["hmf"].get<std::string>();
     }
     const auto submitted = s.studies.submit(call.who().id, body, hmf);
-    if (!submitted.id) return refusal(submitted.code, submitted.message);
-    return jsonResponse(http::status::created, {{"id", *submitted.id}, {"runs_total", submitted.runsTotal}});
+    if (!submitted.id) return {refusal(submitted.code, submitted.message), std::nullopt};
+    return {jsonResponse(http::status::created, {{"id", *submitted.id}, {"runs_total", submitted.runsTotal}}), submitted.id};
+}
+
+Response submitStudy(Services& s, Call& call)
+{
+    return idempotentPost(
+        s, call, "POST /studies", [&] { return createStudy(s, call); },
+        [&](std::int64_t id) {
+            const auto study = s.studies.store().info(id);
+            if (!study) return apiError(http::status::gone, "gone", "the study this Idempotency-Key made was deleted");
+            return jsonResponse(http::status::created, {{"id", id}, {"runs_total", study->runsTotal}});
+        });
 }
 
 Response listStudies(Services& s, Call& call)

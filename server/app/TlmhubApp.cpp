@@ -62,7 +62,8 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mJoinAddressLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures * 10, kJoinWindow);
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
-                                 *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams});
+                                 *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,
+                                 mStorage->idempotencyKeys()});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});

@@ -9,6 +9,7 @@
 // Every store method may be called from any thread at the same time.
 #include "server/store/ApiTokenStore.h"
 #include "server/store/JobLeaseStore.h"
+#include "server/store/IdempotencyKeyStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
 #include "server/store/MetaStore.h"
@@ -52,6 +53,7 @@ public:
     virtual JobLeaseStore& jobLeases() = 0;
     virtual ResultStore& results() = 0;
     virtual MetaStore& meta() = 0;
+    virtual IdempotencyKeyStore& idempotencyKeys() = 0;
     virtual ApiTokenStore& apiTokens() = 0;
     virtual StudyStore& studies() = 0;
     virtual LabStore& labs() = 0;
@@ -68,7 +70,7 @@ public:
 
 // The newest schema version this build knows. Both back ends keep their migrations in an
 // array of this size, so a migration added to one and not the other does not compile.
-inline constexpr int kSchemaVersion = 7;
+inline constexpr int kSchemaVersion = 8;
 
 // Opens the back end `config.database` names and migrates its schema. Throws StoreError
 // (Unavailable when it cannot be reached or opened, Corrupt when its schema is newer than

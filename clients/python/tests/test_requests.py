@@ -52,6 +52,8 @@ class Requests(unittest.TestCase):
             outputs=["Mass#P1#x"], values=["final", "max"], fixed={"Valve.Kv": "2e-5"},
             name="pump size", start=0, step=0.001, stop=2, log_samples=1024, wait=False)
         self.assertEqual(study.id, 12)
+        key = recorder.calls[0][2].pop("idempotency_key")
+        self.assertRegex(key, r"^[0-9a-f-]{36}$", "a fresh key, so a lost answer can be retried")
         self.assertEqual(recorder.calls, [("POST", "/studies", {"json_body": {
             "kind": "sweep", "name": "pump size", "model_id": 12,
             "start": 0, "step": 0.001, "stop": 2, "log_samples": 1024,

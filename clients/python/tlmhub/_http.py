@@ -1,6 +1,7 @@
 """The REST transport: one small wrapper over urllib so that every call sends the token the
 same way, every failure becomes an ApiError of its kind, and a call that may safely be sent
-again (GET, DELETE) is, after a failure that passes: no answer, or 429/502/503/504."""
+again (GET, DELETE, a POST with an Idempotency-Key) is, after a failure that passes: no
+answer, or 429/502/503/504."""
 from __future__ import annotations
 
 import json
@@ -10,9 +11,15 @@ import time
 import urllib.error
 import urllib.parse
 import urllib.request
+import uuid
 from typing import Any, Mapping
 
 from .errors import ApiError, ConnectionFailed, error_for
+
+
+def new_idempotency_key() -> str:
+    """A fresh Idempotency-Key for one POST and its retries (random: 122 bits)."""
+    return str(uuid.uuid4())
 
 
 def api_base(url: str) -> str:
@@ -32,7 +39,8 @@ class Transport:
     https uses `ssl.create_default_context()`: the system's trust store, or the file
     `SSL_CERT_FILE` names (OpenSSL reads that variable), unless a context is given."""
 
-    # Idempotent methods only: a POST sent twice could create two jobs.
+    # Idempotent methods, and POSTs with an Idempotency-Key: the server gives a POST sent again
+    # with its key what the first one made, so a lost answer never makes two jobs.
     RETRIED_METHODS = ("GET", "HEAD", "DELETE")
     RETRIED_STATUSES = (429, 502, 503, 504)
 
@@ -50,8 +58,10 @@ class Transport:
 
     def request(self, method: str, path: str, **kwargs: Any) -> tuple[int, bytes]:
         """The status and raw body of a successful (2xx) answer; raises ApiError otherwise.
-        GET and DELETE are sent again up to `retries` times after no answer or 429/502/503/
-        504, waiting the server's Retry-After or an exponential backoff with jitter."""
+        GET and DELETE, and a POST given an `idempotency_key`, are sent again up to `retries`
+        times after no answer or 429/502/503/504, waiting the server's Retry-After or an
+        exponential backoff with jitter."""
+        retried = method in self.RETRIED_METHODS or kwargs.get("idempotency_key") is not None
         attempt = 0
         while True:
             try:
@@ -60,7 +70,7 @@ class Transport:
                 # An untrusted certificate does not pass; a refused connection may.
                 unreachable = isinstance(error, ConnectionFailed) and not isinstance(error.reason, ssl.SSLError)
                 passing = unreachable or error.status in self.RETRIED_STATUSES
-                if method not in self.RETRIED_METHODS or not passing or attempt >= self.retries:
+                if not retried or not passing or attempt >= self.retries:
                     raise
                 time.sleep(self._pause(attempt, error))
                 attempt += 1
@@ -73,7 +83,7 @@ class Transport:
 
     def _send(self, method: str, path: str, *, query: Mapping[str, Any] | None = None,
               json_body: Any = None, body: bytes | None = None,
-              content_type: str | None = None) -> tuple[int, bytes]:
+              content_type: str | None = None, idempotency_key: str | None = None) -> tuple[int, bytes]:
         url = self.base + path
         if query:
             url += "?" + urllib.parse.urlencode({k: v for k, v in query.items() if v is not None})
@@ -85,6 +95,8 @@ class Transport:
             content_type = "application/json"
         if content_type:
             headers["Content-Type"] = content_type
+        if idempotency_key is not None:
+            headers["Idempotency-Key"] = idempotency_key
         request = urllib.request.Request(url, data=body, headers=headers, method=method)
         try:
             with urllib.request.urlopen(request, timeout=self.timeout,

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from typing import Any, Iterator, Mapping, Sequence, Union
 
 from . import _values, _websocket
-from ._http import Transport
+from ._http import Transport, new_idempotency_key
 from .errors import SimulationFailed
 from .results import Result, variables_query
 from .studies import Study
@@ -166,7 +166,7 @@ class Jobs(_Collection):
         body = {**model_source(model), **_values.settings(start, step, stop, log_samples)}
         if parameters:
             body["parameters"] = _values.parameters(parameters)
-        created = self._transport.json("POST", "/jobs", json_body=body)
+        created = self._transport.json("POST", "/jobs", json_body=body, idempotency_key=new_idempotency_key())
         return Job(self._client, created)
 
     def list(self) -> list[Job]:
@@ -206,7 +206,8 @@ class Studies(_Collection):
 
     def create(self, request: Mapping[str, Any]) -> Study:
         """A study from a request exactly as docs/studies.md gives it."""
-        created = self._transport.json("POST", "/studies", json_body=dict(request))
+        created = self._transport.json("POST", "/studies", json_body=dict(request),
+                                       idempotency_key=new_idempotency_key())
         return Study(self._client, int(created["id"]), {**created, "state": "queued"})
 
 

@@ -242,10 +242,24 @@ void addPreferences(pqxx::transaction_base& tx)
     tx.exec0("ALTER TABLE users ADD COLUMN preferences TEXT NOT NULL DEFAULT '{}'");
 }
 
+// Version 8: idempotency keys, as SQLite's version 8.
+void addIdempotencyKeys(pqxx::transaction_base& tx)
+{
+    tx.exec0("CREATE TABLE idempotency_keys ("
+             " owner_id BIGINT NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+             " key TEXT NOT NULL,"
+             " route TEXT NOT NULL,"
+             " request_hash TEXT NOT NULL,"
+             " object_id BIGINT NOT NULL,"
+             " created_at BIGINT NOT NULL,"
+             " PRIMARY KEY (owner_id, key))");
+    tx.exec0("CREATE INDEX idempotency_keys_age ON idempotency_keys(owner_id, created_at)");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences};
+                                                             addPreferences, addIdempotencyKeys};
 
 int versionIn(pqxx::transaction_base& tx)
 {

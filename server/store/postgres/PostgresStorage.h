@@ -22,6 +22,7 @@ public:
     JobLeaseStore& jobLeases() override { return mJobLeases; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
+    IdempotencyKeyStore& idempotencyKeys() override { return mIdempotencyKeys; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
@@ -39,6 +40,7 @@ private:
     PostgresJobLeaseStore mJobLeases{mDb};
     PostgresResultStore mResults{mDb};
     PostgresMetaStore mMeta{mDb};
+    PostgresIdempotencyKeyStore mIdempotencyKeys{mDb};
     PostgresApiTokenStore mApiTokens{mDb};
     PostgresStudyStore mStudies{mDb};
     PostgresLabStore mLabs{mDb};

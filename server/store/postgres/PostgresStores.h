@@ -5,6 +5,7 @@
 #include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
+#include "server/store/IdempotencyKeyStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
@@ -159,6 +160,18 @@ public:
     std::optional<std::string> get(const std::string& key) override;
     void set(const std::string& key, const std::string& value) override;
     bool insertIfAbsent(const std::string& key, const std::string& value) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresIdempotencyKeyStore final : public IdempotencyKeyStore {
+public:
+    explicit PostgresIdempotencyKeyStore(PostgresDatabase& db) : mDb(db) {}
+    std::optional<IdempotencyKey> reserve(std::int64_t ownerId, const std::string& key, const IdempotencyKey& use,
+                                          std::int64_t nowUnix, std::int64_t notBeforeUnix) override;
+    void complete(std::int64_t ownerId, const std::string& key, std::int64_t objectId) override;
+    void release(std::int64_t ownerId, const std::string& key) override;
 
 private:
     PostgresDatabase& mDb;

@@ -241,10 +241,26 @@ void addPreferences(SQLite::Database& db)
     db.exec("ALTER TABLE users ADD COLUMN preferences TEXT NOT NULL DEFAULT '{}'");
 }
 
+// Version 8: idempotency keys of POST /jobs and /studies (server/store/IdempotencyKeyStore.h),
+// a day's worth per user; object_id 0 while the request that reserved the key runs. They go
+// with their user.
+void addIdempotencyKeys(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE idempotency_keys ("
+            " owner_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " key TEXT NOT NULL,"
+            " route TEXT NOT NULL,"
+            " request_hash TEXT NOT NULL,"
+            " object_id INTEGER NOT NULL,"
+            " created_at INTEGER NOT NULL,"
+            " PRIMARY KEY (owner_id, key))");
+    db.exec("CREATE INDEX idempotency_keys_age ON idempotency_keys(owner_id, created_at)");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences};
+                                                             addPreferences, addIdempotencyKeys};
 
 } // namespace
 

@@ -20,6 +20,7 @@ public:
     JobLeaseStore& jobLeases() override { return mJobLeases; }
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
+    IdempotencyKeyStore& idempotencyKeys() override { return mIdempotencyKeys; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
@@ -36,6 +37,7 @@ private:
     SqliteJobLeaseStore mJobLeases{mDb};
     SqliteResultStore mResults{mDb};
     SqliteMetaStore mMeta{mDb};
+    SqliteIdempotencyKeyStore mIdempotencyKeys{mDb};
     SqliteApiTokenStore mApiTokens{mDb};
     SqliteStudyStore mStudies{mDb};
     SqliteLabStore mLabs{mDb};
