@@ -63,6 +63,7 @@ Created createJob(Services& s, Call& call)
     if (body.step) request.settings.step = *body.step;
     if (body.stop) request.settings.stop = *body.stop;
     if (body.logSamples) request.settings.logSamples = static_cast<std::size_t>(*body.logSamples);
+    request.keep = body.keep.value_or(true);
     const auto submitted = s.queue.submit(request);
     if (!submitted.id) return {refusal(submitted.code, submitted.message), std::nullopt};
     return {jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson()), submitted.id};
@@ -199,10 +200,15 @@ Response jobResults(Services& s, Call& call)
     if (job->state != JobState::Done)
         return apiError(http::status::conflict, "conflict",
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
-    if (job->resultsDropped)
-        return apiError(http::status::gone, "gone",
-                        "the run's results were dropped: a model keeps the results of its newest unpinned runs "
-                        "only (--max-unpinned-runs-per-model); pin a run to keep them");
+    const bool keep = s.queue.store().request(job->id).value_or(JobRequest{}).keep;
+    const auto gone = [&] {
+        return keep ? apiError(http::status::gone, "gone",
+                               "the run's results were dropped: a model keeps the results of its newest unpinned "
+                               "runs only (--max-unpinned-runs-per-model); pin a run to keep them")
+                    : apiError(http::status::gone, "gone",
+                               "the run was submitted with keep: false, and its results were given once already");
+    };
+    if (job->resultsDropped) return gone();
     const auto& q = call.params.query;
     const std::vector<std::string> variables = q.count("variables") ? commaSeparated(q.at("variables")) : std::vector<std::string>{};
     const auto table = s.queue.results().result(job->id, variables);
@@ -211,12 +217,15 @@ Response jobResults(Services& s, Call& call)
         if (!table->hasColumn(v))
             return apiError(http::status::bad_request, "bad_request", "no logged variable '" + v + "'");
     const std::string format = q.count("format") ? q.at("format") : "json";
+    if (format != "csv" && format != "json")
+        return apiError(http::status::bad_request, "bad_request", "format must be csv or json");
+    // Given once: of reads racing for them, only the one that drops them answers them.
+    if (!keep && !s.queue.store().dropResults(job->id)) return gone();
     if (format == "csv") {
         Response res = textResponse(http::status::ok, table->toCsv(variables), "text/csv");
         res.set(http::field::content_disposition, attachmentDisposition("job-" + std::to_string(job->id) + ".csv"));
         return res;
     }
-    if (format != "json") return apiError(http::status::bad_request, "bad_request", "format must be csv or json");
     return jsonResponse(http::status::ok, table->toJson(variables));
 }
 

@@ -60,6 +60,7 @@ nlohmann::json JobRequest::toJson() const
                           {"settings", std::move(settingsJson)},
                           {"model_directory", modelDirectory}};
     if (!usedParameters.empty()) out["used_parameters"] = usedParameters;
+    if (!keep) out["keep"] = false;
     return out;
 }
 
@@ -79,6 +80,7 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
         r.modelDirectory = j.value("model_directory", std::string());
         if (j.contains("used_parameters"))
             r.usedParameters = j.at("used_parameters").get<std::map<std::string, std::string>>();
+        r.keep = j.value("keep", true);
         out = std::move(r);
         return true;
     } catch (const nlohmann::json::exception&) {

@@ -48,6 +48,9 @@ struct JobRequest {
     // A run of an assignment's locked copy: `settings` may only repeat the model's own (the
     // template's). Checked when the job is submitted; not stored.
     bool settingsFixed = false;
+    // False: its results are given once (the first read of them drops them), so a script's
+    // runs do not fill the owner's quota.
+    bool keep = true;
 
     // Stored with the job so that it can be run again (rerun, restart).
     nlohmann::json toJson() const;

@@ -624,6 +624,7 @@ void from_json(const nlohmann::json& j, JobRequest& v)
     if (const auto x = j.find("step"); x != j.end()) v.step = x->get<double>();
     if (const auto x = j.find("stop"); x != j.end()) v.stop = x->get<double>();
     if (const auto x = j.find("log_samples"); x != j.end()) v.logSamples = x->get<std::int64_t>();
+    if (const auto x = j.find("keep"); x != j.end()) v.keep = x->get<bool>();
     if (const auto x = j.find("hmf"); x != j.end()) v.hmf = x->get<std::string>();
 }
 
@@ -636,6 +637,7 @@ void to_json(nlohmann::json& j, const JobRequest& v)
     if (v.step) j["step"] = *v.step;
     if (v.stop) j["stop"] = *v.stop;
     if (v.logSamples) j["log_samples"] = *v.logSamples;
+    if (v.keep) j["keep"] = *v.keep;
     if (v.hmf) j["hmf"] = *v.hmf;
 }
 

@@ -497,6 +497,7 @@ struct JobRequest {
     std::optional<double> step;
     std::optional<double> stop;
     std::optional<std::int64_t> logSamples;
+    std::optional<bool> keep;
     std::optional<std::string> hmf;
 };
 void from_json(const nlohmann::json& j, JobRequest& v);

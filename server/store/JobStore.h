@@ -43,6 +43,9 @@ public:
     // Of `modelId`'s finished, unpinned jobs that still have their results, all but the newest
     // `keep` lose them (the jobs stay, marked results-dropped); returns how many lost them.
     virtual int dropOldResults(std::int64_t modelId, int keep) = 0;
+    // Drops one finished job's results (marks it results-dropped): true when this call
+    // dropped them, false when they were gone already or there is no such finished job.
+    virtual bool dropResults(std::int64_t id) = 0;
     virtual std::vector<JobInfo> listAll() = 0;
     // Oldest first (the order they were submitted in).
     virtual std::vector<JobInfo> listInState(JobState state) = 0;

@@ -137,6 +137,24 @@ class Jobs(unittest.TestCase):
         self.assertEqual(caught.exception.state, "cancelled")
         self.assertEqual(self.client.jobs.cancel(job.id).state, "cancelled")
 
+    def test_an_unkept_runs_results_are_given_once(self):
+        job = self.client.run(self.model, stop=0.2, wait=False, keep=False)
+        result = job.wait().results()
+        self.assertGreater(len(result), 1)
+        self.assertIn("Mass#P2#Position", result)
+        with self.assertRaises(tlmhub.Refused) as caught:
+            self.client.jobs.results(job.id)
+        self.assertEqual((caught.exception.status, caught.exception.code), (410, "gone"))
+        self.assertIn("keep: false", caught.exception.message)
+        listed = self.client.jobs.get(job.id)
+        self.assertEqual(listed.state, "done")
+        self.assertTrue(listed.info["results_dropped"])
+
+    def test_a_run_is_kept_by_default(self):
+        job = self.client.run(self.model, stop=0.2, wait=False)
+        job.wait()
+        self.assertEqual(self.client.jobs.results(job.id).to_csv(), self.client.jobs.results(job.id).to_csv())
+
     def test_unknown_job_is_404_not_found(self):
         with self.assertRaises(tlmhub.ApiError) as caught:
             self.client.jobs.results(999999)

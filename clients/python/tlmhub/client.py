@@ -161,11 +161,15 @@ class Models(_Collection):
 class Jobs(_Collection):
     def submit(self, model: ModelRef, parameters: Mapping[str, Any] | None = None,
                start: float | None = None, step: float | None = None,
-               stop: float | None = None, log_samples: int | None = None) -> Job:
-        """Queues a job (`client.run(..., wait=False)` is the same)."""
+               stop: float | None = None, log_samples: int | None = None, keep: bool = True) -> Job:
+        """Queues a job (`client.run(..., wait=False)` is the same). `keep=False`: its
+        results are given once, to the first `results()`, and then dropped by the server (the
+        job stays in the history; reading them again raises Refused, status 410 `gone`)."""
         body = {**model_source(model), **_values.settings(start, step, stop, log_samples)}
         if parameters:
             body["parameters"] = _values.parameters(parameters)
+        if not keep:
+            body["keep"] = False
         created = self._transport.json("POST", "/jobs", json_body=body, idempotency_key=new_idempotency_key())
         return Job(self._client, created)
 
@@ -248,11 +252,13 @@ class Client:
 
     def run(self, model: ModelRef, parameters: Mapping[str, Any] | None = None,
             start: float | None = None, step: float | None = None, stop: float | None = None,
-            log_samples: int | None = None, wait: bool = True) -> Result | Job:
+            log_samples: int | None = None, wait: bool = True, keep: bool = True) -> Result | Job:
         """Runs a model once: its Result, or with `wait=False` the queued Job.
-        `parameters` override values for this run (`"GainP.k": 0.03`)."""
+        `parameters` override values for this run (`"GainP.k": 0.03`). `keep=False` leaves
+        nothing stored on the server once the Result is read (a script's thousandth run then
+        fits a small quota as the first did); see `Jobs.submit`."""
         job = self.jobs.submit(model, parameters, start=start, step=step, stop=stop,
-                               log_samples=log_samples)
+                               log_samples=log_samples, keep=keep)
         return job.wait().results() if wait else job
 
     def stream(self, job_id: int, variables: Sequence[str] | None = None) -> Iterator[dict[str, list[float]]]:

@@ -45,6 +45,12 @@ constexpr PgStatement kDropOldResults{
     " RETURNING id),"
     " gone AS (DELETE FROM job_results WHERE job_id IN (SELECT id FROM dropped))"
     " SELECT COUNT(*) FROM dropped"};
+constexpr PgStatement kDropResults{
+    "jobs_drop_results",
+    "WITH dropped AS (UPDATE jobs SET results_dropped_at = $2 WHERE id = $1 AND results_dropped_at = 0"
+    " AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead') RETURNING id),"
+    " gone AS (DELETE FROM job_results WHERE job_id IN (SELECT id FROM dropped))"
+    " SELECT COUNT(*) FROM dropped"};
 constexpr PgStatement kListAll{"jobs_list_all",
                                "SELECT id, owner_id, model_id, state, progress, error, created_at, started_at,"
                                " finished_at, steps, start, step, stop, log_samples, name, pinned, results_dropped_at FROM jobs ORDER BY id DESC"};
@@ -209,6 +215,15 @@ int PostgresJobStore::dropOldResults(std::int64_t modelId, int keep)
     return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
         return c.exec(tx, kDropOldResults, modelId, keep, static_cast<std::int64_t>(unixNow()))[0][0].as<int>();
+    });
+}
+
+bool PostgresJobStore::dropResults(std::int64_t id)
+{
+    // Not idempotent: run twice, the second would say "gone already" of what the first dropped.
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kDropResults, id, static_cast<std::int64_t>(unixNow()))[0][0].as<int>() == 1;
     });
 }
 

@@ -206,6 +206,25 @@ int SqliteJobStore::dropOldResults(std::int64_t modelId, int keep)
     return dropped;
 }
 
+bool SqliteJobStore::dropResults(std::int64_t id)
+{
+    const bool dropped = mDb.runFreeingSpace([&](SqliteConnection& c) {
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        auto mark = c.prepared("UPDATE jobs SET results_dropped_at = ? WHERE id = ? AND results_dropped_at = 0"
+                               " AND state IN ('done', 'failed', 'cancelled', 'interrupted', 'dead')");
+        mark->bind(1, static_cast<std::int64_t>(unixNow()));
+        mark->bind(2, id);
+        if (mark->exec() != 1) return false;
+        auto results = c.prepared("DELETE FROM job_results WHERE job_id = ?");
+        results->bind(1, id);
+        results->exec();
+        transaction.commit();
+        return true;
+    });
+    mDb.restoreReserve();
+    return dropped;
+}
+
 std::vector<JobInfo> SqliteJobStore::listAll()
 {
     return mDb.run([&](SqliteConnection& c) {

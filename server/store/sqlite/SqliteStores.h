@@ -82,6 +82,7 @@ public:
                                       std::optional<std::int64_t> beforeId, int limit) override;
     bool label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned) override;
     int dropOldResults(std::int64_t modelId, int keep) override;
+    bool dropResults(std::int64_t id) override;
     std::vector<JobInfo> listAll() override;
     std::vector<JobInfo> listInState(JobState state) override;
     bool markRunning(std::int64_t id) override;

@@ -118,6 +118,32 @@ TEST_P(JobStoreConformance, TheRequestComesBackAsItsJsonAndAsARequest)
     EXPECT_FALSE(store().jobs().request(id + 1000));
 }
 
+// keep: false comes back from the stored request (what GET /jobs/{id}/results reads).
+TEST_P(JobStoreConformance, AnUnkeptRequestComesBackUnkept)
+{
+    JobRequest request = jobRequest(3);
+    request.keep = false;
+    const std::int64_t unkept = store().jobs().create(request, resolvedSettings());
+    const std::int64_t kept = store().jobs().create(jobRequest(3), resolvedSettings());
+    EXPECT_FALSE(store().jobs().request(unkept)->keep);
+    EXPECT_TRUE(store().jobs().request(kept)->keep);
+}
+
+// One job's results dropped: once (the call that dropped them says so), and only a finished job's.
+TEST_P(JobStoreConformance, DropResultsDropsAFinishedJobsResultsOnce)
+{
+    const std::string blob(1000, 'r');
+    const std::int64_t done = addFinishedJob(4, &blob);
+    const std::int64_t queued = addJob(4);
+    ASSERT_TRUE(store().results().has(done));
+    EXPECT_FALSE(store().jobs().dropResults(queued)) << "not finished";
+    EXPECT_TRUE(store().jobs().dropResults(done));
+    EXPECT_FALSE(store().results().has(done));
+    EXPECT_TRUE(store().jobs().info(done)->resultsDropped);
+    EXPECT_FALSE(store().jobs().dropResults(done)) << "gone already";
+    EXPECT_FALSE(store().jobs().dropResults(done + 1000)) << "no such job";
+}
+
 TEST_P(JobStoreConformance, RequestIsNothingWhenTheStoredTextIsNotARequest)
 {
     const std::int64_t id = addJob(1);

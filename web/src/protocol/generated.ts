@@ -597,6 +597,10 @@ export interface JobRequestForModel {
     step?: number;
     stop?: number;
     log_samples?: number;
+    /**
+     * false: the results are given once: the first GET /jobs/{id}/results answers them and drops them (410 gone after); the run stays in the history. Default true.
+     */
+    keep?: boolean;
 }
 export interface JobRequestForHmf {
     hmf: string;
@@ -605,6 +609,10 @@ export interface JobRequestForHmf {
     step?: number;
     stop?: number;
     log_samples?: number;
+    /**
+     * false: the results are given once: the first GET /jobs/{id}/results answers them and drops them (410 gone after); the run stays in the history. Default true.
+     */
+    keep?: boolean;
 }
 export interface JobCreated {
     id: number;
