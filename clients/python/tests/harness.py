@@ -86,22 +86,32 @@ class _Process:
 class Server:
     """`Server.start()` ... `server.stop()`; `server.url` is `http://127.0.0.1:PORT`."""
 
-    def __init__(self) -> None:
-        binary = required_env("TLMHUB_SERVER_BIN")
-        if not os.access(binary, os.X_OK):
-            raise RuntimeError(f"TLMHUB_SERVER_BIN={binary} is not an executable")
+    def __init__(self, workers: int = 2, extra_args: tuple = ()) -> None:
+        self._binary = required_env("TLMHUB_SERVER_BIN")
+        if not os.access(self._binary, os.X_OK):
+            raise RuntimeError(f"TLMHUB_SERVER_BIN={self._binary} is not an executable")
+        self._workers = workers
+        self._extra_args = list(extra_args)
         self.directory = Path(tempfile.mkdtemp(prefix="tlmhub-python-"))
         (self.directory / "examples").mkdir()
-        env = {**os.environ, "TLMHUB_ADMIN_PASSWORD": ADMIN_PASSWORD}
-        self._process = _Process(
-            [binary, "--listen", "127.0.0.1:0", "--data-dir", str(self.directory / "data"),
-             "--workers", "2", "--examples-dir", str(self.directory / "examples"),
-             "--web-root", str(self.directory / "no-web"),
-             # Cheap hashes: the tests log in often (a test server, as ServerHarness.cpp's).
-             "--password-hash-cost", "minimal"],
-            "tlmhub-server listening on ", env)
+        self._process = self._start("127.0.0.1:0")
         self.url = self._process.line.rsplit(" ", 1)[1]
         self._proxies: list[_Process] = []
+
+    def _start(self, listen: str) -> "_Process":
+        env = {**os.environ, "TLMHUB_ADMIN_PASSWORD": ADMIN_PASSWORD}
+        return _Process(
+            [self._binary, "--listen", listen, "--data-dir", str(self.directory / "data"),
+             "--workers", str(self._workers), "--examples-dir", str(self.directory / "examples"),
+             "--web-root", str(self.directory / "no-web"),
+             # Cheap hashes: the tests log in often (a test server, as ServerHarness.cpp's).
+             "--password-hash-cost", "minimal", *self._extra_args],
+            "tlmhub-server listening on ", env)
+
+    def restart(self) -> None:
+        """Stops the server (SIGTERM) and starts it again on the same address and data."""
+        self._process.stop()
+        self._process = self._start(self.url.removeprefix("http://"))
 
     def tls_proxy(self) -> tuple[str, str]:
         """An https:// URL in front of this server (tests/tools/tls_proxy.py) and the

@@ -72,6 +72,8 @@ class Socket:
             return None
         except websocket.WebSocketConnectionClosedException:
             text = ""
+        except (websocket.WebSocketException, OSError) as error:
+            raise ApiError(0, "closed", f"the WebSocket broke: {error}") from None
         if not text:
             raise ApiError(0, "closed", "the server closed the WebSocket")
         return json.loads(text)

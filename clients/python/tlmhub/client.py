@@ -10,7 +10,8 @@ from typing import Any, Iterator, Mapping, Sequence, Union
 
 from . import _values, _websocket
 from ._http import Transport, new_idempotency_key
-from .errors import SimulationFailed
+from ._outage import Outage
+from .errors import ConnectionFailed, SimulationFailed
 from .results import Result, variables_query
 from .studies import Study
 
@@ -66,13 +67,21 @@ class Job:
 
     def wait(self, timeout: float | None = None, on_interrupt: str = "cancel") -> "Job":
         """Polls until the job ends; raises SimulationFailed unless it ended `done`.
-        Ctrl-C (KeyboardInterrupt) while waiting cancels the job before it is raised again;
-        `on_interrupt="detach"` leaves it running."""
+        A server that cannot be reached (a restart) is tried again for the client's
+        `reconnect_timeout`. Ctrl-C (KeyboardInterrupt) while waiting cancels the job before
+        it is raised again; `on_interrupt="detach"` leaves it running."""
         _check_on_interrupt(on_interrupt)
         deadline = None if timeout is None else time.monotonic() + timeout
         interval = 0.02
+        outage = Outage(self._client.reconnect_timeout)
         try:
-            while self.refresh().state not in JOB_FINAL_STATES:
+            while True:
+                try:
+                    if self.refresh().state in JOB_FINAL_STATES:
+                        break
+                    outage.reached()
+                except ConnectionFailed as error:
+                    outage.failed(error)
                 if deadline is not None and time.monotonic() > deadline:
                     raise TimeoutError(f"job {self.id} did not finish in time")
                 time.sleep(interval)
@@ -220,12 +229,16 @@ class Client:
 
     `Client(url, token)` with an API token (`tlmh_...`), or `Client.login(url, user,
     password)` for a login session. `url` is the server's address (`http://host:8080`),
-    with or without `/api/v1`. `retries`: how many times a GET or DELETE is sent again after
-    no answer or 429/502/503/504 (0: never)."""
+    with or without `/api/v1`. `retries`: how many times a GET, a DELETE or a submit (with
+    its Idempotency-Key) is sent again after no answer or 429/502/503/504 (0: never).
+    `reconnect_timeout`: how long `wait()` keeps trying to reach a server that went away (a
+    restart) before it raises ConnectionFailed, in seconds."""
 
     def __init__(self, url: str, token: str, *, timeout: float = 60.0,
-                 ssl_context: ssl.SSLContext | None = None, retries: int = 5):
+                 ssl_context: ssl.SSLContext | None = None, retries: int = 5,
+                 reconnect_timeout: float = 120.0):
         self._transport = Transport(url, token, timeout=timeout, ssl_context=ssl_context, retries=retries)
+        self.reconnect_timeout = reconnect_timeout
         self.tokens = Tokens(self)
         self.models = Models(self)
         self.jobs = Jobs(self)
@@ -235,7 +248,8 @@ class Client:
     def login(cls, url: str, username: str, password: str, **options: Any) -> "Client":
         """A client on a login session (it expires; scripts that run unattended should use
         an API token instead)."""
-        reply = Transport(url, None, **options).json(
+        transport_options = {k: v for k, v in options.items() if k != "reconnect_timeout"}
+        reply = Transport(url, None, **transport_options).json(
             "POST", "/auth/login", json_body={"username": username, "password": password})
         return cls(url, reply["token"], **options)
 

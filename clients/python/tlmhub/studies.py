@@ -7,7 +7,8 @@ import time
 from typing import TYPE_CHECKING, Any, Sequence
 
 from . import _websocket
-from .errors import ApiError, SimulationFailed
+from ._outage import Outage
+from .errors import ApiError, ConnectionFailed, SimulationFailed
 from .results import Result, Table, variables_query
 
 if TYPE_CHECKING:
@@ -49,7 +50,10 @@ class Study:
         `done` (runs that failed inside a done study are rows with `ok` 0, not an error).
 
         With websocket-client installed it listens to `event.study.progress`, otherwise it
-        polls GET /studies/{id}. `progress=True` draws a one-line bar on stderr. Ctrl-C
+        polls GET /studies/{id}. A lost WebSocket is opened and subscribed again, and a
+        server that cannot be reached (a restart) is tried again for the client's
+        `reconnect_timeout`; a study the restart interrupted ends the wait `interrupted`
+        (`resume()` goes on with it). `progress=True` draws a one-line bar on stderr. Ctrl-C
         (KeyboardInterrupt) while waiting cancels the study before it is raised again, so an
         interrupted script leaves nothing running against its study limit;
         `on_interrupt="detach"` leaves it running (`resume()` continues a cancelled one)."""
@@ -57,9 +61,17 @@ class Study:
             raise ValueError(f"on_interrupt: 'cancel' or 'detach', not {on_interrupt!r}")
         deadline = None if timeout is None else time.monotonic() + timeout
         bar = _ProgressBar() if progress else None
+        outage = Outage(self._client.reconnect_timeout)
+        events = _websocket.available()
         try:
-            if not (_websocket.available() and self._wait_for_events(deadline, bar)):
-                self._poll(deadline, bar)
+            while True:
+                try:
+                    if not (events and self._wait_for_events(deadline, bar, outage)):
+                        events = False
+                        self._poll(deadline, bar, outage)
+                    break
+                except ConnectionFailed as error:
+                    outage.failed(error)
         except KeyboardInterrupt:
             if bar:
                 bar.finish()
@@ -73,27 +85,42 @@ class Study:
             raise SimulationFailed("study", self.id, str(self.state), self.info.get("error") or "")
         return self
 
-    def _wait_for_events(self, deadline: float | None, bar: "_ProgressBar | None") -> bool:
+    def _wait_for_events(self, deadline: float | None, bar: "_ProgressBar | None", outage: Outage) -> bool:
         """Waits on the WebSocket; False when the socket or the subscription is refused (a
         proxy without WebSockets, a server without studies): polling then says why, or works.
         A quiet socket is still backed by a GET every few seconds, so a lost event cannot
-        leave the wait hanging."""
+        leave the wait hanging. A socket that cannot be opened because the server is away,
+        or that breaks, raises ConnectionFailed (the caller tries again)."""
         try:
             socket = _websocket.Socket(self._client._transport, timeout=1.0)
-        except (ApiError, OSError):
+        except OSError as error:
+            raise ConnectionFailed(f"WebSocket: {error}", error) from None
+        except ApiError as error:
+            if error.code == "websocket_error":
+                raise ConnectionFailed(error.message, error) from None
             return False
         with socket:
             try:
                 socket.call("study.subscribe", study_id=self.id)
-            except ApiError:
+            except OSError as error:
+                raise ConnectionFailed(f"WebSocket: {error}", error) from None
+            except ApiError as error:
+                if error.code == "closed":
+                    raise ConnectionFailed(error.message, error) from None
                 return False
             last_fetch = time.monotonic()
             self.refresh()
+            outage.reached()
             while self.state not in FINAL_STATES:
                 if bar:
                     bar.draw(self.info)
                 _check(deadline, self.id)
-                event = socket.next_event()
+                try:
+                    event = socket.next_event()
+                except OSError as error:
+                    raise ConnectionFailed(f"WebSocket: {error}", error) from None
+                except ApiError as error:
+                    raise ConnectionFailed(error.message, error) from None
                 if (event and event.get("type") == "event.study.progress"
                         and event.get("study_id") == self.id):
                     self._apply(event)
@@ -109,9 +136,10 @@ class Study:
         if "best" in event:
             self.info["summary"] = {**self.summary, "best": event["best"]}
 
-    def _poll(self, deadline: float | None, bar: "_ProgressBar | None") -> None:
+    def _poll(self, deadline: float | None, bar: "_ProgressBar | None", outage: Outage) -> None:
         interval = 0.05
         while self.refresh().state not in FINAL_STATES:
+            outage.reached()
             if bar:
                 bar.draw(self.info)
             _check(deadline, self.id)
