@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -25,12 +26,25 @@ ApiClient connectWithCredentials()
 
 namespace {
 
+// A model the caller can read with this name and exactly this text: a file run again runs
+// the model stored the first time instead of storing one more copy.
+std::optional<long long> storedCopy(ApiClient& api, const std::string& name, const std::string& text)
+{
+    for (const nlohmann::json& model : api.get("/models")) {
+        if (model.value("name", std::string()) != name) continue;
+        const long long id = model.at("id").get<long long>();
+        if (api.getText("/models/" + std::to_string(id) + "?format=hmf") == text) return id;
+    }
+    return std::nullopt;
+}
+
 long long uploadModel(ApiClient& api, const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     if (!(in && text << in.rdbuf())) throw std::runtime_error("cannot read '" + path + "'");
     const std::string name = std::filesystem::path(path).stem().string();
+    if (const auto stored = storedCopy(api, name, text.str())) return *stored;
     const nlohmann::json model = api.postXml("/models?name=" + percentEncode(name), text.str());
     return model.at("id").get<long long>();
 }

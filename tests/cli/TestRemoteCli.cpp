@@ -302,6 +302,36 @@ TEST_F(RemoteCli, AModelIdRunsTheStoredModelWithoutAnotherUpload)
     EXPECT_NE(missing.err.find("not_found"), std::string::npos) << missing.err;
 }
 
+// A file run again runs the model its first run stored: the same text is not stored twice.
+// A changed file is stored anew. (The file is the example's with a comment added: the
+// example itself is stored already, and a run of it uses that one.)
+TEST_F(RemoteCli, AFileRunAgainRunsTheModelItsFirstRunStored)
+{
+    const auto modelOf = [](const CliResult& run) {
+        std::smatch m;
+        const std::string printed = run.out + run.err;
+        if (!std::regex_search(printed, m, std::regex("\\(model ([0-9]+)\\)"))) ADD_FAILURE() << printed;
+        return m.size() > 1 ? m[1].str() : std::string();
+    };
+    const auto file = mDir / "pressure-build-up.hmf";
+    std::ofstream(file) << readFile(kModel) << "\n<!-- mine -->\n";
+    const auto before = mAdmin->get("/api/v1/models").json().size();
+    const CliResult first = remote({"run", file.string()}, loggedIn());
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    const CliResult again = remote({"run", file.string()}, loggedIn());
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    const CliResult swept = remote({"sweep", file.string(), "--vary", "pump_flow=1e-4,2e-4"}, loggedIn());
+    ASSERT_EQ(swept.exitCode, 0) << swept.err;
+    EXPECT_EQ(modelOf(again), modelOf(first));
+    EXPECT_EQ(mAdmin->get("/api/v1/models").json().size(), before + 1) << "stored once";
+
+    std::ofstream(file, std::ios::app) << "<!-- changed -->\n";
+    const CliResult edited = remote({"run", file.string()}, loggedIn());
+    ASSERT_EQ(edited.exitCode, 0) << edited.err;
+    EXPECT_NE(modelOf(edited), modelOf(first));
+    EXPECT_EQ(mAdmin->get("/api/v1/models").json().size(), before + 2) << "another text: stored";
+}
+
 TEST_F(RemoteCli, ResultsWritesAJobsCsvWhole)
 {
     const CliResult run = remote({"run", kModel}, loggedIn());
