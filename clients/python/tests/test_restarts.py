@@ -23,8 +23,9 @@ def tearDownModule() -> None:
     server.stop()
 
 
-def wait_in_thread(waitable):
-    """Runs `waitable.wait()` in a thread; returns the thread and its outcome holder."""
+def wait_through_a_restart(test, waitable):
+    """Waits on `waitable` in a thread, restarts the server while it waits, and returns what
+    the wait returned (failing `test` if it ended before the restart, hangs or raises)."""
     outcome = {}
 
     def run():
@@ -35,7 +36,13 @@ def wait_in_thread(waitable):
 
     thread = threading.Thread(target=run, daemon=True)
     thread.start()
-    return thread, outcome
+    time.sleep(1.0)
+    test.assertTrue(thread.is_alive(), f"the wait ended before the restart: {outcome}")
+    server.restart()
+    thread.join(150)
+    test.assertFalse(thread.is_alive(), "the wait hangs after the restart")
+    test.assertNotIn("error", outcome, f"the wait raised {outcome.get('error')!r}")
+    return outcome["value"]
 
 
 class Restarts(unittest.TestCase):
@@ -54,28 +61,14 @@ class Restarts(unittest.TestCase):
     def test_a_study_wait_goes_on_through_a_restart(self):
         blocker = self.running_blocker()
         study = self.client.sweep(shared_model(), {"GainP.k": [0.01, 0.02, 0.03]}, stop=0.2, wait=False)
-        thread, outcome = wait_in_thread(study)
-        time.sleep(1.0)
-        self.assertTrue(thread.is_alive(), f"the wait ended before the restart: {outcome}")
-        server.restart()
-        thread.join(150)
-        self.assertFalse(thread.is_alive(), "the wait hangs after the restart")
-        self.assertNotIn("error", outcome, f"the wait raised {outcome.get('error')!r}")
-        self.assertEqual(outcome["value"].state, "done")
+        self.assertEqual(wait_through_a_restart(self, study).state, "done")
         self.assertEqual(len(study.table()), 3)
         self.assertEqual(self.client.jobs.get(blocker.id).state, "interrupted")
 
     def test_a_job_wait_goes_on_through_a_restart(self):
         self.running_blocker()
         job = self.client.run(shared_model(), stop=0.2, wait=False)
-        thread, outcome = wait_in_thread(job)
-        time.sleep(1.0)
-        self.assertTrue(thread.is_alive(), f"the wait ended before the restart: {outcome}")
-        server.restart()
-        thread.join(150)
-        self.assertFalse(thread.is_alive(), "the wait hangs after the restart")
-        self.assertNotIn("error", outcome, f"the wait raised {outcome.get('error')!r}")
-        self.assertEqual(outcome["value"].state, "done")
+        self.assertEqual(wait_through_a_restart(self, job).state, "done")
 
     def test_a_wait_on_a_server_that_stays_away_raises_connection_failed(self):
         client = tlmhub.Client(server.url, self.client._transport.token, retries=0, reconnect_timeout=1.0)
