@@ -37,10 +37,23 @@ std::string table(ApiClient& api, const nlohmann::json& info)
     return api.getText("/studies/" + std::to_string(info.at("id").get<long long>()) + "/results?format=csv");
 }
 
-std::string describeRuns(const nlohmann::json& info)
+// The table where --csv says: on standard output without it or with "-" (for a pipe: true,
+// and the command then prints no report), else in that file.
+bool writeTable(ApiClient& api, const nlohmann::json& info, const std::string& csv)
 {
-    return std::to_string(field(info, "runs_done", 0LL)) + " runs, " + std::to_string(field(info, "runs_failed", 0LL)) +
-           " failed";
+    if (csv.empty() || csv == kStandardOutput) {
+        writeStandardOutput(table(api, info));
+        return true;
+    }
+    writeFile(csv, table(api, info));
+    return false;
+}
+
+// "ok: MODEL: study ID, N runs, M failed" and `more`.
+void reportDone(std::FILE* to, const std::string& model, const nlohmann::json& info, const std::string& more)
+{
+    std::fprintf(to, "ok: %s: study %lld, %lld runs, %lld failed%s\n", model.c_str(), info.at("id").get<long long>(),
+                 field(info, "runs_done", 0LL), field(info, "runs_failed", 0LL), more.c_str());
 }
 
 } // namespace
@@ -56,15 +69,8 @@ int sweep(const std::vector<std::string>& argv)
     ApiClient api = connectWithCredentials();
     const std::optional<nlohmann::json> info = runStudy(api, model, request);
     if (!info) return 1;
-    // Without --csv (or with --csv -) the table is the output, for a pipe.
     const std::string csv = args.value("csv");
-    if (csv.empty() || csv == kStandardOutput) {
-        writeStandardOutput(table(api, *info));
-        return 0;
-    }
-    writeFile(csv, table(api, *info));
-    std::printf("ok: %s: study %lld, %s, table %s\n", model.c_str(), info->at("id").get<long long>(),
-                describeRuns(*info).c_str(), csv.c_str());
+    if (!writeTable(api, *info, csv)) reportDone(stdout, model, *info, ", table " + csv);
     return 0;
 }
 
@@ -82,14 +88,8 @@ int sensitivity(const std::vector<std::string>& argv)
     const std::string path = "/studies/" + std::to_string(info->at("id").get<long long>());
     if (args.has("bands")) writeFile(args.value("bands"), api.getText(path + "/bands?format=csv"));
     const std::string csv = args.value("csv");
-    if (csv.empty() || csv == kStandardOutput) {
-        writeStandardOutput(table(api, *info));
-        return 0;
-    }
-    writeFile(csv, table(api, *info));
-    std::printf("ok: %s: study %lld, %s, table %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
-                describeRuns(*info).c_str(), csv.c_str(), args.has("bands") ? ", bands " : "",
-                args.value("bands").c_str());
+    if (!writeTable(api, *info, csv))
+        reportDone(stdout, model, *info, ", table " + csv + (args.has("bands") ? ", bands " + args.value("bands") : ""));
     return 0;
 }
 
@@ -108,12 +108,10 @@ int optimise(const std::vector<std::string>& argv)
     // With --csv - the table is the standard output, and the report goes to standard error.
     const bool tableOnStandardOutput = csv == kStandardOutput;
     std::FILE* report = tableOnStandardOutput ? stderr : stdout;
-    if (tableOnStandardOutput) writeStandardOutput(table(api, *info));
-    else if (!csv.empty()) writeFile(csv, table(api, *info));
+    if (!csv.empty()) writeTable(api, *info, csv);
     const nlohmann::json summary = info->contains("summary") ? info->at("summary") : nlohmann::json();
-    std::fprintf(report, "ok: %s: study %lld, %s%s%s\n", model.c_str(), info->at("id").get<long long>(),
-                 describeRuns(*info).c_str(), csv.empty() ? "" : ", table ",
-                 tableOnStandardOutput ? "on standard output" : csv.c_str());
+    reportDone(report, model, *info,
+               csv.empty() ? "" : ", table " + (tableOnStandardOutput ? std::string("on standard output") : csv));
     if (!summary.is_object() || !summary.contains("best")) {
         std::fprintf(stderr, "error: the study reports no best point\n");
         return 1;
