@@ -310,14 +310,7 @@ Result EditSession::connectionRoute(System& system, const protocol::ConnectionRo
     // The points go where the connection's extras already are (kept in the order of the file's
     // ends), so what else the file kept for the line stays with it.
     bool reversed = false;
-    std::string key = preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort);
-    if (!system.connectionExtras.contains(key)) {
-        const std::string other = preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort);
-        if (system.connectionExtras.contains(other)) {
-            key = other;
-            reversed = true;
-        }
-    }
+    const std::string key = connectionExtrasKey(system, e, reversed);
     std::vector<LinePoint> points;
     for (const std::vector<double>& p : request.points) points.push_back({p.at(0), p.at(1)});
     if (reversed) std::reverse(points.begin(), points.end());

@@ -106,16 +106,21 @@ std::vector<ConnectionEnds> connectionsOf(const System& system)
     return out;
 }
 
+std::string connectionExtrasKey(const System& system, const ConnectionEnds& e, bool& reversed)
+{
+    reversed = false;
+    std::string key = preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort);
+    if (system.connectionExtras.contains(key)) return key;
+    std::string other = preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort);
+    if (!system.connectionExtras.contains(other)) return key;
+    reversed = true;
+    return other;
+}
+
 const ConnectionLayout* connectionLayout(const System& system, const ConnectionEnds& e, bool& reversed)
 {
-    const auto& extras = system.connectionExtras;
-    reversed = false;
-    auto it = extras.find(preserved::connectionKey(e.fromComponent, e.fromPort, e.toComponent, e.toPort));
-    if (it == extras.end()) {
-        it = extras.find(preserved::connectionKey(e.toComponent, e.toPort, e.fromComponent, e.fromPort));
-        reversed = it != extras.end();
-    }
-    return it == extras.end() ? nullptr : &it->second.layout;
+    const auto it = system.connectionExtras.find(connectionExtrasKey(system, e, reversed));
+    return it == system.connectionExtras.end() ? nullptr : &it->second.layout;
 }
 
 protocol::Connection describeConnection(const System& system, const ConnectionEnds& e)

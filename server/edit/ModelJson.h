@@ -29,6 +29,9 @@ struct ConnectionEnds {
 // Every connection made inside `system` (not those of its subsystems), each once, in the
 // order the model file lists them.
 std::vector<ConnectionEnds> connectionsOf(const System& system);
+// The key of the connection's extras in system.connectionExtras: the one stored in either
+// order of its ends (`reversed`: stored as to -> from), else the key of its own order.
+std::string connectionExtrasKey(const System& system, const ConnectionEnds& ends, bool& reversed);
 // The connection's layout (line points) stored for it in either direction, or null;
 // `reversed` tells that it was stored as to -> from (its points run that way).
 const ConnectionLayout* connectionLayout(const System& system, const ConnectionEnds& ends, bool& reversed);
