@@ -12,6 +12,7 @@ from . import _values, _websocket
 from ._http import Transport, new_idempotency_key
 from ._outage import Outage
 from .errors import ConnectionFailed, SimulationFailed
+from .models import ModelEditor, Parameter, Variable, parameters_of
 from .results import Result, variables_query
 from .studies import Study
 
@@ -21,14 +22,34 @@ JOB_FINAL_STATES = ("done", "failed", "cancelled", "interrupted")
 @dataclass
 class Model:
     """A stored model: `info` is the server's summary (or, from `models.get`, its detail
-    with the model structure)."""
+    with the model structure). A Model the client gave knows it, for `parameters()`,
+    `variables()` and `edit()`."""
     id: int
     name: str
     info: dict[str, Any] = field(default_factory=dict, repr=False)
+    _client: Any = field(default=None, repr=False, compare=False)
 
     @classmethod
-    def from_json(cls, info: dict[str, Any]) -> "Model":
-        return cls(int(info["id"]), str(info.get("name", "")), info)
+    def from_json(cls, info: dict[str, Any], client: "Client | None" = None) -> "Model":
+        return cls(int(info["id"]), str(info.get("name", "")), info, _client=client)
+
+    def parameters(self) -> dict[str, Parameter]:
+        """The model's parameters as stored, by name (`client.models.parameters`)."""
+        return self._models().parameters(self.id)
+
+    def variables(self) -> dict[str, Variable]:
+        """The variables a run of the model logs, by name (`client.models.variables`)."""
+        return self._models().variables(self.id)
+
+    def edit(self) -> ModelEditor:
+        """The model opened for editing (`client.models.edit`)."""
+        return self._models().edit(self.id)
+
+    def _models(self) -> "Models":
+        if self._client is None:
+            raise ValueError(f"model {self.id} was made without a client: use client.models.parameters(id), "
+                             "client.models.variables(id) or client.models.edit(id)")
+        return self._client.models
 
 
 ModelRef = Union[int, str, "os.PathLike[str]", Model]
@@ -140,24 +161,61 @@ class Models(_Collection):
     def upload(self, path_or_text: str | bytes | os.PathLike[str], name: str | None = None) -> Model:
         """Stores an .hmf, given as a file path or as its text. A file is named after the
         file (as `tlmhub-cli remote` names it), text after its root system, unless `name`."""
-        if isinstance(path_or_text, bytes):
-            data = path_or_text
-        elif isinstance(path_or_text, str) and path_or_text.lstrip().startswith("<"):
-            data = path_or_text.encode()
-        else:
-            with open(path_or_text, "rb") as hmf:
-                data = hmf.read()
-            if name is None:
-                name = os.path.splitext(os.path.basename(os.fspath(path_or_text)))[0]
+        data = _hmf_bytes(path_or_text)
+        if name is None and not isinstance(path_or_text, bytes) and not _is_text(path_or_text):
+            name = os.path.splitext(os.path.basename(os.fspath(path_or_text)))[0]
         return Model.from_json(self._transport.json(
-            "POST", "/models", query={"name": name}, body=data, content_type="application/xml"))
+            "POST", "/models", query={"name": name}, body=data, content_type="application/xml"),
+            self._client)
 
     def list(self) -> list[Model]:
         """The caller's models and the examples."""
-        return [Model.from_json(m) for m in self._transport.json("GET", "/models")]
+        return [Model.from_json(m, self._client) for m in self._transport.json("GET", "/models")]
 
     def get(self, id: int) -> Model:
-        return Model.from_json(self._transport.json("GET", f"/models/{id}"))
+        return Model.from_json(self._transport.json("GET", f"/models/{id}"), self._client)
+
+    def update(self, id: int, path_or_text: str | bytes | os.PathLike[str], name: str | None = None) -> Model:
+        """Replaces a stored model's text with an .hmf, given as a file path or as its text
+        (`PUT /models/{id}`); `name` renames it too. Only its owner (or the admin) may."""
+        data = _hmf_bytes(path_or_text)
+        if name is None:
+            info = self._transport.json("PUT", f"/models/{id}", body=data, content_type="application/xml")
+        else:
+            info = self._transport.json("PUT", f"/models/{id}", json_body={"name": name, "hmf": data.decode()})
+        return Model.from_json(info, self._client)
+
+    def parameters(self, id: int) -> dict[str, Parameter]:
+        """The stored model's parameters by name (`GainP.k`, `Mass.m`, a system parameter's
+        own name ...; see `tlmhub.Parameter`), from its detail: system parameters first, then
+        each component's, in the model's order."""
+        detail = self._transport.json("GET", f"/models/{id}")
+        if "model" not in detail:
+            raise ValueError(f"model {id} does not load: {detail.get('load_error', '?')}")
+        return parameters_of(detail["model"])
+
+    def variables(self, id: int) -> dict[str, Variable]:
+        """The variables a run of the stored model logs (`Mass#P2#Position`), by name, with
+        their units. Only a run tells which ports log and the units of signals, so this
+        runs the model for one time step, reads the names and units, and deletes that job."""
+        detail = self._transport.json("GET", f"/models/{id}")
+        simulation = detail.get("model", {}).get("system", {}).get("simulation", {})
+        start = float(simulation.get("start", 0.0))
+        step = float(simulation.get("step") or detail["model"]["system"]["timestep"])
+        job = self._client.jobs.submit(id, start=start, step=step, stop=start + step, log_samples=1)
+        try:
+            job.wait()
+            stored = self._transport.json("GET", f"/jobs/{job.id}/results", query={"format": "json"})
+        finally:
+            if job.state in JOB_FINAL_STATES:
+                self._client.jobs.delete(job.id)
+        return {v["name"]: Variable(str(v["name"]), str(v.get("unit", ""))) for v in stored["variables"]}
+
+    def edit(self, id: int) -> ModelEditor:
+        """Opens a stored model for editing over the WebSocket (needs websocket-client),
+        best used as `with client.models.edit(id) as m: ...`; `m.save()` stores the changes,
+        closing without it drops them (see `tlmhub.ModelEditor`)."""
+        return ModelEditor(self._client, id)
 
     def hmf(self, id: int) -> str:
         """The model's .hmf text as stored."""
@@ -165,6 +223,20 @@ class Models(_Collection):
 
     def delete(self, id: int) -> None:
         self._transport.request("DELETE", f"/models/{id}")
+
+
+def _is_text(path_or_text: Any) -> bool:
+    return isinstance(path_or_text, str) and path_or_text.lstrip().startswith("<")
+
+
+def _hmf_bytes(path_or_text: str | bytes | os.PathLike[str]) -> bytes:
+    """The .hmf given as bytes, as text, or as the path of a file."""
+    if isinstance(path_or_text, bytes):
+        return path_or_text
+    if _is_text(path_or_text):
+        return path_or_text.encode()
+    with open(path_or_text, "rb") as hmf:
+        return hmf.read()
 
 
 class Jobs(_Collection):
@@ -259,6 +331,12 @@ class Client:
 
     def me(self) -> dict[str, Any]:
         return self._transport.json("GET", "/auth/me")
+
+    def components(self) -> list[dict[str, Any]]:
+        """The server's component catalogue (`GET /components`): per type its `type`, `kind`
+        (C, Q, S), `domain`, `ports` (`name`, `nodetype`, `porttype`, ...) and `parameters`
+        (`name`, `default`, `unit`, ...)."""
+        return self._transport.json("GET", "/components")
 
     def logout(self) -> None:
         """Ends a login session (an API token is revoked with `tokens.delete` instead)."""
