@@ -242,6 +242,15 @@ paths = {
                 {"name": "variables", "in": "query", "required": False,
                  "description": "Comma-separated variable names; all when absent",
                  "schema": {"type": "string"}}], tag="jobs")},
+    "/jobs/{id}/variables": {"get": op(
+        "The run's logged variables with their units, without their data (does not use up a keep: false run)",
+        {"200": {"description": "Variables", "content": {"application/json": {"schema": {
+            "type": "object", "required": ["variables"],
+            "properties": {"variables": {"type": "array", "items": {
+                "type": "object", "required": ["name", "unit"],
+                "properties": {"name": {"type": "string"}, "unit": {"type": "string"}}}}}}}}},
+         **errors("401", "404", "409", "410")},
+        params=[ID], tag="jobs")},
     "/studies": {
         "get": op("The caller's studies, newest first", {**ok("Studies", "StudyList"), **errors("401")}, tag="studies"),
         "post": op("Queue a study: a sweep, a sensitivity analysis or an optimisation of one model (docs/studies.md)",

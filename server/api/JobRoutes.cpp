@@ -193,6 +193,21 @@ Response rerunJob(Services& s, Call& call)
     return jsonResponse(http::status::created, s.queue.store().info(*submitted.id)->toJson());
 }
 
+// 410 for a run whose results are gone: given once (keep: false), or dropped for newer runs.
+Response resultsGone(bool keep)
+{
+    return keep ? apiError(http::status::gone, "gone",
+                           "the run's results were dropped: a model keeps the results of its newest unpinned "
+                           "runs only (--max-unpinned-runs-per-model); pin a run to keep them")
+                : apiError(http::status::gone, "gone",
+                           "the run was submitted with keep: false, and its results were given once already");
+}
+
+bool keptRun(Services& s, std::int64_t id)
+{
+    return s.queue.store().request(id).value_or(JobRequest{}).keep;
+}
+
 Response jobResults(Services& s, Call& call)
 {
     const auto job = visibleJob(s, call.who(), call.params.path["id"]);
@@ -200,15 +215,8 @@ Response jobResults(Services& s, Call& call)
     if (job->state != JobState::Done)
         return apiError(http::status::conflict, "conflict",
                         std::string("the job has no results (state ") + jobStateName(job->state) + ")");
-    const bool keep = s.queue.store().request(job->id).value_or(JobRequest{}).keep;
-    const auto gone = [&] {
-        return keep ? apiError(http::status::gone, "gone",
-                               "the run's results were dropped: a model keeps the results of its newest unpinned "
-                               "runs only (--max-unpinned-runs-per-model); pin a run to keep them")
-                    : apiError(http::status::gone, "gone",
-                               "the run was submitted with keep: false, and its results were given once already");
-    };
-    if (job->resultsDropped) return gone();
+    const bool keep = keptRun(s, job->id);
+    if (job->resultsDropped) return resultsGone(keep);
     const auto& q = call.params.query;
     const std::vector<std::string> variables = q.count("variables") ? commaSeparated(q.at("variables")) : std::vector<std::string>{};
     const auto table = s.queue.results().result(job->id, variables);
@@ -220,13 +228,29 @@ Response jobResults(Services& s, Call& call)
     if (format != "csv" && format != "json")
         return apiError(http::status::bad_request, "bad_request", "format must be csv or json");
     // Given once: of reads racing for them, only the one that drops them answers them.
-    if (!keep && !s.queue.store().dropResults(job->id)) return gone();
+    if (!keep && !s.queue.store().dropResults(job->id)) return resultsGone(keep);
     if (format == "csv") {
         Response res = textResponse(http::status::ok, table->toCsv(variables), "text/csv");
         res.set(http::field::content_disposition, attachmentDisposition("job-" + std::to_string(job->id) + ".csv"));
         return res;
     }
     return jsonResponse(http::status::ok, table->toJson(variables));
+}
+
+// GET /jobs/{id}/variables: the run's logged variables with their units, without their data
+// (what a script labels its columns with; read before the results of a keep: false run).
+Response jobVariables(Services& s, Call& call)
+{
+    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    if (job->state != JobState::Done)
+        return apiError(http::status::conflict, "conflict",
+                        std::string("the job has no results (state ") + jobStateName(job->state) + ")");
+    const auto table = job->resultsDropped ? std::nullopt : s.queue.results().result(job->id, {});
+    if (!table) return resultsGone(keptRun(s, job->id));
+    nlohmann::json variables = nlohmann::json::array();
+    for (const ResultColumn& column : table->columns) variables.push_back({{"name", column.name}, {"unit", column.unit}});
+    return jsonResponse(http::status::ok, {{"variables", std::move(variables)}});
 }
 
 } // namespace
@@ -240,6 +264,7 @@ void addJobRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::delete_, "/jobs/{id}", true, cancelOrDeleteJob});
     routes.push_back({http::verb::post, "/jobs/{id}/rerun", true, rerunJob});
     routes.push_back({http::verb::get, "/jobs/{id}/results", true, jobResults, RouteWork::LargeReply});
+    routes.push_back({http::verb::get, "/jobs/{id}/variables", true, jobVariables});
 }
 
 } // namespace tlmhub::server

@@ -68,6 +68,7 @@ const std::map<std::string, RouteCase>& routeCases()
         {"DELETE /jobs/{id}", {Case::Foreign, ""}},
         {"POST /jobs/{id}/rerun", {Case::Foreign, ""}},
         {"GET /jobs/{id}/results", {Case::Foreign, ""}},
+        {"GET /jobs/{id}/variables", {Case::Foreign, ""}},
         {"POST /studies", {Case::Own, "the study is the caller's; a model_id must be readable (Foreign case below)"}},
         {"GET /studies", {Case::Own, "lists the caller's studies"}},
         {"GET /studies/{id}", {Case::Foreign, ""}},

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <thread>
 
 using namespace tlmhub::test;
@@ -90,4 +91,24 @@ TEST_F(UnkeptRuns, OfReadsRacingForTheResultsOneGetsThem)
     EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 200), 1);
     for (const int status : statuses) EXPECT_TRUE(status == 200 || status == 410 || status == 503) << status;
     EXPECT_EQ(alice.get(results(id)).status, 410);
+}
+
+// The variables and their units come without the data, and reading them leaves an unkept
+// run's results to be read.
+TEST_F(UnkeptRuns, TheVariablesWithTheirUnitsAreReadWithoutUsingUpTheResults)
+{
+    HttpClient alice = loggedInAs(*server, "alice");
+    const std::int64_t id = finishedRun(alice, false);
+    const std::string path = "/api/v1/jobs/" + std::to_string(id) + "/variables";
+    const auto listed = alice.get(path);
+    ASSERT_EQ(listed.status, 200) << listed.body;
+    std::map<std::string, std::string> units;
+    const nlohmann::json variables = listed.json()["variables"];
+    for (const auto& v : variables) units[v["name"].get<std::string>()] = v["unit"].get<std::string>();
+    EXPECT_EQ(units.at("4_3_Servo_Valve#PA#Pressure"), "Pa") << listed.body;
+    EXPECT_EQ(listed.body.find("data"), std::string::npos) << "no data";
+    const auto given = alice.get(results(id, "json"));
+    ASSERT_EQ(given.status, 200) << "listing the variables used nothing up";
+    EXPECT_EQ(given.json()["variables"].size(), units.size());
+    EXPECT_EQ(alice.get(path).status, 410) << "once the results are given, they are gone";
 }

@@ -77,7 +77,9 @@ class ResultFrames(unittest.TestCase):
                 self.assertEqual(str(frame[name].dtype), "float64")
                 self.assertEqual(frame[name].tolist(), array[:, at].tolist())
         self.assertEqual(frame[POSITION].iloc[-1], self.result[POSITION][-1])
-        self.assertEqual(frame.attrs["units"], {})   # the CSV carries no units
+        # Fetched with the results (GET /jobs/{id}/variables: the CSV carries none).
+        self.assertEqual(frame.attrs["units"], self.result.units)
+        self.assertEqual(frame.attrs["units"][POSITION], "m")
 
     @unittest.skipUnless(HAVE_PANDAS, "DataFrames: the venv with pandas")
     def test_units_a_result_knows_are_in_the_frames_attrs(self):
@@ -104,12 +106,14 @@ class ResultFrames(unittest.TestCase):
     def test_html_view_lists_the_variables_with_their_values(self):
         view = self.result._repr_html_()
         self.assertTrue(view.startswith("<div>") and view.endswith("</div>"), view[:200])
-        self.assertIn("<th>variable</th><th>first</th>", view)        # no units known: no unit column
+        self.assertIn("<th>variable</th><th>unit</th><th>first</th>", view)
+        self.assertIn("<th>variable</th><th>first</th>",                  # no units known: no unit column
+                      tlmhub.Result(self.result.to_csv())._repr_html_())
         self.assertIn(f"100 samples of {len(self.result.names)} variables, time 0 to 0.3 s", view)
         self.assertEqual(view.count("<tr>"), 21)                     # the header and 20 variables
         self.assertIn(f"... and {len(self.result.names) - 20} more variables", view)
         position = self.job.results(variables=[POSITION])[POSITION]
-        self.assertIn(f"<td>{POSITION}</td><td>{position[0]:.6g}</td><td>{position[-1]:.6g}</td>"
+        self.assertIn(f"<td>{POSITION}</td><td>m</td><td>{position[0]:.6g}</td><td>{position[-1]:.6g}</td>"
                       f"<td>{min(position):.6g}</td><td>{max(position):.6g}</td>",
                       self.job.results(variables=[POSITION])._repr_html_())
 

@@ -150,6 +150,11 @@ class Jobs(unittest.TestCase):
         self.assertEqual(listed.state, "done")
         self.assertTrue(listed.info["results_dropped"])
 
+    def test_a_result_knows_its_variables_units(self):
+        result = self.client.run(self.model, stop=0.2, keep=False)
+        self.assertEqual(result.units["4_3_Servo_Valve#PA#Pressure"], "Pa")
+        self.assertEqual(set(result.units), set(result.names))
+
     def test_a_run_is_kept_by_default(self):
         job = self.client.run(self.model, stop=0.2, wait=False)
         job.wait()

@@ -275,10 +275,13 @@ class Jobs(_Collection):
         self._transport.request("DELETE", f"/jobs/{id}")
 
     def results(self, id: int, variables: Sequence[str] | str | None = None) -> Result:
+        """The job's results, with the units of its variables (asked first: the CSV has none,
+        and a `keep=False` job's results are gone once given)."""
+        units = {v["name"]: v["unit"] for v in self._transport.json("GET", f"/jobs/{id}/variables")["variables"]}
         _, csv = self._transport.request(
             "GET", f"/jobs/{id}/results",
             query={"format": "csv", "variables": variables_query(variables)})
-        return Result(csv)
+        return Result(csv, units=units)
 
 
 class Studies(_Collection):

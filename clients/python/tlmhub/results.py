@@ -81,9 +81,8 @@ class Result:
     """One simulation's logged variables: `result["Mass#P2#Position"]`, `result.time`.
 
     Columns are NumPy arrays when NumPy is installed, lists of floats otherwise. `units`
-    maps variables to their units where they are known: the CSV the client fetches has none
-    (the server's JSON form has them, `GET /jobs/{id}/results?format=json`), so a Result
-    knows units only when it was made with them."""
+    maps variables to their units: a job's results (`client.run`, `jobs.results`) have them
+    from `GET /jobs/{id}/variables`; a Result made from CSV alone knows none."""
 
     def __init__(self, csv: bytes, units: Mapping[str, str] | None = None):
         self._csv = csv
