@@ -25,6 +25,7 @@ import { primaryVariables } from '../model/nodeTypes';
 import { downloadText, errorText, h, toast } from '../ui/dom';
 import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
+import { StudyPanel } from '../studies/StudyPanel';
 import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
 import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
@@ -211,6 +212,10 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     });
 
 
+    // the study panel (src/studies/), made once and kept: it follows a running study over this socket
+    const studies = new StudyPanel({ rest, ws, store, modelId: () => summary.id,
+        latestRun: () => (runs.current?.state === 'done' ? { jobId: runs.current.jobId } : null) });
+
     // ---- saving ----
     // the server says whether the user may change the model (examples: admin only)
     let writable = (summary as { writable?: boolean }).writable
@@ -290,6 +295,9 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
                     },
                     title: 'Download the saved model as .hmf',
                 }, 'Download .hmf'),
+                h('button', {
+                    onclick: () => void studies.open(), title: 'Sweeps, sensitivity analyses and optimisations of this model', 'data-testid': 'study-button',
+                }, 'Study…'),
                 h('button', {
                     onclick: () => openFmuDialog(rest, { id: summary.id, unsaved: store.dirty }),
                     title: 'Export the saved model as an FMI 2.0 co-simulation FMU',
@@ -440,6 +448,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             canvas.dispose();
             plots.dispose();
             historyPanel.dispose();
+            studies.dispose();
             runs.dispose();
             ws.close();
         },
