@@ -425,7 +425,12 @@ WsApi::Reply WsApi::subscribeStudy(const protocol::StudySubscribeRequest& reques
         return success();
     }
     mAfterReply = [this, studyId] {
-        if (mStudySubscriptions.count(studyId)) return;
+        // Subscribed again (the study ended and was resumed, or a client that lost track):
+        // the old subscription gives way, so the study's events come once.
+        if (const auto old = mStudySubscriptions.find(studyId); old != mStudySubscriptions.end()) {
+            mServices.studies.hub().unsubscribe(old->second);
+            mStudySubscriptions.erase(old);
+        }
         std::weak_ptr<WebSocketSender> weakSender = mSender;
         const std::uint64_t id = mServices.studies.hub().subscribe(studyId, [weakSender](const nlohmann::json& event) {
             if (auto sender = weakSender.lock()) sender->send(event.dump());

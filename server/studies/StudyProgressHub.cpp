@@ -1,5 +1,7 @@
 #include "server/studies/StudyProgressHub.h"
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 std::uint64_t StudyProgressHub::subscribe(std::int64_t studyId, Sink sink)
@@ -43,6 +45,12 @@ void StudyProgressHub::finish(std::int64_t studyId, const nlohmann::json& event)
         mFinished.erase(mFinishedOrder.front());
         mFinishedOrder.pop_front();
     }
+}
+
+void StudyProgressHub::reopen(std::int64_t studyId)
+{
+    std::lock_guard lock(mMutex);
+    if (mFinished.erase(studyId)) std::erase(mFinishedOrder, studyId);
 }
 
 std::size_t StudyProgressHub::subscriptionCount() const

@@ -24,6 +24,9 @@ public:
     void publish(std::int64_t studyId, const nlohmann::json& event);
     // The study's last event: published, then its subscriptions end.
     void finish(std::int64_t studyId, const nlohmann::json& event);
+    // The study runs again (resumed): its last event is forgotten, so a subscriber follows its
+    // new progress instead of being told it ended.
+    void reopen(std::int64_t studyId);
     std::size_t subscriptionCount() const;
 
 private:

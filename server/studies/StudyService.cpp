@@ -79,6 +79,7 @@ StudyService::Submitted StudyService::resume(const StudyInfo& info)
     if (auto refused = overActiveLimit(info.ownerId)) return *refused;
     if (!mStore.reopen(info.id))
         return {std::nullopt, 0, "conflict", "the study changed state meanwhile: only an interrupted or cancelled study resumes"};
+    mHub.reopen(info.id);
     Submitted queued = enqueueStored(info);
     if (!queued.code.empty()) mStore.finish(info.id, JobState::Failed, queued.message, "{}");
     return queued;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <set>
 #include <thread>
@@ -157,4 +158,49 @@ TEST_F(StudyResume, AnOptimisationCancelledAndResumedEqualsOneNeverStopped)
     EXPECT_EQ(study["summary"]["runs_reused"], cancelled["runs_done"]) << "the stored runs are not run again";
     EXPECT_EQ(study["summary"]["best"], reference["summary"]["best"]);
     EXPECT_EQ(rows(alice, id), rows(alice, whole)) << "the resumed trace differs from the uninterrupted one";
+}
+
+// A study followed over a WebSocket, cancelled and resumed, is followed again on the same
+// socket: the new subscription gets the resumed runs' events to the end, not the old end.
+TEST_F(StudyResume, AResumedStudyIsFollowedAgainOnTheSameSocket)
+{
+    HttpClient alice = as("alice");
+    WsClient ws(server->port(), alice.login("alice", testPassword("alice")));
+    constexpr int kRuns = 200;
+    const auto id = submit(alice, {{"kind", "sweep"},
+                                   {"hmf", readFile(kPositionServo)},
+                                   {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.01}, {"to", 0.04}, {"steps", kRuns}}}}}}}});
+    ASSERT_EQ(ws.call("study.subscribe", {{"study_id", id}})["type"], "reply");
+    ASSERT_TRUE(alice.request(boost::beast::http::verb::delete_, path(id)).status / 100 == 2);
+    const auto cancelled = waitForEnd(alice, id);
+    ASSERT_EQ(cancelled["state"], "cancelled") << "the study ended before it was cancelled: nothing to resume";
+    // The first subscription's last event, so that it cannot come after the second subscribe.
+    const auto isCancelled = [](const nlohmann::json& e) { return e.value("state", "") == "cancelled"; };
+    bool cancelSeen = std::any_of(ws.events.begin(), ws.events.end(), isCancelled);
+    while (!cancelSeen) {
+        const auto event = ws.receive(60000);
+        ASSERT_FALSE(event.is_null()) << "the subscriber was not told of the cancel";
+        cancelSeen = isCancelled(event);
+    }
+    ASSERT_EQ(alice.post(path(id) + "/resume", nlohmann::json::object()).status, 202);
+
+    ws.events.clear();
+    ASSERT_EQ(ws.call("study.subscribe", {{"study_id", id}})["type"], "reply");
+    std::string state;
+    std::size_t events = 0;
+    const auto take = [&](const nlohmann::json& event) {
+        if (event.value("type", "") != "event.study.progress" || event.value("study_id", 0) != id) return;
+        ++events;
+        state = event.value("state", "");
+    };
+    for (const auto& event : ws.events) take(event);
+    while (state != "done" && state != "failed") {
+        const auto event = ws.receive(60000);
+        ASSERT_FALSE(event.is_null()) << "no event after the resume; the last state was '" << state << "'";
+        ASSERT_NE(event.value("state", ""), "cancelled") << "the old end, not the resumed study: " << event.dump();
+        take(event);
+    }
+    EXPECT_EQ(state, "done");
+    EXPECT_GT(events, 1u);
+    EXPECT_EQ(waitForEnd(alice, id)["runs_done"], kRuns);
 }
