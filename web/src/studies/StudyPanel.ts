@@ -206,8 +206,7 @@ export class StudyPanel {
         if (!this.followed || event.study_id !== this.followed.info.id) return;
         this.update(applyProgress(this.followed, event));
         if (FINAL_STATES.has(event.state)) {
-            // The server keeps an ended study's subscription on this socket and answers a later
-            // study.subscribe of it (after Resume) with nothing new: it is given up here.
+            // The study's subscription ended with it; a later follow (after Resume) subscribes anew.
             void this.unsubscribe();
             // the final word: the summary (failure reasons, correlations) and every row, from the server
             const id = event.study_id;
@@ -215,9 +214,8 @@ export class StudyPanel {
             void Promise.all([this.client.get(id), this.client.table(id)]).then(([info, table]) => {
                 if (epoch !== this.epoch || this.followed?.info.id !== id) return;
                 if (!FINAL_STATES.has(info.state)) {
-                    // The event was the server's memory of an earlier end (its progress hub
-                    // replays a study's last event to a new subscriber, also once the study has
-                    // been resumed, and subscribes it to nothing): read the study instead.
+                    // An end the study has left behind (a server before d68210d replayed a
+                    // resumed study's last event and sent no more): read the study instead.
                     this.finalSeen = false;
                     this.update({ info, table });
                     this.poll(id, epoch);
