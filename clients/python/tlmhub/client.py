@@ -205,11 +205,11 @@ class Models(_Collection):
         job = self._client.jobs.submit(id, start=start, step=step, stop=start + step, log_samples=1)
         try:
             job.wait()
-            stored = self._transport.json("GET", f"/jobs/{job.id}/results", query={"format": "json"})
+            listed = self._transport.json("GET", f"/jobs/{job.id}/variables")
         finally:
             if job.state in JOB_FINAL_STATES:
                 self._client.jobs.delete(job.id)
-        return {v["name"]: Variable(str(v["name"]), str(v.get("unit", ""))) for v in stored["variables"]}
+        return {v["name"]: Variable(str(v["name"]), str(v.get("unit", ""))) for v in listed["variables"]}
 
     def edit(self, id: int) -> ModelEditor:
         """Opens a stored model for editing over the WebSocket (needs websocket-client),
