@@ -23,9 +23,11 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 GTEST_CASE = re.compile(r"^\[\s+(?:OK|FAILED)\s+\] (\S+\.\S+) \(\d+ ms\)$", re.MULTILINE)
-UNITTEST_CASE = re.compile(
-    r"^(\w+) \(([\w.]+)\)(?:\n.*)? \.\.\. (?:ok|FAIL|ERROR|expected failure|unexpected success)$",
-    re.MULTILINE)
+# A unittest case's line: "name (module.Class.name) ... " (a docstring may come first on a
+# line of its own), then its outcome at once, or on a line of its own when something the test
+# wrote (a warning) came in between.
+UNITTEST_START = re.compile(r"^(\w+) \(([\w.]+)\)(?:\n.*)? \.\.\. ", re.MULTILINE)
+UNITTEST_OUTCOME = re.compile(r"^(?:ok|FAIL|ERROR|expected failure|unexpected success)$", re.MULTILINE)
 
 
 def ctest_results(path):
@@ -48,8 +50,12 @@ def inner_names(ctest_name, output):
     # (`Suite.*`) or executable lists its cases.
     if len(gtest_cases) > 1 or (gtest_cases and ctest_name.endswith(".*")):
         names += [f"{ctest_name} :: {case}" for case in gtest_cases]
-    for _, qualified in UNITTEST_CASE.findall(output):
-        names.append(f"{ctest_name} :: {qualified}")
+    starts = list(UNITTEST_START.finditer(output))
+    for at, start in enumerate(starts):
+        end = starts[at + 1].start() if at + 1 < len(starts) else len(output)
+        rest_of_line = output[start.end():end].split("\n", 1)[0]
+        if UNITTEST_OUTCOME.fullmatch(rest_of_line) or UNITTEST_OUTCOME.search(output, start.end(), end):
+            names.append(f"{ctest_name} :: {start.group(2)}")
     return names
 
 

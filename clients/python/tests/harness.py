@@ -67,7 +67,8 @@ class _Process:
                     self.line = line.strip()
                     found.set()
 
-        threading.Thread(target=read, daemon=True).start()
+        self._reader = threading.Thread(target=read, daemon=True)
+        self._reader.start()
         while not found.wait(0.05):
             if self.process.poll() is not None or time.monotonic() > deadline:
                 self.stop()
@@ -81,6 +82,11 @@ class _Process:
             except subprocess.TimeoutExpired:
                 self.process.kill()
                 self.process.wait()
+        # The reader ends at the pipe's end; then the pipe is closed, not left to the collector
+        # (whose ResourceWarning would land inside unittest's "... ok" line).
+        self._reader.join(5)
+        if not self._reader.is_alive():
+            self.process.stdout.close()
 
 
 class Server:

@@ -103,7 +103,11 @@ class Transport:
                                         context=self.ssl_context) as response:
                 return response.status, response.read()
         except urllib.error.HTTPError as error:
-            raise _api_error(error.code, error.read(), error.headers.get("Retry-After")) from None
+            try:
+                body = error.read()
+            finally:
+                error.close()   # its connection, which the collector would otherwise close
+            raise _api_error(error.code, body, error.headers.get("Retry-After")) from None
         except (urllib.error.URLError, OSError) as error:
             reason = getattr(error, "reason", error)
             host = urllib.parse.urlsplit(self.base).netloc
