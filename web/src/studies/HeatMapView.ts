@@ -33,7 +33,7 @@ export function drawHeatMap(canvas: HTMLCanvasElement, grid: HeatMapGrid, cssWid
     g.strokeStyle = '#555';
     g.strokeRect(box.left, box.top, box.width, box.height);
 
-    // ticks at cell centres, at most one per 40 px (x) / 18 px (y)
+    // ticks at cell centres, at most one per 48 px (x) / 18 px (y)
     g.fillStyle = '#222';
     const every = (count: number, room: number, px: number) => Math.max(1, Math.ceil(count / Math.max(1, Math.floor(room / px))));
     const cw = box.width / grid.xs.length;
