@@ -167,7 +167,7 @@ class Waiting(unittest.TestCase):
         detached.cancel()
 
     def test_ctrl_c_while_waiting_for_a_job_cancels_it(self):
-        job = self.client.run(self.model, stop=20, wait=False)
+        job = self.client.run(self.model, stop=500, wait=False)   # 0.8 s: outlasts the cancel request
         with mock.patch("tlmhub.client.time.sleep", side_effect=KeyboardInterrupt):
             with self.assertRaises(KeyboardInterrupt):
                 job.wait(timeout=60)
