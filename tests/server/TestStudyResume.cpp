@@ -133,6 +133,7 @@ TEST_F(StudyResume, AnOptimisationCancelledAndResumedEqualsOneNeverStopped)
     const nlohmann::json request = {
         {"kind", "optimise"},
         {"hmf", readFile(kPositionServo)},
+        {"stop", 1.5},   // the step comes at 1 s: enough for the gains to show, half the steps of 3 s
         {"optimise", {{"algorithm", "nelder-mead"},
                       {"parameters", {{"GainP.k", {{"min", 0.005}, {"max", 0.08}}}, {"GainI.k", {{"min", 0.0}, {"max", 0.01}}}}},
                       {"objective", {{"terms", {{{"function", "ise"}, {"variable", "Position_Sensor#out#Value"},
@@ -169,6 +170,7 @@ TEST_F(StudyResume, AResumedStudyIsFollowedAgainOnTheSameSocket)
     constexpr int kRuns = 200;
     const auto id = submit(alice, {{"kind", "sweep"},
                                    {"hmf", readFile(kPositionServo)},
+                                   {"stop", 1.5},   // what the runs simulate does not matter here
                                    {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.01}, {"to", 0.04}, {"steps", kRuns}}}}}}}});
     ASSERT_EQ(ws.call("study.subscribe", {{"study_id", id}})["type"], "reply");
     ASSERT_TRUE(alice.request(boost::beast::http::verb::delete_, path(id)).status / 100 == 2);
