@@ -130,7 +130,7 @@ Response studyResults(Services& s, Call& call)
     if (format != "json") return apiError(http::status::bad_request, "bad_request", "format must be csv or json");
     nlohmann::json errors = nlohmann::json::object();
     for (const auto& [run, message] : table->errors) errors[std::to_string(run)] = message;
-    return jsonResponse(http::status::ok, {{"columns", table->columns}, {"rows", table->rows}, {"errors", errors}});
+    return jsonResponse(http::status::ok, {{"columns", table->columns}, {"rows", table->rows}, {"nodes", table->nodes}, {"errors", errors}});
 }
 
 Response runResults(Services& s, Call& call)

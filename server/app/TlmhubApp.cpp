@@ -46,7 +46,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mJobStreams = std::make_unique<JobStreams>(*mQueue, mNodeSecret);
     mStudyHub = std::make_unique<StudyProgressHub>();
     mStudies = std::make_unique<StudyService>(mStorage->studies(), mStorage->results(), *mQueue, *mStudyHub,
-                                              mOptions.limits, mOptions.studyLimits, workers);
+                                              mOptions.limits, mOptions.studyLimits, workers, mQueue->node());
     if (mOptions.resultTtl.count() > 0) mExpiry = std::make_unique<ResultExpiry>(mStorage->jobs(), mOptions.resultTtl);
     mLiveSessions = std::make_unique<LiveSessions>(
         [this](const std::string& token) { return bearerUser(token).has_value(); }, kLoginCheckPeriod);
@@ -94,8 +94,9 @@ void TlmhubApp::startJobs()
 
 void TlmhubApp::shutdown()
 {
-    // Jobs first: they stop promptly and record why, while a request that runs on may outlast
-    // the grace after a signal (server/app/ShutdownSignals.h).
+    // Studies and jobs first: they stop promptly and record why, while a request that runs on
+    // may outlast the grace after a signal (server/app/ShutdownSignals.h).
+    if (mStudies) mStudies->stop();
     if (mQueue) mQueue->shutdown();
     if (mCheckRuns) mCheckRuns->stop();
     if (mPools) mPools->stop();

@@ -110,14 +110,6 @@ bool JobQueue::stopStudy(std::int64_t studyId)
     return true;
 }
 
-int JobQueue::activeStudies(std::int64_t ownerId)
-{
-    std::lock_guard lock(mMutex);
-    int count = 0;
-    for (const auto& [id, study] : mStudies) count += study->ownerId() == ownerId;
-    return count;
-}
-
 void JobQueue::retireStudy(const std::shared_ptr<StudyExecution>& study)
 {
     mStudies.erase(study->id());

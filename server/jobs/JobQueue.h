@@ -107,8 +107,6 @@ public:
     // Cancels a queued or running study; false when it is not active here. Its final state is
     // stored at once when no run is in flight, else when the last one has stopped.
     bool stopStudy(std::int64_t studyId);
-    // Studies of the user queued or running here.
-    int activeStudies(std::int64_t ownerId);
 
     JobStore& store() { return mStore; }
     JobLeaseStore& leases() { return mLeases; }

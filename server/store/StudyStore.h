@@ -4,8 +4,13 @@
 // row keeps its request, state and counters; each finished run adds a row with its
 // parameters, its scalar outputs and, when the study keeps full variables, its result
 // (encodeResult's blob, as a job's). Run blobs count against their owner's stored bytes.
+//
+// A queued or running study is held by a node (docs/scale-out.md): the node that queues and
+// runs it. Only that node starts it; another takes it over only once the holder has stopped
+// answering (no heartbeat in the nodes table within a lease time).
 #include "server/jobs/Job.h"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -34,26 +39,33 @@ struct StudyRun {
     std::string outputs;                    // JSON object text: column -> value
     std::string error;
     bool hasResult = false;                 // a full result blob is stored
+    std::string node;                       // the node that ran it
 };
 
 class StudyStore {
 public:
     virtual ~StudyStore() = default;
 
-    // A new queued study; `request` is the request JSON text (kept to run it again after a
-    // restart). Returns the study id, or nullopt when the owner does not exist.
+    // A new queued study held by `node`; `request` is the request JSON text (kept to run it
+    // again after a restart). Returns the study id, or nullopt when the owner does not exist
+    // or already has `maxActive` studies queued or running on any node (counted and inserted
+    // in one transaction, so two nodes cannot both admit the last one).
     virtual std::optional<std::int64_t> create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
                                                const std::string& kind, const std::string& name,
-                                               const std::string& request, std::int64_t runsTotal) = 0;
+                                               const std::string& request, std::int64_t runsTotal,
+                                               const std::string& node, int maxActive) = 0;
     virtual std::optional<StudyInfo> info(std::int64_t id) = 0;
     virtual std::optional<std::string> request(std::int64_t id) = 0;
     // Newest first.
     virtual std::vector<StudyInfo> listForOwner(std::int64_t ownerId) = 0;
     // Oldest first.
     virtual std::vector<StudyInfo> listInState(JobState state) = 0;
+    // The owner's studies queued or running, on every node.
+    virtual int activeCount(std::int64_t ownerId) = 0;
 
-    // queued -> running (sets started_at); false if it is not queued any more.
-    virtual bool markRunning(std::int64_t id) = 0;
+    // queued -> running (sets started_at); false if it is not queued any more or another
+    // node holds it now (it was taken over while this one stalled).
+    virtual bool markRunning(std::int64_t id, const std::string& node) = 0;
     // Adds a finished run (and its result blob when `resultBlob` is given) and counts it in
     // runs_done or runs_failed, in one transaction. False when the study is not running or the
     // run index exists already.
@@ -62,11 +74,16 @@ public:
     virtual void setSummary(std::int64_t id, const std::string& summary) = 0;
     // Final state, error, summary and finished_at; false when already finished or gone.
     virtual bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) = 0;
-    // Start-up after a crash: running studies become interrupted. Returns how many.
-    virtual int markRunningInterrupted() = 0;
-    // Resume: an interrupted or cancelled study is queued again, with its runs and counters,
-    // to run the runs it lacks (error and finished_at cleared). False in any other state.
-    virtual bool reopen(std::int64_t id) = 0;
+    // Studies whose holder is gone (no node of that id seen within `within`, or none at all),
+    // other than `node`'s: the running ones become interrupted (their runs so far are kept;
+    // they resume), and `node` takes over the queued ones, which it returns, oldest first.
+    virtual std::vector<StudyInfo> adoptOrphans(const std::string& node, std::chrono::milliseconds within) = 0;
+    // A node that stops: its queued studies are held by none, for the next node to adopt at once.
+    virtual void releaseQueued(const std::string& node) = 0;
+    // Resume: an interrupted or cancelled study is queued again, held by `node`, with its runs
+    // and counters, to run the runs it lacks (error and finished_at cleared). False in any
+    // other state, or when the owner already has `maxActive` studies queued or running.
+    virtual bool reopen(std::int64_t id, const std::string& node, int maxActive) = 0;
 
     // Runs with index >= fromIndex in index order, at most `limit` (no blobs).
     virtual std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) = 0;

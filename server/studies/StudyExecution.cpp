@@ -46,7 +46,7 @@ std::string boundedText(const std::string& text, std::size_t bytes)
 
 StudyExecution::StudyExecution(PreparedStudy prepared, const JobLimits& jobLimits, const StudyLimits& studyLimits,
                                unsigned workers, StudyStore& store, StudyProgressHub& hub)
-    : mId(prepared.id), mOwnerId(prepared.ownerId), mRequest(std::move(prepared.request)),
+    : mId(prepared.id), mOwnerId(prepared.ownerId), mNode(std::move(prepared.node)), mRequest(std::move(prepared.request)),
       mParameterNames(mRequest.parameterNames()), mModel(std::move(prepared.model)),
       mSettings(prepared.settings), mJobLimits(jobLimits), mStudyLimits(studyLimits), mStore(store), mHub(hub),
       mSimulations(workers), mSpare(std::move(prepared.compiled)), mStoredRuns(std::move(prepared.storedRuns)),
@@ -70,8 +70,11 @@ std::optional<PlannedRun> StudyExecution::take()
     if (mStopReason || !mFailure.empty()) return std::nullopt;
     if (!mStarted) {
         mStarted = true;
-        if (!mStore.markRunning(mId)) {
-            mStopReason = JobState::Cancelled;   // no longer queued in the store (deleted)
+        if (!mStore.markRunning(mId, mNode)) {
+            // No longer queued in the store (cancelled, deleted) or not held here any more
+            // (another node took it over while this one stalled): finalise leaves it as it is.
+            mStopReason = JobState::Cancelled;
+            mNotHeld = true;
             return std::nullopt;
         }
     }
@@ -248,6 +251,7 @@ void StudyExecution::execute(unsigned worker, const PlannedRun& run)
         row.parameters = parameters.dump();
         row.outputs = outputs.dump();
         row.hasResult = outcome.ok && mRequest.outputs.full;
+        row.node = mNode;
         bool tooLarge = false;
         {
             std::lock_guard lock(mMutex);
@@ -444,7 +448,13 @@ void StudyExecution::finalise()
         bands["variables"] = variables;
         s["bands"] = bands;
     }
-    mStore.finish(mId, state, error, dumped(s));
+    if (mNotHeld) {
+        // What the store says it is now, for this node's subscribers.
+        const auto stored = mStore.info(mId);
+        if (stored) state = stored->state;
+    } else {
+        mStore.finish(mId, state, error, dumped(s));
+    }
     nlohmann::json event = progressEvent(true);
     event["state"] = jobStateName(state);
     if (!error.empty()) event["error"] = error;

@@ -38,6 +38,7 @@ struct StudyLimits {
 // A study ready to run: the parsed request and the model with its fixed parameters applied.
 struct PreparedStudy {
     std::int64_t id = 0, ownerId = 0;
+    std::string node;                           // the node that holds it in the store (runs it)
     StudyRequest request;
     std::shared_ptr<const Model> model;
     SimulationSettings settings;                // resolved: start, stop, step, log samples
@@ -103,6 +104,7 @@ private:
     std::string mostCommonFailure() const;
 
     const std::int64_t mId, mOwnerId;
+    const std::string mNode;
     const StudyRequest mRequest;
     const std::vector<std::string> mParameterNames;
     const std::shared_ptr<const Model> mModel;
@@ -122,6 +124,7 @@ private:
     std::int64_t mRunsReused = 0;                  // of those, taken in their turn so far
     StudyPlan mPlan;
     bool mStarted = false;
+    bool mNotHeld = false;   // the store refused to start it here
     std::optional<JobState> mStopReason;
     std::string mFailure;               // a reason the whole study fails
     std::int64_t mRunsDone = 0, mRunsFailed = 0;

@@ -10,6 +10,7 @@
 #include "core/ResultView.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace tlmhub::server {
 
@@ -24,18 +25,65 @@ nlohmann::json parseOr(const std::string& text, nlohmann::json fallback)
 } // namespace
 
 StudyService::StudyService(StudyStore& store, ResultStore& results, JobQueue& queue, StudyProgressHub& hub,
-                           const JobLimits& jobLimits, StudyLimits limits, unsigned workers)
+                           const JobLimits& jobLimits, StudyLimits limits, unsigned workers, QueueNode node)
     : mStore(store), mResults(results), mQueue(queue), mHub(hub), mJobLimits(jobLimits), mLimits(limits),
-      mWorkers(std::max(1u, workers))
+      mWorkers(std::max(1u, workers)), mNode(std::move(node))
 {
+}
+
+StudyService::~StudyService()
+{
+    stop();
 }
 
 void StudyService::start()
 {
-    mStore.markRunningInterrupted();
-    for (const StudyInfo& info : mStore.listInState(JobState::Queued)) {
+    if (mNode.role == "worker" || mWatcher.joinable()) return;
+    adoptOrphans();
+    mWatcher = std::jthread([this](std::stop_token stop) { watchOrphans(stop); });
+}
+
+void StudyService::stop()
+{
+    if (!mWatcher.joinable()) return;
+    mWatcher.request_stop();   // wakes its wait
+    mWatcher.join();
+    try {
+        mStore.releaseQueued(mNode.id);
+    } catch (const std::exception& e) {
+        // The next node adopts them once this one is no longer seen (a lease time).
+        std::cerr << "studies: releasing this node's queued studies failed: " << e.what() << "\n";
+    }
+}
+
+void StudyService::adoptOrphans()
+{
+    // This node's own heartbeat comes from the job queue, which may not have started yet:
+    // the store never counts the adopting node's studies as orphans.
+    for (const StudyInfo& info : mStore.adoptOrphans(mNode.id, mNode.leaseTime)) {
         if (const Submitted queued = enqueueStored(info); !queued.code.empty())
             mStore.finish(info.id, JobState::Failed, queued.message, "{}");
+    }
+}
+
+void StudyService::watchOrphans(std::stop_token stop)
+{
+    bool failing = false;
+    std::unique_lock lock(mWatchMutex);
+    for (;;) {
+        // Returns early only when stop is requested.
+        mWatchWake.wait_for(lock, stop, mNode.leaseTime / 3, [] { return false; });
+        if (stop.stop_requested()) return;
+        lock.unlock();
+        try {
+            adoptOrphans();
+            if (failing) std::cerr << "studies: the database answers again\n";
+            failing = false;
+        } catch (const std::exception& e) {
+            if (!failing) std::cerr << "studies: taking over the studies of stopped nodes failed: " << e.what() << "\n";
+            failing = true;
+        }
+        lock.lock();
     }
 }
 
@@ -49,6 +97,7 @@ StudyService::Submitted StudyService::enqueueStored(const StudyInfo& info)
     if (!checked.code.empty()) return checked;
     prepared.id = info.id;
     prepared.ownerId = info.ownerId;
+    prepared.node = mNode.id;
     constexpr std::size_t kPage = 1000;
     for (std::int64_t from = 0;;) {
         std::vector<StudyRun> page = mStore.runs(info.id, from, kPage);
@@ -63,7 +112,7 @@ StudyService::Submitted StudyService::enqueueStored(const StudyInfo& info)
 
 std::optional<StudyService::Submitted> StudyService::overActiveLimit(std::int64_t ownerId)
 {
-    if (mQueue.activeStudies(ownerId) < mLimits.maxActivePerUser) return std::nullopt;
+    if (mStore.activeCount(ownerId) < mLimits.maxActivePerUser) return std::nullopt;
     // Temporary: room comes as the user's studies end.
     return Submitted{std::nullopt, 0, "rate_limited",
                      "you have " + std::to_string(mLimits.maxActivePerUser) + " studies queued or running; the limit is " +
@@ -77,8 +126,11 @@ StudyService::Submitted StudyService::resume(const StudyInfo& info)
         return {std::nullopt, 0, "conflict",
                 "the study is " + std::string(jobStateName(info.state)) + ": only an interrupted or cancelled study resumes"};
     if (auto refused = overActiveLimit(info.ownerId)) return *refused;
-    if (!mStore.reopen(info.id))
+    if (!mStore.reopen(info.id, mNode.id, mLimits.maxActivePerUser)) {
+        // Another of the owner's studies was admitted meanwhile, on any node, or this one changed state.
+        if (auto refused = overActiveLimit(info.ownerId)) return *refused;
         return {std::nullopt, 0, "conflict", "the study changed state meanwhile: only an interrupted or cancelled study resumes"};
+    }
     mHub.reopen(info.id);
     Submitted queued = enqueueStored(info);
     if (!queued.code.empty()) mStore.finish(info.id, JobState::Failed, queued.message, "{}");
@@ -174,10 +226,16 @@ StudyService::Submitted StudyService::submit(std::int64_t ownerId, const nlohman
     stored.erase("model_id");
     stored["hmf"] = hmf;   // what runs again after a restart, even if the model changes
     const auto id = mStore.create(ownerId, prepared.request.modelId, studyKindName(prepared.request.kind),
-                                  prepared.request.name, stored.dump(), static_cast<std::int64_t>(checked.runsTotal));
-    if (!id) return {std::nullopt, 0, "not_found", "no such user"};
+                                  prepared.request.name, stored.dump(), static_cast<std::int64_t>(checked.runsTotal),
+                                  mNode.id, mLimits.maxActivePerUser);
+    if (!id) {
+        // Another of the owner's studies was admitted meanwhile, on any node.
+        if (auto refused = overActiveLimit(ownerId)) return *refused;
+        return {std::nullopt, 0, "not_found", "no such user"};
+    }
     prepared.id = *id;
     prepared.ownerId = ownerId;
+    prepared.node = mNode.id;
     mQueue.addStudy(std::make_shared<StudyExecution>(std::move(prepared), mJobLimits, mLimits, mWorkers, mStore, mHub));
     checked.id = id;
     return checked;
@@ -240,6 +298,7 @@ std::optional<StudyService::Table> StudyService::table(std::int64_t id)
             for (const std::string& name : outputs) row.push_back(measured.value(name, nlohmann::json()));
             if (request.objective) row.push_back(measured.value("objective", nlohmann::json()));
             table.rows.push_back(std::move(row));
+            table.nodes.push_back(run.node);
             if (!run.ok) table.errors[run.index] = run.error;
         }
         if (page.size() < kPage) break;

@@ -3,6 +3,7 @@
 // cannot run is refused with a clear error before anything is queued), cancellation, restart
 // after a server stop, and the study's results as one table.
 #include "server/jobs/JobQueue.h"
+#include "server/jobs/QueueNode.h"
 #include "server/store/ResultStore.h"
 #include "server/store/StudyStore.h"
 #include "server/studies/StudyExecution.h"
@@ -10,20 +11,32 @@
 
 #include <nlohmann/json.hpp>
 
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <optional>
+#include <stop_token>
 #include <string>
+#include <thread>
 
 namespace tlmhub::server {
 
 class StudyService {
 public:
+    // `node`: this node, which holds the studies it accepts (server/store/StudyStore.h).
     StudyService(StudyStore& store, ResultStore& results, JobQueue& queue, StudyProgressHub& hub,
-                 const JobLimits& jobLimits, StudyLimits limits, unsigned workers);
+                 const JobLimits& jobLimits, StudyLimits limits, unsigned workers, QueueNode node);
+    ~StudyService();
 
-    // Before the queue starts: studies left running by a crash become interrupted; queued
-    // ones are queued again from their stored request.
+    // Before the queue starts, on an API node (role api or all; a worker runs no studies):
+    // studies whose node stopped answering are taken over, now and every lease time / 3
+    // from then on: running ones become interrupted, queued ones run here from their
+    // stored request. Studies other nodes hold are left alone.
     void start();
+    // At shutdown: no more taking over, and this node's queued studies are released for the
+    // next node that starts or looks (one that a worker takes meanwhile no longer starts
+    // here: StudyStore::markRunning). The queue's shutdown then ends the started ones interrupted.
+    void stop();
 
     struct Submitted {
         std::optional<std::int64_t> id;
@@ -44,6 +57,7 @@ public:
     struct Table {
         std::vector<std::string> columns;
         std::vector<nlohmann::json> rows;   // arrays in column order; null for no value
+        std::vector<std::string> nodes;     // per row: the node that ran it ("" before schema 9)
         std::map<std::int64_t, std::string> errors;   // failed runs: why
     };
     // The runs finished so far; nullopt when the study's request is unreadable.
@@ -61,6 +75,9 @@ public:
 private:
     // A stored queued study into the queue, with the runs it has already; a code on failure.
     Submitted enqueueStored(const StudyInfo& info);
+    // Takes over the studies of nodes that stopped answering (StudyStore::adoptOrphans).
+    void adoptOrphans();
+    void watchOrphans(std::stop_token stop);
     // Refusal while the owner has as many studies queued or running as allowed.
     std::optional<Submitted> overActiveLimit(std::int64_t ownerId);
     // Parses, checks and compiles; fills `prepared` (id and owner aside).
@@ -74,6 +91,10 @@ private:
     JobLimits mJobLimits;
     StudyLimits mLimits;
     unsigned mWorkers;
+    QueueNode mNode;
+    std::mutex mWatchMutex;
+    std::condition_variable_any mWatchWake;
+    std::jthread mWatcher;
 };
 
 } // namespace tlmhub::server

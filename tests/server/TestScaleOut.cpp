@@ -743,3 +743,96 @@ TEST(ScaleOut, FairShareAcrossWorkers)
     std::cout << "[ info ] claims per worker: " << perWorker << "\n";
     EXPECT_EQ(distribution.size(), 3u) << "every worker should have claimed jobs: " << perWorker;
 }
+
+namespace {
+
+nlohmann::json studyInfo(HttpClient& client, std::int64_t study)
+{
+    return client.get("/api/v1/studies/" + std::to_string(study)).json();
+}
+
+// Polls the study every 50 ms until `until` accepts it or `timeout` passes; the last info.
+nlohmann::json waitForStudy(HttpClient& client, std::int64_t study, const std::function<bool(const nlohmann::json&)>& until,
+                            std::chrono::milliseconds timeout)
+{
+    const auto deadline = Clock::now() + timeout;
+    nlohmann::json info;
+    do {
+        info = studyInfo(client, study);
+        if (until(info)) return info;
+        std::this_thread::sleep_for(50ms);
+    } while (Clock::now() < deadline);
+    return info;
+}
+
+int runsDone(const nlohmann::json& study) { return study.value("runs_done", 0); }
+
+} // namespace
+
+// Studies are held by the API node that accepted them (issue 40, server/store/StudyStore.h).
+// A restart of another API node leaves a running study alone (it used to mark every running
+// study interrupted); the per-user limit of active studies holds across the nodes; and when
+// the study's node is killed, the other marks it interrupted once that node's heartbeat is a
+// lease old, and resumes it: every run once in the table, each naming the node that ran it.
+TEST(ScaleOut, StudiesOutliveAnotherNodesRestartAndResumeAfterTheirNodeDies)
+{
+    Cluster cluster("studies");
+    const std::vector<std::string> oneStudyEach = {"--max-studies-per-user", "1"};
+    std::vector<std::string> oneWorker = oneStudyEach;
+    oneWorker.insert(oneWorker.end(), {"--workers", "1"});
+    ServerProcess& a = cluster.start("a", "api", oneWorker);
+    cluster.start("b", "api", oneStudyEach);
+    Alice alice = aliceOn(a);
+    ASSERT_NE(alice.model, 0);
+    constexpr int kRuns = 3000;   // about 15 s on one worker in Release
+    const nlohmann::json sweep = {
+        {"kind", "sweep"},
+        {"model_id", alice.model},
+        {"outputs", {{"variables", {kPositionVariable}}}},
+        {"sweep", {{"parameters", {{"GainP.k", {{"from", 0.01}, {"to", 0.04}, {"steps", kRuns}}}}}}}};
+    const auto submitted = alice.client.post("/api/v1/studies", sweep);
+    ASSERT_EQ(submitted.status, 201) << submitted.body;
+    const std::int64_t id = submitted.json()["id"].get<std::int64_t>();
+    const std::string path = "/api/v1/studies/" + std::to_string(id);
+    ASSERT_GE(runsDone(waitForStudy(alice.client, id, [](const nlohmann::json& s) { return runsDone(s) >= 20; }, 60s)), 20);
+
+    // Node b stops (SIGTERM) and starts again: a's study runs on.
+    cluster.stop("b");
+    cluster.start("b", "api", oneStudyEach);
+    HttpClient onB = loggedInAs(cluster.node("b"), "alice");
+    const int afterRestart = runsDone(studyInfo(onB, id));
+    const auto goingOn = waitForStudy(onB, id, [&](const nlohmann::json& s) {
+        return s.value("state", "") != "running" || runsDone(s) >= afterRestart + 20;
+    }, 60s);
+    ASSERT_EQ(goingOn["state"], "running") << "b's restart ended a's study: " << goingOn.dump();
+    ASSERT_GE(runsDone(goingOn), afterRestart + 20);
+
+    // One active study per user, on all nodes together.
+    const auto second = onB.post("/api/v1/studies", sweep);
+    EXPECT_EQ(second.status, 429) << second.body;
+
+    // a dies: b finds its heartbeat stale and interrupts the study, which resumes on b.
+    a.kill9();
+    const auto interrupted = waitForStudy(onB, id, [](const nlohmann::json& s) { return s.value("state", "") != "running"; },
+                                          std::chrono::seconds(kLeaseSeconds * 10));
+    ASSERT_EQ(interrupted["state"], "interrupted") << interrupted.dump();
+    const int kept = runsDone(interrupted);
+    ASSERT_LT(kept, kRuns) << "nothing left to resume";
+    const auto resumed = onB.post(path + "/resume", nlohmann::json::object());
+    ASSERT_EQ(resumed.status, 202) << resumed.body;
+    const auto done = waitForStudy(onB, id, [](const nlohmann::json& s) { return hasEnded(s.value("state", "")); }, 120s);
+    ASSERT_EQ(done["state"], "done") << done.dump();
+    EXPECT_EQ(runsDone(done), kRuns);
+    EXPECT_EQ(done["summary"]["runs_reused"], kept);
+
+    const auto table = onB.get(path + "/results?format=json").json();
+    ASSERT_EQ(table["rows"].size(), static_cast<std::size_t>(kRuns));
+    ASSERT_EQ(table["nodes"].size(), static_cast<std::size_t>(kRuns));
+    std::set<std::int64_t> seen;
+    std::map<std::string, int> byNode;
+    for (std::size_t i = 0; i < table["rows"].size(); ++i) {
+        EXPECT_TRUE(seen.insert(table["rows"][i][0].get<std::int64_t>()).second) << "run " << table["rows"][i][0] << " twice";
+        ++byNode[table["nodes"][i].get<std::string>()];
+    }
+    EXPECT_EQ(byNode, (std::map<std::string, int>{{"a", kept}, {"b", kRuns - kept}}));
+}

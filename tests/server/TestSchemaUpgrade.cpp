@@ -179,9 +179,12 @@ TEST(SchemaUpgrade, ReleasedDataDirectoryUpgradesInPlace)
         const auto token = storage->apiTokens().insert(2, "bob's script", "hash of bob's token", kFixtureTime, std::nullopt);
         ASSERT_TRUE(token);
         EXPECT_EQ(storage->apiTokens().use("hash of bob's token", kFixtureTime)->userId, 2);
-        const auto study = storage->studies().create(2, 2, "sweep", "pump size", "{}", 4);
+        const auto study = storage->studies().create(2, 2, "sweep", "pump size", "{}", 4, "node-1", 2);
         ASSERT_TRUE(study);
         EXPECT_EQ(storage->studies().info(*study)->modelId, std::optional<std::int64_t>(2));
+        // Version 9's: the study is held by the node that created it, and only it starts it.
+        EXPECT_FALSE(storage->studies().markRunning(*study, "node-2"));
+        EXPECT_TRUE(storage->studies().markRunning(*study, "node-1"));
 
         // Version 4's too: bob's class, with carol in it and a copy of hers.
         const auto lab = storage->labs().createClass(2, "Hydraulics", "ABCDEFGHJKLM");

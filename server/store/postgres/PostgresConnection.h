@@ -23,6 +23,9 @@ struct PgStatement {
     const char* sql;
 };
 
+// The database's clock in milliseconds, for SQL text: every node of a deployment reads the same one.
+#define TLMHUB_NOW_MS "(extract(epoch from clock_timestamp()) * 1000)::bigint"
+
 class PostgresConnection {
 public:
     // Connects to `uri` (a libpq connection URI); throws pqxx::broken_connection.

@@ -14,9 +14,6 @@ namespace tlmhub::server {
 
 namespace {
 
-// The database's clock in milliseconds: every node of a deployment reads the same one.
-#define TLMHUB_NOW_MS "(extract(epoch from clock_timestamp()) * 1000)::bigint"
-
 // The key of the advisory lock claims hold ("tlmhub\0\2"; migrations use "tlmhub\0\1").
 constexpr long long kClaimLock = 0x746c6d6875620002;
 constexpr const char* kChannel = "tlmhub_jobs";

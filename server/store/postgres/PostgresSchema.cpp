@@ -256,10 +256,18 @@ void addIdempotencyKeys(pqxx::transaction_base& tx)
     tx.exec0("CREATE INDEX idempotency_keys_age ON idempotency_keys(owner_id, created_at)");
 }
 
+// Version 9: studies held by nodes, as SQLite's version 9.
+void addStudyNodes(pqxx::transaction_base& tx)
+{
+    tx.exec0("ALTER TABLE studies ADD COLUMN node TEXT");
+    tx.exec0("ALTER TABLE study_runs ADD COLUMN node TEXT NOT NULL DEFAULT ''");
+    tx.exec0("CREATE INDEX studies_active ON studies(state) WHERE state IN ('queued', 'running')");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences, addIdempotencyKeys};
+                                                             addPreferences, addIdempotencyKeys, addStudyNodes};
 
 int versionIn(pqxx::transaction_base& tx)
 {

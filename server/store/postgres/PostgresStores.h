@@ -198,17 +198,20 @@ public:
     explicit PostgresStudyStore(PostgresDatabase& db) : mDb(db) {}
     std::optional<std::int64_t> create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
                                        const std::string& kind, const std::string& name,
-                                       const std::string& request, std::int64_t runsTotal) override;
+                                       const std::string& request, std::int64_t runsTotal, const std::string& node,
+                                       int maxActive) override;
     std::optional<StudyInfo> info(std::int64_t id) override;
     std::optional<std::string> request(std::int64_t id) override;
     std::vector<StudyInfo> listForOwner(std::int64_t ownerId) override;
     std::vector<StudyInfo> listInState(JobState state) override;
-    bool markRunning(std::int64_t id) override;
+    int activeCount(std::int64_t ownerId) override;
+    bool markRunning(std::int64_t id, const std::string& node) override;
     bool addRun(std::int64_t studyId, const StudyRun& run, const std::string* resultBlob) override;
     void setSummary(std::int64_t id, const std::string& summary) override;
     bool finish(std::int64_t id, JobState state, const std::string& error, const std::string& summary) override;
-    int markRunningInterrupted() override;
-    bool reopen(std::int64_t id) override;
+    std::vector<StudyInfo> adoptOrphans(const std::string& node, std::chrono::milliseconds within) override;
+    void releaseQueued(const std::string& node) override;
+    bool reopen(std::int64_t id, const std::string& node, int maxActive) override;
     std::vector<StudyRun> runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit) override;
     std::optional<std::string> runResult(std::int64_t studyId, std::int64_t index) override;
     std::size_t storedBytes(std::int64_t ownerId) override;

@@ -1,6 +1,8 @@
 #include "server/store/UnixTime.h"
 #include "server/store/postgres/PostgresStores.h"
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 namespace {
@@ -10,7 +12,13 @@ namespace {
     " error, created_at, started_at, finished_at, summary FROM studies"
 constexpr PgStatement kCreate{"studies_create",
                               "INSERT INTO studies(owner_id, model_id, kind, name, state, runs_total, created_at,"
-                              " request) VALUES($1, $2, $3, $4, $5, $6, $7, $8) RETURNING id"};
+                              " request, node) VALUES($1, $2, $3, $4, $5, $6, $7, $8, $9) RETURNING id"};
+// The owner's row, locked until the transaction ends: the admissions of one user's studies
+// (count, then insert or reopen) take turns across all nodes.
+constexpr PgStatement kLockOwner{"studies_lock_owner", "SELECT 1 FROM users WHERE id = $1 FOR UPDATE"};
+constexpr PgStatement kActiveCount{"studies_active_count",
+                                   "SELECT COUNT(*) FROM studies WHERE owner_id = $1 AND state IN ('queued', 'running')"};
+constexpr PgStatement kOwnerOf{"studies_owner_of", "SELECT owner_id FROM studies WHERE id = $1"};
 constexpr PgStatement kInfo{"studies_info", TLMHUB_STUDY_INFO " WHERE id = $1"};
 constexpr PgStatement kListForOwner{"studies_list_for_owner", TLMHUB_STUDY_INFO " WHERE owner_id = $1 ORDER BY id DESC"};
 constexpr PgStatement kListInState{"studies_list_in_state", TLMHUB_STUDY_INFO " WHERE state = $1 ORDER BY id ASC"};
@@ -18,28 +26,37 @@ constexpr PgStatement kListInState{"studies_list_in_state", TLMHUB_STUDY_INFO " 
 constexpr PgStatement kRequest{"studies_request", "SELECT request FROM studies WHERE id = $1"};
 constexpr PgStatement kMarkRunning{"studies_mark_running",
                                    "UPDATE studies SET state = 'running', started_at = $1"
-                                   " WHERE id = $2 AND state = 'queued'"};
+                                   " WHERE id = $2 AND state = 'queued' AND node = $3"};
 constexpr PgStatement kCountRun{"studies_count_run",
                                 "UPDATE studies SET runs_done = runs_done + $1, runs_failed = runs_failed + $2"
                                 " WHERE id = $3 AND state = 'running'"};
 // A run index taken already inserts nothing, and the transaction is rolled back.
 constexpr PgStatement kInsertRun{"studies_insert_run",
-                                 "INSERT INTO study_runs(study_id, run_index, ok, parameters, outputs, error, result)"
-                                 " VALUES($1, $2, $3, $4, $5, $6, $7) ON CONFLICT DO NOTHING"};
+                                 "INSERT INTO study_runs(study_id, run_index, ok, parameters, outputs, error, result, node)"
+                                 " VALUES($1, $2, $3, $4, $5, $6, $7, $8) ON CONFLICT DO NOTHING"};
 constexpr PgStatement kSetSummary{"studies_set_summary",
                                   "UPDATE studies SET summary = $1 WHERE id = $2 AND state IN ('queued', 'running')"};
 constexpr PgStatement kFinish{"studies_finish",
                               "UPDATE studies SET state = $1, error = $2, summary = $3, finished_at = $4"
                               " WHERE id = $5 AND state IN ('queued', 'running')"};
-constexpr PgStatement kMarkRunningInterrupted{"studies_mark_running_interrupted",
-                                              "UPDATE studies SET state = 'interrupted', finished_at = $1,"
-                                              " error = 'the server stopped while the study was running'"
-                                              " WHERE state = 'running'"};
+// Studies held by no node that answers: none, or one not seen for $1 ms, other than $2.
+#define TLMHUB_ORPHANED                                                                                   \
+    " (node IS NULL OR (node <> $2 AND node NOT IN"                                                       \
+    " (SELECT id FROM nodes WHERE last_seen >= " TLMHUB_NOW_MS " - $1)))"
+constexpr PgStatement kInterruptOrphans{"studies_interrupt_orphans",
+                                        "UPDATE studies SET state = 'interrupted', finished_at = $3,"
+                                        " error = 'its server stopped while the study was running'"
+                                        " WHERE state = 'running' AND" TLMHUB_ORPHANED};
+constexpr PgStatement kAdoptOrphans{"studies_adopt_orphans",
+                                    "UPDATE studies SET node = $2 WHERE state = 'queued' AND" TLMHUB_ORPHANED " RETURNING id"};
+#undef TLMHUB_ORPHANED
+constexpr PgStatement kReleaseQueued{"studies_release_queued",
+                                     "UPDATE studies SET node = NULL WHERE node = $1 AND state = 'queued'"};
 constexpr PgStatement kReopen{"studies_reopen",
-                              "UPDATE studies SET state = 'queued', error = '', finished_at = 0"
+                              "UPDATE studies SET state = 'queued', error = '', finished_at = 0, node = $2"
                               " WHERE id = $1 AND state IN ('interrupted', 'cancelled')"};
 constexpr PgStatement kRuns{"studies_runs",
-                            "SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL FROM study_runs"
+                            "SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL, node FROM study_runs"
                             " WHERE study_id = $1 AND run_index >= $2 ORDER BY run_index LIMIT $3"};
 constexpr PgStatement kRunResult{"studies_run_result",
                                  "SELECT result FROM study_runs WHERE study_id = $1 AND run_index = $2"
@@ -82,18 +99,19 @@ std::vector<StudyInfo> readInfos(const pqxx::result& r)
 
 std::optional<std::int64_t> PostgresStudyStore::create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
                                                         const std::string& kind, const std::string& name,
-                                                        const std::string& request, std::int64_t runsTotal)
+                                                        const std::string& request, std::int64_t runsTotal,
+                                                        const std::string& node, int maxActive)
 {
     const std::optional<std::string> model = modelId ? std::optional(std::to_string(*modelId)) : std::nullopt;
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) -> std::optional<std::int64_t> {
-        pqxx::nontransaction tx(c.raw());
-        try {
-            return c.exec(tx, kCreate, ownerId, orNull(model), kind, name, jobStateName(JobState::Queued), runsTotal,
-                          static_cast<std::int64_t>(unixNow()), request)[0][0]
-                .as<std::int64_t>();
-        } catch (const pqxx::foreign_key_violation&) {
-            return std::nullopt;   // no such owner
-        }
+        pqxx::work tx(c.raw());
+        if (c.exec(tx, kLockOwner, ownerId).empty()) return std::nullopt;   // no such owner
+        if (c.exec(tx, kActiveCount, ownerId)[0][0].as<int>() >= maxActive) return std::nullopt;
+        const auto id = c.exec(tx, kCreate, ownerId, orNull(model), kind, name, jobStateName(JobState::Queued), runsTotal,
+                               static_cast<std::int64_t>(unixNow()), request, node)[0][0]
+                            .as<std::int64_t>();
+        tx.commit();
+        return id;
     });
 }
 
@@ -133,11 +151,19 @@ std::vector<StudyInfo> PostgresStudyStore::listInState(JobState state)
     });
 }
 
-bool PostgresStudyStore::markRunning(std::int64_t id)
+int PostgresStudyStore::activeCount(std::int64_t ownerId)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        return c.exec(tx, kActiveCount, ownerId)[0][0].as<int>();
+    });
+}
+
+bool PostgresStudyStore::markRunning(std::int64_t id, const std::string& node)
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
-        return c.exec(tx, kMarkRunning, static_cast<std::int64_t>(unixNow()), id).affected_rows() == 1;
+        return c.exec(tx, kMarkRunning, static_cast<std::int64_t>(unixNow()), id, node).affected_rows() == 1;
     });
 }
 
@@ -150,9 +176,9 @@ bool PostgresStudyStore::addRun(std::int64_t studyId, const StudyRun& run, const
         // Sent as binary (bytea) data; a null pointer is NULL (no result kept).
         const auto inserted =
             resultBlob ? c.exec(tx, kInsertRun, studyId, run.index, run.ok, run.parameters, run.outputs, run.error,
-                                pqxx::binarystring(resultBlob->data(), resultBlob->size()))
+                                pqxx::binarystring(resultBlob->data(), resultBlob->size()), run.node)
                        : c.exec(tx, kInsertRun, studyId, run.index, run.ok, run.parameters, run.outputs, run.error,
-                                static_cast<const char*>(nullptr));
+                                static_cast<const char*>(nullptr), run.node);
         if (inserted.affected_rows() != 1) return false;
         tx.commit();
         return true;
@@ -176,20 +202,45 @@ bool PostgresStudyStore::finish(std::int64_t id, JobState state, const std::stri
     });
 }
 
-int PostgresStudyStore::markRunningInterrupted()
+std::vector<StudyInfo> PostgresStudyStore::adoptOrphans(const std::string& node, std::chrono::milliseconds within)
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
-        pqxx::nontransaction tx(c.raw());
-        return static_cast<int>(
-            c.exec(tx, kMarkRunningInterrupted, static_cast<std::int64_t>(unixNow())).affected_rows());
+        pqxx::work tx(c.raw());
+        const auto since = static_cast<std::int64_t>(within.count());
+        c.exec(tx, kInterruptOrphans, since, node, static_cast<std::int64_t>(unixNow()));
+        std::vector<std::int64_t> ids;
+        for (const auto& row : c.exec(tx, kAdoptOrphans, since, node)) ids.push_back(row[0].as<std::int64_t>());
+        std::sort(ids.begin(), ids.end());
+        std::vector<StudyInfo> adopted;
+        for (const std::int64_t id : ids) {
+            const auto r = c.exec(tx, kInfo, id);
+            if (!r.empty()) adopted.push_back(readInfo(r[0]));
+        }
+        tx.commit();
+        return adopted;
     });
 }
 
-bool PostgresStudyStore::reopen(std::int64_t id)
+void PostgresStudyStore::releaseQueued(const std::string& node)
+{
+    mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        c.exec(tx, kReleaseQueued, node);
+    });
+}
+
+bool PostgresStudyStore::reopen(std::int64_t id, const std::string& node, int maxActive)
 {
     return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
-        pqxx::nontransaction tx(c.raw());
-        return c.exec(tx, kReopen, id).affected_rows() == 1;
+        pqxx::work tx(c.raw());
+        const auto owner = c.exec(tx, kOwnerOf, id);
+        if (owner.empty()) return false;
+        const auto ownerId = owner[0][0].as<std::int64_t>();
+        if (c.exec(tx, kLockOwner, ownerId).empty()) return false;
+        if (c.exec(tx, kActiveCount, ownerId)[0][0].as<int>() >= maxActive) return false;
+        if (c.exec(tx, kReopen, id, node).affected_rows() != 1) return false;
+        tx.commit();
+        return true;
     });
 }
 
@@ -200,7 +251,8 @@ std::vector<StudyRun> PostgresStudyStore::runs(std::int64_t studyId, std::int64_
         std::vector<StudyRun> out;
         for (const auto& row : c.exec(tx, kRuns, studyId, fromIndex, static_cast<std::int64_t>(limit)))
             out.push_back(StudyRun{row[0].as<std::int64_t>(), row[1].as<bool>(), row[2].as<std::string>(),
-                                   row[3].as<std::string>(), row[4].as<std::string>(), row[5].as<bool>()});
+                                   row[3].as<std::string>(), row[4].as<std::string>(), row[5].as<bool>(),
+                                   row[6].as<std::string>()});
         return out;
     });
 }

@@ -7,13 +7,6 @@ namespace tlmhub::server {
 
 namespace {
 
-// The local clock in milliseconds: one machine uses an SQLite file, so every node agrees on it.
-std::int64_t nowMillis()
-{
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
 // The claim's order (JobLeaseStore::claim): a user's k-th available queued job, oldest first,
 // is their (running + k)-th; jobs go by that place, then the user served longest ago first
 // (their latest claim: round robin), then by id, up to the per-user limit.
@@ -41,7 +34,7 @@ std::string jsonIds(const std::vector<std::int64_t>& ids)
 std::vector<JobLease> SqliteJobLeaseStore::claim(const ClaimRequest& request)
 {
     if (request.count == 0 || request.maxRunningPerUser <= 0) return {};
-    const std::int64_t now = nowMillis();
+    const std::int64_t now = unixNowMillis();
     return mDb.run([&](SqliteConnection& c) {
         // IMMEDIATE: the write lock from the start, so claims of every connection (and
         // process) take turns and each sees the running counts the one before left.
@@ -79,7 +72,7 @@ std::vector<std::int64_t> SqliteJobLeaseStore::renew(const std::string& nodeId, 
                                                      std::chrono::milliseconds leaseTime)
 {
     if (leases.empty()) return {};
-    const std::int64_t expires = nowMillis() + leaseTime.count();
+    const std::int64_t expires = unixNowMillis() + leaseTime.count();
     return mDb.run([&](SqliteConnection& c) {
         SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
         std::vector<std::int64_t> lost;
@@ -194,7 +187,7 @@ bool SqliteJobLeaseStore::release(const JobLease& lease)
 std::vector<ExpiredLease> SqliteJobLeaseStore::expireLeases(int maxAttempts, std::chrono::milliseconds backoff,
                                                             std::chrono::milliseconds maxBackoff)
 {
-    const std::int64_t now = nowMillis();
+    const std::int64_t now = unixNowMillis();
     const auto nowSeconds = static_cast<std::int64_t>(unixNow());
     return mDb.run([&](SqliteConnection& c) {
         SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
@@ -278,7 +271,7 @@ std::int64_t SqliteJobLeaseStore::claims(std::int64_t jobId)
 
 void SqliteJobLeaseStore::touchNode(const NodeInfo& node)
 {
-    const std::int64_t now = nowMillis();
+    const std::int64_t now = unixNowMillis();
     mDb.run([&](SqliteConnection& c) {
         auto q = c.prepared("INSERT INTO nodes(id, role, address, last_seen) VALUES(?, ?, ?, ?)"
                             " ON CONFLICT(id) DO UPDATE SET role = excluded.role, address = excluded.address,"
@@ -302,7 +295,7 @@ void SqliteJobLeaseStore::removeNode(const std::string& nodeId)
 
 std::vector<NodeInfo> SqliteJobLeaseStore::liveNodes(std::chrono::milliseconds within)
 {
-    const std::int64_t since = nowMillis() - within.count();
+    const std::int64_t since = unixNowMillis() - within.count();
     return mDb.run([&](SqliteConnection& c) {
         auto q = c.prepared("SELECT id, role, address, last_seen FROM nodes WHERE last_seen >= ? ORDER BY id");
         q->bind(1, since);

@@ -257,10 +257,21 @@ void addIdempotencyKeys(SQLite::Database& db)
     db.exec("CREATE INDEX idempotency_keys_age ON idempotency_keys(owner_id, created_at)");
 }
 
+// Version 9: studies held by nodes (issue 40). A queued or running study's node: the one that
+// queues and runs it (NULL: none, e.g. released by a node that stopped). Another node takes a
+// study over only when its node stops answering (the nodes table), so a restart of one node
+// leaves the studies of the others alone. Each run records the node that ran it.
+void addStudyNodes(SQLite::Database& db)
+{
+    db.exec("ALTER TABLE studies ADD COLUMN node TEXT");
+    db.exec("ALTER TABLE study_runs ADD COLUMN node TEXT NOT NULL DEFAULT ''");
+    db.exec("CREATE INDEX studies_active ON studies(state) WHERE state IN ('queued', 'running')");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences, addIdempotencyKeys};
+                                                             addPreferences, addIdempotencyKeys, addStudyNodes};
 
 } // namespace
 

@@ -4,6 +4,8 @@
 #include <SQLiteCpp/Transaction.h>
 #include <sqlite3.h>
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 namespace {
@@ -44,16 +46,32 @@ std::vector<StudyInfo> readInfos(SqliteConnection::Statement& q)
     return out;
 }
 
+int countActive(SqliteConnection& c, std::int64_t ownerId)
+{
+    auto q = c.prepared("SELECT COUNT(*) FROM studies WHERE owner_id = ? AND state IN ('queued', 'running')");
+    q->bind(1, ownerId);
+    q->executeStep();
+    return q->getColumn(0).getInt();
+}
+
+// Studies held by no node that answers: none, or one not seen since ?1 (ms), other than ?2.
+#define TLMHUB_ORPHANED                                                                                   \
+    " (node IS NULL OR (node <> ?2 AND node NOT IN (SELECT id FROM nodes WHERE last_seen >= ?1)))"
+
 } // namespace
 
 std::optional<std::int64_t> SqliteStudyStore::create(std::int64_t ownerId, std::optional<std::int64_t> modelId,
                                                       const std::string& kind, const std::string& name,
-                                                      const std::string& request, std::int64_t runsTotal)
+                                                      const std::string& request, std::int64_t runsTotal,
+                                                      const std::string& node, int maxActive)
 {
     const auto now = static_cast<std::int64_t>(unixNow());
     return mDb.run([&](SqliteConnection& c) -> std::optional<std::int64_t> {
+        // IMMEDIATE: every node writing to the file waits for this count and insert.
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        if (countActive(c, ownerId) >= maxActive) return std::nullopt;
         auto insert = c.prepared("INSERT INTO studies(owner_id, model_id, kind, name, state, runs_total,"
-                                 " created_at, request) VALUES(?, ?, ?, ?, ?, ?, ?, ?)");
+                                 " created_at, request, node) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
         insert->bind(1, ownerId);
         if (modelId) insert->bind(2, *modelId);
         else insert->bind(2);
@@ -63,13 +81,16 @@ std::optional<std::int64_t> SqliteStudyStore::create(std::int64_t ownerId, std::
         insert->bind(6, runsTotal);
         insert->bind(7, now);
         insert->bind(8, request);
+        insert->bind(9, node);
         try {
             insert->exec();
         } catch (const SQLite::Exception& e) {
             if (e.getExtendedErrorCode() == SQLITE_CONSTRAINT_FOREIGNKEY) return std::nullopt;
             throw;
         }
-        return c.db().getLastInsertRowid();
+        const std::int64_t id = c.db().getLastInsertRowid();
+        transaction.commit();
+        return id;
     });
 }
 
@@ -111,13 +132,20 @@ std::vector<StudyInfo> SqliteStudyStore::listInState(JobState state)
     });
 }
 
-bool SqliteStudyStore::markRunning(std::int64_t id)
+int SqliteStudyStore::activeCount(std::int64_t ownerId)
+{
+    return mDb.run([&](SqliteConnection& c) { return countActive(c, ownerId); });
+}
+
+bool SqliteStudyStore::markRunning(std::int64_t id, const std::string& node)
 {
     const auto now = static_cast<std::int64_t>(unixNow());
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE studies SET state = 'running', started_at = ? WHERE id = ? AND state = 'queued'");
+        auto q = c.prepared("UPDATE studies SET state = 'running', started_at = ?"
+                            " WHERE id = ? AND state = 'queued' AND node = ?");
         q->bind(1, now);
         q->bind(2, id);
+        q->bind(3, node);
         return q->exec() == 1;
     });
 }
@@ -135,8 +163,8 @@ bool SqliteStudyStore::addRun(std::int64_t studyId, const StudyRun& run, const s
             if (count->exec() != 1) return false;
         }
         // A run index taken already inserts nothing; the count above is rolled back with it.
-        auto insert = c.prepared("INSERT INTO study_runs(study_id, run_index, ok, parameters, outputs, error, result)"
-                                 " VALUES(?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING");
+        auto insert = c.prepared("INSERT INTO study_runs(study_id, run_index, ok, parameters, outputs, error, result, node)"
+                                 " VALUES(?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT DO NOTHING");
         insert->bind(1, studyId);
         insert->bind(2, run.index);
         insert->bind(3, run.ok ? 1 : 0);
@@ -145,6 +173,7 @@ bool SqliteStudyStore::addRun(std::int64_t studyId, const StudyRun& run, const s
         insert->bind(6, run.error);
         if (resultBlob) insert->bindNoCopy(7, resultBlob->data(), static_cast<int>(resultBlob->size()));
         else insert->bind(7);
+        insert->bind(8, run.node);
         if (insert->exec() != 1) return false;
         transaction.commit();
         return true;
@@ -176,32 +205,73 @@ bool SqliteStudyStore::finish(std::int64_t id, JobState state, const std::string
     });
 }
 
-int SqliteStudyStore::markRunningInterrupted()
+std::vector<StudyInfo> SqliteStudyStore::adoptOrphans(const std::string& node, std::chrono::milliseconds within)
 {
     const auto now = static_cast<std::int64_t>(unixNow());
+    const std::int64_t since = unixNowMillis() - within.count();
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE studies SET state = 'interrupted', finished_at = ?,"
-                            " error = 'the server stopped while the study was running'"
-                            " WHERE state = 'running'");
-        q->bind(1, now);
-        return q->exec();
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        {
+            auto interrupt = c.prepared("UPDATE studies SET state = 'interrupted', finished_at = ?3,"
+                                        " error = 'its server stopped while the study was running'"
+                                        " WHERE state = 'running' AND" TLMHUB_ORPHANED);
+            interrupt->bind(1, since);
+            interrupt->bind(2, node);
+            interrupt->bind(3, now);
+            interrupt->exec();
+        }
+        auto adopt = c.prepared("UPDATE studies SET node = ?2 WHERE state = 'queued' AND" TLMHUB_ORPHANED " RETURNING id");
+        adopt->bind(1, since);
+        adopt->bind(2, node);
+        std::vector<std::int64_t> ids;
+        while (adopt->executeStep()) ids.push_back(adopt->getColumn(0).getInt64());
+        adopt->reset();
+        std::sort(ids.begin(), ids.end());
+        std::vector<StudyInfo> adopted;
+        for (const std::int64_t id : ids) {
+            auto q = c.prepared(kInfoById);
+            q->bind(1, id);
+            if (q->executeStep()) adopted.push_back(readInfo(*q));
+        }
+        transaction.commit();
+        return adopted;
+    });
+}
+#undef TLMHUB_ORPHANED
+
+void SqliteStudyStore::releaseQueued(const std::string& node)
+{
+    mDb.run([&](SqliteConnection& c) {
+        auto q = c.prepared("UPDATE studies SET node = NULL WHERE node = ? AND state = 'queued'");
+        q->bind(1, node);
+        q->exec();
     });
 }
 
-bool SqliteStudyStore::reopen(std::int64_t id)
+bool SqliteStudyStore::reopen(std::int64_t id, const std::string& node, int maxActive)
 {
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE studies SET state = 'queued', error = '', finished_at = 0"
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        auto owner = c.prepared("SELECT owner_id FROM studies WHERE id = ?");
+        owner->bind(1, id);
+        if (!owner->executeStep()) return false;
+        const std::int64_t ownerId = owner->getColumn(0).getInt64();
+        owner->reset();
+        if (countActive(c, ownerId) >= maxActive) return false;
+        auto q = c.prepared("UPDATE studies SET state = 'queued', error = '', finished_at = 0, node = ?"
                             " WHERE id = ? AND state IN ('interrupted', 'cancelled')");
-        q->bind(1, id);
-        return q->exec() == 1;
+        q->bind(1, node);
+        q->bind(2, id);
+        if (q->exec() != 1) return false;
+        transaction.commit();
+        return true;
     });
 }
 
 std::vector<StudyRun> SqliteStudyStore::runs(std::int64_t studyId, std::int64_t fromIndex, std::size_t limit)
 {
     return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL FROM study_runs"
+        auto q = c.prepared("SELECT run_index, ok, parameters, outputs, error, result IS NOT NULL, node FROM study_runs"
                             " WHERE study_id = ? AND run_index >= ? ORDER BY run_index LIMIT ?");
         q->bind(1, studyId);
         q->bind(2, fromIndex);
@@ -210,7 +280,8 @@ std::vector<StudyRun> SqliteStudyStore::runs(std::int64_t studyId, std::int64_t 
         while (q->executeStep())
             out.push_back(StudyRun{q->getColumn(0).getInt64(), q->getColumn(1).getInt() != 0,
                                    q->getColumn(2).getString(), q->getColumn(3).getString(),
-                                   q->getColumn(4).getString(), q->getColumn(5).getInt() != 0});
+                                   q->getColumn(4).getString(), q->getColumn(5).getInt() != 0,
+                                   q->getColumn(6).getString()});
         return out;
     });
 }

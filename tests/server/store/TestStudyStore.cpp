@@ -4,24 +4,31 @@
 #include "server/store/UnixTime.h"
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 
 using namespace tlmhub::server;
 
 namespace tlmhub::test {
 namespace {
 
+// The node the tests' studies are held by, and a limit of active studies no test reaches
+// unless it means to.
+const std::string kNode = "node-a";
+constexpr int kNoLimit = 1000;
+
 class StudyStoreConformance : public StoreTest {
 protected:
-    std::int64_t addStudy(std::int64_t ownerId, std::int64_t runsTotal = 10)
+    std::int64_t addStudy(std::int64_t ownerId, std::int64_t runsTotal = 10, const std::string& node = kNode)
     {
-        const auto id = store().studies().create(ownerId, std::nullopt, "sweep", "study", "{}", runsTotal);
+        const auto id = store().studies().create(ownerId, std::nullopt, "sweep", "study", "{}", runsTotal, node, kNoLimit);
         if (!id) throw std::runtime_error("cannot add a study of " + std::to_string(ownerId));
         return *id;
     }
     std::int64_t addRunningStudy(std::int64_t ownerId)
     {
         const std::int64_t id = addStudy(ownerId);
-        if (!store().studies().markRunning(id)) throw std::runtime_error("cannot start study " + std::to_string(id));
+        if (!store().studies().markRunning(id, kNode)) throw std::runtime_error("cannot start study " + std::to_string(id));
         return id;
     }
 };
@@ -29,12 +36,12 @@ TLMHUB_STORE_CONFORMANCE(StudyStoreConformance);
 
 StudyRun okRun(std::int64_t index)
 {
-    return StudyRun{index, true, R"({"Pump.Dp":)" + std::to_string(index) + "}", R"({"Mass#P1#x:final":0.5})", "", false};
+    return StudyRun{index, true, R"({"Pump.Dp":)" + std::to_string(index) + "}", R"({"Mass#P1#x:final":0.5})", "", false, ""};
 }
 
 StudyRun failedRun(std::int64_t index)
 {
-    return StudyRun{index, false, R"({"Pump.Dp":-1})", "{}", "the model diverged", false};
+    return StudyRun{index, false, R"({"Pump.Dp":-1})", "{}", "the model diverged", false, ""};
 }
 
 std::vector<std::int64_t> idsOf(const std::vector<StudyInfo>& studies)
@@ -56,7 +63,7 @@ TEST_P(StudyStoreConformance, CreateStoresAQueuedStudyAndItsRequest)
     const User alice = addUser("alice");
     const std::string request = R"({"kind":"sweep","name":"pump size","sweep":{"parameters":{"Pump.Dp":[1e-5,2e-5]}}})";
     const long long before = unixNow();
-    const auto id = store().studies().create(alice.id, 42, "sweep", "pump size \xc3\xa5", request, 12);
+    const auto id = store().studies().create(alice.id, 42, "sweep", "pump size \xc3\xa5", request, 12, kNode, kNoLimit);
     const long long after = unixNow();
     ASSERT_TRUE(id);
     const auto info = store().studies().info(*id);
@@ -84,14 +91,14 @@ TEST_P(StudyStoreConformance, CreateStoresAQueuedStudyAndItsRequest)
 TEST_P(StudyStoreConformance, AStudyOfModelTextHasNoModelId)
 {
     const User alice = addUser("alice");
-    const auto id = store().studies().create(alice.id, std::nullopt, "optimise", "pid", "{}", 200);
+    const auto id = store().studies().create(alice.id, std::nullopt, "optimise", "pid", "{}", 200, kNode, kNoLimit);
     ASSERT_TRUE(id);
     EXPECT_EQ(store().studies().info(*id)->modelId, std::nullopt);
 }
 
 TEST_P(StudyStoreConformance, CreateForAMissingOwnerIsRefused)
 {
-    EXPECT_EQ(store().studies().create(4242, std::nullopt, "sweep", "orphan", "{}", 1), std::nullopt);
+    EXPECT_EQ(store().studies().create(4242, std::nullopt, "sweep", "orphan", "{}", 1, kNode, kNoLimit), std::nullopt);
     EXPECT_TRUE(store().studies().listForOwner(4242).empty());
 }
 
@@ -114,8 +121,8 @@ TEST_P(StudyStoreConformance, ListInStateIsOldestFirst)
     const auto s2 = addStudy(bob.id);
     const auto s3 = addStudy(alice.id);
     const auto s4 = addStudy(bob.id);
-    ASSERT_TRUE(store().studies().markRunning(s3));
-    ASSERT_TRUE(store().studies().markRunning(s1));
+    ASSERT_TRUE(store().studies().markRunning(s3, kNode));
+    ASSERT_TRUE(store().studies().markRunning(s1, kNode));
     EXPECT_EQ(idsOf(store().studies().listInState(JobState::Running)), (std::vector<std::int64_t>{s1, s3}));
     EXPECT_EQ(idsOf(store().studies().listInState(JobState::Queued)), (std::vector<std::int64_t>{s2, s4}));
     EXPECT_TRUE(store().studies().listInState(JobState::Done).empty());
@@ -126,14 +133,14 @@ TEST_P(StudyStoreConformance, MarkRunningStartsOnlyAQueuedStudy)
     const User alice = addUser("alice");
     const auto id = addStudy(alice.id);
     const long long before = unixNow();
-    EXPECT_TRUE(store().studies().markRunning(id));
+    EXPECT_TRUE(store().studies().markRunning(id, kNode));
     const auto info = store().studies().info(id);
     EXPECT_EQ(info->state, JobState::Running);
     EXPECT_GE(info->startedAt, before);
-    EXPECT_FALSE(store().studies().markRunning(id)) << "running already";
-    EXPECT_FALSE(store().studies().markRunning(id + 1000));
+    EXPECT_FALSE(store().studies().markRunning(id, kNode)) << "running already";
+    EXPECT_FALSE(store().studies().markRunning(id + 1000, kNode));
     ASSERT_TRUE(store().studies().finish(id, JobState::Done, "", "{}"));
-    EXPECT_FALSE(store().studies().markRunning(id)) << "finished";
+    EXPECT_FALSE(store().studies().markRunning(id, kNode)) << "finished";
 }
 
 TEST_P(StudyStoreConformance, AddRunStoresTheRunAndCountsItDoneOrFailed)
@@ -291,24 +298,115 @@ TEST_P(StudyStoreConformance, FinishSetsTheFinalStateOnce)
     EXPECT_FALSE(store().studies().finish(queued + 1000, JobState::Done, "", "{}"));
 }
 
-TEST_P(StudyStoreConformance, MarkRunningInterruptedEndsOnlyRunningStudies)
+// Node a answers (a heartbeat in the nodes table); node gone never did: b takes over gone's
+// studies only, interrupting the running one and holding the queued one from then on.
+TEST_P(StudyStoreConformance, AdoptOrphansTakesOverOnlyTheStudiesOfNodesThatStoppedAnswering)
 {
     const User alice = addUser("alice");
-    const auto running1 = addRunningStudy(alice.id);
-    const auto queued = addStudy(alice.id);
-    const auto running2 = addRunningStudy(alice.id);
-    const auto done = addRunningStudy(alice.id);
-    ASSERT_TRUE(store().studies().finish(done, JobState::Done, "", "{}"));
-    EXPECT_EQ(store().studies().markRunningInterrupted(), 2);
-    for (const auto id : {running1, running2}) {
-        const auto info = store().studies().info(id);
-        EXPECT_EQ(info->state, JobState::Interrupted);
-        EXPECT_NE(info->error, "");
-        EXPECT_GT(info->finishedAt, 0);
-    }
-    EXPECT_EQ(store().studies().info(queued)->state, JobState::Queued);
-    EXPECT_EQ(store().studies().info(done)->state, JobState::Done);
-    EXPECT_EQ(store().studies().markRunningInterrupted(), 0);
+    store().jobLeases().touchNode(NodeInfo{kNode, "api", "", 0});
+    const auto liveRunning = addRunningStudy(alice.id);
+    const auto liveQueued = addStudy(alice.id);
+    const auto goneQueued1 = addStudy(alice.id, 10, "node-gone");
+    const auto goneRunning = addStudy(alice.id, 10, "node-gone");
+    ASSERT_TRUE(store().studies().markRunning(goneRunning, "node-gone"));
+    ASSERT_TRUE(store().studies().addRun(goneRunning, okRun(0), nullptr));
+    const auto goneQueued2 = addStudy(alice.id, 10, "node-gone");
+    const auto goneDone = addStudy(alice.id, 10, "node-gone");
+    ASSERT_TRUE(store().studies().finish(goneDone, JobState::Cancelled, "", "{}"));
+    const auto own = addStudy(alice.id, 10, "node-b");   // b itself has no heartbeat yet
+
+    const auto adopted = store().studies().adoptOrphans("node-b", std::chrono::seconds(10));
+    EXPECT_EQ(idsOf(adopted), (std::vector<std::int64_t>{goneQueued1, goneQueued2})) << "oldest first";
+    for (const auto& info : adopted) EXPECT_EQ(info.state, JobState::Queued);
+    const auto interrupted = store().studies().info(goneRunning);
+    EXPECT_EQ(interrupted->state, JobState::Interrupted);
+    EXPECT_NE(interrupted->error, "");
+    EXPECT_GT(interrupted->finishedAt, 0);
+    EXPECT_EQ(interrupted->runsDone, 1) << "its runs are kept";
+    EXPECT_EQ(store().studies().info(liveRunning)->state, JobState::Running);
+    EXPECT_EQ(store().studies().info(goneDone)->state, JobState::Cancelled);
+    // The adopted ones start on b only; a's and b's own are as they were.
+    EXPECT_FALSE(store().studies().markRunning(goneQueued1, "node-gone"));
+    EXPECT_TRUE(store().studies().markRunning(goneQueued1, "node-b"));
+    EXPECT_TRUE(store().studies().markRunning(liveQueued, kNode));
+    EXPECT_TRUE(store().studies().markRunning(own, "node-b"));
+    EXPECT_TRUE(store().studies().adoptOrphans("node-b", std::chrono::seconds(10)).empty()) << "nothing left to adopt";
+}
+
+// A heartbeat older than the window counts as a stopped node; a node's released queued
+// studies are adopted at once even while it answers.
+TEST_P(StudyStoreConformance, AStaleHeartbeatOrAReleaseLetsAnotherNodeAdopt)
+{
+    const User alice = addUser("alice");
+    store().jobLeases().touchNode(NodeInfo{kNode, "api", "", 0});
+    const auto released = addStudy(alice.id);
+    const auto kept = addStudy(alice.id, 10, "node-c");
+    store().jobLeases().touchNode(NodeInfo{"node-c", "api", "", 0});
+    store().studies().releaseQueued(kNode);
+    EXPECT_EQ(idsOf(store().studies().adoptOrphans("node-b", std::chrono::seconds(10))), (std::vector<std::int64_t>{released}));
+    EXPECT_TRUE(store().studies().markRunning(released, "node-b"));
+
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_EQ(idsOf(store().studies().adoptOrphans("node-b", std::chrono::milliseconds(10))), (std::vector<std::int64_t>{kept}))
+        << "node-c was last seen 50 ms ago, longer than the 10 ms window";
+}
+
+// At most maxActive queued or running studies per owner, whichever node admits them; the
+// finished ones do not count, nor other owners' studies.
+TEST_P(StudyStoreConformance, CreateAndReopenHoldTheActiveLimit)
+{
+    const User alice = addUser("alice");
+    const User bob = addUser("bob");
+    auto create = [&](const User& user, const std::string& node) {
+        return store().studies().create(user.id, std::nullopt, "sweep", "s", "{}", 4, node, 2);
+    };
+    const auto first = create(alice, "node-a");
+    ASSERT_TRUE(first);
+    ASSERT_TRUE(store().studies().markRunning(*first, "node-a"));
+    const auto second = create(alice, "node-b");
+    ASSERT_TRUE(second);
+    EXPECT_EQ(store().studies().activeCount(alice.id), 2);
+    EXPECT_EQ(create(alice, "node-c"), std::nullopt) << "a third active study";
+    EXPECT_TRUE(create(bob, "node-c")) << "bob's count is his own";
+    ASSERT_TRUE(store().studies().finish(*second, JobState::Cancelled, "", "{}"));
+    EXPECT_EQ(store().studies().activeCount(alice.id), 1);
+    const auto third = create(alice, "node-c");
+    ASSERT_TRUE(third);
+    EXPECT_FALSE(store().studies().reopen(*second, "node-b", 2)) << "resuming would make a third";
+    ASSERT_TRUE(store().studies().finish(*first, JobState::Done, "", "{}"));
+    EXPECT_TRUE(store().studies().reopen(*second, "node-b", 2));
+    EXPECT_EQ(store().studies().activeCount(alice.id), 2);
+}
+
+// Two nodes admitting the same owner's studies at once admit no more than the limit between them.
+TEST_P(StudyStoreConformance, ConcurrentCreatesAdmitNoMoreThanTheLimit)
+{
+    const User alice = addUser("alice");
+    const auto second = db->open();   // another node's connections
+    std::atomic<int> admitted{0};
+    runAtOnce(4, [&](int i) {
+        Storage& storage = i % 2 ? *second : store();
+        for (int k = 0; k < 3; ++k)
+            if (storage.studies().create(alice.id, std::nullopt, "sweep", "s", "{}", 1, "node-" + std::to_string(i), 3))
+                ++admitted;
+    });
+    EXPECT_EQ(admitted.load(), 3);
+    EXPECT_EQ(store().studies().activeCount(alice.id), 3);
+}
+
+// Each run keeps the node that ran it.
+TEST_P(StudyStoreConformance, RunsKeepTheirNode)
+{
+    const User alice = addUser("alice");
+    const auto id = addRunningStudy(alice.id);
+    StudyRun run = okRun(0);
+    run.node = "node-x";
+    ASSERT_TRUE(store().studies().addRun(id, run, nullptr));
+    ASSERT_TRUE(store().studies().addRun(id, okRun(1), nullptr));
+    const auto runs = store().studies().runs(id, 0, 10);
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].node, "node-x");
+    EXPECT_EQ(runs[1].node, "");
 }
 
 TEST_P(StudyStoreConformance, ReopenQueuesAnInterruptedOrCancelledStudyWithItsRunsKept)
@@ -317,7 +415,7 @@ TEST_P(StudyStoreConformance, ReopenQueuesAnInterruptedOrCancelledStudyWithItsRu
     const auto interrupted = addRunningStudy(alice.id);
     ASSERT_TRUE(store().studies().addRun(interrupted, okRun(0), nullptr));
     ASSERT_TRUE(store().studies().addRun(interrupted, okRun(1), nullptr));
-    ASSERT_EQ(store().studies().markRunningInterrupted(), 1);
+    ASSERT_TRUE(store().studies().finish(interrupted, JobState::Interrupted, "stopped", "{}"));
     const auto cancelled = addStudy(alice.id);
     ASSERT_TRUE(store().studies().finish(cancelled, JobState::Cancelled, "", "{}"));
     const auto done = addRunningStudy(alice.id);
@@ -326,26 +424,26 @@ TEST_P(StudyStoreConformance, ReopenQueuesAnInterruptedOrCancelledStudyWithItsRu
     const auto queued = addStudy(alice.id);
 
     for (const auto id : {interrupted, cancelled}) {
-        EXPECT_TRUE(store().studies().reopen(id));
+        EXPECT_TRUE(store().studies().reopen(id, kNode, kNoLimit));
         const auto info = store().studies().info(id);
         EXPECT_EQ(info->state, JobState::Queued);
         EXPECT_EQ(info->error, "");
         EXPECT_EQ(info->finishedAt, 0);
-        EXPECT_FALSE(store().studies().reopen(id)) << "queued already";
+        EXPECT_FALSE(store().studies().reopen(id, kNode, kNoLimit)) << "queued already";
     }
     const auto resumed = store().studies().info(interrupted);
     EXPECT_EQ(resumed->runsDone, 2) << "the runs it has stay counted";
     EXPECT_EQ(store().studies().runs(interrupted, 0, 10).size(), 2u);
     // It runs again: the runs it lacks are added, the ones it has are refused.
-    ASSERT_TRUE(store().studies().markRunning(interrupted));
+    ASSERT_TRUE(store().studies().markRunning(interrupted, kNode));
     EXPECT_FALSE(store().studies().addRun(interrupted, okRun(1), nullptr));
     EXPECT_TRUE(store().studies().addRun(interrupted, okRun(2), nullptr));
     EXPECT_EQ(store().studies().info(interrupted)->runsDone, 3);
 
-    for (const auto id : {done, running, queued}) EXPECT_FALSE(store().studies().reopen(id));
+    for (const auto id : {done, running, queued}) EXPECT_FALSE(store().studies().reopen(id, kNode, kNoLimit));
     EXPECT_EQ(store().studies().info(done)->state, JobState::Done);
     EXPECT_EQ(store().studies().info(running)->state, JobState::Running);
-    EXPECT_FALSE(store().studies().reopen(queued + 1000)) << "no such study";
+    EXPECT_FALSE(store().studies().reopen(queued + 1000, kNode, kNoLimit)) << "no such study";
 }
 
 TEST_P(StudyStoreConformance, RemoveDeletesTheStudyWithItsRunsAndResults)
