@@ -4,6 +4,7 @@
 
 #include "core/System.h"
 
+#include <cassert>
 #include <filesystem>
 
 namespace tlmhub {
@@ -159,10 +160,20 @@ Port* Component::addInputVariable(const std::string& name, const std::string& de
     if (Parameter* param = mParameters.find(name + "#Value")) {
         param->description = description;
         param->unit = unit;
+        param->liveChangeable = true;
     }
     p->node()->signalUnit = unit;
     mAutoBindings.push_back({p, data});
     return p;
+}
+
+void Component::setLiveChangeable(std::initializer_list<std::string_view> variables, bool changeable)
+{
+    for (std::string_view variable : variables) {
+        Parameter* p = mParameters.find(std::string(variable) + "#Value");
+        assert(p && "setLiveChangeable names a variable without a start value");
+        if (p) p->liveChangeable = changeable;
+    }
 }
 
 Port* Component::addOutputVariable(const std::string& name, const std::string& description,

@@ -16,9 +16,11 @@
 #include "core/numerics/RandomStream.h"
 
 #include <cstddef>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tlmhub {
@@ -166,6 +168,12 @@ protected:
     // Output variable with a start value parameter `name#Value`.
     Port* addOutputVariable(const std::string& name, const std::string& description,
                             const std::string& unit, double defaultValue, double** data);
+
+    // Whether the start values of these signal variables ("y_A" for y_A#Value) may change
+    // while the simulation runs (Parameter::liveChangeable). An input variable may by
+    // default, as its node is read every step; a type that reads one only in initialize()
+    // says no, a source whose output node holds its constant says yes.
+    void setLiveChangeable(std::initializer_list<std::string_view> variables, bool changeable);
 
     // --- constants ---
     void addConstant(const std::string& name, const std::string& description,

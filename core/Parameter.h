@@ -20,6 +20,10 @@ struct Parameter {
     std::string defaultValue;   // value string at registration
     bool isStartValue = false;  // Port#Variable parameters
     bool internal = false;      // system parameters only
+    // A running simulation may take a new value between two steps (Simulation::
+    // changeWhileRunning). Set where the component type registers it, for the start value of
+    // a variable whose node the component reads every step (an input variable by default).
+    bool liveChangeable = false;
     std::vector<std::string> conditions;  // alternatives of a conditional parameter
 
     // Where evaluation writes the number/string. Exactly one is set for component

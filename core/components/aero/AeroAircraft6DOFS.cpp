@@ -121,6 +121,8 @@ void AeroAircraft6DOFS::configure()
     for (int i = 0; i < kNumFrozen; ++i) {
         addInputVariable(kFrozenInputs[i].name, kFrozenInputs[i].name, kFrozenInputs[i].unit,
                          kFrozenInputs[i].defaultValue, &mpFrozen[i]);
+        // Frozen at initialize(): a new value needs a new start.
+        setLiveChangeable({kFrozenInputs[i].name}, false);
     }
 
     addOutputVariable("xcg", "Position x (earth)", "m", 0.0, &mpXcg);

@@ -26,6 +26,8 @@ void AeroAtmosphere::configure()
     addOutputVariable("Ta", "Air temperature", "K", 273.0, &mpTa);
     addOutputVariable("p0", "Air pressure", "Pa", 100000.0, &mpP0);
     addOutputVariable("Vsound", "Speed of sound", "m/s", 340.0, &mpVsound);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"g0", "rhos", "a", "R", "gamma", "Ts", "p0s", "htp", "Ttp", "ptp", "rhotp", "e"}, false);
 }
 
 void AeroAtmosphere::initialize()

@@ -31,6 +31,8 @@ void AeroCombustionChamberMono::configure()
     addOutputVariable("ve", "Exit velocity", "m/s", 0.0, &mpVe);
     addOutputVariable("Pin", "Input power", "W", 0.0, &mpPin);
     addOutputVariable("Pout", "Output power", "W", 0.0, &mpPout);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Vc", "R", "cv", "vfuel", "ethap", "rhofuel", "As", "Med", "alpha"}, false);
 }
 
 void AeroCombustionChamberMono::initialize()

@@ -27,6 +27,8 @@ void AeroFlightRecorder::configure()
                            0, mFileType);
     addConstant("path", "Path where the output file should be placed", "", mPath);
     addConstant("daeModel", "File path to a .dae model for 3D vehicle representation", "", mDaeModel);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"v"}, false);
 }
 
 void AeroFlightRecorder::initialize()

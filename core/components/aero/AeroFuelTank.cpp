@@ -11,6 +11,8 @@ void AeroFuelTank::configure()
     addInputVariable("massfuel0", "Initial fuel mass", "kg", 0.0, &mpMassfuel0);
     addOutputVariable("massfuel", "Fuel mass", "kg", 0.0, &mpMassfuel);
     addOutputVariable("consfuel", "Consumed fuel", "kg", 0.0, &mpConsfuel);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"massfuel0"}, false);
 }
 
 void AeroFuelTank::initialize()

@@ -25,6 +25,8 @@ void AeroJetEngine::configure()
     addOutputVariable("thrust", "Thrust", "N", 5000.0, &mpThrust);
     addOutputVariable("Shspeed", "Normalised shaft speed", "", 1.0, &mpShspeed);
     addOutputVariable("qmfuel", "Fuel mass flow", "kg/s", 1.0, &mpQmfuel);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"T", "p0", "thrustmax", "SFC0", "thau", "Ctm", "Csfct", "Csfcm", "e"}, false);
 }
 
 // Thrust, reference shaft speed and SFC from the previous shaft speed.

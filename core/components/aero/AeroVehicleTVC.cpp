@@ -328,6 +328,10 @@ void AeroVehicleTVC::configure()
     addOutputVariable("Cd1", "Drag coefficient", "", 0.0, &mpCd1);
     addOutputVariable("Fax", "Aerodynamic force x", "N", 0.0, &mpFax);
     addOutputVariable("Faz", "Aerodynamic force z", "N", 0.0, &mpFaz);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"wturbx", "Cd0b", "Ctvc", "CLalphabh", "CLalphabv", "hthrust0", "Ix", "Ixz", "Iy",
+                      "Iz", "Me", "Sbh", "Sbv", "xbach", "xbacv", "xbcge", "xcargo", "xfuel", "xeng",
+                      "yeng", "kground", "cground"}, false);
 }
 
 void AeroVehicleTVC::explicitQuantities()

@@ -40,6 +40,8 @@ void AeroWind::configure()
     addOutputVariable("vw", "Wind speed, y", "m/s", 0.0, &mpVw);
     addOutputVariable("ww", "Wind speed, vertical (turbulent)", "m/s", 0.0, &mpWw);
     addOutputVariable("hf", "Filtered altitude", "m", 0.0, &mpHf);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"U0", "heading", "h0", "alpha", "au", "aw", "wh"}, false);
 }
 
 void AeroWind::updateLocalScales()

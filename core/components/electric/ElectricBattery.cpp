@@ -17,6 +17,8 @@ void ElectricBattery::configure()
     addInputVariable("e", "Base of the exponential", "", 2.71828, &mpE);
     addOutputVariable("soc", "State of charge", "", 1.0, &mpSoc);
     addOutputVariable("ubatt", "Internal voltage", "V", 0.0, &mpUbatt);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"cond", "unom", "capacity", "kappa", "e"}, false);
 }
 
 void ElectricBattery::initialize()

@@ -10,6 +10,8 @@ void ElectricCapacitance2::configure()
     mpPel2 = addPowerPort("Pel2", NodeType::Electric);
     addInputVariable("Cc", "Capacitance", "(A s)/V", 1.0e-4, &mpCc);
     addInputVariable("alpha", "numerical damping", "", 0.1, &mpAlpha);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Cc", "alpha"}, false);
 }
 
 void ElectricCapacitance2::initialize()

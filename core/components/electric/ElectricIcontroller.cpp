@@ -18,6 +18,8 @@ void ElectricIcontroller::configure()
     addInputVariable("imax", "Max current", "A", 10000.0, &mpImax);
     addInputVariable("imin", "Min current", "A", 0.01, &mpImin);
     addInputVariable("umax", "Max voltage", "V", 1000.0, &mpUmax);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"resist", "wf", "umin", "imax", "imin", "umax"}, false);
 }
 
 // Delayed part of the first-order lag (bilinear discretisation).

@@ -9,6 +9,8 @@ void ElectricInductance::configure()
     mpPel1 = addPowerPort("Pel1", NodeType::Electric);
     mpPel2 = addPowerPort("Pel2", NodeType::Electric);
     addInputVariable("Induct", "Inductance", "A/(Vs)", 0.1, &mpInduct);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Induct"}, false);
 }
 
 void ElectricInductance::initialize()

@@ -26,6 +26,8 @@ void ElectricMotorGear::configure()
     addOutputVariable("tormg", "Generated torque", "Nm", 0.0, &mpTormg);
     addOutputVariable("Pin", "Electric input power", "W", 0.0, &mpPin);
     addOutputVariable("Pout", "Shaft power", "W", 0.0, &mpPout);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Ke", "Ra", "Tm0", "wc", "Bm", "Jm", "BL", "JL", "myfric"}, false);
 }
 
 void ElectricMotorGear::computeDelayedParts(double g)

@@ -31,6 +31,9 @@ void ElectricMotorGearScrewLink::configure()
     addOutputVariable("tormg", "Generated motor torque", "Nm", 0.0, &mpTormg);
     addOutputVariable("Pin", "Electric input power", "W", 0.0, &mpPin);
     addOutputVariable("Pout", "Link shaft power", "W", 0.0, &mpPout);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Ke", "Ra", "Tm0", "wc", "Bm", "Jm", "myg", "mys", "BL", "JL", "pitch", "thetamin",
+                      "thetamax", "la"}, false);
 }
 
 ElectricMotorGearScrewLink::Load ElectricMotorGearScrewLink::load(double g) const

@@ -15,6 +15,8 @@ void ElectricPWMdceq::configure()
     addInputVariable("umin", "Min voltage", "V", 0.01, &mpUmin);
     addInputVariable("umax", "Max voltage", "V", 1000.0, &mpUmax);
     addOutputVariable("uel10", "Internal voltage", "V", 0.0, &mpUel10);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"resist0", "resist1", "umin", "umax"}, false);
 }
 
 void ElectricPWMdceq::initialize()

@@ -9,6 +9,8 @@ void ElectricResistor::configure()
     mpPel1 = addPowerPort("Pel1", NodeType::Electric);
     mpPel2 = addPowerPort("Pel2", NodeType::Electric);
     addInputVariable("Conduct", "conductance (1/resistance)", "A/V", 0.1, &mpConduct);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Conduct"}, false);
 }
 
 void ElectricResistor::initialize()

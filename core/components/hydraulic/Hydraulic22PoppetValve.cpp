@@ -23,6 +23,8 @@ void Hydraulic22PoppetValve::configure()
     addInputVariable("f", "Fraction of poppet diameter that is opening", "-", 1.0, &mpF);
     addConstant("x_vmax", "Maximum Spool Displacement", "m", 0.01, mXvmax);
     addConstant("d_d", "Damp orifice diam.", "m", 0.1e-3, mDd);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"d_2"}, false);
 }
 
 void Hydraulic22PoppetValve::initialize()

@@ -33,6 +33,8 @@ void HydraulicFourChamberPiston::configure()
     addInputVariable("c_leak23", "Leakage coefficient between chambers 2 and 3", "m^3/(s Pa)", 0.0, &mpCLeak23);
     addInputVariable("c_leak24", "Leakage coefficient between chambers 2 and 4", "m^3/(s Pa)", 0.0, &mpCLeak24);
     addInputVariable("c_leak34", "Leakage coefficient between chambers 3 and 4", "m^3/(s Pa)", 1e-11, &mpCLeak34);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"A_1", "A_2", "A_3", "A_4", "V_1", "V_2", "V_3", "V_4"}, false);
 }
 
 void HydraulicFourChamberPiston::initialize()

@@ -17,6 +17,8 @@ void HydraulicFuelTankG::configure()
     addInputVariable("massfuelmax", "fuelmass at full tank", "kg", 1000.0, &mp_massfuelmax);
     addOutputVariable("massfuel", "Fuel mass", "kg", 0.0, &mp_massfuel);
     addOutputVariable("consfuel", "Consumed fuel mass", "kg", 0.0, &mp_consfuel);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rhofuel", "p0", "hf", "massfuel0", "massfuelmax"}, false);
 }
 
 void HydraulicFuelTankG::initialize()

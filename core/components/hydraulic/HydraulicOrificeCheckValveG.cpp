@@ -24,6 +24,8 @@ void HydraulicOrificeCheckValveG::configure()
     addOutputVariable("Ro", "Reynolds number", "", 0.0, &mpRo);
     addOutputVariable("DRL", "dh Ro/lo", "", 0.0, &mpDRL);
     addOutputVariable("Cd", "Discharge coeff", "", 0.611, &mpCd);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"dhb"}, false);
 }
 
 void HydraulicOrificeCheckValveG::initialize()

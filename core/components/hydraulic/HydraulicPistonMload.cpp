@@ -22,6 +22,8 @@ void HydraulicPistonMload::configure()
     addInputVariable("bfc", "Numerical friction factor", "-", 1.0, &mp_bfc);
     addInputVariable("xmin", "Lower stroke limit", "m", 0.0, &mp_xmin);
     addInputVariable("xmax", "Upper stroke limit", "m", 0.5, &mp_xmax);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"A1", "A2", "SL", "Cip", "bp", "mL", "bL", "fc", "bfc", "xmin", "xmax"}, false);
 }
 
 void HydraulicPistonMload::delayedParts(double& D11, double& D12, double& D21) const

@@ -29,6 +29,9 @@ void HydraulicPressureControlValve33::configure()
     addInputVariable("phi", "Jet angle", "rad", 0.03, &mp_phi);
     addInputVariable("ks", "Spring constant", "N/m", 100.0, &mp_ks);
     addOutputVariable("xv", "Spool position", "m", 0.0, &mp_xv);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frap", "Frat", "Xap0", "Xat0", "plam", "Bv", "Xvmin", "Xvmax",
+                      "phi", "ks"}, false);
 }
 
 void HydraulicPressureControlValve33::localExpressions()

@@ -25,6 +25,8 @@ void HydraulicPressureControlled22Valve::configure()
     addInputVariable("f_bt", "Fraction of spool circumference that is opening B-T", "-", 1.0, &mpfbt);
     addInputVariable("x_vmax", "Maximum spool displacement", "m", 0.01, &mpXvmax);
     addOutputVariable("x_v", "Spool position", "m", 0.0, &mpXv);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"f_bt"}, false);
 }
 
 void HydraulicPressureControlled22Valve::initialize()

@@ -32,6 +32,8 @@ void HydraulicPressureControlledPumpG::configure()
     addOutputVariable("qp", "Pump flow", "m^3/s", 0.0, &mpQpOut);
     addOutputVariable("dqp", "Rate of change of the pump flow", "m^3/s^2", 0.0, &mpDqpOut);
     addOutputVariable("eps", "Relative displacement qp/qmaxe", "-", 0.0, &mpEpsOut);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "qmin"}, false);
 }
 
 void HydraulicPressureControlledPumpG::evaluateLocalExpressions()

@@ -24,6 +24,8 @@ void HydraulicPressureReliefValveG::configure()
     addInputVariable("ks", "Spring constant", "N/m", 10000.0, &mpKs);
     addInputVariable("p0", "Turbulence onset pressure", "Pa", 1.0e5, &mpP0);
     addOutputVariable("xv", "Spool position", "m", 0.0, &mpXvOut);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "visc", "Dv", "frac", "Bv", "Xvmax", "Cq", "phi", "ks", "p0"}, false);
 }
 
 double HydraulicPressureReliefValveG::delayedPart() const

@@ -23,6 +23,8 @@ void HydraulicValve33::configure()
     addInputVariable("Xat0", "Underlap A-T", "m", 0.0, &mp_Xat0);
     addInputVariable("Xvmax", "Maximum opening", "m", 0.01, &mp_Xvmax);
     addInputVariable("plam", "Turbulence onset pressure", "Pa", 1.0e4, &mp_plam);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frap", "Frat", "Xap0", "Xat0", "Xvmax", "plam"}, false);
 }
 
 void HydraulicValve33::localExpressions()

@@ -31,6 +31,9 @@ void HydraulicValve416::configure()
     addInputVariable("Xtb0", "Underlap B-T", "m", 0.0, &mp_Xtb0);
     addInputVariable("Xvmax", "Maximum opening", "m", 0.01, &mp_Xvmax);
     addInputVariable("plam", "Turbulence onset pressure", "Pa", 1.0e4, &mp_plam);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frpa", "Frta", "Frpb", "Frtb", "Xpa0", "Xta0", "Xpb0", "Xtb0",
+                      "Xvmax", "plam"}, false);
 }
 
 void HydraulicValve416::localExpressions()

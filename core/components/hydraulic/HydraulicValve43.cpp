@@ -27,6 +27,9 @@ void HydraulicValve43::configure()
     addInputVariable("Xbt0", "Underlap", "m", 0.0, &mp_Xbt0);
     addInputVariable("Xvmax", "Max opening", "m", 0.01, &mp_Xvmax);
     addInputVariable("plam", "Turbulence onset pressure", "Pa", 1.0e4, &mp_plam);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frap", "Frat", "Frbp", "Frbt", "Xap0", "Xat0", "Xbp0", "Xbt0",
+                      "Xvmax", "plam"}, false);
 }
 
 std::vector<HydraulicEdgeNetwork::Edge> HydraulicValve43::edges(double xv) const

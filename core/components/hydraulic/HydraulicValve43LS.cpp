@@ -33,6 +33,9 @@ void HydraulicValve43LS::configure()
     addInputVariable("Xvmax", "Max valve opening", "m", 0.01, &mp_Xvmax);
     addInputVariable("Xvlsmax", "Max opening LS port", "m", 0.001, &mp_Xvlsmax);
     addInputVariable("plam", "Turbulence onset pressure", "Pa", 1.0e4, &mp_plam);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frap", "Frat", "Frbp", "Frbt", "wls", "Xap0", "Xat0", "Xbp0",
+                      "Xbt0", "Xlsa0", "Xlsb0", "Xls0", "Xvmax", "Xvlsmax", "plam"}, false);
 }
 
 std::vector<HydraulicEdgeNetwork::Edge> HydraulicValve43LS::edges(double xv) const

@@ -31,6 +31,9 @@ void HydraulicValve63OC::configure()
     addInputVariable("Xoc0", "Underlap oc port", "m", 0.0, &mp_Xoc0);
     addInputVariable("Xvmax", "Max valve opening", "m", 0.01, &mp_Xvmax);
     addInputVariable("plam", "Turbulence onset pressure", "Pa", 1.0e4, &mp_plam);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"rho", "Cq", "Sd", "Frap", "Frat", "Frbp", "Frbt", "Froc", "Xap0", "Xat0", "Xbp0",
+                      "Xbt0", "Xoc0", "Xvmax", "plam"}, false);
 }
 
 std::vector<HydraulicEdgeNetwork::Edge> HydraulicValve63OC::edges(double xv) const

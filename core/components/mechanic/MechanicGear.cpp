@@ -14,6 +14,8 @@ void MechanicGear::configure()
     addInputVariable("Bg", "Viscous friction coefficient at port 2", "Nms/rad", 0.0, &mpBg);
     addInputVariable("myfric", "Friction coefficient of the gear (at the output)", "", 0.01, &mpMyfric);
     addInputVariable("wc", "Friction smoothing speed", "rad/s", 1.0, &mpWc);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Jg", "Bg", "myfric", "wc"}, false);
 }
 
 // Hopsan's friction term uses the slip wmr1 + gearRatio * wmr2, which the kinematic relation

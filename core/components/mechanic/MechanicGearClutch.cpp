@@ -16,6 +16,8 @@ void MechanicGearClutch::configure()
     addInputVariable("Bg", "Viscous friction at port 2", "", 0.0, &mpBg);
     addInputVariable("myfric", "Gear friction coefficient (unused)", "", 0.01, &mpMyfric);
     addInputVariable("wc", "Clutch speed (unused)", "rad/s", 1.0, &mpWc);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Jg", "Bg", "myfric", "wc"}, false);
 }
 
 void MechanicGearClutch::computeDelayedParts()

@@ -13,6 +13,8 @@ void MechanicGearShaft::configure()
     addInputVariable("Ks", "Spring constant (referred to port 2)", "Nm/rad", 1000.0, &mpKs);
     addInputVariable("alpha", "Damping factor", "", 0.9, &mpAlpha);
     addConstant("alpha", "Numerical damping (unused, see alpha#Value)", "", 0.3, mAlpha);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Ks", "alpha"}, false);
 }
 
 void MechanicGearShaft::initialize()

@@ -17,6 +17,8 @@ void MechanicJLink::configure()
     addInputVariable("theta0", "Initial angle (unused)", "rad", 0.1, &mpTheta0);
     addInputVariable("thetamin", "Minimum angle", "rad", -1.05, &mpThetaMin);
     addInputVariable("thetamax", "Maximum angle", "rad", 1.05, &mpThetaMax);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"theta0"}, false);
 }
 
 void MechanicJLink::computeDelayedParts(double& p11, double& p21, double& p22) const

@@ -20,6 +20,8 @@ void MechanicM2load1D::configure()
     addInputVariable("xpmax", "Maximum stroke", "m", 1.0, &mpXpMax);
     addOutputVariable("vt", "Centre of gravity speed", "m/s", 0.0, &mpVt);
     addOutputVariable("xt", "Centre of gravity position", "m", 0.0, &mpXt);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"bL"}, false);
 }
 
 void MechanicM2load1D::computeDelayedParts()

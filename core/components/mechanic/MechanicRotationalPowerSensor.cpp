@@ -10,6 +10,8 @@ void MechanicRotationalPowerSensor::configure()
     // Only scales the GUI animation; not part of any equation.
     addInputVariable("PMax", "Maximum power (animation scale)", "W", 1000.0, &mpPMax);
     addOutputVariable("out", "Power", "W", &mpOut);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"PMax"}, false);
 }
 
 void MechanicRotationalPowerSensor::initialize()

@@ -26,6 +26,8 @@ void PneumaticMachine::configure()
     addInputVariable("Jm", "Moment of inertia", "kg/m2", 0.1, &mpJm);
     addInputVariable("R", "Gas constant", "J/Kg K", 287.0, &mpR);
     addInputVariable("cv", "heatcoeff", "J/Kg K", 718.0, &mpCv);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Dm", "Cim", "Bm", "Jm", "R", "cv"}, false);
 }
 
 void PneumaticMachine::computeDelayedParts(double& d11, double& d12, double& d21) const

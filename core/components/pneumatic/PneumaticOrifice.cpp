@@ -18,6 +18,8 @@ void PneumaticOrifice::configure()
     addInputVariable("eps", "Linearisation coeff", "", 0.02, &mpEps);
     addOutputVariable("qma", "Internal variable", "kg/s", 0.0, &mpQma);
     addOutputVariable("qmb", "Internal variable", "kg/s", 0.0, &mpQmb);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"Cd", "R", "cv", "eps"}, false);
 }
 
 void PneumaticOrifice::initialize()

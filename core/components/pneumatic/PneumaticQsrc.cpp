@@ -11,6 +11,8 @@ void PneumaticQsrc::configure()
     addInputVariable("qminput", "Mass flow", "kg/s", 0.0, &mpQminput);
     addInputVariable("Tinput", "Source temperature", "K", 273.0, &mpTinput);
     addInputVariable("cv", "Heat coefficient at constant volume", "J/(kg K)", 718.0, &mpCv);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"cv"}, false);
 }
 
 void PneumaticQsrc::initialize()

@@ -17,6 +17,8 @@ void PneumaticVolume2::configure()
     addInputVariable("alpha", "numerical damping", "", 0.1, &mpAlpha);
     addInputVariable("pmin", "numerical min pressure", "", 1.0, &mpPmin);
     addOutputVariable("mass", "Mass in volume", "kg", 0.001, &mpMass);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"V", "R", "cv", "ka", "T0", "alpha", "pmin"}, false);
 }
 
 void PneumaticVolume2::initialize()

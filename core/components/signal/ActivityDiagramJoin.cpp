@@ -12,6 +12,8 @@ void ActivityDiagramJoin::configure()
     mpPpn1 = addPowerPort("Ppn1", NodeType::PetriNet);
     mpPpn2 = addPowerPort("Ppn2", NodeType::PetriNet);
     mpPpn3 = addPowerPort("Ppn3", NodeType::PetriNet);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"diffEvent"}, false);
 }
 
 void ActivityDiagramJoin::initialize()

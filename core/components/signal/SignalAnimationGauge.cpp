@@ -8,6 +8,8 @@ void SignalAnimationGauge::configure()
 {
     addInputVariable("in", "Input signal", "", 0.0, &mpIn);
     addConstant("max", "Full-scale value (display only)", "", 1.0, mMax);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"in"}, false);
 }
 
 void SignalAnimationGauge::initialize()

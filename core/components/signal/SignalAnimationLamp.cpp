@@ -7,6 +7,8 @@ namespace tlmhub {
 void SignalAnimationLamp::configure()
 {
     addInputVariable("in", "Input signal", "", 0.0, &mpIn);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"in"}, false);
 }
 
 void SignalAnimationLamp::initialize()

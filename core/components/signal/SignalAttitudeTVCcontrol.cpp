@@ -22,6 +22,8 @@ void SignalAttitudeTVCcontrol::configure()
     addInputVariable("umax", "Upper limit", "rad", 0.9, &mpUmax);
     addOutputVariable("uelev", "Elevator (pitch) command", "rad", 0.0, &mpUelev);
     addOutputVariable("urud", "Rudder (yaw) command", "rad", 0.0, &mpUrud);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"phi"}, false);
 }
 
 void SignalAttitudeTVCcontrol::initialize()

@@ -13,6 +13,8 @@ void SignalDisplay::configure()
     addConstant("precision", "Number of displayed digits", "", 8, mPrecision);
     addConstant("backgroundcolor", "Background colour (R,G,B)", std::string("255,255,255"), mBackgroundcolor, ParameterType::String);
     addConstant("textcolor", "Text colour (R,G,B)", std::string("0,50,80"), mTextcolor, ParameterType::String);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"in"}, false);
 }
 
 void SignalDisplay::initialize()

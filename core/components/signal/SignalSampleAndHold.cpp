@@ -9,6 +9,8 @@ void SignalSampleAndHold::configure()
     addInputVariable("f_s", "Sampling frequency", "Hz", 100.0, &mpF_s);
     addInputVariable("in", "Input signal", "", 0.0, &mpIn);
     addOutputVariable("out", "Output signal", "", &mpOut);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"f_s"}, false);
 }
 
 void SignalSampleAndHold::initialize()

@@ -23,6 +23,8 @@ void SignalSteadyStateIdentifier::configure()
     addInputVariable("l1", "Filter factor 1 (method 2)", "", 0.1, &mpL1);
     addInputVariable("l2", "Filter factor 2 (method 2)", "", 0.1, &mpL2);
     addInputVariable("l3", "Filter factor 3 (method 2)", "", 0.1, &mpL3);
+    // Read in initialize() only: a new value needs a new start.
+    setLiveChangeable({"wl"}, false);
 }
 
 void SignalSteadyStateIdentifier::initialize()
