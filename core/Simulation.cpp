@@ -22,6 +22,43 @@ struct ProgressRelay {
     }
 };
 
+// The node slot a change while running writes: the start value's slot in its port's node.
+struct LiveTarget {
+    Port* port;
+    int slot;
+};
+
+// Where a change while running of `parameter` goes, or restart_required naming `path` when
+// only a new start applies it: the component type did not declare it live-changeable, or it
+// is an input that takes its value from a connection.
+Result<LiveTarget> liveTarget(const Component& owner, const Parameter& parameter, const std::string& path)
+{
+    const std::size_t hash = parameter.name.find('#');
+    Port* port = parameter.isStartValue ? owner.port(parameter.name.substr(0, hash)) : nullptr;
+    if (!parameter.liveChangeable || !port || port->isMultiport())
+        return Status{StatusCode::RestartRequired,
+                      "parameter '" + path + "' cannot change while the simulation runs: reset, set it and run again",
+                      path};
+    if (port->kind() == PortKind::Read && port->isConnected())
+        return Status{StatusCode::RestartRequired,
+                      "input '" + path + "' takes its value from its connection: disconnect it and run again", path};
+    const int slot = nodeVariableIndex(port->nodeType(), std::string_view(parameter.name).substr(hash + 1));
+    if (slot < 0)
+        return Status{StatusCode::RestartRequired, "parameter '" + path + "' names no node variable", path};
+    return LiveTarget{port, slot};
+}
+
+// Every component of `system` and its subsystems, in model order (subsystems before what
+// they hold).
+template <typename Visit>
+void forEachComponent(const System& system, const Visit& visit)
+{
+    for (Component* c : system.componentsInOrder()) {
+        visit(*c);
+        if (c->isSystem()) forEachComponent(static_cast<const System&>(*c), visit);
+    }
+}
+
 } // namespace
 
 const char* simulationStateName(SimulationState state)
@@ -96,6 +133,7 @@ Simulation& Simulation::operator=(Simulation&& other) noexcept
     mState = other.mState;
     mTotalSteps = other.mTotalSteps;
     mParametersEvaluated = other.mParametersEvaluated;
+    mLiveChanges = std::move(other.mLiveChanges);
     mNodes = std::move(other.mNodes);
     mStartValues = std::move(other.mStartValues);
     return *this;
@@ -183,6 +221,7 @@ Status Simulation::runSteps(std::size_t requested, const RunOptions& options)
                 std::string("cannot run a simulation that is ") + simulationStateName(mState) +
                     " (reset it first)"};
     }
+    applyLiveChanges();
     const std::size_t left = mTotalSteps > mRoot->takenSteps() ? mTotalSteps - mRoot->takenSteps() : 0;
     const std::size_t steps = std::min(requested, left);
 
@@ -221,6 +260,7 @@ Status Simulation::reset()
         offset += n->size();
     }
     mRoot->messages().clear();
+    mLiveChanges.clear();   // a change while running is to that run, not to the model
     mState = SimulationState::Compiled;
     return Status::ok();
 }
@@ -233,6 +273,60 @@ Status Simulation::setParameter(const std::string& path, const std::string& valu
     if (Status set = setParameterValue(*mRoot, path, value); !set) return set;
     mParametersEvaluated = false;   // its dependents are evaluated again at the next start
     return Status::ok();
+}
+
+Status Simulation::changeWhileRunning(const std::string& path, double value)
+{
+    if (mState != SimulationState::Compiled && mState != SimulationState::Initialised &&
+        mState != SimulationState::Paused)
+        return {StatusCode::InvalidState,
+                std::string("values change between the steps of a simulation, not while it is ") +
+                    simulationStateName(mState),
+                path};
+    Result<ParameterRef> found = findParameter(*mRoot, path);
+    if (!found) return found.status();
+    Result<LiveTarget> target = liveTarget(*found->owner, *found->parameter, path);
+    if (!target) return target.status();
+    if (!std::isfinite(value))
+        return {StatusCode::InvalidParameter, "parameter '" + path + "' needs a finite number", path};
+    Node* node = target->port->node();
+    for (LiveChange& pending : mLiveChanges) {
+        if (pending.node == node && pending.slot == target->slot) {
+            pending.value = value;   // the later of two changes before one step wins
+            return Status::ok();
+        }
+    }
+    mLiveChanges.push_back({node, target->slot, value});
+    return Status::ok();
+}
+
+void Simulation::applyLiveChanges()
+{
+    for (const LiveChange& change : mLiveChanges) change.node->setValue(change.slot, change.value);
+    mLiveChanges.clear();
+}
+
+std::vector<LiveValue> Simulation::liveValues() const
+{
+    std::vector<LiveValue> values;
+    forEachComponent(*mRoot, [&](const Component& component) {
+        for (const auto& parameter : component.parameters().all()) {
+            if (!parameter->liveChangeable) continue;
+            const std::string name = parameter->name.substr(0, parameter->name.find('#'));
+            const std::string path = component.modelPath() + "." + name;
+            Result<LiveTarget> target = liveTarget(component, *parameter, path);
+            if (!target) continue;
+            const Node* node = target->port->node();
+            // Before the first start the node does not hold the start value yet.
+            double value = mState == SimulationState::Compiled
+                               ? target->port->startValues[static_cast<std::size_t>(target->slot)]
+                               : node->value(target->slot);
+            for (const LiveChange& pending : mLiveChanges)
+                if (pending.node == node && pending.slot == target->slot) value = pending.value;
+            values.push_back({path, value, parameter->unit});
+        }
+    });
+    return values;
 }
 
 } // namespace tlmhub

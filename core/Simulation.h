@@ -11,6 +11,13 @@
 //   sim->reset();                    // back to the start; the new value and what depends on it apply
 //   sim->run();
 //
+// Between two steps a simulation also takes new values for the parameters that may change
+// while it runs (liveValues() lists them; a server's live session):
+//
+//   sim->runSteps(1000);
+//   sim->changeWhileRunning("Step.y_A", 0.8);   // applied before the next step
+//   sim->run();                                 // == a run paused at step 1000, changed, continued
+//
 // States: compiled -> (first run initialises) initialised -> running -> paused (stopped
 // before the stop time on request of run's `until` or RunOptions::pause) / finished / stopped / failed.
 // reset() returns to compiled from any state but running. Log storage is allocated when a
@@ -59,6 +66,13 @@ struct RunOptions {
     std::stop_token pause = {};
 };
 
+// A parameter that may change while the simulation runs (Simulation::liveValues).
+struct LiveValue {
+    std::string path;     // as jobs name parameters: "Step.y_A", "Sub$Gain.k"
+    double value = 0.0;   // the value the next step uses
+    std::string unit;
+};
+
 enum class SimulationState { Compiled, Initialised, Running, Paused, Finished, Stopped, Failed };
 const char* simulationStateName(SimulationState state);
 
@@ -86,6 +100,23 @@ public:
     // value must evaluate; it takes effect from the next start (after reset(), or at once
     // while the simulation is still compiled).
     Status setParameter(const std::string& path, const std::string& value);
+
+    // A new value, from the next step on, for a parameter that may change while the
+    // simulation runs: the start value of a variable whose node its component reads every
+    // step, as the component type declares (Parameter::liveChangeable): an unconnected input
+    // variable ("Step.y_A", "Gain.k", "Saturation.y_upper") or a constant source's output
+    // ("Constant.y"). Allowed while compiled, initialised or paused (between runSteps/run
+    // slices, never from inside a run: invalid_state then, and once finished, stopped or
+    // failed). A parameter only a new start applies (a constant such as a mass, an initial
+    // value, an input its type reads only in initialize(), a connected input) gives
+    // restart_required with its path, an unknown one unknown_parameter, a value that is not
+    // finite invalid_parameter.
+    // The change is to the run, not to the model: the parameter keeps its value string, and
+    // reset() goes back to the model's values (setParameter changes the model).
+    Status changeWhileRunning(const std::string& path, double value);
+    // Every parameter changeWhileRunning accepts now, in model order, with the value the
+    // next step uses.
+    std::vector<LiveValue> liveValues() const;
 
     // Thread-safe: ends a run in progress (state stopped).
     void requestStop();
@@ -122,6 +153,16 @@ private:
     std::size_t mTotalSteps = 0;
     // compile() evaluated every parameter; a setParameter() since asks for it again.
     bool mParametersEvaluated = true;
+    // Changes asked for by changeWhileRunning since the last step, applied before the next
+    // one (the first run's start rewrites the node values, so they wait until then). The
+    // node is found when the change is asked for; the step loop never sees this.
+    struct LiveChange {
+        Node* node;
+        int slot;
+        double value;
+    };
+    std::vector<LiveChange> mLiveChanges;
+    void applyLiveChanges();
     // Node values from before the first run, for reset().
     std::vector<Node*> mNodes;
     std::vector<double> mStartValues;

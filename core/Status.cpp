@@ -22,6 +22,7 @@ const char* statusCodeName(StatusCode code)
     case StatusCode::IllegalGrouping: return "illegal_grouping";
     case StatusCode::IoError: return "io_error";
     case StatusCode::InvalidModel: return "invalid_model";
+    case StatusCode::RestartRequired: return "restart_required";
     }
     return "unknown";
 }

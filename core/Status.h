@@ -27,6 +27,7 @@ enum class StatusCode {
     IllegalGrouping,        // components that cannot be grouped into a subsystem, or ungrouped
     IoError,                // a file that cannot be read, written or loaded
     InvalidModel,           // model text that is not a model, or breaks a load limit
+    RestartRequired,        // a change while running to a parameter only a new start applies
 };
 
 const char* statusCodeName(StatusCode code);

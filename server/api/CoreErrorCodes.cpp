@@ -18,7 +18,8 @@ const char* protocolErrorCode(StatusCode code)
     case StatusCode::InitFailed:
     case StatusCode::SimulationStopped:
     case StatusCode::SimulationEnded: return "simulation_failed";
-    case StatusCode::InvalidState: return "conflict";
+    case StatusCode::InvalidState:
+    case StatusCode::RestartRequired: return "conflict";
     case StatusCode::NotFound: return "not_found";
     case StatusCode::Ok:   // a success is no error: reaching here is a bug
     case StatusCode::IoError: return "internal";
