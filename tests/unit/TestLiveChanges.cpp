@@ -82,11 +82,12 @@ RunBits servoChangedAfter(std::size_t steps, unsigned threads = 1)
     return runBits(*sim);
 }
 
-const LiveValue* findLive(const std::vector<LiveValue>& values, const std::string& path)
+// A copy: callers pass liveValues() straight in, a temporary a pointer would outlive.
+std::optional<LiveValue> findLive(const std::vector<LiveValue>& values, const std::string& path)
 {
     for (const LiveValue& v : values)
-        if (v.path == path) return &v;
-    return nullptr;
+        if (v.path == path) return v;
+    return std::nullopt;
 }
 
 } // namespace
@@ -233,7 +234,7 @@ TEST(LiveChanges, ParametersThatNeedARestartAreRefusedWithTheirPath)
     EXPECT_EQ(sim->changeWhileRunning("Step.y_A", std::nan("")).code(), StatusCode::InvalidParameter);
     EXPECT_EQ(sim->changeWhileRunning("Step.y_A", INFINITY).code(), StatusCode::InvalidParameter);
     // Nothing refused reached the run: it goes on as if unchanged.
-    const LiveValue* yA = findLive(sim->liveValues(), "Step.y_A");
+    const std::optional<LiveValue> yA = findLive(sim->liveValues(), "Step.y_A");
     ASSERT_TRUE(yA);
     EXPECT_EQ(yA->value, 0.5);
 }
@@ -262,11 +263,11 @@ TEST(LiveChanges, TheServoListsItsReferenceAndGainsWithTheirUnits)
     Result<Simulation> sim = compile(*root);
     ASSERT_TRUE(isOk(sim.status()));
     const std::vector<LiveValue> live = sim->liveValues();
-    const LiveValue* tStep = findLive(live, "Step.t_step");
+    const std::optional<LiveValue> tStep = findLive(live, "Step.t_step");
     ASSERT_TRUE(tStep);
     EXPECT_EQ(tStep->value, 1.0);
     EXPECT_EQ(tStep->unit, "s");
-    const LiveValue* gain = findLive(live, "GainP.k");
+    const std::optional<LiveValue> gain = findLive(live, "GainP.k");
     ASSERT_TRUE(gain);
     EXPECT_EQ(gain->value, 0.0264249);
     for (const char* connected : {"GainP.in", "Subtract.in1", "Subtract.in2"})
@@ -308,7 +309,7 @@ TEST(LiveChanges, AChangeBeforeTheFirstRunAppliesFromTheFirstStep)
     Result<Simulation> sim = compile(*root);
     ASSERT_TRUE(isOk(sim.status()));
     changeServo(*sim);
-    const LiveValue* yA = findLive(sim->liveValues(), "Step.y_A");
+    const std::optional<LiveValue> yA = findLive(sim->liveValues(), "Step.y_A");
     ASSERT_TRUE(yA);
     EXPECT_EQ(yA->value, 0.8);
     EXPECT_EQ(yA->unit, "");
@@ -334,7 +335,7 @@ TEST(LiveChanges, ResetGoesBackToTheModelsValues)
 
     // A change asked for but not yet applied is dropped too.
     ASSERT_TRUE(isOk(sim->reset()));
-    const LiveValue* yA = findLive(sim->liveValues(), "Step.y_A");
+    const std::optional<LiveValue> yA = findLive(sim->liveValues(), "Step.y_A");
     ASSERT_TRUE(yA);
     EXPECT_EQ(yA->value, 0.5);
     changeServo(*sim);
