@@ -148,6 +148,21 @@ describe('RunController', () => {
         expect(runs.previous?.jobId).toBe(7);
     });
 
+    it('a history that comes while a run is being started does not take its place', async () => {
+        const f = fakeTransport();
+        let answer: (reply: { job_id: number }) => void = () => {};
+        f.transport.request = (() => new Promise((resolve) => { answer = resolve; })) as never;
+        const runs = new RunController(f.transport);
+        const starting = runs.start({}, []);
+        runs.restore([stored(7), stored(5)]);
+        expect(runs.current).toBeNull();
+        answer({ job_id: 10 });
+        await starting;
+        expect(runs.current?.jobId).toBe(10);
+        expect(runs.previous?.jobId).toBe(7);
+        expect(runs.generations.map((r) => r.jobId)).toEqual([5, 7, 10]);
+    });
+
     it('a run a component of the model ended is done, with the reason it gives', async () => {
         const f = fakeTransport();
         const runs = new RunController(f.transport);

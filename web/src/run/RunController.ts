@@ -32,6 +32,8 @@ export class RunController {
     chosen: RunData | null = null;
     private readonly choiceListeners = new Set<(run: RunData) => void>();
     private readonly early = new Map<number, ServerEvent[]>();
+    /** Runs asked for whose job the server has not named yet. */
+    private starting = 0;
     private readonly listeners = new Set<() => void>();
     private readonly detach: (() => void)[];
 
@@ -69,7 +71,13 @@ export class RunController {
         // Binary frames: float64 columns, no number formatting on the server or parsing here.
         const fields: RequestFields<'simulate.start'> = { ...settings, rate: DEFAULT_FRAME_RATE, frames: 'binary' };
         if (streamed.length > 0) fields.variables = streamed;
-        const reply = await this.transport.request('simulate.start', fields);
+        this.starting++;
+        let reply;
+        try {
+            reply = await this.transport.request('simulate.start', fields);
+        } finally {
+            this.starting--;
+        }
         if (this.current?.finished) this.previous = this.current;
         const run = new RunData(reply.job_id, streamed);
         run.state = 'running';
@@ -92,8 +100,14 @@ export class RunController {
         const restored = restorableRuns(history).slice(0, MAX_GENERATIONS).reverse().map(finishedRun);
         if (restored.length === 0) return;
         this.generations = restored;
-        this.current = restored.at(-1)!;
-        this.previous = restored.at(-2) ?? null;
+        if (this.starting > 0) {
+            // A run asked for before the history came is the current one once the server
+            // names it; the history's latest is what it is compared with.
+            this.previous = restored.at(-1)!;
+        } else {
+            this.current = restored.at(-1)!;
+            this.previous = restored.at(-2) ?? null;
+        }
         this.emit();
     }
 
