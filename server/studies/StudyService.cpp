@@ -97,7 +97,6 @@ StudyService::Submitted StudyService::enqueueStored(const StudyInfo& info)
     if (!checked.code.empty()) return checked;
     prepared.id = info.id;
     prepared.ownerId = info.ownerId;
-    prepared.node = mNode.id;
     constexpr std::size_t kPage = 1000;
     for (std::int64_t from = 0;;) {
         std::vector<StudyRun> page = mStore.runs(info.id, from, kPage);
@@ -144,6 +143,7 @@ StudyService::Submitted StudyService::prepare(std::int64_t ownerId, const nlohma
     std::string problem;
     if (!parseStudyRequest(body, request, problem)) return {std::nullopt, 0, "bad_request", problem};
     request.hmf = hmf;
+    prepared.node = mNode.id;   // this node holds what it prepares
     const std::size_t runs = request.plannedRuns();
     if (runs == 0) return {std::nullopt, 0, "bad_request", "the study has no runs"};
     if (runs > mLimits.maxRuns)
@@ -235,7 +235,6 @@ StudyService::Submitted StudyService::submit(std::int64_t ownerId, const nlohman
     }
     prepared.id = *id;
     prepared.ownerId = ownerId;
-    prepared.node = mNode.id;
     mQueue.addStudy(std::make_shared<StudyExecution>(std::move(prepared), mJobLimits, mLimits, mWorkers, mStore, mHub));
     checked.id = id;
     return checked;

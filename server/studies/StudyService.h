@@ -80,7 +80,7 @@ private:
     void watchOrphans(std::stop_token stop);
     // Refusal while the owner has as many studies queued or running as allowed.
     std::optional<Submitted> overActiveLimit(std::int64_t ownerId);
-    // Parses, checks and compiles; fills `prepared` (id and owner aside).
+    // Parses, checks and compiles; fills `prepared` (id and owner aside), held by this node.
     Submitted prepare(std::int64_t ownerId, const nlohmann::json& body, const std::string& hmf,
                       PreparedStudy& prepared);
 
