@@ -4,7 +4,7 @@
 if(TARGET tlmhub-server)
   file(GLOB TLMHUB_CLI_TEST_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/cli/*.cpp)
   tlmhub_threads_only_sources(TLMHUB_CLI_TEST_SOURCES)
-  add_executable(tlmhub-cli-tests ${TLMHUB_CLI_TEST_SOURCES})
+  add_executable(tlmhub-cli-tests $<TARGET_OBJECTS:tlmhub_optimised_json> ${TLMHUB_CLI_TEST_SOURCES})
   target_include_directories(tlmhub-cli-tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_link_libraries(tlmhub-cli-tests PRIVATE tlmhub_test_support tlmhub_cli_remote GTest::gtest GTest::gtest_main)
   target_compile_options(tlmhub-cli-tests PRIVATE ${TLMHUB_HARNESS_OPTIONS})

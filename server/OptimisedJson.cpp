@@ -1,12 +1,12 @@
-// nlohmann/json's parser and serializer, compiled with optimisation for every test program
-// that links the test support library (server, store and CLI tests).
+// nlohmann/json's parser and serializer, compiled with optimisation, for the programs that
+// parse or write much JSON with code built at -O0: the test programs (test code builds at -O0,
+// it compiles twice as fast) and, under the sanitizers, the server and the CLI (their
+// libraries build at -O0 there; server/CMakeLists.txt, cli/CMakeLists.txt).
 //
-// Test code builds at -O0 (it compiles twice as fast), and the parser's template code that a
-// test file instantiates is -O0 code too. Of the copies of one inline definition the linker
-// keeps the first, and this file is the first object on those programs' link lines (CMake puts
-// an object library's objects before the program's own), so every parse and dump in them, the
-// tests' and the in-process server code's, runs this file's optimised copy. Under ASan a test
-// that opened a 10 MB model five times spent half its CPU parsing the replies at -O0
+// The template code a -O0 file instantiates is -O0 code too. Of the copies of one inline
+// definition the linker keeps the first, and this file is the first object on those programs'
+// link lines, so every parse and dump in them runs this file's optimised copy. Under ASan a
+// test that opened a 10 MB model five times spent half its CPU parsing the replies at -O0
 // (Responsiveness.OpeningLargeModels…: 111 s of CPU before, 49 s after).
 #include <nlohmann/json.hpp>
 
