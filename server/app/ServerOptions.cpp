@@ -46,6 +46,10 @@ const std::string kHelp = std::string(
     "  --max-stored-bytes-per-user N  results kept per user (default 1073741824)\n"
     "  --max-unpinned-runs-per-model N  a model's finished runs that keep their results\n"
     "                           unless pinned; older ones lose them (default 20)\n"
+    "  --max-live-sessions-per-user N  live sessions a user runs at once (default 2)\n"
+    "  --max-live-sessions N    live sessions on this node (default 64)\n"
+    "  --live-idle-timeout SECONDS  a live session whose owner sends nothing this long ends\n"
+    "                           (default 600)\n"
     "  --max-study-runs N       runs per study (default 10000)\n"
     "  --max-studies-per-user N studies queued or running per user (default 2)\n"
     "  --check-threads N        lab check runs at once (default: number of cores)\n"
@@ -156,6 +160,15 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             long long s = 0;
             ok = parseNumber(value, s);
             o.tokenTtl = std::chrono::seconds(s);
+        } else if (flag == "--max-live-sessions-per-user") {
+            ok = parseNumber(value, o.maxLiveSessionsPerUser) && o.maxLiveSessionsPerUser > 0;
+        } else if (flag == "--max-live-sessions") {
+            ok = parseNumber(value, o.maxLiveSessions) && o.maxLiveSessions > 0;
+        } else if (flag == "--live-idle-timeout") {
+            // Seconds, fractions allowed (a test waits about one).
+            double s = 0;
+            ok = parseNumber(value, s) && s > 0 && s <= 86400;
+            o.liveIdleTimeout = std::chrono::milliseconds(static_cast<long long>(s * 1000));
         } else if (flag == "--max-steps") {
             ok = parseNumber(value, o.limits.maxSteps);
         } else if (flag == "--max-log-samples") {

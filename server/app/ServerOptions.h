@@ -57,6 +57,10 @@ struct ServerOptions {
     // --trusted-proxy: reverse proxies whose X-Forwarded-For names the client (CIDR ranges).
     std::vector<std::string> trustedProxies;
     JobLimits limits;
+    // Live sessions (docs/live-sessions.md): run on the node the client is connected to.
+    std::size_t maxLiveSessionsPerUser = 2;
+    std::size_t maxLiveSessions = 64;                     // on this node
+    std::chrono::milliseconds liveIdleTimeout{600'000};   // no message from the owner this long
     StudyLimits studyLimits;
     // Scale-out (docs/scale-out.md): what this node does, and how it takes part in the queue
     // the database holds for all nodes.

@@ -17,8 +17,8 @@ static_assert(std::endian::native == std::endian::little,
 
 // The longest shortest-round-trip double ("-2.2250738585072014e-308") and its comma.
 constexpr std::size_t kNumberBytes = 25;
-// Everything but numbers and names: keys, ids, brackets.
-constexpr std::size_t kFrameOverheadBytes = 160;
+// Everything but numbers and names: keys, ids, brackets (a live frame's stamp included).
+constexpr std::size_t kFrameOverheadBytes = 320;
 
 // Writes into a buffer sized by a bound, then trims it: no per-number reallocation.
 class TextWriter {
@@ -107,6 +107,26 @@ void putBody(TextWriter& out, const FrameLayout& layout, const Parts& parts)
     out.put('}');
 }
 
+// `{"type":...,"seq":N,"dropped":N`: a job's frame, or a live session's with its stamp.
+void putHead(TextWriter& out, const StreamFrame& frame, std::uint64_t seq)
+{
+    if (frame.live) {
+        out.put("{\"type\":\"event.live.frame\",\"session_id\":");
+        out.putInteger(frame.live->sessionId);
+        out.put(",\"model_time\":");
+        out.putNumber(frame.live->modelTime);
+        out.put(",\"wall_time\":");
+        out.putNumber(frame.live->wallTime);
+    } else {
+        out.put("{\"type\":\"event.frame\",\"job_id\":");
+        out.putInteger(static_cast<std::uint64_t>(frame.jobId));
+    }
+    out.put(",\"seq\":");
+    out.putInteger(seq);
+    out.put(",\"dropped\":");
+    out.putInteger(frame.merged);
+}
+
 std::size_t bodyBytesBound(const FrameLayout& layout, std::size_t values)
 {
     return kFrameOverheadBytes + namesBytes(layout) + values * kNumberBytes;
@@ -144,6 +164,7 @@ void StreamFrame::append(StreamFrame&& later)
     parts.insert(parts.end(), std::make_move_iterator(later.parts.begin()),
                  std::make_move_iterator(later.parts.end()));
     merged += later.merged + 1;
+    if (later.live) live = later.live;
 }
 
 std::size_t StreamFrame::encodedBytesBound(FrameEncoding encoding) const
@@ -157,12 +178,7 @@ std::string StreamFrame::jsonText(std::uint64_t seq) const
 {
     const std::string* body = parts.size() == 1 ? &parts.front()->jsonBody(*layout) : nullptr;
     TextWriter out(body ? kFrameOverheadBytes + body->size() : encodedBytesBound(FrameEncoding::Json));
-    out.put("{\"type\":\"event.frame\",\"job_id\":");
-    out.putInteger(static_cast<std::uint64_t>(jobId));
-    out.put(",\"seq\":");
-    out.putInteger(seq);
-    out.put(",\"dropped\":");
-    out.putInteger(merged);
+    putHead(out, *this, seq);
     out.put(',');
     if (body) out.put(*body);
     else putBody(out, *layout, parts);
@@ -179,12 +195,7 @@ std::string StreamFrame::binaryMessage(std::uint64_t seq) const
         for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += columnOf(*part, i).size();
     }
     TextWriter header(kFrameOverheadBytes + namesBytes(*layout));
-    header.put("{\"type\":\"event.frame\",\"job_id\":");
-    header.putInteger(static_cast<std::uint64_t>(jobId));
-    header.put(",\"seq\":");
-    header.putInteger(seq);
-    header.put(",\"dropped\":");
-    header.putInteger(merged);
+    putHead(header, *this, seq);
     header.put(",\"time_samples\":");
     header.putInteger(timeSamples);
     header.put(",\"variables\":[");

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,18 @@ private:
 
 enum class FrameEncoding { Json, Binary };
 
+// A live session's frame (event.live.frame) names its session and when it was taken instead
+// of a job; a merged frame keeps the latest stamp.
+struct LiveFrameStamp {
+    std::uint64_t sessionId = 0;
+    double modelTime = 0.0;   // s
+    double wallTime = 0.0;    // s since the session started
+    std::optional<double> speed;   // the session's pace; none: "max"
+};
+
 struct StreamFrame {
     std::int64_t jobId = 0;
+    std::optional<LiveFrameStamp> live;
     std::shared_ptr<const FrameLayout> layout;
     std::vector<std::shared_ptr<const FrameSamples>> parts;   // in order; more than one once merged
     std::uint64_t merged = 0;                                 // frames merged into this one
@@ -56,7 +67,8 @@ struct StreamFrame {
     void append(StreamFrame&& later);
     // At least the size of the encoded message.
     std::size_t encodedBytesBound(FrameEncoding encoding) const;
-    // event.frame; `dropped` is the number of frames merged into this one.
+    // event.frame (event.live.frame with `live`); `dropped` is the number of frames merged
+    // into this one.
     std::string jsonText(std::uint64_t seq) const;
     std::string binaryMessage(std::uint64_t seq) const;
 };
