@@ -30,6 +30,7 @@ class HandlerPools;
 class JobStreams;
 class StudyService;
 class LabService;
+class LiveSessionRegistry;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -51,6 +52,7 @@ struct Services {
     HandlerPools& pools;                // where slow work goes instead of an I/O thread
     JobStreams& jobStreams;             // log.subscribe: the local hub, or relays from other nodes
     IdempotencyKeyStore& idempotencyKeys;   // Idempotency-Key of POST /jobs and /studies
+    LiveSessionRegistry& liveSimulations;   // live.start: models run with the wall clock on this node
 };
 
 struct Call {

@@ -19,7 +19,7 @@ const char* protocolErrorCode(StatusCode code)
     case StatusCode::SimulationStopped:
     case StatusCode::SimulationEnded: return "simulation_failed";
     case StatusCode::InvalidState:
-    case StatusCode::RestartRequired: return "conflict";
+    case StatusCode::RestartRequired: return "restart_required";
     case StatusCode::NotFound: return "not_found";
     case StatusCode::Ok:   // a success is no error: reaching here is a bug
     case StatusCode::IoError: return "internal";

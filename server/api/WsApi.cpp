@@ -7,6 +7,9 @@
 #include "server/cluster/JobStreams.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
+#include "server/live/LiveSessionRegistry.h"
+#include "server/app/ServerOptions.h"
+#include "server/jobs/PreparedJob.h"
 #include "server/http/JsonText.h"
 #include "server/protocol/Messages.generated.h"
 #include "server/protocol/ProtocolConstants.generated.h"
@@ -17,6 +20,7 @@
 
 #include "core/Model.h"
 #include "core/Parameter.h"
+#include "core/Results.h"
 
 namespace tlmhub::server {
 
@@ -90,6 +94,17 @@ FrameEncoding frameEncoding(const std::optional<std::string>& frames)
     return frames == "binary" ? FrameEncoding::Binary : FrameEncoding::Json;
 }
 
+// A LiveSpeed (checked by the schema): a number, or "max" (none).
+std::optional<double> liveSpeed(const nlohmann::json& speed)
+{
+    return speed.is_string() ? std::nullopt : std::optional(speed.get<double>());
+}
+
+WsApi::Reply liveReply(const LiveSession::Reply& reply)
+{
+    return reply.ok() ? success(reply.state) : failure(reply.code, reply.message);
+}
+
 } // namespace
 
 WsApi::WsApi(Services& services, User user, const std::string& token, std::shared_ptr<WebSocketSender> sender)
@@ -111,6 +126,13 @@ void WsApi::onClose()
 {
     mClosed = true;
     if (mLiveSession) mServices.liveSessions.remove(mLiveSession);
+    {
+        std::lock_guard lock(mLiveRunsMutex);
+        for (const auto& weak : mLiveRuns)
+            if (auto session = weak.lock()) session->stop(std::nullopt);
+        mLiveRuns.clear();
+        mLiveRunsClosed = true;
+    }
     for (std::uint64_t id : mSubscriptions) mServices.jobStreams.unsubscribe(id);
     mSubscriptions.clear();
     for (const auto& [study, id] : mStudySubscriptions) mServices.studies.hub().unsubscribe(id);
@@ -140,6 +162,12 @@ void WsApi::handle(const std::string& text)
     if (!SchemaValidator::protocol().validateMessage(msg, code, why)) return sendError(id, code, why);
     const std::string type = msg["type"].get<std::string>();
     if (mNode && type != "log.subscribe") return sendError(id, "forbidden", "a node may only send log.subscribe");
+    {
+        // Any message from the owner keeps its live sessions from the idle timeout.
+        std::lock_guard lock(mLiveRunsMutex);
+        for (const auto& weak : mLiveRuns)
+            if (auto session = weak.lock()) session->touch();
+    }
     if (!answeredOnConnection(type)) {
         // On the request pool (a whole model: the large-reply pool); this connection's later
         // messages wait for its reply, so the open model is only ever touched by one thread
@@ -214,6 +242,23 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
     if (type == "log.subscribe") return subscribe(msg.get<protocol::LogSubscribeRequest>());
     if (type == "study.subscribe") return subscribeStudy(msg.get<protocol::StudySubscribeRequest>());
     if (type == "study.unsubscribe") return unsubscribeStudy(msg.get<protocol::StudyUnsubscribeRequest>());
+    if (type == "live.start") return startLive(msg.get<protocol::LiveStartRequest>());
+    if (type.rfind("live.", 0) == 0) {
+        const auto session = ownLiveSession(msg.at("session_id").get<std::int64_t>());
+        if (!session) return failure("not_found", "no such live session");
+        session->touch();
+        if (type == "live.set") {
+            const auto set = msg.get<protocol::LiveSetRequest>();
+            const LiveSession::Reply reply = session->set(set.name, set.value);
+            return reply.ok() ? success() : failure(reply.code, reply.message);
+        }
+        if (type == "live.pause") return liveReply(session->pause());
+        if (type == "live.resume") return liveReply(session->resume());
+        if (type == "live.speed") return liveReply(session->setSpeed(liveSpeed(msg.get<protocol::LiveSpeedRequest>().speed)));
+        if (type == "live.step")
+            return liveReply(session->step(static_cast<std::uint64_t>(msg.get<protocol::LiveStepRequest>().steps)));
+        if (type == "live.stop") return liveReply(session->stop("requested"));
+    }
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     if (mModelIsCopy) {
         const std::string problem = copyEditProblem(type, msg);
@@ -448,6 +493,92 @@ WsApi::Reply WsApi::unsubscribeStudy(const protocol::StudyUnsubscribeRequest& re
         mStudySubscriptions.erase(found);
     }
     return success();
+}
+
+std::shared_ptr<LiveSession> WsApi::ownLiveSession(std::int64_t sessionId)
+{
+    if (sessionId <= 0) return nullptr;
+    auto session = mServices.liveSimulations.find(static_cast<std::uint64_t>(sessionId));
+    // Another user's session is not there for this one (not even an administrator's).
+    return session && session->ownerId() == mUser.id ? session : nullptr;
+}
+
+WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
+{
+    if (mServices.options.role == "worker")
+        return failure("forbidden", "this node is a worker (--role worker): live sessions run on the API node a client is connected to");
+    const auto model = readableModel(mServices, mUser, request.modelId);
+    if (!model) return failure("not_found", "no such model");
+    if (const auto refused = mServices.liveSimulations.reserve(mUser.id)) return failure(refused->code, refused->message);
+    // The place goes back on every way out (refusals, exceptions) but a created session.
+    struct Place {
+        LiveSessionRegistry& registry;
+        std::int64_t userId;
+        bool taken = false;
+        ~Place()
+        {
+            if (!taken) registry.release(userId);
+        }
+    } place{mServices.liveSimulations, mUser.id};
+    // Compiled once, as a job's model is (the same limits); the session steps it from then on.
+    JobRequest job;
+    job.ownerId = mUser.id;
+    job.modelId = model->id;
+    job.hmf = mServices.models.hmf(model->id).value_or("");
+    PreparedJob prepared;
+    PrepareError error;
+    if (!prepareJob(job, mServices.options.limits, prepared, error)) return failure(error.code, error.message);
+    Simulation& simulation = *prepared.simulation;
+    std::vector<std::string> names = request.variables.value_or(std::vector<std::string>{});
+    if (names.empty())
+        for (const LoggedVariable& v : listLoggedVariables(simulation.system())) names.push_back(v.fullName);
+    if (names.size() > protocol::kMaxStreamVariables) names.resize(protocol::kMaxStreamVariables);
+    std::vector<LiveVariable> variables;
+    for (const std::string& name : names) {
+        Result<VariableRef> ref = resolveVariable(simulation.system(), name);
+        if (!ref || !ref->port->node())
+            return failure("bad_request", "variables: " + (ref ? name + " has no value to show" : ref.status().message()));
+        variables.push_back({name, *ref});
+    }
+
+    // Frames queue on the connection as a job's do (merged for a slow reader); a connection
+    // that gives the stream up ends the session.
+    std::weak_ptr<WebSocketSender> weakSender = mSender;
+    auto stream = std::make_shared<FrameStream>();
+    stream->id = ++mStreams;
+    stream->encoding = frameEncoding(request.frames);
+    LiveSessionSink sink;
+    sink.frame = [weakSender, stream](StreamFrame frame) {
+        auto sender = weakSender.lock();
+        if (!sender || stream->givenUp.load()) return false;
+        sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
+        return true;
+    };
+    sink.event = [weakSender](std::string text) {
+        if (auto sender = weakSender.lock()) sender->send(std::move(text));
+    };
+    LiveSessionConfig config;
+    config.ownerId = mUser.id;
+    config.speed = request.speed ? liveSpeed(*request.speed) : std::optional(1.0);
+    config.paused = request.paused.value_or(false);
+    config.rate = std::min(request.rate.value_or(protocol::kDefaultFrameRate), protocol::kMaxFrameRate);
+    const double start = prepared.start, step = prepared.step, stop = prepared.stop;
+    auto session =
+        mServices.liveSimulations.create(std::move(config), std::move(simulation), std::move(variables), std::move(sink));
+    place.taken = true;
+    {
+        std::lock_guard lock(mLiveRunsMutex);
+        std::erase_if(mLiveRuns, [](const std::weak_ptr<LiveSession>& weak) { return weak.expired(); });
+        mLiveRuns.push_back(session);
+        if (mLiveRunsClosed) session->stop(std::nullopt);   // nobody is here to watch it
+    }
+    protocol::LiveStartedData data{.sessionId = static_cast<std::int64_t>(session->id()), .variables = names,
+                                   .liveValues = {}, .start = start, .step = step, .stop = stop};
+    for (const LiveValue& v : session->liveValues())
+        data.liveValues.push_back({.name = v.path, .value = v.value, .unit = v.unit});
+    // Its frames start after the reply, so the client knows the session's id first.
+    mAfterReply = [session] { session->start(); };
+    return success(data);
 }
 
 } // namespace tlmhub::server

@@ -6,12 +6,14 @@
 #include "server/edit/EditSession.h"
 #include "server/http/HttpApplication.h"
 #include "server/jobs/StreamFrame.h"
+#include "server/live/LiveSession.h"
 #include "server/protocol/Messages.generated.h"
 
 #include <deque>
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 
 namespace tlmhub::server {
 
@@ -50,6 +52,10 @@ private:
     Reply subscribe(const protocol::LogSubscribeRequest& request);
     Reply subscribeStudy(const protocol::StudySubscribeRequest& request);
     Reply unsubscribeStudy(const protocol::StudyUnsubscribeRequest& request);
+    // Live sessions (docs/live-sessions.md): started on this node, streamed to this connection.
+    Reply startLive(const protocol::LiveStartRequest& request);
+    // live.set, live.pause, ...: the session if this user owns it, else null.
+    std::shared_ptr<LiveSession> ownLiveSession(std::int64_t sessionId);
     // `variables`: at most max_stream_variables are streamed; `rate` in frames per second.
     void subscribeToJob(std::int64_t jobId, std::vector<std::string> variables, double rate, FrameEncoding encoding);
     // On the strand, once a simulate.start's job is compiled and queued (or refused).
@@ -71,6 +77,11 @@ private:
     bool mModelIsCopy = false;   // the open model is a student's copy of an assignment
     std::vector<std::uint64_t> mSubscriptions;
     std::map<std::int64_t, std::uint64_t> mStudySubscriptions;   // study -> StudyProgressHub's
+    // Started here; they end with the connection. Guarded: live.start adds on the request
+    // pool while the connection may be closing.
+    std::mutex mLiveRunsMutex;
+    std::vector<std::weak_ptr<LiveSession>> mLiveRuns;
+    bool mLiveRunsClosed = false;
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;
     bool mReplyDeferred = false;   // the message being handled is answered later

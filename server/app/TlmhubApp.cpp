@@ -60,10 +60,13 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
                                          mOptions.limits);
     mJoinLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures, kJoinWindow);
     mJoinAddressLimiter = std::make_unique<LoginRateLimiter>(kJoinMaxFailures * 10, kJoinWindow);
+    mLiveSimulations = std::make_unique<LiveSessionRegistry>(
+        LiveSessionRegistry::Limits{mOptions.maxLiveSessionsPerUser, mOptions.maxLiveSessions, mOptions.liveIdleTimeout},
+        std::max(1u, cores / 2));
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
                                  *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,
-                                 mStorage->idempotencyKeys()});
+                                 mStorage->idempotencyKeys(), *mLiveSimulations});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});
@@ -98,6 +101,7 @@ void TlmhubApp::shutdown()
     // may outlast the grace after a signal (server/app/ShutdownSignals.h).
     if (mStudies) mStudies->stop();
     if (mQueue) mQueue->shutdown();
+    if (mLiveSimulations) mLiveSimulations->stopAll();
     if (mCheckRuns) mCheckRuns->stop();
     if (mPools) mPools->stop();
 }

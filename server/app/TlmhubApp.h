@@ -13,6 +13,7 @@
 #include "server/jobs/ResultExpiry.h"
 #include "server/store/Storage.h"
 #include "server/labs/LabService.h"
+#include "server/live/LiveSessionRegistry.h"
 #include "server/studies/StudyService.h"
 
 #include <memory>
@@ -86,6 +87,8 @@ private:
     std::unique_ptr<ResultExpiry> mExpiry;   // only with --result-ttl
     std::unique_ptr<LiveSessions> mLiveSessions;
     std::unique_ptr<DownloadLinks> mDownloadLinks;
+    // Before the services (destroyed after them); its sessions end at shutdown().
+    std::unique_ptr<LiveSessionRegistry> mLiveSimulations;
     std::unique_ptr<Services> mServices;
     Router<Route> mRouter;
     StaticFiles mStaticFiles;

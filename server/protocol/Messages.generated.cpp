@@ -1893,4 +1893,256 @@ void to_json(nlohmann::json& j, const GradeUpdate& v)
     j["grade"] = v.grade ? nlohmann::json(*v.grade) : nlohmann::json(nullptr);
 }
 
+void from_json(const nlohmann::json& j, LiveStartRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("model_id").get_to(v.modelId);
+    if (const auto x = j.find("speed"); x != j.end()) v.speed = x->get<nlohmann::json>();
+    if (const auto x = j.find("variables"); x != j.end()) v.variables = x->get<std::vector<std::string>>();
+    if (const auto x = j.find("rate"); x != j.end()) v.rate = x->get<double>();
+    if (const auto x = j.find("frames"); x != j.end()) v.frames = x->get<std::string>();
+    if (const auto x = j.find("paused"); x != j.end()) v.paused = x->get<bool>();
+}
+
+void to_json(nlohmann::json& j, const LiveStartRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.start";
+    j["model_id"] = v.modelId;
+    if (v.speed) j["speed"] = *v.speed;
+    if (v.variables) j["variables"] = *v.variables;
+    if (v.rate) j["rate"] = *v.rate;
+    if (v.frames) j["frames"] = *v.frames;
+    if (v.paused) j["paused"] = *v.paused;
+}
+
+void from_json(const nlohmann::json& j, LiveSetRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    j.at("name").get_to(v.name);
+    j.at("value").get_to(v.value);
+}
+
+void to_json(nlohmann::json& j, const LiveSetRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.set";
+    j["session_id"] = v.sessionId;
+    j["name"] = v.name;
+    j["value"] = v.value;
+}
+
+void from_json(const nlohmann::json& j, LivePauseRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+}
+
+void to_json(nlohmann::json& j, const LivePauseRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.pause";
+    j["session_id"] = v.sessionId;
+}
+
+void from_json(const nlohmann::json& j, LiveResumeRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+}
+
+void to_json(nlohmann::json& j, const LiveResumeRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.resume";
+    j["session_id"] = v.sessionId;
+}
+
+void from_json(const nlohmann::json& j, LiveStopRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+}
+
+void to_json(nlohmann::json& j, const LiveStopRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.stop";
+    j["session_id"] = v.sessionId;
+}
+
+void from_json(const nlohmann::json& j, LiveSpeedRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    j.at("speed").get_to(v.speed);
+}
+
+void to_json(nlohmann::json& j, const LiveSpeedRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.speed";
+    j["session_id"] = v.sessionId;
+    j["speed"] = v.speed;
+}
+
+void from_json(const nlohmann::json& j, LiveStepRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    j.at("steps").get_to(v.steps);
+}
+
+void to_json(nlohmann::json& j, const LiveStepRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.step";
+    j["session_id"] = v.sessionId;
+    j["steps"] = v.steps;
+}
+
+void from_json(const nlohmann::json& j, LiveStartedData& v)
+{
+    j.at("session_id").get_to(v.sessionId);
+    j.at("variables").get_to(v.variables);
+    j.at("live_values").get_to(v.liveValues);
+    j.at("start").get_to(v.start);
+    j.at("step").get_to(v.step);
+    j.at("stop").get_to(v.stop);
+}
+
+void to_json(nlohmann::json& j, const LiveStartedData& v)
+{
+    j = nlohmann::json::object();
+    j["session_id"] = v.sessionId;
+    j["variables"] = v.variables;
+    j["live_values"] = v.liveValues;
+    j["start"] = v.start;
+    j["step"] = v.step;
+    j["stop"] = v.stop;
+}
+
+void from_json(const nlohmann::json& j, LiveValue& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("value").get_to(v.value);
+    j.at("unit").get_to(v.unit);
+}
+
+void to_json(nlohmann::json& j, const LiveValue& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["value"] = v.value;
+    j["unit"] = v.unit;
+}
+
+void from_json(const nlohmann::json& j, LiveStateData& v)
+{
+    j.at("state").get_to(v.state);
+    j.at("speed").get_to(v.speed);
+    j.at("model_time").get_to(v.modelTime);
+}
+
+void to_json(nlohmann::json& j, const LiveStateData& v)
+{
+    j = nlohmann::json::object();
+    j["state"] = v.state;
+    j["speed"] = v.speed;
+    j["model_time"] = v.modelTime;
+}
+
+void from_json(const nlohmann::json& j, LiveFrameEvent& v)
+{
+    j.at("session_id").get_to(v.sessionId);
+    j.at("seq").get_to(v.seq);
+    j.at("dropped").get_to(v.dropped);
+    j.at("model_time").get_to(v.modelTime);
+    j.at("wall_time").get_to(v.wallTime);
+    j.at("time").get_to(v.time);
+    j.at("variables").get_to(v.variables);
+}
+
+void to_json(nlohmann::json& j, const LiveFrameEvent& v)
+{
+    j = nlohmann::json::object();
+    j["type"] = "event.live.frame";
+    j["session_id"] = v.sessionId;
+    j["seq"] = v.seq;
+    j["dropped"] = v.dropped;
+    j["model_time"] = v.modelTime;
+    j["wall_time"] = v.wallTime;
+    j["time"] = v.time;
+    j["variables"] = v.variables;
+}
+
+void from_json(const nlohmann::json& j, BinaryLiveFrameHeader& v)
+{
+    j.at("session_id").get_to(v.sessionId);
+    j.at("seq").get_to(v.seq);
+    j.at("dropped").get_to(v.dropped);
+    j.at("model_time").get_to(v.modelTime);
+    j.at("wall_time").get_to(v.wallTime);
+    j.at("time_samples").get_to(v.timeSamples);
+    j.at("variables").get_to(v.variables);
+}
+
+void to_json(nlohmann::json& j, const BinaryLiveFrameHeader& v)
+{
+    j = nlohmann::json::object();
+    j["type"] = "event.live.frame";
+    j["session_id"] = v.sessionId;
+    j["seq"] = v.seq;
+    j["dropped"] = v.dropped;
+    j["model_time"] = v.modelTime;
+    j["wall_time"] = v.wallTime;
+    j["time_samples"] = v.timeSamples;
+    j["variables"] = v.variables;
+}
+
+void from_json(const nlohmann::json& j, BinaryLiveFrameHeaderVariablesItem& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("samples").get_to(v.samples);
+}
+
+void to_json(nlohmann::json& j, const BinaryLiveFrameHeaderVariablesItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["samples"] = v.samples;
+}
+
+void from_json(const nlohmann::json& j, LiveStateEvent& v)
+{
+    j.at("session_id").get_to(v.sessionId);
+    j.at("state").get_to(v.state);
+    j.at("speed").get_to(v.speed);
+    j.at("achieved_speed").get_to(v.achievedSpeed);
+    j.at("model_time").get_to(v.modelTime);
+    if (const auto x = j.find("reason"); x != j.end()) v.reason = x->get<std::string>();
+    if (const auto x = j.find("message"); x != j.end()) v.message = x->get<std::string>();
+}
+
+void to_json(nlohmann::json& j, const LiveStateEvent& v)
+{
+    j = nlohmann::json::object();
+    j["type"] = "event.live.state";
+    j["session_id"] = v.sessionId;
+    j["state"] = v.state;
+    j["speed"] = v.speed;
+    j["achieved_speed"] = v.achievedSpeed;
+    j["model_time"] = v.modelTime;
+    if (v.reason) j["reason"] = *v.reason;
+    if (v.message) j["message"] = *v.message;
+}
+
 } // namespace tlmhub::server::protocol

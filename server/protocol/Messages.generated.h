@@ -19,6 +19,8 @@ struct AssignmentUpdateParametersItem;
 struct AssignmentWarning;
 struct BinaryFrameHeader;
 struct BinaryFrameHeaderVariablesItem;
+struct BinaryLiveFrameHeader;
+struct BinaryLiveFrameHeaderVariablesItem;
 struct CatalogueEntry;
 struct CatalogueParameter;
 struct CataloguePort;
@@ -63,6 +65,18 @@ struct JobInfo;
 struct JobRequest;
 struct JobSettings;
 struct JobUpdate;
+struct LiveFrameEvent;
+struct LivePauseRequest;
+struct LiveResumeRequest;
+struct LiveSetRequest;
+struct LiveSpeedRequest;
+struct LiveStartRequest;
+struct LiveStartedData;
+struct LiveStateData;
+struct LiveStateEvent;
+struct LiveStepRequest;
+struct LiveStopRequest;
+struct LiveValue;
 struct LogSubscribeRequest;
 struct LoginRequest;
 struct LoginResponse;
@@ -1252,6 +1266,160 @@ struct GradeUpdate {
 void from_json(const nlohmann::json& j, GradeUpdate& v);
 void to_json(nlohmann::json& j, const GradeUpdate& v);
 
+// Compile a stored model once and run it paced to the wall clock (a live session on this
+// node), streaming event.live.frame to this socket.
+struct LiveStartRequest {
+    nlohmann::json id{};
+    // "type": always "live.start"
+    std::int64_t modelId{};
+    std::optional<nlohmann::json> speed;
+    std::optional<std::vector<std::string>> variables;
+    std::optional<double> rate;
+    std::optional<std::string> frames;
+    std::optional<bool> paused;
+};
+void from_json(const nlohmann::json& j, LiveStartRequest& v);
+void to_json(nlohmann::json& j, const LiveStartRequest& v);
+
+// A new value for a parameter that may change while the simulation runs (from the next step
+// on). Sets of one name are applied at most 100 times a second; the last value wins.
+struct LiveSetRequest {
+    nlohmann::json id{};
+    // "type": always "live.set"
+    std::int64_t sessionId{};
+    std::string name{};
+    double value{};
+};
+void from_json(const nlohmann::json& j, LiveSetRequest& v);
+void to_json(nlohmann::json& j, const LiveSetRequest& v);
+
+// Pause the session after its current step.
+struct LivePauseRequest {
+    nlohmann::json id{};
+    // "type": always "live.pause"
+    std::int64_t sessionId{};
+};
+void from_json(const nlohmann::json& j, LivePauseRequest& v);
+void to_json(nlohmann::json& j, const LivePauseRequest& v);
+
+// Run a paused session again, paced from now.
+struct LiveResumeRequest {
+    nlohmann::json id{};
+    // "type": always "live.resume"
+    std::int64_t sessionId{};
+};
+void from_json(const nlohmann::json& j, LiveResumeRequest& v);
+void to_json(nlohmann::json& j, const LiveResumeRequest& v);
+
+// End the session (event.live.state stopped).
+struct LiveStopRequest {
+    nlohmann::json id{};
+    // "type": always "live.stop"
+    std::int64_t sessionId{};
+};
+void from_json(const nlohmann::json& j, LiveStopRequest& v);
+void to_json(nlohmann::json& j, const LiveStopRequest& v);
+
+// Change the pace of a session.
+struct LiveSpeedRequest {
+    nlohmann::json id{};
+    // "type": always "live.speed"
+    std::int64_t sessionId{};
+    nlohmann::json speed{};
+};
+void from_json(const nlohmann::json& j, LiveSpeedRequest& v);
+void to_json(nlohmann::json& j, const LiveSpeedRequest& v);
+
+// Run a paused session this many steps (then a frame shows them).
+struct LiveStepRequest {
+    nlohmann::json id{};
+    // "type": always "live.step"
+    std::int64_t sessionId{};
+    std::int64_t steps{};
+};
+void from_json(const nlohmann::json& j, LiveStepRequest& v);
+void to_json(nlohmann::json& j, const LiveStepRequest& v);
+
+struct LiveStartedData {
+    std::int64_t sessionId{};
+    std::vector<std::string> variables;
+    std::vector<LiveValue> liveValues;
+    double start{};
+    double step{};
+    double stop{};
+};
+void from_json(const nlohmann::json& j, LiveStartedData& v);
+void to_json(nlohmann::json& j, const LiveStartedData& v);
+
+struct LiveValue {
+    std::string name{};
+    double value{};
+    std::string unit{};
+};
+void from_json(const nlohmann::json& j, LiveValue& v);
+void to_json(nlohmann::json& j, const LiveValue& v);
+
+// The session's state once the request is taken.
+struct LiveStateData {
+    std::string state{};
+    nlohmann::json speed{};
+    double modelTime{};
+};
+void from_json(const nlohmann::json& j, LiveStateData& v);
+void to_json(nlohmann::json& j, const LiveStateData& v);
+
+// The streamed variables of a live session: one sample per frame, taken after the steps of the
+// frame's tick.
+struct LiveFrameEvent {
+    // "type": always "event.live.frame"
+    std::int64_t sessionId{};
+    std::int64_t seq{};
+    std::int64_t dropped{};
+    double modelTime{};
+    double wallTime{};
+    std::vector<double> time;
+    std::map<std::string, std::vector<double>> variables;
+};
+void from_json(const nlohmann::json& j, LiveFrameEvent& v);
+void to_json(nlohmann::json& j, const LiveFrameEvent& v);
+
+// The JSON header of an event.live.frame sent as a binary message, laid out as
+// BinaryFrameHeader's frame.
+struct BinaryLiveFrameHeader {
+    // "type": always "event.live.frame"
+    std::int64_t sessionId{};
+    std::int64_t seq{};
+    std::int64_t dropped{};
+    double modelTime{};
+    double wallTime{};
+    std::int64_t timeSamples{};
+    std::vector<BinaryLiveFrameHeaderVariablesItem> variables;
+};
+void from_json(const nlohmann::json& j, BinaryLiveFrameHeader& v);
+void to_json(nlohmann::json& j, const BinaryLiveFrameHeader& v);
+
+struct BinaryLiveFrameHeaderVariablesItem {
+    std::string name{};
+    std::int64_t samples{};
+};
+void from_json(const nlohmann::json& j, BinaryLiveFrameHeaderVariablesItem& v);
+void to_json(nlohmann::json& j, const BinaryLiveFrameHeaderVariablesItem& v);
+
+// A live session's state: sent on every change, and every second while it cannot keep up
+// (achieved_speed below speed).
+struct LiveStateEvent {
+    // "type": always "event.live.state"
+    std::int64_t sessionId{};
+    std::string state{};
+    nlohmann::json speed{};
+    double achievedSpeed{};
+    double modelTime{};
+    std::optional<std::string> reason;
+    std::optional<std::string> message;
+};
+void from_json(const nlohmann::json& j, LiveStateEvent& v);
+void to_json(nlohmann::json& j, const LiveStateEvent& v);
+
 // Calls visit.template operator()<T>("Name") for every struct, e.g. for a test that
 // round-trips examples through them all.
 template <typename Visitor>
@@ -1264,6 +1432,8 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<AssignmentWarning>("AssignmentWarning");
     visit.template operator()<BinaryFrameHeader>("BinaryFrameHeader");
     visit.template operator()<BinaryFrameHeaderVariablesItem>("BinaryFrameHeaderVariablesItem");
+    visit.template operator()<BinaryLiveFrameHeader>("BinaryLiveFrameHeader");
+    visit.template operator()<BinaryLiveFrameHeaderVariablesItem>("BinaryLiveFrameHeaderVariablesItem");
     visit.template operator()<CatalogueEntry>("CatalogueEntry");
     visit.template operator()<CatalogueParameter>("CatalogueParameter");
     visit.template operator()<CataloguePort>("CataloguePort");
@@ -1308,6 +1478,18 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<JobRequest>("JobRequest");
     visit.template operator()<JobSettings>("JobSettings");
     visit.template operator()<JobUpdate>("JobUpdate");
+    visit.template operator()<LiveFrameEvent>("LiveFrameEvent");
+    visit.template operator()<LivePauseRequest>("LivePauseRequest");
+    visit.template operator()<LiveResumeRequest>("LiveResumeRequest");
+    visit.template operator()<LiveSetRequest>("LiveSetRequest");
+    visit.template operator()<LiveSpeedRequest>("LiveSpeedRequest");
+    visit.template operator()<LiveStartRequest>("LiveStartRequest");
+    visit.template operator()<LiveStartedData>("LiveStartedData");
+    visit.template operator()<LiveStateData>("LiveStateData");
+    visit.template operator()<LiveStateEvent>("LiveStateEvent");
+    visit.template operator()<LiveStepRequest>("LiveStepRequest");
+    visit.template operator()<LiveStopRequest>("LiveStopRequest");
+    visit.template operator()<LiveValue>("LiveValue");
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");
     visit.template operator()<LoginResponse>("LoginResponse");

@@ -146,6 +146,13 @@ const std::map<std::string, WsCase>& wsCases()
         {"model.group", WsCase::OpenModel},
         {"model.ungroup", WsCase::OpenModel},
         {"simulate.start", WsCase::OpenModel},
+        {"live.start", WsCase::Foreign},
+        {"live.set", WsCase::Foreign},
+        {"live.pause", WsCase::Foreign},
+        {"live.resume", WsCase::Foreign},
+        {"live.speed", WsCase::Foreign},
+        {"live.step", WsCase::Foreign},
+        {"live.stop", WsCase::Foreign},
     };
     return cases;
 }
@@ -304,6 +311,11 @@ TEST_F(AuthorisationCases, EveryRouteRefusesStrangersAndOthersObjects)
 TEST_F(AuthorisationCases, EveryWebSocketRequestRefusesOthersObjects)
 {
     HttpClient olga = loggedInAs(*server, "olga");
+    // sam's live session, open while olga tries to control it.
+    HttpClient sam = loggedInAs(*server, "sam");
+    WsClient samSocket(server->port(), sam.token());
+    const auto live = samSocket.call("live.start", {{"model_id", ids["model"]}, {"paused", true}});
+    ASSERT_EQ(live.value("type", ""), "reply") << live;
     std::map<std::string, nlohmann::json> examples;
     for (const ReadmeExample& e : readmeExamples())
         if (e.kind == "message" && e.argument.empty() && e.value.contains("type") &&
@@ -317,6 +329,7 @@ TEST_F(AuthorisationCases, EveryWebSocketRequestRefusesOthersObjects)
         if (message.contains("model_id")) message["model_id"] = ids["model"];
         if (message.contains("job_id")) message["job_id"] = ids["job"];
         if (message.contains("study_id")) message["study_id"] = ids["study"];
+        if (message.contains("session_id")) message["session_id"] = live["data"]["session_id"];
         WsClient ws(server->port(), olga.token());
         const auto reply = ws.call(type, message);
         ASSERT_FALSE(reply.is_null()) << type << ": no answer";

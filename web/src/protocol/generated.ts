@@ -35,6 +35,7 @@ export type ErrorCode =
     | 'limit_exceeded'
     | 'not_open'
     | 'simulation_failed'
+    | 'restart_required'
     | 'locked'
     | 'archived'
     | 'deadline_passed'
@@ -97,12 +98,33 @@ export type ClientMessage =
     | LogSubscribeRequest
     | PingRequest
     | StudySubscribeRequest
-    | StudyUnsubscribeRequest;
+    | StudyUnsubscribeRequest
+    | LiveStartRequest
+    | LiveSetRequest
+    | LivePauseRequest
+    | LiveResumeRequest
+    | LiveSpeedRequest
+    | LiveStepRequest
+    | LiveStopRequest;
+/**
+ * Model seconds per wall second (0.01 to 100), or "max": as fast as the server's slices allow.
+ */
+export type LiveSpeed = number | 'max';
 /**
  * Any message the server sends.
  */
 export type ServerMessage =
-    Hello | Reply | ErrorReply | ProgressEvent | FrameEvent | DoneEvent | ResyncEvent | StudyProgressEvent;
+    | Hello
+    | Reply
+    | ErrorReply
+    | ProgressEvent
+    | FrameEvent
+    | DoneEvent
+    | ResyncEvent
+    | StudyProgressEvent
+    | LiveFrameEvent
+    | LiveStateEvent;
+export type LiveState = 'running' | 'paused' | 'stopped';
 
 /**
  * Index of every definition in protocol/messages.schema.json.
@@ -231,6 +253,21 @@ export interface ProtocolDefinitions {
     CurveCheckDefinition?: CurveCheckDefinition;
     CommentCreate?: CommentCreate;
     GradeUpdate?: GradeUpdate;
+    LiveSpeed?: LiveSpeed;
+    LiveState?: LiveState;
+    LiveStartRequest?: LiveStartRequest;
+    LiveSetRequest?: LiveSetRequest;
+    LivePauseRequest?: LivePauseRequest;
+    LiveResumeRequest?: LiveResumeRequest;
+    LiveStopRequest?: LiveStopRequest;
+    LiveSpeedRequest?: LiveSpeedRequest;
+    LiveStepRequest?: LiveStepRequest;
+    LiveStartedData?: LiveStartedData;
+    LiveValue?: LiveValue;
+    LiveStateData?: LiveStateData;
+    LiveFrameEvent?: LiveFrameEvent;
+    BinaryLiveFrameHeader?: BinaryLiveFrameHeader;
+    LiveStateEvent?: LiveStateEvent;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -989,6 +1026,86 @@ export interface StudyUnsubscribeRequest {
     type: 'study.unsubscribe';
     study_id: number;
 }
+/**
+ * Compile a stored model once and run it paced to the wall clock (a live session on this node), streaming event.live.frame to this socket.
+ */
+export interface LiveStartRequest {
+    id: RequestId;
+    type: 'live.start';
+    model_id: number;
+    speed?: LiveSpeed;
+    /**
+     * Variable names (Comp#Port#Var) shown in each frame; at most 16 used.
+     */
+    variables?: string[];
+    /**
+     * Frames per second (default 30; above 120 served at 120).
+     */
+    rate?: number;
+    /**
+     * How event.live.frame is sent: JSON text (default) or binary (BinaryLiveFrameHeader, then float64 columns).
+     */
+    frames?: 'json' | 'binary';
+    /**
+     * Start paused (default false): nothing runs before live.resume or live.step.
+     */
+    paused?: boolean;
+}
+/**
+ * A new value for a parameter that may change while the simulation runs (from the next step on). Sets of one name are applied at most 100 times a second; the last value wins.
+ */
+export interface LiveSetRequest {
+    id: RequestId;
+    type: 'live.set';
+    session_id: number;
+    /**
+     * As jobs name parameters: Step.y_A, Sub$Gain.k.
+     */
+    name: string;
+    value: number;
+}
+/**
+ * Pause the session after its current step.
+ */
+export interface LivePauseRequest {
+    id: RequestId;
+    type: 'live.pause';
+    session_id: number;
+}
+/**
+ * Run a paused session again, paced from now.
+ */
+export interface LiveResumeRequest {
+    id: RequestId;
+    type: 'live.resume';
+    session_id: number;
+}
+/**
+ * Change the pace of a session.
+ */
+export interface LiveSpeedRequest {
+    id: RequestId;
+    type: 'live.speed';
+    session_id: number;
+    speed: LiveSpeed;
+}
+/**
+ * Run a paused session this many steps (then a frame shows them).
+ */
+export interface LiveStepRequest {
+    id: RequestId;
+    type: 'live.step';
+    session_id: number;
+    steps: number;
+}
+/**
+ * End the session (event.live.state stopped).
+ */
+export interface LiveStopRequest {
+    id: RequestId;
+    type: 'live.stop';
+    session_id: number;
+}
 export interface EmptyData {}
 export interface ModelOpenedData {
     model_id: number;
@@ -1121,6 +1238,49 @@ export interface StudyProgressEvent {
      */
     failure_reasons?: {}[];
     error?: string;
+}
+/**
+ * The streamed variables of a live session: one sample per frame, taken after the steps of the frame's tick.
+ */
+export interface LiveFrameEvent {
+    type: 'event.live.frame';
+    session_id: number;
+    seq: number;
+    /**
+     * Frames merged into this one because the socket was slow; their samples are included.
+     */
+    dropped: number;
+    /**
+     * Model time of the session when the frame was taken (s).
+     */
+    model_time: number;
+    /**
+     * Wall-clock seconds since the session started.
+     */
+    wall_time: number;
+    time: number[];
+    variables: {
+        [k: string]: number[];
+    };
+}
+/**
+ * A live session's state: sent on every change, and every second while it cannot keep up (achieved_speed below speed).
+ */
+export interface LiveStateEvent {
+    type: 'event.live.state';
+    session_id: number;
+    state: LiveState;
+    speed: LiveSpeed;
+    /**
+     * Model seconds per wall second over the last second (0 while paused).
+     */
+    achieved_speed: number;
+    model_time: number;
+    /**
+     * Why a session stopped.
+     */
+    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown';
+    message?: string;
 }
 export interface ModelSettingsData {
     simulation: SimulationSettings;
@@ -1353,4 +1513,59 @@ export interface CommentCreate {
  */
 export interface GradeUpdate {
     grade: number | null;
+}
+export interface LiveStartedData {
+    session_id: number;
+    /**
+     * The variables each frame carries, in order.
+     */
+    variables: string[];
+    /**
+     * What live.set may change, with the values the run starts from.
+     */
+    live_values: LiveValue[];
+    start: number;
+    step: number;
+    /**
+     * Model time at which the session ends (the model's stop time).
+     */
+    stop: number;
+}
+export interface LiveValue {
+    name: string;
+    value: number;
+    unit: string;
+}
+/**
+ * The session's state once the request is taken.
+ */
+export interface LiveStateData {
+    state: LiveState;
+    speed: LiveSpeed;
+    model_time: number;
+}
+/**
+ * The JSON header of an event.live.frame sent as a binary message, laid out as BinaryFrameHeader's frame.
+ */
+export interface BinaryLiveFrameHeader {
+    type: 'event.live.frame';
+    session_id: number;
+    seq: number;
+    /**
+     * Frames merged into this one because the socket was slow; their samples are included.
+     */
+    dropped: number;
+    /**
+     * Model time of the session when the frame was taken (s).
+     */
+    model_time: number;
+    /**
+     * Wall-clock seconds since the session started.
+     */
+    wall_time: number;
+    time_samples: number;
+    variables: {
+        name: string;
+        samples: number;
+    }[];
 }

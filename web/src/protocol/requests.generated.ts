@@ -12,6 +12,15 @@ import type {
     ConnectionRouteRequest,
     DisconnectRequest,
     EmptyData,
+    LivePauseRequest,
+    LiveResumeRequest,
+    LiveSetRequest,
+    LiveSpeedRequest,
+    LiveStartRequest,
+    LiveStartedData,
+    LiveStateData,
+    LiveStepRequest,
+    LiveStopRequest,
     LogSubscribeRequest,
     ModelCreateRequest,
     ModelGetData,
@@ -66,6 +75,13 @@ export interface RequestMap {
     'ping': { request: PingRequest; reply: EmptyData };
     'study.subscribe': { request: StudySubscribeRequest; reply: EmptyData };
     'study.unsubscribe': { request: StudyUnsubscribeRequest; reply: EmptyData };
+    'live.start': { request: LiveStartRequest; reply: LiveStartedData };
+    'live.set': { request: LiveSetRequest; reply: EmptyData };
+    'live.pause': { request: LivePauseRequest; reply: LiveStateData };
+    'live.resume': { request: LiveResumeRequest; reply: LiveStateData };
+    'live.speed': { request: LiveSpeedRequest; reply: LiveStateData };
+    'live.step': { request: LiveStepRequest; reply: LiveStateData };
+    'live.stop': { request: LiveStopRequest; reply: LiveStateData };
 }
 
 export type RequestType = keyof RequestMap;

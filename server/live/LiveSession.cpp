@@ -1,0 +1,262 @@
+#include "server/live/LiveSession.h"
+
+#include "server/api/CoreErrorCodes.h"
+#include "server/http/JsonText.h"
+
+#include <boost/asio/bind_executor.hpp>
+#include <boost/asio/post.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tlmhub::server {
+
+namespace {
+
+// Steps a tick may owe at "max": the time budget ends the tick long before.
+constexpr std::uint64_t kLiveMaxSlice = 1'000'000'000;
+// Below this share of the asked speed, the session says it cannot keep up.
+constexpr double kLiveKeepingUp = 0.95;
+
+nlohmann::json liveSpeedJson(const std::optional<double>& speed)
+{
+    return speed ? nlohmann::json(*speed) : nlohmann::json("max");
+}
+
+LiveSession::Reply liveRefusal(std::string code, std::string message)
+{
+    return {.code = std::move(code), .message = std::move(message), .state = {}};
+}
+
+} // namespace
+
+LiveSession::LiveSession(boost::asio::any_io_executor executor, LiveSessionConfig config, Simulation simulation,
+                         std::vector<LiveVariable> variables, LiveSessionSink sink,
+                         std::function<void(std::uint64_t)> ended)
+    : mConfig(std::move(config)), mStrand(boost::asio::make_strand(executor)), mTimer(mStrand),
+      mFramePeriod(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(1.0 / mConfig.rate))),
+      mSimulation(std::move(simulation)), mVariables(std::move(variables)), mSink(std::move(sink)),
+      mEnded(std::move(ended)), mLiveValues(mSimulation.liveValues()),
+      mPacer(mSimulation.timestep(), mConfig.speed, mConfig.clock(), mConfig.paused)
+{
+    std::vector<std::string> names;
+    for (const LiveVariable& v : mVariables) names.push_back(v.name);
+    mLayout = std::make_shared<const FrameLayout>(std::move(names));
+    for (const LiveValue& v : mLiveValues) mLivePaths.insert(v.path);
+    mStartedAt = mLastTouch = mConfig.clock();
+}
+
+void LiveSession::arm()
+{
+    std::lock_guard lock(mMutex);
+    mNextTick = std::chrono::steady_clock::now();
+    scheduleTick(false);
+}
+
+void LiveSession::start()
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return;
+    mStarted = true;
+    mStartedAt = mLastTouch = mConfig.clock();
+    mPacer = LivePacer(mSimulation.timestep(), mConfig.speed, mStartedAt, mConfig.paused);
+    sendState();
+    // The first frame shows where the run starts.
+    sendFrame(mStartedAt);
+}
+
+void LiveSession::scheduleTick(bool now)
+{
+    // A tick that ran out of budget goes on at once, behind whatever else waits for the pool.
+    if (now) return boost::asio::post(mStrand, [self = shared_from_this()] { self->tick(); });
+    mNextTick = std::max(mNextTick + mFramePeriod, std::chrono::steady_clock::now());
+    mTimer.expires_at(mNextTick);
+    mTimer.async_wait(boost::asio::bind_executor(mStrand, [self = shared_from_this()](boost::system::error_code ec) {
+        if (!ec) self->tick();
+    }));
+}
+
+void LiveSession::tick()
+{
+    std::unique_lock lock(mMutex);
+    if (mStopped) return;
+    const auto now = mConfig.clock();
+    if (now - mLastTouch > mConfig.idleTimeout)
+        return end("idle_timeout", "no message from the session's owner for " +
+                                       std::to_string(mConfig.idleTimeout.count()) + " ms (--live-idle-timeout)");
+    if (!mStarted) return scheduleTick(false);
+    applyDueSets(now);
+    const std::uint64_t due = mPacer.paused() ? mStepsRequested : mPacer.due(now, kLiveMaxSlice);
+    const std::uint64_t ran = runSteps(due, now);
+    if (mStopped) return;
+    mPacer.taken(ran);
+    const bool stepped = mPacer.paused() && mStepsRequested > 0;
+    if (mPacer.paused()) mStepsRequested -= std::min(ran, mStepsRequested);
+    const bool finished = mSimulation.state() == SimulationState::Finished;
+    const auto after = mConfig.clock();
+    // A paused session sends nothing; the frame of a live.step shows its last step at once.
+    if ((ran > 0 && after - mLastFrame >= mFramePeriod) || finished || (stepped && mStepsRequested == 0))
+        sendFrame(after);
+    if (finished) return end("finished", "the model reached its stop time");
+    if (const auto achieved = mPacer.measure(after); achieved && mPacer.speed()) {
+        // Never drift silently: every window short of the speed is reported, and the recovery.
+        const bool lagging = *achieved < kLiveKeepingUp * *mPacer.speed();
+        if (lagging || mLagging) sendState();
+        mLagging = lagging;
+    }
+    scheduleTick(ran < due);
+}
+
+void LiveSession::applyDueSets(LivePacer::Clock::time_point now)
+{
+    for (auto it = mPendingSets.begin(); it != mPendingSets.end();) {
+        auto& last = mLastSetApplied[it->first];
+        if (last != LivePacer::Clock::time_point{} && now - last < kSetInterval) {
+            ++it;
+            continue;
+        }
+        // Checked when it was asked for: a live path and a finite value.
+        mSimulation.changeWhileRunning(it->first, it->second);
+        last = now;
+        it = mPendingSets.erase(it);
+    }
+}
+
+std::uint64_t LiveSession::runSteps(std::uint64_t steps, LivePacer::Clock::time_point start)
+{
+    std::uint64_t ran = 0;
+    std::uint64_t chunk = 64;
+    while (ran < steps && mSimulation.state() != SimulationState::Finished) {
+        const std::uint64_t n = std::min(chunk, steps - ran);
+        const std::size_t before = mSimulation.takenSteps();
+        if (const Status status = mSimulation.runSteps(n); !status) {
+            end("failed", status.message());
+            return ran;
+        }
+        ran += mSimulation.takenSteps() - before;
+        if (mSimulation.takenSteps() == before) break;
+        if (mConfig.clock() - start >= kTickBudget) break;
+        chunk = std::min<std::uint64_t>(chunk * 2, 65536);
+    }
+    return ran;
+}
+
+void LiveSession::sendFrame(LivePacer::Clock::time_point now)
+{
+    mLastFrame = now;
+    auto samples = std::make_shared<FrameSamples>();
+    samples->time.push_back(mSimulation.time());
+    for (const LiveVariable& v : mVariables) samples->columns.push_back({v.ref.port->node()->value(v.ref.slot)});
+    StreamFrame frame;
+    frame.layout = mLayout;
+    frame.parts.push_back(std::move(samples));
+    frame.live = LiveFrameStamp{.sessionId = mConfig.id,
+                                .modelTime = mSimulation.time(),
+                                .wallTime = std::chrono::duration<double>(now - mStartedAt).count(),
+                                .speed = mPacer.speed()};
+    if (!mSink.frame(std::move(frame))) end(std::nullopt);
+}
+
+protocol::LiveStateData LiveSession::stateData() const
+{
+    return {.state = mStopped ? "stopped" : mPacer.paused() ? "paused" : "running",
+            .speed = liveSpeedJson(mPacer.speed()),
+            .modelTime = mSimulation.time()};
+}
+
+void LiveSession::sendState(const std::optional<std::string>& reason, const std::string& message)
+{
+    protocol::LiveStateData state = stateData();
+    protocol::LiveStateEvent event{.sessionId = static_cast<std::int64_t>(mConfig.id),
+                                   .state = state.state,
+                                   .speed = state.speed,
+                                   .achievedSpeed = mPacer.paused() ? 0.0 : mPacer.achieved(),
+                                   .modelTime = state.modelTime,
+                                   .reason = reason,
+                                   .message = message.empty() ? std::nullopt : std::optional(message)};
+    mSink.event(toJsonText(event));
+}
+
+void LiveSession::end(const std::optional<std::string>& reason, const std::string& message)
+{
+    if (mStopped) return;
+    mStopped = true;
+    if (reason) sendState(reason, message);
+    boost::asio::post(mStrand, [self = shared_from_this()] { self->mTimer.cancel(); });
+    mEnded(mConfig.id);
+}
+
+LiveSession::Reply LiveSession::set(const std::string& name, double value)
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
+    if (!mLivePaths.count(name) || !std::isfinite(value)) {
+        // The core says why (restart_required, unknown parameter, not finite); a refused
+        // change leaves the run as it was.
+        const Status refused = mSimulation.changeWhileRunning(name, value);
+        if (!refused) return liveRefusal(protocolErrorCode(refused.code()), refused.message());
+    }
+    mPendingSets[name] = value;
+    return stateReply();
+}
+
+LiveSession::Reply LiveSession::pause()
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
+    if (!mPacer.paused()) {
+        mPacer.pause(mConfig.clock());
+        mLagging = false;
+        sendState();
+    }
+    return stateReply();
+}
+
+LiveSession::Reply LiveSession::resume()
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
+    if (mPacer.paused()) {
+        mStepsRequested = 0;
+        mPacer.resume(mConfig.clock());
+        sendState();
+    }
+    return stateReply();
+}
+
+LiveSession::Reply LiveSession::setSpeed(std::optional<double> speed)
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
+    mPacer.setSpeed(speed, mConfig.clock());
+    mLagging = false;
+    sendState();
+    return stateReply();
+}
+
+LiveSession::Reply LiveSession::step(std::uint64_t steps)
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
+    if (!mPacer.paused()) return liveRefusal("conflict", "live.step needs a paused session (live.pause)");
+    if (mStepsRequested + steps > kMaxStepRequest)
+        return liveRefusal("limit_exceeded", "at most " + std::to_string(kMaxStepRequest) + " steps may wait to be run");
+    mStepsRequested += steps;
+    return stateReply();
+}
+
+LiveSession::Reply LiveSession::stop(const std::optional<std::string>& reason)
+{
+    std::lock_guard lock(mMutex);
+    end(reason);
+    return stateReply();
+}
+
+void LiveSession::touch()
+{
+    std::lock_guard lock(mMutex);
+    mLastTouch = mConfig.clock();
+}
+
+} // namespace tlmhub::server

@@ -1,0 +1,134 @@
+#pragma once
+// One live session: a compiled simulation stepped in time with the wall clock (LivePacer) by
+// ticks of a steady_timer on a strand of its own, so it holds no thread between ticks. Each
+// tick applies the values live.set asked for, runs the steps due (within a time budget, so
+// one session cannot hog a thread; the rest follows at once on a new tick), and at the
+// display rate sends the streamed variables' current values as an event.live.frame.
+// Control (set, pause, speed, ...) comes from the owner's connection on other threads: the
+// session's state is guarded by a mutex, held by a tick only for one budget.
+#include "server/jobs/StreamFrame.h"
+#include "server/live/LivePacer.h"
+#include "server/protocol/Messages.generated.h"
+
+#include "core/Results.h"
+#include "core/Simulation.h"
+
+#include <boost/asio/any_io_executor.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/strand.hpp>
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace tlmhub::server {
+
+struct LiveSessionConfig {
+    std::uint64_t id = 0;
+    std::int64_t ownerId = 0;
+    std::optional<double> speed = 1.0;   // none: "max"
+    bool paused = false;
+    double rate = 30.0;                  // frames per second
+    std::chrono::milliseconds idleTimeout{600'000};
+    // Pacing reads this clock (tests inject one); the timer waits in real time.
+    std::function<LivePacer::Clock::time_point()> clock;
+};
+
+// Where a session's output goes: the owner's connection. Called on the session's strand.
+struct LiveSessionSink {
+    // False once the connection gave the stream up (too slow): the session ends.
+    std::function<bool(StreamFrame)> frame;
+    std::function<void(std::string)> event;
+};
+
+// A streamed variable: its name and where its current value lies.
+struct LiveVariable {
+    std::string name;
+    VariableRef ref;
+};
+
+class LiveSession : public std::enable_shared_from_this<LiveSession> {
+public:
+    // Per name, live.set values are applied at most this often (the last one wins).
+    static constexpr std::chrono::milliseconds kSetInterval{10};
+    // Steps one tick runs before it lets other sessions have the thread.
+    static constexpr std::chrono::milliseconds kTickBudget{10};
+    static constexpr std::uint64_t kMaxStepRequest = 1'000'000;
+
+    // A reply: the state after the request, or a protocol error code and message.
+    struct Reply {
+        std::string code;   // empty: done
+        std::string message;
+        protocol::LiveStateData state;
+        bool ok() const { return code.empty(); }
+    };
+
+    // `ended` is called once, on any thread, when the session has stopped.
+    LiveSession(boost::asio::any_io_executor executor, LiveSessionConfig config, Simulation simulation,
+                std::vector<LiveVariable> variables, LiveSessionSink sink, std::function<void(std::uint64_t)> ended);
+
+    std::uint64_t id() const { return mConfig.id; }
+    std::int64_t ownerId() const { return mConfig.ownerId; }
+    // What live.set may change, with the values the run starts from (as live.start replies).
+    const std::vector<LiveValue>& liveValues() const { return mLiveValues; }
+
+    // Starts the ticks (the registry, once the session is in it): until start(), they only
+    // watch the idle timeout, so a session whose connection ended before its reply ends too.
+    void arm();
+    // Sends the first state event and frame and starts the run (after live.start's reply).
+    void start();
+    Reply set(const std::string& name, double value);
+    Reply pause();
+    Reply resume();
+    Reply setSpeed(std::optional<double> speed);
+    Reply step(std::uint64_t steps);
+    // Ends the session; `reason` goes in its last event.live.state (none: no event, the
+    // connection is gone).
+    Reply stop(const std::optional<std::string>& reason);
+    // A message from the owner: the idle timeout starts again.
+    void touch();
+
+private:
+    void scheduleTick(bool now);
+    void tick();
+    // The rest run with mMutex held.
+    void applyDueSets(LivePacer::Clock::time_point now);
+    // Runs up to `steps` steps within kTickBudget; the steps run.
+    std::uint64_t runSteps(std::uint64_t steps, LivePacer::Clock::time_point start);
+    void sendFrame(LivePacer::Clock::time_point now);
+    void sendState(const std::optional<std::string>& reason = {}, const std::string& message = {});
+    protocol::LiveStateData stateData() const;
+    Reply stateReply() const { return {.code = {}, .message = {}, .state = stateData()}; }
+    void end(const std::optional<std::string>& reason, const std::string& message = {});
+
+    LiveSessionConfig mConfig;
+    boost::asio::strand<boost::asio::any_io_executor> mStrand;
+    boost::asio::steady_timer mTimer;
+    std::chrono::steady_clock::time_point mNextTick;   // real time, for the timer
+    const std::chrono::steady_clock::duration mFramePeriod;
+
+    mutable std::mutex mMutex;
+    Simulation mSimulation;
+    std::vector<LiveVariable> mVariables;
+    std::shared_ptr<const FrameLayout> mLayout;
+    LiveSessionSink mSink;
+    std::function<void(std::uint64_t)> mEnded;
+    std::vector<LiveValue> mLiveValues;
+    std::set<std::string> mLivePaths;
+    LivePacer mPacer;
+    LivePacer::Clock::time_point mStartedAt, mLastTouch, mLastFrame;
+    std::uint64_t mStepsRequested = 0;   // by live.step while paused
+    bool mLagging = false;               // last window's achieved speed was short of the speed
+    bool mStarted = false;
+    bool mStopped = false;
+    std::map<std::string, double> mPendingSets;
+    std::map<std::string, LivePacer::Clock::time_point> mLastSetApplied;
+};
+
+} // namespace tlmhub::server
