@@ -362,8 +362,10 @@ nlohmann::json binaryFrameAsJson(const std::string& message)
         at += n * 8;
         return values;
     };
-    nlohmann::json event = {{"type", header.at("type")}, {"job_id", header.at("job_id")},
-                            {"seq", header.at("seq")}, {"dropped", header.at("dropped")}};
+    nlohmann::json event = {{"type", header.at("type")}, {"seq", header.at("seq")}, {"dropped", header.at("dropped")}};
+    // A job's frame names its job; a live session's its session and when it was taken.
+    for (const char* key : {"job_id", "session_id", "model_time", "wall_time"})
+        if (header.contains(key)) event[key] = header[key];
     event["time"] = take(header.at("time_samples").get<std::size_t>());
     event["variables"] = nlohmann::json::object();
     for (const auto& v : header.at("variables"))

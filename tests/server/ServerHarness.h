@@ -128,8 +128,8 @@ private:
     int mNextId = 1;
 };
 
-// A binary event.frame (protocol/README.md): its JSON header, and the whole frame as the JSON
-// event.frame with the same samples. Both throw on a malformed message.
+// A binary event.frame or event.live.frame (protocol/README.md): its JSON header, and the
+// whole frame as the JSON event with the same samples. Both throw on a malformed message.
 nlohmann::json binaryFrameHeader(const std::string& message);
 nlohmann::json binaryFrameAsJson(const std::string& message);
 

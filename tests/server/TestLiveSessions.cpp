@@ -155,7 +155,8 @@ class LiveSessions : public LiveSessionsBase {
 protected:
     static void SetUpTestSuite()
     {
-        startServer({}, {"pace", "setter", "restart", "stepper", "limited", "owner", "intruder", "leaver", "fast"});
+        startServer({}, {"pace", "setter", "restart", "stepper", "limited", "owner", "intruder", "leaver", "fast",
+                     "binary"});
     }
     static void TearDownTestSuite() { stopServer(); }
 };
@@ -263,6 +264,25 @@ TEST_F(LiveSessions, ASetChangesTheStreamedVariableFromTheNextStepOn)
         ASSERT_TRUE(frame.is_object());
         EXPECT_EQ(stepOut(frame), 0.5);
     }
+}
+
+TEST_F(LiveSessions, BinaryFramesCarryTheSameStampAndValues)
+{
+    HttpClient user = loggedInAs(*server, "binary");
+    WsClient ws = socketOf(user);
+    const std::int64_t id = start(ws, servoOf(user), {{"paused", true}, {"frames", "binary"}});
+    ASSERT_GT(id, 0);
+    ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 20}}).value("type", ""), "reply");
+    const nlohmann::json frame = until(ws, [](const nlohmann::json& e) { return isFrame(e) && e["model_time"].get<double>() > 0; });
+    ASSERT_TRUE(frame.is_object());
+    ASSERT_FALSE(ws.binaryHeaders.empty());
+    const nlohmann::json& header = ws.binaryHeaders.back();
+    EXPECT_EQ(header["type"], "event.live.frame");
+    EXPECT_EQ(header["session_id"], id);
+    EXPECT_EQ(header["time_samples"], 1);
+    EXPECT_NEAR(frame["model_time"].get<double>(), 20 * kServoStep, 1e-12);
+    EXPECT_EQ(frame["time"], nlohmann::json::array({frame["model_time"]}));
+    EXPECT_EQ(stepOut(frame), 0.2);
 }
 
 TEST_F(LiveSessions, AParameterOnlyARestartAppliesIsRefusedWithRestartRequired)
