@@ -131,6 +131,9 @@ void WsApi::onClose()
         for (const auto& weak : mLiveRuns)
             if (auto session = weak.lock()) session->stop(std::nullopt);
         mLiveRuns.clear();
+        for (const auto& [weak, watchId] : mLiveWatches)
+            if (auto session = weak.lock()) session->unwatch(watchId);
+        mLiveWatches.clear();
         mLiveRunsClosed = true;
     }
     for (std::uint64_t id : mSubscriptions) mServices.jobStreams.unsubscribe(id);
@@ -258,6 +261,7 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
         if (type == "live.step")
             return liveReply(session->step(static_cast<std::uint64_t>(msg.get<protocol::LiveStepRequest>().steps)));
         if (type == "live.stop") return liveReply(session->stop("requested"));
+        if (type == "live.subscribe") return watchLive(session, msg.get<protocol::LiveSubscribeRequest>());
     }
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     if (mModelIsCopy) {
@@ -541,22 +545,7 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
         variables.push_back({name, *ref});
     }
 
-    // Frames queue on the connection as a job's do (merged for a slow reader); a connection
-    // that gives the stream up ends the session.
-    std::weak_ptr<WebSocketSender> weakSender = mSender;
-    auto stream = std::make_shared<FrameStream>();
-    stream->id = ++mStreams;
-    stream->encoding = frameEncoding(request.frames);
-    LiveSessionSink sink;
-    sink.frame = [weakSender, stream](StreamFrame frame) {
-        auto sender = weakSender.lock();
-        if (!sender || stream->givenUp.load()) return false;
-        sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
-        return true;
-    };
-    sink.event = [weakSender](std::string text) {
-        if (auto sender = weakSender.lock()) sender->send(std::move(text));
-    };
+    LiveSessionSink sink = liveSink(request.frames);
     LiveSessionConfig config;
     config.ownerId = mUser.id;
     config.speed = request.speed ? liveSpeed(*request.speed) : std::optional(1.0);
@@ -579,6 +568,40 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     // Its frames start after the reply, so the client knows the session's id first.
     mAfterReply = [session] { session->start(); };
     return success(data);
+}
+
+LiveSessionSink WsApi::liveSink(const std::optional<std::string>& frames)
+{
+    // Frames queue on the connection as a job's do (merged for a slow reader); a connection
+    // that gives the stream up stops getting them (LiveSession ends or unwatches it).
+    std::weak_ptr<WebSocketSender> weakSender = mSender;
+    auto stream = std::make_shared<FrameStream>();
+    stream->id = ++mStreams;
+    stream->encoding = frameEncoding(frames);
+    LiveSessionSink sink;
+    sink.frame = [weakSender, stream](StreamFrame frame) {
+        auto sender = weakSender.lock();
+        if (!sender || stream->givenUp.load()) return false;
+        sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
+        return true;
+    };
+    sink.event = [weakSender](std::string text) {
+        if (auto sender = weakSender.lock()) sender->send(std::move(text));
+    };
+    return sink;
+}
+
+WsApi::Reply WsApi::watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request)
+{
+    const LiveSession::Reply state = session->state();
+    if (!state.ok()) return liveReply(state);
+    // The kept samples and then the live ones follow the reply.
+    mAfterReply = [this, session, sink = liveSink(request.frames)]() mutable {
+        const std::uint64_t watchId = session->watch(std::move(sink));
+        std::lock_guard lock(mLiveRunsMutex);
+        if (watchId) mLiveWatches.emplace_back(session, watchId);
+    };
+    return liveReply(state);
 }
 
 } // namespace tlmhub::server

@@ -56,6 +56,9 @@ private:
     Reply startLive(const protocol::LiveStartRequest& request);
     // live.set, live.pause, ...: the session if this user owns it, else null.
     std::shared_ptr<LiveSession> ownLiveSession(std::int64_t sessionId);
+    Reply watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request);
+    // Where a live session's frames and events for this connection go.
+    LiveSessionSink liveSink(const std::optional<std::string>& frames);
     // `variables`: at most max_stream_variables are streamed; `rate` in frames per second.
     void subscribeToJob(std::int64_t jobId, std::vector<std::string> variables, double rate, FrameEncoding encoding);
     // On the strand, once a simulate.start's job is compiled and queued (or refused).
@@ -81,6 +84,7 @@ private:
     // pool while the connection may be closing.
     std::mutex mLiveRunsMutex;
     std::vector<std::weak_ptr<LiveSession>> mLiveRuns;
+    std::vector<std::pair<std::weak_ptr<LiveSession>, std::uint64_t>> mLiveWatches;   // live.subscribe
     bool mLiveRunsClosed = false;
     std::uint64_t mStreams = 0;   // frame streams opened on this connection (QueuedFrame ids)
     std::function<void()> mAfterReply;

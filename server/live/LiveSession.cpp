@@ -148,14 +148,22 @@ void LiveSession::sendFrame(LivePacer::Clock::time_point now)
     auto samples = std::make_shared<FrameSamples>();
     samples->time.push_back(mSimulation.time());
     for (const LiveVariable& v : mVariables) samples->columns.push_back({v.ref.port->node()->value(v.ref.slot)});
-    StreamFrame frame;
-    frame.layout = mLayout;
-    frame.parts.push_back(std::move(samples));
-    frame.live = LiveFrameStamp{.sessionId = mConfig.id,
-                                .modelTime = mSimulation.time(),
-                                .wallTime = std::chrono::duration<double>(now - mStartedAt).count(),
-                                .speed = mPacer.speed()};
-    if (!mSink.frame(std::move(frame))) end(std::nullopt);
+    mKept.emplace_back(now, samples);
+    while (mKept.size() > kKeptFrames || now - mKept.front().first > kKeptTime) mKept.pop_front();
+    // Every socket gets the same samples (encoded once for all of them).
+    const auto frameOf = [&] {
+        StreamFrame frame;
+        frame.layout = mLayout;
+        frame.parts.push_back(samples);
+        frame.live = LiveFrameStamp{.sessionId = mConfig.id,
+                                    .modelTime = mSimulation.time(),
+                                    .wallTime = std::chrono::duration<double>(now - mStartedAt).count(),
+                                    .speed = mPacer.speed()};
+        return frame;
+    };
+    // A watcher too slow for its frames stops watching; the owner's ends the session.
+    std::erase_if(mWatchers, [&](auto& watcher) { return !watcher.second.frame(frameOf()); });
+    if (!mSink.frame(frameOf())) end(std::nullopt);
 }
 
 protocol::LiveStateData LiveSession::stateData() const
@@ -165,7 +173,7 @@ protocol::LiveStateData LiveSession::stateData() const
             .modelTime = mSimulation.time()};
 }
 
-void LiveSession::sendState(const std::optional<std::string>& reason, const std::string& message)
+void LiveSession::sendState(const std::optional<std::string>& reason, const std::string& message, bool toOwner)
 {
     protocol::LiveStateData state = stateData();
     protocol::LiveStateEvent event{.sessionId = static_cast<std::int64_t>(mConfig.id),
@@ -175,14 +183,19 @@ void LiveSession::sendState(const std::optional<std::string>& reason, const std:
                                    .modelTime = state.modelTime,
                                    .reason = reason,
                                    .message = message.empty() ? std::nullopt : std::optional(message)};
-    mSink.event(toJsonText(event));
+    const std::string text = toJsonText(event);
+    for (const auto& [id, watcher] : mWatchers) watcher.event(text);
+    if (toOwner) mSink.event(text);
 }
 
 void LiveSession::end(const std::optional<std::string>& reason, const std::string& message)
 {
     if (mStopped) return;
     mStopped = true;
+    // Without a reason the owner's socket is gone: only those watching are told.
     if (reason) sendState(reason, message);
+    else sendState("closed", "the session's owner disconnected", false);
+    mWatchers.clear();
     boost::asio::post(mStrand, [self = shared_from_this()] { self->mTimer.cancel(); });
     mEnded(mConfig.id);
 }
@@ -250,6 +263,39 @@ LiveSession::Reply LiveSession::stop(const std::optional<std::string>& reason)
 {
     std::lock_guard lock(mMutex);
     end(reason);
+    return stateReply();
+}
+
+std::uint64_t LiveSession::watch(LiveSessionSink sink)
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return 0;
+    if (!mKept.empty()) {
+        // The kept samples as one frame, stamped as the latest.
+        StreamFrame frame;
+        frame.layout = mLayout;
+        for (const auto& [at, samples] : mKept) frame.parts.push_back(samples);
+        frame.live = LiveFrameStamp{.sessionId = mConfig.id,
+                                    .modelTime = mKept.back().second->time.back(),
+                                    .wallTime = std::chrono::duration<double>(mKept.back().first - mStartedAt).count(),
+                                    .speed = mPacer.speed()};
+        if (!sink.frame(std::move(frame))) return 0;
+    }
+    const std::uint64_t id = mNextWatch++;
+    mWatchers.emplace(id, std::move(sink));
+    return id;
+}
+
+void LiveSession::unwatch(std::uint64_t watchId)
+{
+    std::lock_guard lock(mMutex);
+    mWatchers.erase(watchId);
+}
+
+LiveSession::Reply LiveSession::state() const
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) return liveRefusal("not_found", "the live session has ended");
     return stateReply();
 }
 

@@ -18,6 +18,7 @@
 #include <boost/asio/strand.hpp>
 
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -60,6 +61,10 @@ public:
     // Steps one tick runs before it lets other sessions have the thread.
     static constexpr std::chrono::milliseconds kTickBudget{10};
     static constexpr std::uint64_t kMaxStepRequest = 1'000'000;
+    // The samples kept for a socket that starts watching late (live.subscribe): this much
+    // wall time of frames, at most kKeptFrames (60 s at the highest frame rate).
+    static constexpr std::chrono::seconds kKeptTime{60};
+    static constexpr std::size_t kKeptFrames = 60 * 120;
 
     // A reply: the state after the request, or a protocol error code and message.
     struct Reply {
@@ -93,6 +98,11 @@ public:
     Reply stop(const std::optional<std::string>& reason);
     // A message from the owner: the idle timeout starts again.
     void touch();
+    // Another socket of the owner's watches the session: its first frame carries the kept
+    // samples, then it gets every frame and state event. Returns the watch's id for unwatch.
+    std::uint64_t watch(LiveSessionSink sink);
+    void unwatch(std::uint64_t watchId);
+    Reply state() const;
 
 private:
     void scheduleTick(bool now);
@@ -102,7 +112,8 @@ private:
     // Runs up to `steps` steps within kTickBudget; the steps run.
     std::uint64_t runSteps(std::uint64_t steps, LivePacer::Clock::time_point start);
     void sendFrame(LivePacer::Clock::time_point now);
-    void sendState(const std::optional<std::string>& reason = {}, const std::string& message = {});
+    void sendState(const std::optional<std::string>& reason = {}, const std::string& message = {},
+                   bool toOwner = true);
     protocol::LiveStateData stateData() const;
     Reply stateReply() const { return {.code = {}, .message = {}, .state = stateData()}; }
     void end(const std::optional<std::string>& reason, const std::string& message = {});
@@ -128,6 +139,9 @@ private:
     bool mStarted = false;
     bool mStopped = false;
     std::map<std::string, double> mPendingSets;
+    std::deque<std::pair<LivePacer::Clock::time_point, std::shared_ptr<const FrameSamples>>> mKept;
+    std::map<std::uint64_t, LiveSessionSink> mWatchers;
+    std::uint64_t mNextWatch = 1;
     std::map<std::string, LivePacer::Clock::time_point> mLastSetApplied;
 };
 

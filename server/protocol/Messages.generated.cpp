@@ -2145,4 +2145,20 @@ void to_json(nlohmann::json& j, const LiveStateEvent& v)
     if (v.message) j["message"] = *v.message;
 }
 
+void from_json(const nlohmann::json& j, LiveSubscribeRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    if (const auto x = j.find("frames"); x != j.end()) v.frames = x->get<std::string>();
+}
+
+void to_json(nlohmann::json& j, const LiveSubscribeRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.subscribe";
+    j["session_id"] = v.sessionId;
+    if (v.frames) j["frames"] = *v.frames;
+}
+
 } // namespace tlmhub::server::protocol

@@ -76,6 +76,7 @@ struct LiveStateData;
 struct LiveStateEvent;
 struct LiveStepRequest;
 struct LiveStopRequest;
+struct LiveSubscribeRequest;
 struct LiveValue;
 struct LogSubscribeRequest;
 struct LoginRequest;
@@ -1420,6 +1421,17 @@ struct LiveStateEvent {
 void from_json(const nlohmann::json& j, LiveStateEvent& v);
 void to_json(nlohmann::json& j, const LiveStateEvent& v);
 
+// Watch one of your live sessions from another socket: the first event.live.frame carries the
+// samples of its last 60 s, later ones follow as they are taken.
+struct LiveSubscribeRequest {
+    nlohmann::json id{};
+    // "type": always "live.subscribe"
+    std::int64_t sessionId{};
+    std::optional<std::string> frames;
+};
+void from_json(const nlohmann::json& j, LiveSubscribeRequest& v);
+void to_json(nlohmann::json& j, const LiveSubscribeRequest& v);
+
 // Calls visit.template operator()<T>("Name") for every struct, e.g. for a test that
 // round-trips examples through them all.
 template <typename Visitor>
@@ -1489,6 +1501,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LiveStateEvent>("LiveStateEvent");
     visit.template operator()<LiveStepRequest>("LiveStepRequest");
     visit.template operator()<LiveStopRequest>("LiveStopRequest");
+    visit.template operator()<LiveSubscribeRequest>("LiveSubscribeRequest");
     visit.template operator()<LiveValue>("LiveValue");
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");

@@ -156,7 +156,7 @@ protected:
     static void SetUpTestSuite()
     {
         startServer({}, {"pace", "setter", "restart", "stepper", "limited", "owner", "intruder", "leaver", "fast",
-                     "binary"});
+                     "binary", "watcher"});
     }
     static void TearDownTestSuite() { stopServer(); }
 };
@@ -283,6 +283,45 @@ TEST_F(LiveSessions, BinaryFramesCarryTheSameStampAndValues)
     EXPECT_NEAR(frame["model_time"].get<double>(), 20 * kServoStep, 1e-12);
     EXPECT_EQ(frame["time"], nlohmann::json::array({frame["model_time"]}));
     EXPECT_EQ(stepOut(frame), 0.2);
+}
+
+TEST_F(LiveSessions, ALateSubscriberGetsTheKeptSamplesThenTheLiveOnes)
+{
+    HttpClient user = loggedInAs(*server, "watcher");
+    WsClient ws = socketOf(user);
+    const std::int64_t id = start(ws, servoOf(user), {{"paused", true}});
+    ASSERT_GT(id, 0);
+    for (int steps : {10, 10, 10}) {
+        ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", steps}}).value("type", ""), "reply");
+        ASSERT_TRUE(until(ws, [](const nlohmann::json& e) { return isFrame(e) && e["model_time"].get<double>() > 0; }).is_object());
+        ws.events.clear();
+    }
+    // Another socket of the owner's: the first frame holds every frame so far.
+    WsClient late = socketOf(user);
+    const nlohmann::json subscribed = late.call("live.subscribe", {{"session_id", id}});
+    ASSERT_EQ(subscribed.value("type", ""), "reply") << subscribed.dump();
+    EXPECT_EQ(subscribed["data"]["state"], "paused");
+    nlohmann::json frame = until(late, isFrame);
+    ASSERT_TRUE(frame.is_object());
+    ASSERT_EQ(frame["time"].size(), 4u) << frame.dump();   // the start, and after each live.step
+    EXPECT_EQ(frame["time"][0].get<double>(), 0.0);
+    EXPECT_NEAR(frame["time"][3].get<double>(), 30 * kServoStep, 1e-12);
+    EXPECT_EQ(frame["variables"][kStepOut].size(), 4u);
+    EXPECT_NEAR(frame["model_time"].get<double>(), 30 * kServoStep, 1e-12);
+    // Then what the owner does shows on both.
+    ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 5}}).value("type", ""), "reply");
+    frame = until(late, isFrame);
+    ASSERT_TRUE(frame.is_object());
+    EXPECT_NEAR(frame["model_time"].get<double>(), 35 * kServoStep, 1e-12);
+    EXPECT_EQ(frame["time"].size(), 1u);
+    // The watcher leaves; the session goes on. The owner leaves; the session ends.
+    late = socketOf(user);
+    EXPECT_EQ(late.call("live.subscribe", {{"session_id", id}})["data"]["state"], "paused");
+    ASSERT_EQ(ws.call("live.resume", {{"session_id", id}})["data"]["state"], "running");
+    ws = WsClient(server->port(), user.token());
+    const nlohmann::json closed = until(late, [](const nlohmann::json& e) { return isState(e, "stopped"); });
+    ASSERT_TRUE(closed.is_object());
+    EXPECT_EQ(closed["reason"], "closed");
 }
 
 TEST_F(LiveSessions, AParameterOnlyARestartAppliesIsRefusedWithRestartRequired)

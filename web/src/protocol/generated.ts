@@ -105,7 +105,8 @@ export type ClientMessage =
     | LiveResumeRequest
     | LiveSpeedRequest
     | LiveStepRequest
-    | LiveStopRequest;
+    | LiveStopRequest
+    | LiveSubscribeRequest;
 /**
  * Model seconds per wall second (0.01 to 100), or "max": as fast as the server's slices allow.
  */
@@ -268,6 +269,7 @@ export interface ProtocolDefinitions {
     LiveFrameEvent?: LiveFrameEvent;
     BinaryLiveFrameHeader?: BinaryLiveFrameHeader;
     LiveStateEvent?: LiveStateEvent;
+    LiveSubscribeRequest?: LiveSubscribeRequest;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -1106,6 +1108,18 @@ export interface LiveStopRequest {
     type: 'live.stop';
     session_id: number;
 }
+/**
+ * Watch one of your live sessions from another socket: the first event.live.frame carries the samples of its last 60 s, later ones follow as they are taken.
+ */
+export interface LiveSubscribeRequest {
+    id: RequestId;
+    type: 'live.subscribe';
+    session_id: number;
+    /**
+     * How event.live.frame is sent (as in live.start).
+     */
+    frames?: 'json' | 'binary';
+}
 export interface EmptyData {}
 export interface ModelOpenedData {
     model_id: number;
@@ -1277,9 +1291,9 @@ export interface LiveStateEvent {
     achieved_speed: number;
     model_time: number;
     /**
-     * Why a session stopped.
+     * Why a session stopped (closed: its owner's socket ended; sent to the sockets that watch it).
      */
-    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown';
+    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown' | 'closed';
     message?: string;
 }
 export interface ModelSettingsData {

@@ -21,6 +21,7 @@ import type {
     LiveStateData,
     LiveStepRequest,
     LiveStopRequest,
+    LiveSubscribeRequest,
     LogSubscribeRequest,
     ModelCreateRequest,
     ModelGetData,
@@ -82,6 +83,7 @@ export interface RequestMap {
     'live.speed': { request: LiveSpeedRequest; reply: LiveStateData };
     'live.step': { request: LiveStepRequest; reply: LiveStateData };
     'live.stop': { request: LiveStopRequest; reply: LiveStateData };
+    'live.subscribe': { request: LiveSubscribeRequest; reply: LiveStateData };
 }
 
 export type RequestType = keyof RequestMap;
