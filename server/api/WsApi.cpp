@@ -261,6 +261,7 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
         if (type == "live.step")
             return liveReply(session->step(static_cast<std::uint64_t>(msg.get<protocol::LiveStepRequest>().steps)));
         if (type == "live.stop") return liveReply(session->stop("requested"));
+        if (type == "live.record") return recordLive(session);
         if (type == "live.subscribe") return watchLive(session, msg.get<protocol::LiveSubscribeRequest>());
     }
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
@@ -531,7 +532,12 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     job.hmf = mServices.models.hmf(model->id).value_or("");
     PreparedJob prepared;
     PrepareError error;
-    if (!prepareJob(job, mServices.options.limits, prepared, error)) return failure(error.code, error.message);
+    // A session streams its node values and records its frames (live.record): the model's own
+    // log is not read, and its log samples are held to the limit rather than refused for it.
+    JobRequest compiled = job;
+    compiled.settings.logSamples = std::min(kDefaultLogSamples, mServices.options.limits.maxLogSamples);
+    if (!prepareJob(compiled, mServices.options.limits, prepared, error)) return failure(error.code, error.message);
+    job.usedParameters = prepared.usedParameters;
     Simulation& simulation = *prepared.simulation;
     std::vector<std::string> names = request.variables.value_or(std::vector<std::string>{});
     if (names.empty())
@@ -552,6 +558,11 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     config.paused = request.paused.value_or(false);
     config.rate = std::min(request.rate.value_or(protocol::kDefaultFrameRate), protocol::kMaxFrameRate);
     const double start = prepared.start, step = prepared.step, stop = prepared.stop;
+    config.maxRecordedSamples = mServices.options.limits.maxLogSamples;
+    config.job = std::move(job);
+    config.resolved.start = start;
+    config.resolved.step = step;
+    config.resolved.stop = stop;
     auto session =
         mServices.liveSimulations.create(std::move(config), std::move(simulation), std::move(variables), std::move(sink));
     place.taken = true;
@@ -589,6 +600,40 @@ LiveSessionSink WsApi::liveSink(const std::optional<std::string>& frames)
         if (auto sender = weakSender.lock()) sender->send(std::move(text));
     };
     return sink;
+}
+
+WsApi::Reply WsApi::recordLive(const std::shared_ptr<LiveSession>& session)
+{
+    const LiveSessionConfig& config = session->config();
+    LiveRecording recording = session->recording();
+    const JobLimits& limits = mServices.options.limits;
+    const std::size_t bytes = recording.samples.byteSize();
+    if (mServices.queue.results().storedBytes(mUser.id) + bytes > limits.maxStoredBytesPerUser)
+        return failure("limit_exceeded", "your stored results would pass the limit of " +
+                                             std::to_string(limits.maxStoredBytesPerUser) +
+                                             " bytes (--max-stored-bytes-per-user): delete old runs first");
+    JobRequest job = config.job;
+    nlohmann::json changes = nlohmann::json::array();
+    for (const LiveChange& c : recording.changes)
+        changes.push_back({{"time", c.time}, {"name", c.name}, {"value", c.value}});
+    job.live = nlohmann::json{{"session_id", session->id()}, {"changes", changes}, {"full", recording.full}};
+    JobInfo resolved = config.resolved;
+    resolved.steps = recording.steps;
+    resolved.logSamples = recording.samples.time.size();
+    // Stored as a job that ran and finished, through the path a finished job's result takes.
+    JobStore& store = mServices.queue.store();
+    const std::int64_t jobId = store.create(job, resolved);
+    const std::string blob = recording.samples.serialize();
+    if (!store.markRunning(jobId) || !store.finish(jobId, JobState::Done, "", recording.steps, &blob)) {
+        store.remove(jobId);
+        return failure("internal", "the recording could not be stored");
+    }
+    store.label(jobId, "live session " + std::to_string(session->id()) + " (recorded)", std::nullopt);
+    if (job.modelId) store.dropOldResults(*job.modelId, limits.maxUnpinnedRunsPerModel);
+    return success(nlohmann::json{{"job_id", jobId},
+                                  {"samples", recording.samples.time.size()},
+                                  {"changes", changes},
+                                  {"full", recording.full}});
 }
 
 WsApi::Reply WsApi::watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request)

@@ -56,6 +56,8 @@ private:
     Reply startLive(const protocol::LiveStartRequest& request);
     // live.set, live.pause, ...: the session if this user owns it, else null.
     std::shared_ptr<LiveSession> ownLiveSession(std::int64_t sessionId);
+    // live.record: the session's samples and changes so far, stored as a finished job.
+    Reply recordLive(const std::shared_ptr<LiveSession>& session);
     Reply watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request);
     // Where a live session's frames and events for this connection go.
     LiveSessionSink liveSink(const std::optional<std::string>& frames);

@@ -61,6 +61,7 @@ nlohmann::json JobRequest::toJson() const
                           {"model_directory", modelDirectory}};
     if (!usedParameters.empty()) out["used_parameters"] = usedParameters;
     if (!keep) out["keep"] = false;
+    if (live) out["live"] = *live;
     return out;
 }
 
@@ -81,6 +82,7 @@ bool JobRequest::fromJson(const nlohmann::json& j, JobRequest& out)
         if (j.contains("used_parameters"))
             r.usedParameters = j.at("used_parameters").get<std::map<std::string, std::string>>();
         r.keep = j.value("keep", true);
+        if (j.contains("live")) r.live = j.at("live");
         out = std::move(r);
         return true;
     } catch (const nlohmann::json::exception&) {

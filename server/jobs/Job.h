@@ -51,6 +51,9 @@ struct JobRequest {
     // False: its results are given once (the first read of them drops them), so a script's
     // runs do not fill the owner's quota.
     bool keep = true;
+    // A live session's recording (live.record): {"session_id", "changes":[{time,name,value}]};
+    // such a job was never run as a job, its results are the session's samples.
+    std::optional<nlohmann::json> live;
 
     // Stored with the job so that it can be run again (rerun, restart).
     nlohmann::json toJson() const;

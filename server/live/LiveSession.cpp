@@ -44,6 +44,7 @@ LiveSession::LiveSession(boost::asio::any_io_executor executor, LiveSessionConfi
     for (const LiveVariable& v : mVariables) names.push_back(v.name);
     mLayout = std::make_shared<const FrameLayout>(std::move(names));
     for (const LiveValue& v : mLiveValues) mLivePaths.insert(v.path);
+    for (const LiveVariable& v : mVariables) mRecording.samples.columns.push_back({.name = v.name, .unit = {}, .data = {}});
     mStartedAt = mLastTouch = mConfig.clock();
 }
 
@@ -117,7 +118,9 @@ void LiveSession::applyDueSets(LivePacer::Clock::time_point now)
             continue;
         }
         // Checked when it was asked for: a live path and a finite value.
-        mSimulation.changeWhileRunning(it->first, it->second);
+        if (mSimulation.changeWhileRunning(it->first, it->second) &&
+            mRecording.changes.size() < mConfig.maxRecordedSamples)
+            mRecording.changes.push_back({.time = mSimulation.time(), .name = it->first, .value = it->second});
         last = now;
         it = mPendingSets.erase(it);
     }
@@ -149,6 +152,7 @@ void LiveSession::sendFrame(LivePacer::Clock::time_point now)
     samples->time.push_back(mSimulation.time());
     for (const LiveVariable& v : mVariables) samples->columns.push_back({v.ref.port->node()->value(v.ref.slot)});
     mKept.emplace_back(now, samples);
+    record(*samples);
     while (mKept.size() > kKeptFrames || now - mKept.front().first > kKeptTime) mKept.pop_front();
     // Every socket gets the same samples (encoded once for all of them).
     const auto frameOf = [&] {
@@ -284,6 +288,36 @@ std::uint64_t LiveSession::watch(LiveSessionSink sink)
     const std::uint64_t id = mNextWatch++;
     mWatchers.emplace(id, std::move(sink));
     return id;
+}
+
+void LiveSession::record(const FrameSamples& samples)
+{
+    if (mRecording.full) return;
+    LiveRecording& r = mRecording;
+    const double t = samples.time.back();
+    // A second frame of one step (a finished run, a live.step) replaces the first.
+    const bool again = !r.samples.time.empty() && r.samples.time.back() == t;
+    if (!again && r.samples.time.size() >= mConfig.maxRecordedSamples) {
+        r.full = true;
+        sendState(std::string("record_limit"),
+                  "the recording holds at most " + std::to_string(mConfig.maxRecordedSamples) +
+                      " samples (--max-log-samples): later samples are not recorded; the session goes on");
+        return;
+    }
+    if (!again) r.samples.time.push_back(t);
+    for (std::size_t i = 0; i < r.samples.columns.size(); ++i) {
+        auto& data = r.samples.columns[i].data;
+        if (again) data.back() = samples.columns[i].back();
+        else data.push_back(samples.columns[i].back());
+    }
+}
+
+LiveRecording LiveSession::recording() const
+{
+    std::lock_guard lock(mMutex);
+    LiveRecording copy = mRecording;
+    copy.steps = mSimulation.takenSteps();
+    return copy;
 }
 
 void LiveSession::unwatch(std::uint64_t watchId)

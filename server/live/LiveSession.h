@@ -6,10 +6,12 @@
 // display rate sends the streamed variables' current values as an event.live.frame.
 // Control (set, pause, speed, ...) comes from the owner's connection on other threads: the
 // session's state is guarded by a mutex, held by a tick only for one budget.
+#include "server/jobs/Job.h"
 #include "server/jobs/StreamFrame.h"
 #include "server/live/LivePacer.h"
 #include "server/protocol/Messages.generated.h"
 
+#include "core/ResultTable.h"
 #include "core/Results.h"
 #include "core/Simulation.h"
 
@@ -37,6 +39,12 @@ struct LiveSessionConfig {
     bool paused = false;
     double rate = 30.0;                  // frames per second
     std::chrono::milliseconds idleTimeout{600'000};
+    // Samples (and changes) a session records for live.record: the job log limit.
+    std::size_t maxRecordedSamples = 100'000;
+    // The job its model was compiled as, and its resolved start, step and stop: what live.record
+    // stores its run as.
+    JobRequest job;
+    JobInfo resolved;
     // Pacing reads this clock (tests inject one); the timer waits in real time.
     std::function<LivePacer::Clock::time_point()> clock;
 };
@@ -52,6 +60,22 @@ struct LiveSessionSink {
 struct LiveVariable {
     std::string name;
     VariableRef ref;
+};
+
+// A value live.set changed: applied after the step at model time `time`.
+struct LiveChange {
+    double time = 0.0;
+    std::string name;
+    double value = 0.0;
+};
+
+// What a session has run so far (live.record): every frame's sample since its start, up to
+// LiveSessionConfig::maxRecordedSamples, and every change applied.
+struct LiveRecording {
+    ResultTable samples;
+    std::vector<LiveChange> changes;
+    std::uint64_t steps = 0;   // taken since the start
+    bool full = false;         // the limit stopped the recording
 };
 
 class LiveSession : public std::enable_shared_from_this<LiveSession> {
@@ -80,6 +104,7 @@ public:
 
     std::uint64_t id() const { return mConfig.id; }
     std::int64_t ownerId() const { return mConfig.ownerId; }
+    const LiveSessionConfig& config() const { return mConfig; }
     // What live.set may change, with the values the run starts from (as live.start replies).
     const std::vector<LiveValue>& liveValues() const { return mLiveValues; }
 
@@ -103,8 +128,12 @@ public:
     std::uint64_t watch(LiveSessionSink sink);
     void unwatch(std::uint64_t watchId);
     Reply state() const;
+    // A copy of the samples and changes recorded since the start.
+    LiveRecording recording() const;
 
 private:
+    // Keeps a frame's sample for live.record, within the limit.
+    void record(const FrameSamples& samples);
     void scheduleTick(bool now);
     void tick();
     // The rest run with mMutex held.
@@ -143,6 +172,7 @@ private:
     std::map<std::uint64_t, LiveSessionSink> mWatchers;
     std::uint64_t mNextWatch = 1;
     std::map<std::string, LivePacer::Clock::time_point> mLastSetApplied;
+    LiveRecording mRecording;
 };
 
 } // namespace tlmhub::server

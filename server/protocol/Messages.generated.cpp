@@ -1977,6 +1977,52 @@ void to_json(nlohmann::json& j, const LiveStopRequest& v)
     j["session_id"] = v.sessionId;
 }
 
+void from_json(const nlohmann::json& j, LiveRecordRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+}
+
+void to_json(nlohmann::json& j, const LiveRecordRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.record";
+    j["session_id"] = v.sessionId;
+}
+
+void from_json(const nlohmann::json& j, LiveChange& v)
+{
+    j.at("time").get_to(v.time);
+    j.at("name").get_to(v.name);
+    j.at("value").get_to(v.value);
+}
+
+void to_json(nlohmann::json& j, const LiveChange& v)
+{
+    j = nlohmann::json::object();
+    j["time"] = v.time;
+    j["name"] = v.name;
+    j["value"] = v.value;
+}
+
+void from_json(const nlohmann::json& j, LiveRecordedData& v)
+{
+    j.at("job_id").get_to(v.jobId);
+    j.at("samples").get_to(v.samples);
+    j.at("changes").get_to(v.changes);
+    j.at("full").get_to(v.full);
+}
+
+void to_json(nlohmann::json& j, const LiveRecordedData& v)
+{
+    j = nlohmann::json::object();
+    j["job_id"] = v.jobId;
+    j["samples"] = v.samples;
+    j["changes"] = v.changes;
+    j["full"] = v.full;
+}
+
 void from_json(const nlohmann::json& j, LiveSpeedRequest& v)
 {
     if (const auto x = j.find("id"); x != j.end()) v.id = *x;

@@ -65,8 +65,11 @@ struct JobInfo;
 struct JobRequest;
 struct JobSettings;
 struct JobUpdate;
+struct LiveChange;
 struct LiveFrameEvent;
 struct LivePauseRequest;
+struct LiveRecordRequest;
+struct LiveRecordedData;
 struct LiveResumeRequest;
 struct LiveSetRequest;
 struct LiveSpeedRequest;
@@ -1321,6 +1324,39 @@ struct LiveStopRequest {
 void from_json(const nlohmann::json& j, LiveStopRequest& v);
 void to_json(nlohmann::json& j, const LiveStopRequest& v);
 
+// Store what the session has run since its start (every frame's sample, at most
+// --max-log-samples, and every live.set applied) as a finished run in the model's history,
+// owned by you; the session goes on. Each live.record stores a new run with everything from
+// the start.
+struct LiveRecordRequest {
+    nlohmann::json id{};
+    // "type": always "live.record"
+    std::int64_t sessionId{};
+};
+void from_json(const nlohmann::json& j, LiveRecordRequest& v);
+void to_json(nlohmann::json& j, const LiveRecordRequest& v);
+
+// A live.set as the session applied it: after the step at model time `time`, so samples from
+// the next one on show it.
+struct LiveChange {
+    double time{};
+    std::string name{};
+    double value{};
+};
+void from_json(const nlohmann::json& j, LiveChange& v);
+void to_json(nlohmann::json& j, const LiveChange& v);
+
+// The stored run: a done job (GET /api/v1/jobs/{job_id}/results gives the recorded samples of
+// the session's variables), named 'live session N (recorded)'.
+struct LiveRecordedData {
+    std::int64_t jobId{};
+    std::int64_t samples{};
+    std::vector<LiveChange> changes;
+    bool full{};
+};
+void from_json(const nlohmann::json& j, LiveRecordedData& v);
+void to_json(nlohmann::json& j, const LiveRecordedData& v);
+
 // Change the pace of a session.
 struct LiveSpeedRequest {
     nlohmann::json id{};
@@ -1490,8 +1526,11 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<JobRequest>("JobRequest");
     visit.template operator()<JobSettings>("JobSettings");
     visit.template operator()<JobUpdate>("JobUpdate");
+    visit.template operator()<LiveChange>("LiveChange");
     visit.template operator()<LiveFrameEvent>("LiveFrameEvent");
     visit.template operator()<LivePauseRequest>("LivePauseRequest");
+    visit.template operator()<LiveRecordRequest>("LiveRecordRequest");
+    visit.template operator()<LiveRecordedData>("LiveRecordedData");
     visit.template operator()<LiveResumeRequest>("LiveResumeRequest");
     visit.template operator()<LiveSetRequest>("LiveSetRequest");
     visit.template operator()<LiveSpeedRequest>("LiveSpeedRequest");

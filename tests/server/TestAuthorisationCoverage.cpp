@@ -153,6 +153,7 @@ const std::map<std::string, WsCase>& wsCases()
         {"live.speed", WsCase::Foreign},
         {"live.step", WsCase::Foreign},
         {"live.stop", WsCase::Foreign},
+        {"live.record", WsCase::Foreign},
         {"live.subscribe", WsCase::Foreign},
     };
     return cases;

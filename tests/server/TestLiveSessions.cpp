@@ -156,17 +156,19 @@ protected:
     static void SetUpTestSuite()
     {
         startServer({}, {"pace", "setter", "restart", "stepper", "limited", "owner", "intruder", "leaver", "fast",
-                     "binary", "watcher"});
+                     "binary", "watcher", "recorder", "recowner", "recsnoop"});
     }
     static void TearDownTestSuite() { stopServer(); }
 };
 
-// A node that runs one session at most, and ends a session after 1 s without a message.
+// A node that runs one session at most, ends a session after 1 s without a message, and
+// records at most 5 samples of one (the job log limit).
 class LiveSessionLimits : public LiveSessionsBase {
 protected:
     static void SetUpTestSuite()
     {
-        startServer({"--max-live-sessions", "1", "--live-idle-timeout", "1"}, {"first", "second", "idler"});
+        startServer({"--max-live-sessions", "1", "--live-idle-timeout", "1", "--max-log-samples", "5"},
+                    {"first", "second", "idler", "longrec"});
     }
     static void TearDownTestSuite() { stopServer(); }
 };
@@ -264,6 +266,85 @@ TEST_F(LiveSessions, ASetChangesTheStreamedVariableFromTheNextStepOn)
         ASSERT_TRUE(frame.is_object());
         EXPECT_EQ(stepOut(frame), 0.5);
     }
+}
+
+TEST_F(LiveSessions, ARecordedSessionIsARunInTheModelsHistoryWithItsSamplesAndChanges)
+{
+    HttpClient user = loggedInAs(*server, "recorder");
+    WsClient ws = socketOf(user);
+    const std::int64_t model = servoOf(user);
+    const std::int64_t id = start(ws, model, {{"paused", true}});
+    ASSERT_GT(id, 0);
+    ASSERT_TRUE(until(ws, [](const nlohmann::json& e) { return isState(e, "paused"); }).is_object());
+    ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 10}}).value("type", ""), "reply");
+    ASSERT_TRUE(until(ws, [](const nlohmann::json& e) { return isFrame(e) && e["model_time"].get<double>() > 0; }).is_object());
+    ASSERT_EQ(ws.call("live.set", {{"session_id", id}, {"name", "Step.y_0"}, {"value", 0.9}}).value("type", ""), "reply");
+    ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 1}}).value("type", ""), "reply");
+    ASSERT_TRUE(until(ws, [](const nlohmann::json& e) {
+        return isFrame(e) && e["model_time"].get<double>() > 10.5 * kServoStep;
+    }).is_object());
+    ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 5}}).value("type", ""), "reply");
+    ASSERT_TRUE(until(ws, [](const nlohmann::json& e) {
+        return isFrame(e) && e["model_time"].get<double>() > 15.5 * kServoStep;
+    }).is_object());
+
+    const nlohmann::json recorded = ws.call("live.record", {{"session_id", id}});
+    ASSERT_EQ(recorded.value("type", ""), "reply") << recorded.dump();
+    const nlohmann::json& data = recorded["data"];
+    const std::int64_t job = data["job_id"].get<std::int64_t>();
+    EXPECT_EQ(data["full"], false);
+    EXPECT_EQ(data["samples"], 4) << "start, after 10, 11 and 16 steps: " << data.dump();
+    ASSERT_EQ(data["changes"].size(), 1u) << data.dump();
+    EXPECT_EQ(data["changes"][0]["name"], "Step.y_0");
+    EXPECT_EQ(data["changes"][0]["value"], 0.9);
+    const double changedAt = data["changes"][0]["time"].get<double>();
+    EXPECT_NEAR(changedAt, 10 * kServoStep, 1e-12);
+    // The session goes on after a recording; stopping it leaves the run.
+    EXPECT_EQ(ws.call("live.stop", {{"session_id", id}})["data"]["state"], "stopped");
+
+    const std::string path = "/api/v1/jobs/" + std::to_string(job);
+    const auto info = user.get(path);
+    ASSERT_EQ(info.status, 200) << info.body;
+    EXPECT_EQ(info.json()["state"], "done");
+    EXPECT_EQ(info.json()["model_id"], model);
+    EXPECT_EQ(info.json()["name"], "live session " + std::to_string(id) + " (recorded)");
+    const auto history = user.get("/api/v1/jobs?model_id=" + std::to_string(model));
+    ASSERT_EQ(history.status, 200) << history.body;
+    bool listed = false;
+    for (const auto& run : history.json()) listed = listed || run["id"] == job;
+    EXPECT_TRUE(listed) << history.body;
+
+    const auto results = user.get(path + "/results");
+    ASSERT_EQ(results.status, 200) << results.body;
+    const nlohmann::json table = results.json();
+    ASSERT_EQ(table["time"].size(), 4u) << results.body;
+    ASSERT_EQ(table["variables"].size(), 1u);
+    EXPECT_EQ(table["variables"][0]["name"], kStepOut);
+    const nlohmann::json& values = table["variables"][0]["data"];
+    ASSERT_EQ(values.size(), 4u);
+    for (std::size_t i = 1; i < values.size(); ++i) {
+        const double t = table["time"][i].get<double>();
+        EXPECT_EQ(values[i].get<double>(), t > changedAt + 1e-12 ? 0.9 : 0.2) << "at " << t;
+    }
+    EXPECT_NEAR(table["time"][3].get<double>(), 16 * kServoStep, 1e-12);
+}
+
+TEST_F(LiveSessions, AnotherUserCanNeitherRecordASessionNorReadItsRecording)
+{
+    HttpClient owner = loggedInAs(*server, "recowner");
+    HttpClient snoop = loggedInAs(*server, "recsnoop");
+    WsClient ws = socketOf(owner);
+    WsClient other = socketOf(snoop);
+    const std::int64_t id = start(ws, servoOf(owner), {{"paused", true}});
+    ASSERT_GT(id, 0);
+    EXPECT_EQ(errorCode(other.call("live.record", {{"session_id", id}})), "not_found");
+    const nlohmann::json recorded = ws.call("live.record", {{"session_id", id}});
+    ASSERT_EQ(recorded.value("type", ""), "reply") << recorded.dump();
+    const std::string path = "/api/v1/jobs/" + std::to_string(recorded["data"]["job_id"].get<std::int64_t>());
+    EXPECT_EQ(snoop.get(path).status, 404);
+    EXPECT_EQ(snoop.get(path + "/results").status, 404);
+    EXPECT_EQ(owner.get(path + "/results").status, 200);
+    EXPECT_EQ(ws.call("live.stop", {{"session_id", id}})["data"]["state"], "stopped");
 }
 
 TEST_F(LiveSessions, BinaryFramesCarryTheSameStampAndValues)
@@ -501,4 +582,37 @@ TEST_F(LiveSessionLimits, ASessionWhoseOwnerSendsNothingEndsAfterTheIdleTimeout)
     EXPECT_EQ(stopped["reason"], "idle_timeout");
     EXPECT_NE(stopped.value("message", "").find("--live-idle-timeout"), std::string::npos) << stopped.dump();
     EXPECT_EQ(errorCode(ws.call("live.resume", {{"session_id", reply["data"]["session_id"]}})), "not_found");
+}
+
+TEST_F(LiveSessionLimits, ARecordingPastTheLogLimitStopsNamingTheFlagAndTheSessionGoesOn)
+{
+    HttpClient user = loggedInAs(*server, "longrec");
+    const std::int64_t model = servoOf(user);
+    WsClient ws = socketOf(user);
+    // The node's one place may still be held by another test's session for a moment.
+    nlohmann::json reply;
+    for (int tries = 0; tries < 100; ++tries) {
+        reply = ws.call("live.start", {{"model_id", model}, {"speed", 1.0}, {"variables", {kStepOut}}});
+        if (errorCode(reply) != "busy") break;
+        std::this_thread::sleep_for(50ms);
+    }
+    ASSERT_EQ(reply.value("type", ""), "reply") << reply.dump();
+    const std::int64_t id = reply["data"]["session_id"].get<std::int64_t>();
+    const nlohmann::json limit = until(ws, [](const nlohmann::json& e) {
+        return e.value("type", "") == "event.live.state" && e.value("reason", "") == "record_limit";
+    });
+    ASSERT_TRUE(limit.is_object()) << "the recording never reached its limit";
+    EXPECT_EQ(limit["state"], "running");
+    EXPECT_NE(limit.value("message", "").find("--max-log-samples"), std::string::npos) << limit.dump();
+    const double at = limit["model_time"].get<double>();
+    // The session goes on.
+    EXPECT_TRUE(until(ws, [at](const nlohmann::json& e) { return isFrame(e) && e["model_time"].get<double>() > at; }).is_object());
+    const nlohmann::json recorded = ws.call("live.record", {{"session_id", id}});
+    ASSERT_EQ(recorded.value("type", ""), "reply") << recorded.dump();
+    EXPECT_EQ(recorded["data"]["full"], true);
+    EXPECT_EQ(recorded["data"]["samples"], 5);
+    const auto results = user.get("/api/v1/jobs/" + std::to_string(recorded["data"]["job_id"].get<std::int64_t>()) + "/results");
+    ASSERT_EQ(results.status, 200) << results.body;
+    EXPECT_EQ(results.json()["time"].size(), 5u);
+    EXPECT_EQ(ws.call("live.stop", {{"session_id", id}})["data"]["state"], "stopped");
 }

@@ -106,6 +106,7 @@ export type ClientMessage =
     | LiveSpeedRequest
     | LiveStepRequest
     | LiveStopRequest
+    | LiveRecordRequest
     | LiveSubscribeRequest;
 /**
  * Model seconds per wall second (0.01 to 100), or "max": as fast as the server's slices allow.
@@ -261,6 +262,9 @@ export interface ProtocolDefinitions {
     LivePauseRequest?: LivePauseRequest;
     LiveResumeRequest?: LiveResumeRequest;
     LiveStopRequest?: LiveStopRequest;
+    LiveRecordRequest?: LiveRecordRequest;
+    LiveChange?: LiveChange;
+    LiveRecordedData?: LiveRecordedData;
     LiveSpeedRequest?: LiveSpeedRequest;
     LiveStepRequest?: LiveStepRequest;
     LiveStartedData?: LiveStartedData;
@@ -1109,6 +1113,14 @@ export interface LiveStopRequest {
     session_id: number;
 }
 /**
+ * Store what the session has run since its start (every frame's sample, at most --max-log-samples, and every live.set applied) as a finished run in the model's history, owned by you; the session goes on. Each live.record stores a new run with everything from the start.
+ */
+export interface LiveRecordRequest {
+    id: RequestId;
+    type: 'live.record';
+    session_id: number;
+}
+/**
  * Watch one of your live sessions from another socket: the first event.live.frame carries the samples of its last 60 s, later ones follow as they are taken.
  */
 export interface LiveSubscribeRequest {
@@ -1291,9 +1303,9 @@ export interface LiveStateEvent {
     achieved_speed: number;
     model_time: number;
     /**
-     * Why a session stopped (closed: its owner's socket ended; sent to the sockets that watch it).
+     * Why a session stopped (closed: its owner's socket ended; sent to the sockets that watch it); record_limit: the session goes on, but its recording for live.record holds the most samples --max-log-samples allows and keeps no more (message names the limit).
      */
-    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown' | 'closed';
+    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown' | 'closed' | 'record_limit';
     message?: string;
 }
 export interface ModelSettingsData {
@@ -1527,6 +1539,29 @@ export interface CommentCreate {
  */
 export interface GradeUpdate {
     grade: number | null;
+}
+/**
+ * A live.set as the session applied it: after the step at model time `time`, so samples from the next one on show it.
+ */
+export interface LiveChange {
+    time: number;
+    name: string;
+    value: number;
+}
+/**
+ * The stored run: a done job (GET /api/v1/jobs/{job_id}/results gives the recorded samples of the session's variables), named 'live session N (recorded)'.
+ */
+export interface LiveRecordedData {
+    job_id: number;
+    /**
+     * Samples recorded (one per frame).
+     */
+    samples: number;
+    changes: LiveChange[];
+    /**
+     * The recording reached --max-log-samples and holds only its first samples.
+     */
+    full: boolean;
 }
 export interface LiveStartedData {
     session_id: number;

@@ -13,6 +13,8 @@ import type {
     DisconnectRequest,
     EmptyData,
     LivePauseRequest,
+    LiveRecordRequest,
+    LiveRecordedData,
     LiveResumeRequest,
     LiveSetRequest,
     LiveSpeedRequest,
@@ -83,6 +85,7 @@ export interface RequestMap {
     'live.speed': { request: LiveSpeedRequest; reply: LiveStateData };
     'live.step': { request: LiveStepRequest; reply: LiveStateData };
     'live.stop': { request: LiveStopRequest; reply: LiveStateData };
+    'live.record': { request: LiveRecordRequest; reply: LiveRecordedData };
     'live.subscribe': { request: LiveSubscribeRequest; reply: LiveStateData };
 }
 
