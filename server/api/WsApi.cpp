@@ -620,15 +620,12 @@ WsApi::Reply WsApi::recordLive(const std::shared_ptr<LiveSession>& session)
     JobInfo resolved = config.resolved;
     resolved.steps = recording.steps;
     resolved.logSamples = recording.samples.time.size();
-    // Stored as a job that ran and finished, through the path a finished job's result takes.
+    // Stored as a job that ran and finished, in one transaction: it is never queued where a
+    // node's job workers could claim it. A store failure throws (nothing is stored).
     JobStore& store = mServices.queue.store();
-    const std::int64_t jobId = store.create(job, resolved);
-    const std::string blob = recording.samples.serialize();
-    if (!store.markRunning(jobId) || !store.finish(jobId, JobState::Done, "", recording.steps, &blob)) {
-        store.remove(jobId);
-        return failure("internal", "the recording could not be stored");
-    }
-    store.label(jobId, "live session " + std::to_string(session->id()) + " (recorded)", std::nullopt);
+    const std::int64_t jobId =
+        store.createFinished(job, resolved, recording.steps, recording.samples.serialize(),
+                             "live session " + std::to_string(session->id()) + " (recorded)");
     if (job.modelId) store.dropOldResults(*job.modelId, limits.maxUnpinnedRunsPerModel);
     return success(nlohmann::json{{"job_id", jobId},
                                   {"samples", recording.samples.time.size()},

@@ -29,6 +29,14 @@ public:
     };
     virtual Admission createWithinQueueLimit(const JobRequest& request, const JobInfo& resolved, int maxQueued) = 0;
 
+    // A job that ran and finished, stored in one transaction: the row `create` would insert,
+    // then what markRunning, finish(Done, "", steps, &resultBlob) and label(name) would set
+    // (state done, started and finished now, progress 1, the result, the name). It is never
+    // queued where another transaction can see it, so no node's claim can take it. Returns
+    // the job id; throws (nothing stored) when it cannot be stored.
+    virtual std::int64_t createFinished(const JobRequest& request, const JobInfo& resolved, std::uint64_t steps,
+                                        const std::string& resultBlob, const std::string& name) = 0;
+
     virtual std::optional<JobInfo> info(std::int64_t id) = 0;
     // The stored request's JSON text (JobRequest::toJson).
     virtual std::optional<std::string> requestText(std::int64_t id) = 0;

@@ -1,3 +1,4 @@
+#include "server/store/StoreError.h"
 #include "server/store/UnixTime.h"
 #include "server/store/postgres/PostgresStores.h"
 
@@ -149,6 +150,29 @@ JobStore::Admission PostgresJobStore::createWithinQueueLimit(const JobRequest& r
         admission.id = insertQueuedJob(c, tx, request, resolved);
         tx.commit();
         return admission;
+    });
+}
+
+std::int64_t PostgresJobStore::createFinished(const JobRequest& request, const JobInfo& resolved,
+                                             std::uint64_t steps, const std::string& resultBlob,
+                                             const std::string& name)
+{
+    return mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        // create, markRunning, finish and label in one transaction: no claim sees it queued.
+        pqxx::work tx(c.raw());
+        const std::int64_t id = insertQueuedJob(c, tx, request, resolved);
+        const auto now = static_cast<std::int64_t>(unixNow());
+        if (c.exec(tx, kMarkRunning, now, id).affected_rows() != 1 ||
+            c.exec(tx, kFinish, jobStateName(JobState::Done), std::string(), static_cast<std::int64_t>(steps), now,
+                   true, id)
+                    .affected_rows() != 1)
+            throw StoreError(StoreErrc::Internal, "the finished job could not be stored");
+        // Sent as binary (bytea) data, as finish sends it.
+        c.exec(tx, kStoreResult, id, pqxx::binarystring(resultBlob.data(), resultBlob.size()));
+        if (c.exec(tx, kLabel, name, orNull(std::optional<std::string>()), id).affected_rows() != 1)
+            throw StoreError(StoreErrc::Internal, "the finished job could not be stored");
+        tx.commit();
+        return id;
     });
 }
 

@@ -1,3 +1,4 @@
+#include "server/store/StoreError.h"
 #include "server/store/UnixTime.h"
 #include "server/store/sqlite/SqliteStores.h"
 
@@ -95,6 +96,52 @@ std::int64_t insertQueuedJob(SqliteConnection& c, const JobRequest& request, con
     return static_cast<std::int64_t>(c.db().getLastInsertRowid());
 }
 
+bool markJobRunning(SqliteConnection& c, std::int64_t id, std::int64_t now)
+{
+    auto q = c.prepared("UPDATE jobs SET state = 'running', started_at = ?, progress = 0"
+                        " WHERE id = ? AND state = 'queued'");
+    q->bind(1, now);
+    q->bind(2, id);
+    return q->exec() == 1;
+}
+
+// finish's statements; the caller holds the transaction.
+bool finishJob(SqliteConnection& c, std::int64_t id, JobState state, const std::string& error, std::uint64_t steps,
+               std::int64_t now, const std::string* resultBlob)
+{
+    {
+        auto q = c.prepared("UPDATE jobs SET state = ?, error = ?, steps = ?, finished_at = ?,"
+                            " progress = CASE WHEN ? THEN 1 ELSE progress END"
+                            " WHERE id = ? AND state IN ('queued', 'running')");
+        q->bind(1, jobStateName(state));
+        q->bind(2, error);
+        q->bind(3, static_cast<std::int64_t>(steps));
+        q->bind(4, now);
+        q->bind(5, state == JobState::Done ? 1 : 0);
+        q->bind(6, id);
+        if (q->exec() != 1) return false;
+    }
+    if (resultBlob) {
+        auto insert = c.prepared("INSERT OR REPLACE INTO job_results(job_id, data) VALUES(?, ?)");
+        insert->bind(1, id);
+        insert->bindNoCopy(2, resultBlob->data(), static_cast<int>(resultBlob->size()));
+        insert->exec();
+    }
+    return true;
+}
+
+bool labelJob(SqliteConnection& c, std::int64_t id, const std::optional<std::string>& name,
+              std::optional<bool> pinned)
+{
+    auto q = c.prepared("UPDATE jobs SET name = COALESCE(?, name), pinned = COALESCE(?, pinned) WHERE id = ?");
+    if (name) q->bind(1, *name);
+    else q->bind(1);
+    if (pinned) q->bind(2, *pinned ? 1 : 0);
+    else q->bind(2);
+    q->bind(3, id);
+    return q->exec() == 1;
+}
+
 } // namespace
 
 std::int64_t SqliteJobStore::create(const JobRequest& request, const JobInfo& resolved)
@@ -119,6 +166,22 @@ JobStore::Admission SqliteJobStore::createWithinQueueLimit(const JobRequest& req
         admission.id = insertQueuedJob(c, request, resolved);
         transaction.commit();
         return admission;
+    });
+}
+
+std::int64_t SqliteJobStore::createFinished(const JobRequest& request, const JobInfo& resolved, std::uint64_t steps,
+                                           const std::string& resultBlob, const std::string& name)
+{
+    const auto now = static_cast<std::int64_t>(unixNow());
+    return mDb.run([&](SqliteConnection& c) {
+        // create, markRunning, finish and label in one transaction: no claim sees it queued.
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        const std::int64_t id = insertQueuedJob(c, request, resolved);
+        if (!markJobRunning(c, id, now) || !finishJob(c, id, JobState::Done, "", steps, now, &resultBlob) ||
+            !labelJob(c, id, name, std::nullopt))
+            throw StoreError(StoreErrc::Internal, "the finished job could not be stored");
+        transaction.commit();
+        return id;
     });
 }
 
@@ -175,15 +238,7 @@ std::vector<JobInfo> SqliteJobStore::listForModel(std::int64_t modelId, std::opt
 
 bool SqliteJobStore::label(std::int64_t id, const std::optional<std::string>& name, std::optional<bool> pinned)
 {
-    return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE jobs SET name = COALESCE(?, name), pinned = COALESCE(?, pinned) WHERE id = ?");
-        if (name) q->bind(1, *name);
-        else q->bind(1);
-        if (pinned) q->bind(2, *pinned ? 1 : 0);
-        else q->bind(2);
-        q->bind(3, id);
-        return q->exec() == 1;
-    });
+    return mDb.run([&](SqliteConnection& c) { return labelJob(c, id, name, pinned); });
 }
 
 int SqliteJobStore::dropOldResults(std::int64_t modelId, int keep)
@@ -245,13 +300,7 @@ std::vector<JobInfo> SqliteJobStore::listInState(JobState state)
 bool SqliteJobStore::markRunning(std::int64_t id)
 {
     const auto now = static_cast<std::int64_t>(unixNow());
-    return mDb.run([&](SqliteConnection& c) {
-        auto q = c.prepared("UPDATE jobs SET state = 'running', started_at = ?, progress = 0"
-                            " WHERE id = ? AND state = 'queued'");
-        q->bind(1, now);
-        q->bind(2, id);
-        return q->exec() == 1;
-    });
+    return mDb.run([&](SqliteConnection& c) { return markJobRunning(c, id, now); });
 }
 
 void SqliteJobStore::setProgress(std::int64_t id, double progress)
@@ -270,24 +319,7 @@ bool SqliteJobStore::finish(std::int64_t id, JobState state, const std::string& 
     const auto now = static_cast<std::int64_t>(unixNow());
     return mDb.run([&](SqliteConnection& c) {
         SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
-        {
-            auto q = c.prepared("UPDATE jobs SET state = ?, error = ?, steps = ?, finished_at = ?,"
-                                " progress = CASE WHEN ? THEN 1 ELSE progress END"
-                                " WHERE id = ? AND state IN ('queued', 'running')");
-            q->bind(1, jobStateName(state));
-            q->bind(2, error);
-            q->bind(3, static_cast<std::int64_t>(steps));
-            q->bind(4, now);
-            q->bind(5, state == JobState::Done ? 1 : 0);
-            q->bind(6, id);
-            if (q->exec() != 1) return false;
-        }
-        if (resultBlob) {
-            auto insert = c.prepared("INSERT OR REPLACE INTO job_results(job_id, data) VALUES(?, ?)");
-            insert->bind(1, id);
-            insert->bindNoCopy(2, resultBlob->data(), static_cast<int>(resultBlob->size()));
-            insert->exec();
-        }
+        if (!finishJob(c, id, state, error, steps, now, resultBlob)) return false;
         transaction.commit();
         return true;
     });

@@ -75,6 +75,8 @@ public:
     explicit SqliteJobStore(SqliteDatabase& db) : mDb(db) {}
     std::int64_t create(const JobRequest& request, const JobInfo& resolved) override;
     Admission createWithinQueueLimit(const JobRequest& request, const JobInfo& resolved, int maxQueued) override;
+    std::int64_t createFinished(const JobRequest& request, const JobInfo& resolved, std::uint64_t steps,
+                                const std::string& resultBlob, const std::string& name) override;
     std::optional<JobInfo> info(std::int64_t id) override;
     std::optional<std::string> requestText(std::int64_t id) override;
     std::vector<JobInfo> listForOwner(std::int64_t ownerId) override;

@@ -1,6 +1,7 @@
 // JobStore's contract (server/store/JobStore.h) on both back ends.
 #include "StoreBackends.h"
 
+#include "server/store/JobLeaseStore.h"
 #include "server/store/UnixTime.h"
 
 #include <algorithm>
@@ -407,6 +408,75 @@ TEST_P(JobStoreConformance, LabelSetsNameAndPinnedWhereGiven)
     EXPECT_EQ(store().jobs().info(id)->name, "");
     EXPECT_FALSE(store().jobs().info(id)->pinned);
     EXPECT_FALSE(store().jobs().label(id + 100, std::string("x"), true));
+}
+
+TEST_P(JobStoreConformance, CreateFinishedStoresADoneJobThatNoClaimTakes)
+{
+    // The same run stored the three-call way (create, markRunning, finish, label) to compare.
+    const std::int64_t ranBefore = addModelRun(1, 10, {{"Gain.k", "2"}});
+    ASSERT_TRUE(store().jobs().label(ranBefore, std::string("ran"), std::nullopt));
+    const std::int64_t queued = addModelRun(1, 10, {}, false);
+
+    JobRequest request = jobRequest(1);
+    request.modelId = 10;
+    request.parameters = {{"Gain.k", "2"}};
+    const std::string blob("recorded\0bytes\xff", 15);   // bytes a text round trip would change
+    const long long before = unixNow();
+    const std::int64_t id =
+        store().jobs().createFinished(request, resolvedSettings(), 10, blob, "live session 3 (recorded) \xc2\xb5");
+    const long long after = unixNow();
+    EXPECT_GT(id, queued);
+
+    // No node's claim takes it: right after, a claim hands out the queued job and nothing else.
+    ClaimRequest claim;
+    claim.nodeId = "node-a";
+    claim.count = 10;
+    claim.maxRunningPerUser = 10;
+    claim.leaseTime = std::chrono::milliseconds(60'000);
+    const auto claimed = store().jobLeases().claim(claim);
+    ASSERT_EQ(claimed.size(), 1u);
+    EXPECT_EQ(claimed[0].jobId, queued);
+    EXPECT_TRUE(store().jobLeases().claim(claim).empty());
+    EXPECT_FALSE(store().jobLeases().holder(id));
+    EXPECT_TRUE(store().jobs().listInState(JobState::Queued).empty());
+
+    const JobInfo info = *store().jobs().info(id);
+    const JobInfo ran = *store().jobs().info(ranBefore);
+    EXPECT_EQ(info.state, JobState::Done);
+    EXPECT_EQ(info.ownerId, 1);
+    EXPECT_EQ(info.modelId, 10);
+    EXPECT_EQ(info.progress, 1.0);
+    EXPECT_EQ(info.error, "");
+    EXPECT_EQ(info.steps, 10u);
+    EXPECT_EQ(info.name, "live session 3 (recorded) \xc2\xb5");
+    EXPECT_FALSE(info.pinned);
+    EXPECT_FALSE(info.resultsDropped);
+    EXPECT_GE(info.createdAt, before);
+    EXPECT_LE(info.finishedAt, after);
+    EXPECT_GE(info.startedAt, info.createdAt);
+    EXPECT_GE(info.finishedAt, info.startedAt);
+    EXPECT_GT(info.startedAt, 0);
+    EXPECT_TRUE(sameBits(info.start, ran.start));
+    EXPECT_TRUE(sameBits(info.step, ran.step));
+    EXPECT_TRUE(sameBits(info.stop, ran.stop));
+    EXPECT_EQ(info.logSamples, ran.logSamples);
+    EXPECT_TRUE(store().results().has(id));
+    EXPECT_EQ(store().results().blob(id), blob);
+    EXPECT_EQ(store().jobs().requestText(id), store().jobs().requestText(ranBefore));
+    EXPECT_EQ(store().jobs().listInState(JobState::Done).back().id, id);
+
+    // In the model's history like a run that finished, with its overrides.
+    const auto history = store().jobs().listForModel(10, std::nullopt, std::nullopt, 100);
+    ASSERT_EQ(idsOf(history), (std::vector<std::int64_t>{id, queued, ranBefore}));
+    EXPECT_EQ(history[0].state, JobState::Done);
+    EXPECT_EQ(history[0].name, info.name);
+    EXPECT_EQ(history[0].parameters, history[2].parameters);
+    EXPECT_EQ(history[0].usedParameters, history[2].usedParameters);
+    EXPECT_EQ(idsOf(store().jobs().listForModel(10, 1, std::nullopt, 100)), idsOf(history));
+    // And its results are dropped like a finished run's.
+    EXPECT_EQ(store().jobs().dropOldResults(10, 0), 2);
+    EXPECT_FALSE(store().results().has(id));
+    EXPECT_TRUE(store().jobs().info(id)->resultsDropped);
 }
 
 TEST_P(JobStoreConformance, DropOldResultsKeepsTheNewestUnpinnedAndEveryPinnedRun)
