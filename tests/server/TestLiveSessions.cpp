@@ -173,6 +173,18 @@ protected:
     static void TearDownTestSuite() { stopServer(); }
 };
 
+// live.start on a node with one place, which another test's session may still hold for a moment.
+nlohmann::json startOnceThePlaceIsFree(WsClient& ws, const nlohmann::json& params)
+{
+    nlohmann::json reply;
+    for (int tries = 0; tries < 100; ++tries) {
+        reply = ws.call("live.start", params);
+        if (errorCode(reply) != "busy") break;
+        std::this_thread::sleep_for(50ms);
+    }
+    return reply;
+}
+
 } // namespace
 
 TEST_F(LiveSessions, ModelTimeFollowsTheWallClockTimesTheSpeedOrTheShortfallIsReported)
@@ -569,13 +581,8 @@ TEST_F(LiveSessionLimits, ASessionWhoseOwnerSendsNothingEndsAfterTheIdleTimeout)
     HttpClient user = loggedInAs(*server, "idler");
     const std::int64_t model = servoOf(user);
     WsClient ws = socketOf(user);
-    // The node's one place may still be held by the previous test's session for a moment.
-    nlohmann::json reply;
-    for (int tries = 0; tries < 100; ++tries) {
-        reply = ws.call("live.start", {{"model_id", model}, {"paused", true}, {"variables", {kStepOut}}});
-        if (errorCode(reply) != "busy") break;
-        std::this_thread::sleep_for(50ms);
-    }
+    const nlohmann::json reply =
+        startOnceThePlaceIsFree(ws, {{"model_id", model}, {"paused", true}, {"variables", {kStepOut}}});
     ASSERT_EQ(reply.value("type", ""), "reply") << reply.dump();
     const nlohmann::json stopped = until(ws, [](const nlohmann::json& e) { return isState(e, "stopped"); });
     ASSERT_TRUE(stopped.is_object());
@@ -589,13 +596,8 @@ TEST_F(LiveSessionLimits, ARecordingPastTheLogLimitStopsNamingTheFlagAndTheSessi
     HttpClient user = loggedInAs(*server, "longrec");
     const std::int64_t model = servoOf(user);
     WsClient ws = socketOf(user);
-    // The node's one place may still be held by another test's session for a moment.
-    nlohmann::json reply;
-    for (int tries = 0; tries < 100; ++tries) {
-        reply = ws.call("live.start", {{"model_id", model}, {"speed", 1.0}, {"variables", {kStepOut}}});
-        if (errorCode(reply) != "busy") break;
-        std::this_thread::sleep_for(50ms);
-    }
+    const nlohmann::json reply =
+        startOnceThePlaceIsFree(ws, {{"model_id", model}, {"speed", 1.0}, {"variables", {kStepOut}}});
     ASSERT_EQ(reply.value("type", ""), "reply") << reply.dump();
     const std::int64_t id = reply["data"]["session_id"].get<std::int64_t>();
     const nlohmann::json limit = until(ws, [](const nlohmann::json& e) {
