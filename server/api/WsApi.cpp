@@ -539,10 +539,17 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     if (!prepareJob(compiled, mServices.options.limits, prepared, error)) return failure(error.code, error.message);
     job.usedParameters = prepared.usedParameters;
     Simulation& simulation = *prepared.simulation;
+    // Named variables: as many as an animated diagram of a large model needs; none named: the
+    // first logged ones, as a job stream shows.
     std::vector<std::string> names = request.variables.value_or(std::vector<std::string>{});
-    if (names.empty())
+    if (names.size() > protocol::kMaxLiveVariables)
+        return failure("limit_exceeded", "variables: a live session streams at most " +
+                                             std::to_string(protocol::kMaxLiveVariables) + " variables, " +
+                                             std::to_string(names.size()) + " were named");
+    if (names.empty()) {
         for (const LoggedVariable& v : listLoggedVariables(simulation.system())) names.push_back(v.fullName);
-    if (names.size() > protocol::kMaxStreamVariables) names.resize(protocol::kMaxStreamVariables);
+        if (names.size() > protocol::kMaxStreamVariables) names.resize(protocol::kMaxStreamVariables);
+    }
     std::vector<LiveVariable> variables;
     for (const std::string& name : names) {
         Result<VariableRef> ref = resolveVariable(simulation.system(), name);
@@ -558,7 +565,13 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     config.paused = request.paused.value_or(false);
     config.rate = std::min(request.rate.value_or(protocol::kDefaultFrameRate), protocol::kMaxFrameRate);
     const double start = prepared.start, step = prepared.step, stop = prepared.stop;
-    config.maxRecordedSamples = mServices.options.limits.maxLogSamples;
+    // A recorded sample holds its time and a value per variable: a recording stays within what
+    // a job may store, however many variables the session streams.
+    const JobLimits& limits = mServices.options.limits;
+    const std::size_t samplesWithinResultBytes = limits.maxResultBytes / ((variables.size() + 1) * sizeof(double));
+    config.maxRecordedSamples = std::min(limits.maxLogSamples, samplesWithinResultBytes);
+    if (samplesWithinResultBytes < limits.maxLogSamples)
+        config.recordLimit = "the job result limit of " + std::to_string(limits.maxResultBytes >> 20) + " MiB";
     config.job = std::move(job);
     config.resolved.start = start;
     config.resolved.step = step;

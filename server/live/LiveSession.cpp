@@ -70,15 +70,15 @@ void LiveSession::start()
 void LiveSession::scheduleTick(bool now)
 {
     // A tick that ran out of budget goes on at once, behind whatever else waits for the pool.
-    if (now) return boost::asio::post(mStrand, [self = shared_from_this()] { self->tick(); });
+    if (now) return boost::asio::post(mStrand, [self = shared_from_this()] { self->tick(false); });
     mNextTick = std::max(mNextTick + mFramePeriod, std::chrono::steady_clock::now());
     mTimer.expires_at(mNextTick);
     mTimer.async_wait(boost::asio::bind_executor(mStrand, [self = shared_from_this()](boost::system::error_code ec) {
-        if (!ec) self->tick();
+        if (!ec) self->tick(true);
     }));
 }
 
-void LiveSession::tick()
+void LiveSession::tick(bool onTimer)
 {
     std::unique_lock lock(mMutex);
     if (mStopped) return;
@@ -96,8 +96,13 @@ void LiveSession::tick()
     if (mPacer.paused()) mStepsRequested -= std::min(ran, mStepsRequested);
     const bool finished = mSimulation.state() == SimulationState::Finished;
     const auto after = mConfig.clock();
-    // A paused session sends nothing; the frame of a live.step shows its last step at once.
-    if ((ran > 0 && after - mLastFrame >= mFramePeriod) || finished || (stepped && mStepsRequested == 0))
+    // The timer ticks once per frame period: each of them that ran steps sends a frame. (Measured
+    // from the last frame instead, a tick that came a little early after a late one sent none,
+    // and 30 frames a second became about 19.) A tick that goes on at once after running out of
+    // budget sends one only when a period has passed. A paused session sends nothing; the frame
+    // of a live.step shows its last step at once.
+    if ((ran > 0 && (onTimer || after - mLastFrame >= mFramePeriod)) || finished ||
+        (stepped && mStepsRequested == 0))
         sendFrame(after);
     if (finished) return end("finished", "the model reached its stop time");
     if (const auto achieved = mPacer.measure(after); achieved && mPacer.speed()) {
@@ -301,7 +306,7 @@ void LiveSession::record(const FrameSamples& samples)
         r.full = true;
         sendState(std::string("record_limit"),
                   "the recording holds at most " + std::to_string(mConfig.maxRecordedSamples) +
-                      " samples (--max-log-samples): later samples are not recorded; the session goes on");
+                      " samples (" + mConfig.recordLimit + "): later samples are not recorded; the session goes on");
         return;
     }
     if (!again) r.samples.time.push_back(t);

@@ -39,8 +39,11 @@ struct LiveSessionConfig {
     bool paused = false;
     double rate = 30.0;                  // frames per second
     std::chrono::milliseconds idleTimeout{600'000};
-    // Samples (and changes) a session records for live.record: the job log limit.
+    // Samples (and changes) a session records for live.record: the job log limit, or fewer
+    // when that many samples of its variables would pass the job result limit; `recordLimit`
+    // names the limit that holds, for the message when the recording stops.
     std::size_t maxRecordedSamples = 100'000;
+    std::string recordLimit = "--max-log-samples";
     // The job its model was compiled as, and its resolved start, step and stop: what live.record
     // stores its run as.
     JobRequest job;
@@ -135,7 +138,7 @@ private:
     // Keeps a frame's sample for live.record, within the limit.
     void record(const FrameSamples& samples);
     void scheduleTick(bool now);
-    void tick();
+    void tick(bool onTimer);
     // The rest run with mMutex held.
     void applyDueSets(LivePacer::Clock::time_point now);
     // Runs up to `steps` steps within kTickBudget; the steps run.

@@ -7,6 +7,9 @@ namespace tlmhub::server::protocol {
 
 // Variables a stream carries at most (simulate.start, log.subscribe); later ones are ignored.
 inline constexpr std::size_t kMaxStreamVariables = 16;
+// Variables a live session's frames carry at most (live.start): enough for an animated diagram
+// of a large model; a start naming more is refused with limit_exceeded.
+inline constexpr std::size_t kMaxLiveVariables = 512;
 // Frames per second of a stream that gives no rate.
 inline constexpr double kDefaultFrameRate = 30.0;
 // Highest frames per second the server streams; a higher rate is served at this one.

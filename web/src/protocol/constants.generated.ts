@@ -3,6 +3,8 @@
 
 /** Variables a stream carries at most (simulate.start, log.subscribe); later ones are ignored. */
 export const MAX_STREAM_VARIABLES = 16;
+/** Variables a live session's frames carry at most (live.start): enough for an animated diagram of a large model; a start naming more is refused with limit_exceeded. */
+export const MAX_LIVE_VARIABLES = 512;
 /** Frames per second of a stream that gives no rate. */
 export const DEFAULT_FRAME_RATE = 30;
 /** Highest frames per second the server streams; a higher rate is served at this one. */

@@ -1041,7 +1041,7 @@ export interface LiveStartRequest {
     model_id: number;
     speed?: LiveSpeed;
     /**
-     * Variable names (Comp#Port#Var) shown in each frame; at most 16 used.
+     * Variable names (Comp#Port#Var) shown in each frame, at most max_live_variables (512); none named: the first 16 logged variables.
      */
     variables?: string[];
     /**
