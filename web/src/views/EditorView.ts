@@ -26,6 +26,7 @@ import { downloadText, errorText, h, toast } from '../ui/dom';
 import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
 import { StudyPanel } from '../studies/StudyPanel';
+import { LiveMode } from '../live/LiveMode';
 import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
 import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
@@ -195,11 +196,13 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             const r = anchor.getBoundingClientRect();
             showVariables(ref, { x: r.left - 200, y: r.top });
         },
+        addLiveControl: (name: string) => void live.addControlFor(name),
     };
     const menuContext: MenuContext = {
         actions: editor, store, canvas,
         plot: (variable, label, unit) => plots.addVariable(variable, label, unit),
         showHelp: () => help.open(),
+        addLiveControl: (name) => void live.addControlFor(name),
     };
     const panel = new ParameterPanel(store, actions, permissions);
     const parameterPortsButton = h('button', {
@@ -326,6 +329,13 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         assignment ? instructionsPanel(assignment) : null);
     const historyPanel = new HistoryPanel(rest, runs, { modelId: () => summary.id, username: () => session.user?.username,
         parameters: () => parameterTexts(store.model), plotted: () => plots.allVariables() });
+    // live mode (src/live/): its toolbar beside ▶ Run, its controls on the drawing
+    const live = new LiveMode({
+        transport: { request: ws.request.bind(ws), onLive: ws.onLive.bind(ws), onStatus: ws.onStatus.bind(ws) },
+        store, canvas, plots, modelId: () => summary.id, defaultVariables: () => sinkVariables(store.model),
+        recorded: () => void historyPanel.reload(), editable: () => permissions.allows('system-parameters'), reportError,
+    });
+    runPanel.element.querySelector('[data-testid="cancel"]')?.after(live.bar.element);
     const runArea = h('section', { class: 'run-area' }, runPanel.element, h('div', { class: 'run-body' }, historyPanel.element, plots.element));
     const layout = h('main', { class: 'editor' }, header, editorBody, runArea, picker);
     // the drawing and the run area share the height as the user last left them
@@ -430,7 +440,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
 
     // the browser tests' handle, only in their build (vite build --mode e2e)
     const testHandle = window as unknown as { __tlmhub?: unknown };
-    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws };
+    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws, live };
 
     return {
         dirty: () => store.dirty,
@@ -449,6 +459,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             plots.dispose();
             historyPanel.dispose();
             studies.dispose();
+            live.dispose();
             runs.dispose();
             ws.close();
         },
