@@ -28,6 +28,7 @@ export function defaultControls(system: System, path: SystemPath, liveNames: Rea
             return [{ kind: 'switch', name, min: interaction.off, max: interaction.on, off: interaction.off, on: interaction.on, ...at }];
         }
         const ends = [interaction.min * interaction.gain, interaction.max * interaction.gain];
-        return [{ kind: 'slider', name, min: Math.min(...ends), max: Math.max(...ends), ...at }];
+        // (+ 0: a zero end times a negative gain is -0)
+        return [{ kind: 'slider', name, min: Math.min(...ends) + 0, max: Math.max(...ends) + 0, ...at }];
     });
 }
