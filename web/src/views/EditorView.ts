@@ -27,6 +27,7 @@ import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
 import { StudyPanel } from '../studies/StudyPanel';
 import { LiveMode } from '../live/LiveMode';
+import { DiagramAnimation } from '../animation/DiagramAnimation';
 import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
 import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
@@ -336,6 +337,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         recorded: () => void historyPanel.reload(), editable: () => permissions.allows('system-parameters'), reportError,
     });
     runPanel.element.querySelector('[data-testid="cancel"]')?.after(live.bar.element);
+    live.attachDiagram(new DiagramAnimation(canvas, store));
     const runArea = h('section', { class: 'run-area' }, runPanel.element, h('div', { class: 'run-body' }, historyPanel.element, plots.element));
     const layout = h('main', { class: 'editor' }, header, editorBody, runArea, picker);
     // the drawing and the run area share the height as the user last left them
