@@ -32,9 +32,12 @@ export class ColourScale {
                 changed();
             },
         });
+        const bar = h('div', { class: 'scale-bar' });
+        // set through the CSSOM: the server's Content Security Policy refuses inline style attributes
+        bar.style.background = scaleGradient();
         this.element = h('div', { class: 'pressure-scale', 'data-testid': 'pressure-scale', title: 'Line colour: pressure' },
             h('div', { class: 'scale-title' }, 'Pressure [bar]'),
-            h('div', { class: 'scale-bar', style: `background: ${scaleGradient()}` }),
+            bar,
             h('div', { class: 'scale-ends' }, this.low, this.high),
             h('label', { class: 'scale-auto-label', title: 'The range of the pressures shown so far' }, this.auto, ' Auto'));
     }

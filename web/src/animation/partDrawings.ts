@@ -116,7 +116,9 @@ function cylinder(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDra
 function sliding(icon: SVGGElement, d: AnimationDescription, f: Frame, originals: SVGElement[]): PartDrawing | null {
     const part = firstMoving(d, false);
     if (part < 0 || originals.length === 0) return null;
-    return new CopiedParts(icon, originals, (frame) => translate(frame.states[part].dx * f.kx, frame.states[part].dy * f.ky));
+    // a value far out of the description's range (a wrong unit) keeps the part near its box
+    const clamp = (v: number, half: number) => Math.max(-4 * half, Math.min(4 * half, v));
+    return new CopiedParts(icon, originals, (frame) => translate(clamp(frame.states[part].dx * f.kx, f.hw), clamp(frame.states[part].dy * f.ky, f.hh)));
 }
 
 /** A part that turns about its pivot: `originals` drawn at `drawnAngle` (degrees, clockwise) turn to the movable's angle. */

@@ -37,6 +37,8 @@ export interface LiveModeDeps {
     /** Whether the model may be changed here (controls added, moved, removed). */
     editable(): boolean;
     reportError(e: unknown): void;
+    /** Told before a session starts: the diagram is live mode's from then on (a playback ends). */
+    goingLive?(): void;
 }
 
 /** One display frame at 30 frames a second: what ⏭ Step runs. */
@@ -92,6 +94,7 @@ export class LiveMode {
 
     async goLive(speed: LiveSpeed): Promise<void> {
         const { plots, store } = this.deps;
+        this.deps.goingLive?.();
         if (plots.allVariables().length === 0) for (const v of this.deps.defaultVariables()) plots.addVariable(v);
         const variables = [...new Set([...plots.allVariables(), ...(this.diagram?.variables() ?? [])])];
         if (store.dirty) toast('Live mode runs the saved model: changes not saved yet are not in it.');

@@ -26,6 +26,7 @@ export class PlotArea {
     /** A zoom or pan waiting to be remembered: at most one save per pause of the mouse, not one per frame. */
     private zoomSave: ReturnType<typeof setTimeout> | undefined;
     private fetchedFor = 0;
+    private playbackTime: number | null = null;
     private readonly unsubscribe: () => void;
     private readonly unsubscribeChoice: () => void;
     private readonly choice: AxisChoice<PlotWindow>;
@@ -90,6 +91,7 @@ export class PlotArea {
             analyse: (x, kind) => (kind === 'xy' ? this.openXy(x) : this.openAnalysis(kind, x)),
         });
         this.windows.push(w);
+        w.setPlaybackTime(this.playbackTime);
         this.list.append(w.element);
         this.activate(w);
         return w;
@@ -191,6 +193,12 @@ export class PlotArea {
         this.zoomSave = undefined;
         this.onLayoutChange();
     };
+
+    /** Marks `time` in every plot window with the playback cursor (null: none). */
+    setPlaybackTime(time: number | null): void {
+        this.playbackTime = time;
+        for (const w of this.windows) w.setPlaybackTime(time);
+    }
 
     /** Every plotted variable, in window order, without repeats. */
     allVariables(): string[] {
