@@ -36,11 +36,11 @@ export class LiveBar {
             class: 'live-go', 'data-testid': 'live', title: 'Run the saved model in time with the clock and change its inputs while it runs',
             onclick: () => actions.goLive(this.chosenSpeed()),
         }, '◉ Live');
-        this.pauseButton = h('button', { 'data-testid': 'live-pause', onclick: () => void this.togglePause() }, '⏸ Pause');
+        this.pauseButton = h('button', { 'data-testid': 'live-pause', onclick: () => void this.togglePause() }, '‖ Pause');
         this.stepButton = h('button', {
             'data-testid': 'live-step', title: 'Run one display frame of model time (Shift: one time step)',
             onclick: (e: MouseEvent) => actions.step(e.shiftKey),
-        }, '⏭ Step');
+        }, '⇥ Step');
         this.speed = h('select', { 'data-testid': 'live-speed', 'aria-label': 'Live speed', title: 'Model seconds per second of the clock' },
             ...SPEEDS.map((s) => h('option', { value: String(s) }, s === 'max' ? 'max' : `${s}×`)));
         this.speed.value = '1';
@@ -80,7 +80,7 @@ export class LiveBar {
         this.goButton.hidden = active;
         for (const el of [this.pauseButton, this.stepButton, this.recordButton, this.stopButton, this.window]) el.hidden = !active;
         this.pauseButton.disabled = phase === 'starting';
-        this.pauseButton.textContent = phase === 'paused' ? '▶ Resume' : '⏸ Pause';
+        this.pauseButton.textContent = phase === 'paused' ? '▶ Resume' : '‖ Pause';
         this.stepButton.disabled = phase !== 'paused';
         this.recordButton.disabled = phase === 'starting';
         if (document.activeElement !== this.speed) this.speed.value = String(speed);

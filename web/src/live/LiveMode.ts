@@ -41,7 +41,7 @@ export interface LiveModeDeps {
     goingLive?(): void;
 }
 
-/** One display frame at 30 frames a second: what ⏭ Step runs. */
+/** One display frame at 30 frames a second: what ⇥ Step runs. */
 const FRAME_SECONDS = 1 / 30;
 
 export class LiveMode {

@@ -99,6 +99,9 @@ describe('LiveSession', () => {
         socket.reply('live.resume', { state: 'running', speed: 4, model_time: 1.2333 });
         await resuming;
         expect(session.status).toMatchObject({ phase: 'running', speed: 4, behind: false });
+        // a session just resumed has measured nothing yet: not behind
+        socket.receive(state({ speed: 4, achieved_speed: 0, model_time: 1.2333 }));
+        expect(session.status.behind).toBe(false);
         socket.receive(state({ speed: 4, achieved_speed: 2.7, model_time: 3 }));
         expect(session.status).toMatchObject({ behind: true, achievedSpeed: 2.7 });
         socket.receive(state({ speed: 4, achieved_speed: 4, model_time: 4 }));
@@ -119,6 +122,22 @@ describe('LiveSession', () => {
         second.socket.receive(state({ state: 'stopped', achieved_speed: 0, model_time: 4, reason: 'idle_timeout',
             message: "no message from the session's owner for 600000 ms (--live-idle-timeout)" }));
         expect(second.session.status.message).toMatch(/too long.*--live-idle-timeout.*Go live again/);
+    });
+
+    it('stopping says so, whether the stopped event or the reply comes first', async () => {
+        const replyFirst = await live();
+        const stopping = replyFirst.session.stop();
+        replyFirst.socket.reply('live.stop', { state: 'stopped', speed: 1, model_time: 2.5 });
+        await stopping;
+        replyFirst.socket.receive(state({ state: 'stopped', achieved_speed: 0, model_time: 2.5, reason: 'requested' }));
+        expect(replyFirst.session.status).toMatchObject({ phase: 'stopped', message: 'Stopped at t = 2.5 s.' });
+
+        const eventFirst = await live();
+        const stopping2 = eventFirst.session.stop();
+        eventFirst.socket.receive(state({ state: 'stopped', achieved_speed: 0, model_time: 1.75, reason: 'requested' }));
+        eventFirst.socket.reply('live.stop', { state: 'stopped', speed: 1, model_time: 1.75 });
+        await stopping2;
+        expect(eventFirst.session.status).toMatchObject({ phase: 'stopped', message: 'Stopped at t = 1.75 s.' });
     });
 
     it('a full recording is a notice: the session goes on', async () => {

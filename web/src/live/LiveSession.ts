@@ -169,8 +169,14 @@ export class LiveSession {
     private async apply(what: string, send: () => Promise<LiveStateData>): Promise<void> {
         try {
             const state = await send();
-            // a reply may come after the stopped event that ended the session: that stays
-            if (this.status.phase === 'stopped' && state.state !== 'stopped') return;
+            // the stopped event may come before the reply: it said why, and that stays
+            if (this.status.phase === 'stopped') return;
+            if (state.state === 'stopped') {
+                this.sessionId = null;
+                this.update({ phase: 'stopped', speed: state.speed, modelTime: state.model_time, behind: false,
+                    message: stoppedText({ reason: 'requested', model_time: state.model_time }) });
+                return;
+            }
             this.update({ phase: state.state, speed: state.speed, modelTime: state.model_time, message: '' });
         } catch (e) {
             this.fail(what, e);
@@ -209,7 +215,8 @@ export class LiveSession {
             return;
         }
         const speed = event.speed;
-        const behind = event.state === 'running' && typeof speed === 'number' && event.achieved_speed < speed * BEHIND_SHARE;
+        // (0 is what a session just started or resumed reports: nothing measured yet)
+        const behind = event.state === 'running' && typeof speed === 'number' && event.achieved_speed > 0 && event.achieved_speed < speed * BEHIND_SHARE;
         if (event.state === 'stopped') {
             this.sessionId = null;
             this.update({ phase: 'stopped', speed, achievedSpeed: 0, behind: false, modelTime: event.model_time, message: stoppedText(event) });
