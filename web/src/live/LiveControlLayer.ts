@@ -57,11 +57,6 @@ export class LiveControlLayer {
         this.render();
     }
 
-    /** Shows a value a control's name now has (a set of it elsewhere). */
-    showValue(name: string, value: number): void {
-        for (const w of this.widgets.get(name) ?? []) w.show(value);
-    }
-
     render(): void {
         const saved = controlsOf(this.store.model);
         const here = (c: LiveControl) => c.path.join('$') === this.store.path.join('$');
@@ -77,7 +72,11 @@ export class LiveControlLayer {
     private draw(c: LiveControl, index: number, saved: LiveControl[]): SVGGElement {
         const live = this.live;
         const settable = live !== null && live.liveNames.has(c.name);
-        const widget = controlWidget(c, (v) => this.actions.set(c.name, v));
+        const widget = controlWidget(c, (v) => {
+            // other controls of the same value follow this one
+            for (const other of this.widgets.get(c.name) ?? []) if (other !== widget) other.show(v);
+            this.actions.set(c.name, v);
+        });
         widget.setEnabled(settable);
         widget.show(live?.values.get(c.name) ?? c.min);
         this.widgets.set(c.name, [...(this.widgets.get(c.name) ?? []), widget]);
