@@ -1,5 +1,5 @@
 // @vitest-environment jsdom
-import { describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it } from 'vitest';
 import { controlWidget } from './controlWidgets';
 import type { LiveControl } from './liveControls';
 
@@ -14,6 +14,8 @@ function record(c: LiveControl) {
 }
 
 describe('live control widgets', () => {
+    afterEach(() => document.body.replaceChildren());
+
     it('a slider sends every movement within its range', () => {
         const { widget, sent } = record(control('slider', { min: -0.01, max: 0.01 }));
         const input = widget.element as HTMLInputElement;
