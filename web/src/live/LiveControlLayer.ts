@@ -7,7 +7,7 @@ import type { Point } from '../model/geometry';
 import { h, s } from '../ui/dom';
 import { ChangeLiveControls } from './ChangeLiveControls';
 import { controlWidget, type ControlWidget } from './controlWidgets';
-import { controlsOf, type LiveControl } from './liveControls';
+import { controlsOf, modelValueOf, type LiveControl } from './liveControls';
 
 /** The control's box in drawing units (its top centre is at the control's x, y). */
 const WIDTH = 150;
@@ -78,7 +78,7 @@ export class LiveControlLayer {
             this.actions.set(c.name, v);
         });
         widget.setEnabled(settable);
-        widget.show(live?.values.get(c.name) ?? c.min);
+        widget.show(live?.values.get(c.name) ?? modelValueOf(this.store.model, c.name) ?? c.min);
         this.widgets.set(c.name, [...(this.widgets.get(c.name) ?? []), widget]);
         const editing = live === null && index >= 0 && this.actions.editable();
         const title = live === null ? `${c.name}: acts in live mode` : settable ? c.name : `${c.name} cannot change while the model runs`;

@@ -3,7 +3,7 @@ import { EditorStore } from '../editor/EditorStore';
 import { AddComponent, copySelection, Paste } from '../editor/commands';
 import { FakeServer } from '../testing/FakeServer';
 import { ChangeLiveControls } from './ChangeLiveControls';
-import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, type LiveControl } from './liveControls';
+import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, modelValueOf, type LiveControl } from './liveControls';
 
 const at = (x: number, y: number) => ({ x, y, angle: 0, flipped: false });
 const slider: LiveControl = { kind: 'slider', name: 'Step.y_A', min: 0, max: 0.2, x: 100.4, y: 60, path: [] };
@@ -56,6 +56,15 @@ describe('live controls in the model', () => {
         expect(controlsOf(model('{"kind":"slider"}'))).toEqual([]);
         expect(controlsOf(model('[{"kind":"dial","name":"A.b","min":0,"max":1,"x":0,"y":0},{"kind":"knob","name":"A.b","min":0,"max":1,"x":0,"y":0}]')))
             .toEqual([{ kind: 'knob', name: 'A.b', min: 0, max: 1, x: 0, y: 0, path: [] }]);
+    });
+
+    it('show the value the model gives what they set before a session runs (an input by its name)', async () => {
+        const { store } = await storeWithStep();
+        // (the fake server's step stores its amplitude as y_A#Value = 1)
+        expect(modelValueOf(store.model, 'Step.y_A')).toBe(1);
+        expect(modelValueOf(store.model, 'Step.nothing')).toBeUndefined();
+        expect(modelValueOf(store.model, 'Nobody.y_A')).toBeUndefined();
+        expect(modelValueOf(store.model, 'Sub$Step.y_A')).toBeUndefined();
     });
 
     it('says which numbers cannot be used', () => {

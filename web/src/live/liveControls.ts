@@ -5,7 +5,7 @@
 // string system parameter of the top-level system, holding JSON; Hopsan reads it as an
 // ordinary (unused) string parameter. A field for them in the model would be better (report).
 import type { Model, SysParam } from '../protocol/types';
-import type { SystemPath } from '../model/modelState';
+import { findComponent, systemAt, type SystemPath } from '../model/modelState';
 
 export type LiveControlKind = 'slider' | 'knob' | 'switch' | 'number';
 export const CONTROL_KINDS: readonly LiveControlKind[] = ['slider', 'knob', 'switch', 'number'];
@@ -56,6 +56,24 @@ export function controlsParameter(controls: readonly LiveControl[]): SysParam {
         return stored;
     }));
     return { name: CONTROLS_PARAMETER, value, type: 'string', unit: '', description: DESCRIPTION };
+}
+
+/**
+ * The value a live value has in the model (`Step.y_A` is Step's input y_A, stored as
+ * `y_A#Value`; `Sub$Gain.k` is inside Sub), when it is a plain number: what a control shows
+ * before a session runs.
+ */
+export function modelValueOf(model: Model, name: string): number | undefined {
+    const dot = name.lastIndexOf('.');
+    if (dot < 0) return undefined;
+    const path = name.slice(0, dot).split('$');
+    const component = path.pop()!;
+    const system = systemAt(model, path);
+    const parameters = system ? findComponent(system, component)?.parameters ?? [] : [];
+    const parameter = name.slice(dot + 1);
+    const text = parameters.find((p) => p.name === parameter || p.name === `${parameter}#Value`)?.value;
+    const value = text === undefined || text.trim() === '' ? Number.NaN : Number(text);
+    return Number.isFinite(value) ? value : undefined;
 }
 
 /** A switch's off and on values; the other kinds' ends. */
