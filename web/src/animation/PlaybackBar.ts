@@ -4,6 +4,7 @@
 import type { DiagramAnimation } from './DiagramAnimation';
 import type { RunData } from '../run/RunData';
 import { advance, stepOfTime, timeOfStep, valuesAt } from './timeline';
+import { runPressureRange } from './pressureScale';
 import { h } from '../ui/dom';
 
 /** Slider steps over the run: fine enough to reach any sample a plot shows apart. */
@@ -73,10 +74,9 @@ export class PlaybackBar {
             const c = run.columns.get(n);
             return c ? [[n, c] as [string, number[]]] : [];
         }));
-        // the colours span the run's pressures, from 0 (Hopsan's default: 0 to the model's max)
-        let high = 0;
-        for (const [n, c] of this.columns) if (n.endsWith('#Pressure')) for (const p of c) if (p > high) high = p;
-        this.host.animation.range.set(0, high, true);
+        // the colours span the run's pressures (the user may change the range on the scale)
+        const [low, high] = runPressureRange([...this.columns].filter(([n]) => n.endsWith('#Pressure')).map(([, c]) => c));
+        this.host.animation.range.set(low, high);
         this.seek(this.start);
     }
 

@@ -6,11 +6,11 @@ import extract from './animation.generated.json';
 export type DataRef = [port: string, variable: string];
 export type Point = [x: number, y: number];
 
-/** Displacement per unit of `data[data]`: x, y in icon pixels, a in degrees (clockwise). */
+/** Displacement per unit of `data[data]`: x, y in icon pixels, a in degrees (clockwise), taken away from the rest position (movableState.ts). */
 export interface Movement { x: number; y: number; a: number; data: number; divisor?: string; multiplier?: string }
-/** Scale change per unit of `data[data]` (less `data[minus]` when set). */
+/** Scale change per unit of `data[data]` (less `data[minus]` when set), taken away from the initial scale. */
 export interface Resize { x: number; y: number; data: number; minus?: number; divisor?: string }
-/** Colour change (r, g, b per unit) of `data[data]` from the initial colour. */
+/** Colour change (r, g, b per unit) of `data[data]`, taken away from the initial colour. */
 export interface ColourChange { rgb: [number, number, number]; data: number; divisor?: string }
 
 export interface Movable {

@@ -1,6 +1,8 @@
 // Where a movable part is at one instant, from its description and the values of its port
-// variables: displacement and angle (start plus movement per unit, divided by the divisor
-// parameter), scale, colour. Pure, so that the mapping is tested without a drawing.
+// variables: displacement, angle, scale and colour. As Hopsan's GUI applies its descriptions,
+// each is the rest value *less* the change per unit times the value (divided by the divisor
+// parameter): a C-type cylinder's P3 position runs from 0 to −s_l while its rod goes out, and
+// its movement is +77.5 px per stroke. Pure, so that the mapping is tested without a drawing.
 import type { Movable } from './descriptions';
 
 /** The part's pose relative to rest: `dx`, `dy` in icon pixels, `angle` in degrees (absolute, with the start angle). */
@@ -21,20 +23,20 @@ export function movableState(m: Movable, value: (i: number) => number | undefine
     const state: MovableState = { dx: 0, dy: 0, angle: m.start[2], sx: m.initScale?.[0] ?? 1, sy: m.initScale?.[1] ?? 1, colour: null };
     for (const e of m.move ?? []) {
         const k = (v(e.data) * (e.multiplier ? parameter(e.multiplier) ?? 1 : 1)) / per(e.divisor);
-        state.dx += e.x * k;
-        state.dy += e.y * k;
-        state.angle += e.a * k;
+        state.dx -= e.x * k;
+        state.dy -= e.y * k;
+        state.angle -= e.a * k;
     }
     for (const e of m.resize ?? []) {
         const k = (v(e.data) - (e.minus !== undefined ? v(e.minus) : 0)) / per(e.divisor);
-        state.sx += e.x * k;
-        state.sy += e.y * k;
+        state.sx -= e.x * k;
+        state.sy -= e.y * k;
     }
     if (m.colour && m.initColour) {
         const rgb = [...m.initColour] as [number, number, number];
         for (const e of m.colour) {
             const k = v(e.data) / per(e.divisor);
-            for (let c = 0; c < 3; ++c) rgb[c] += e.rgb[c] * k;
+            for (let c = 0; c < 3; ++c) rgb[c] -= e.rgb[c] * k;
         }
         state.colour = rgb.map((c) => Math.max(0, Math.min(255, Math.round(c)))) as [number, number, number];
     }

@@ -35,7 +35,7 @@ describe('part drawings', () => {
             drawing!.update(frameOf('HydraulicCylinderC', [[1e5], [x, 2e6], [x]], { 's_l#Value': 1 }));
             return shift(part);
         };
-        const [rest, half, full] = [at(0), at(0.5), at(1)];
+        const [rest, half, full] = [at(0), at(-0.5), at(-1)];
         expect(full - rest).toBeCloseTo(77.5, 1);
         expect(half - rest).toBeCloseTo((full - rest) / 2, 5);
         // the chambers take their pressures' colours
@@ -49,15 +49,15 @@ describe('part drawings', () => {
     it("a position sensor's pointer turns about the gauge's centre", () => {
         const { icon, drawing } = drawn('MechanicPositionSensor');
         drawing!.update(frameOf('MechanicPositionSensor', [[0.5]]));
-        // −60° at rest, −120° per metre; our pointer is drawn at −45°
-        expect(icon.querySelector('.movable-part')!.getAttribute('transform')).toMatch(/^rotate\(-75,0,0\)$/);
+        // −60° at rest, less −120° per metre: 0° at 0.5 m; our pointer is drawn at −45°
+        expect(icon.querySelector('.movable-part')!.getAttribute('transform')).toMatch(/^rotate\(45,0,0\)$/);
     });
 
     it("a valve's spool slides by xv over x_vmax; a missing value leaves it at rest", () => {
         const { icon, drawing } = drawn('Hydraulic43Valve');
         const part = icon.querySelector('.movable-part');
         drawing!.update(frameOf('Hydraulic43Valve', [[0.005]], { 'x_vmax#Value': 0.01 }));
-        expect(shift(part)).toBeCloseTo(-20);
+        expect(shift(part)).toBeCloseTo(20);
         drawing!.update(frameOf('Hydraulic43Valve', [[undefined]], { 'x_vmax#Value': 0.01 }));
         expect(shift(part)).toBe(0);
     });

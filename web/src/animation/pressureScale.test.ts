@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PressureRange, scaleColour, SCALE_STOPS } from './pressureScale';
+import { PressureRange, runPressureRange, scaleColour, SCALE_STOPS } from './pressureScale';
 
 const hex = (rgb: number[]) => `#${rgb.map((c) => c.toString(16).padStart(2, '0')).join('')}`;
 
@@ -28,5 +28,14 @@ describe('pressure scale', () => {
         r.see(5e7);
         expect([r.min, r.max, r.auto]).toEqual([1e5, 1e6, false]);
         expect(r.colour(5e7)).toBe(scaleColour(1));
+    });
+
+    it("a run's range spans 0 to its highest pressure but for a brief peak", () => {
+        const line = Array.from({ length: 1000 }, (_, i) => (i < 5 ? 9e7 : 1e7 + i));
+        const [low, high] = runPressureRange([line, [1e5, 2e5]]);
+        expect(low).toBe(0);
+        expect(high).toBeGreaterThan(1e7);
+        expect(high).toBeLessThan(1e7 + 1000);
+        expect(runPressureRange([])).toEqual([0, 0]);
     });
 });

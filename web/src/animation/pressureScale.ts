@@ -52,3 +52,17 @@ export class PressureRange {
 
     colour(p: number): string { return scaleColour(this.fraction(p)); }
 }
+
+/**
+ * The pressure range of a recorded run for its colours: from 0 (a tank line is blue) to the
+ * highest pressure but for the top 1 % of samples, so that a start-up peak does not leave every
+ * line blue for the rest of the run.
+ */
+export function runPressureRange(columns: Iterable<ArrayLike<number>>): [number, number] {
+    const all: number[] = [];
+    for (const c of columns) for (let i = 0; i < c.length; ++i) if (Number.isFinite(c[i])) all.push(c[i]);
+    if (all.length === 0) return [0, 0];
+    all.sort((a, b) => a - b);
+    const high = all[Math.min(all.length - 1, Math.floor(all.length * 0.99))];
+    return [Math.min(0, all[0]), Math.max(0, high)];
+}

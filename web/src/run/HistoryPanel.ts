@@ -148,7 +148,7 @@ export class HistoryPanel {
             class: 'history-play', 'aria-label': `Play back ${label}`, 'data-testid': 'history-play',
             title: job.state === 'done' ? 'Play back: the run on the animated diagram, with a cursor in the plots' : 'Only a finished run can be played back',
             disabled: job.state !== 'done' || job.results_dropped, onclick: () => playBack(job),
-        }, '⏵') : null;
+        }, '▶') : null;
         const row = h('li', {
             class: 'history-row', 'data-job': String(job.id), 'data-state': job.state,
             title: `${label} — ${new Date(at * 1000).toLocaleString()}${choosable ? '' : ' (cannot be plotted)'}\n${differences}`,
