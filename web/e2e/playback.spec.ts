@@ -132,6 +132,7 @@ test('plays back a Position Servo run: the rod moves as its positions say, the p
     // leaving playback gives the drawing back to the editor
     await page.getByTestId('playback-close').click();
     await expect(page.locator('.animation-lines, .animation-parts, [data-testid="pressure-scale"]')).toHaveCount(0);
+    await expect(page.locator('.canvas .connection[style*="hidden"], .canvas .icon [style*="hidden"]')).toHaveCount(0);
     await expect(page.getByTestId('playback-cursor').first()).toBeHidden();
 });
 

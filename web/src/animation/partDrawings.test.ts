@@ -50,7 +50,7 @@ describe('part drawings', () => {
         const { icon, drawing } = drawn('MechanicPositionSensor');
         drawing!.update(frameOf('MechanicPositionSensor', [[0.5]]));
         // −60° at rest, less −120° per metre: 0° at 0.5 m; our pointer is drawn at −45°
-        expect(icon.querySelector('.movable-part')!.getAttribute('transform')).toMatch(/^rotate\(45,0,0\)$/);
+        expect(icon.querySelector('.movable-part')!.getAttribute('transform')).toMatch(/ rotate\(45,0,0\)$/);
     });
 
     it("a valve's spool slides by xv over x_vmax; a missing value leaves it at rest", () => {
@@ -60,6 +60,21 @@ describe('part drawings', () => {
         expect(shift(part)).toBeCloseTo(20);
         drawing!.update(frameOf('Hydraulic43Valve', [[undefined]], { 'x_vmax#Value': 0.01 }));
         expect(shift(part)).toBe(0);
+    });
+
+    it('a spring stretches between its ends, which carry its ports; a mass carries both of its ports', () => {
+        const { icon, drawing } = drawn('MechanicTranslationalSpring');
+        // P1 at 0.1 m, P2 at 0: the left end moves 7.75 px right (rest less −77.5 px/m times 0.1 m)
+        drawing!.update(frameOf('MechanicTranslationalSpring', [[0.1], [0], [0.1, 0]]));
+        expect(drawing!.portShift('P1')![0]).toBeCloseTo(7.75);
+        expect(drawing!.portShift('P2')![0]).toBeCloseTo(0);
+        const transform = icon.querySelector('.movable-part')!.getAttribute('transform')!;
+        const scale = Number(/scale\(([\d.]+),1\)/.exec(transform)![1]);
+        expect(scale).toBeCloseTo((33 - 7.75) / 33, 2);
+        const mass = drawn('MechanicTranslationalMass');
+        mass.drawing!.update(frameOf('MechanicTranslationalMass', [[-0.2]]));
+        expect(mass.drawing!.portShift('P1')![0]).toBeCloseTo(15.5);
+        expect(mass.drawing!.portShift('P2')![0]).toBeCloseTo(15.5);
     });
 
     it('draws a moving part for every animated type of Position Servo and Load Sensing System', () => {

@@ -22,9 +22,17 @@ export interface PartDrawing {
     /** The group over the icon holding the moving copies (inside `.icon`, so it turns as the icon does). */
     readonly element: SVGGElement;
     update(frame: PartFrame): void;
+    /**
+     * How far a port that moves with a part (a rod's end, a mass's sides) is from its place, in
+     * the group's frame, as of the last update; null for a port that stays. Lines follow it.
+     */
+    portShift(port: string): [number, number] | null;
     /** Shows the originals again and removes the copies. */
     remove(): void;
 }
+
+/** Where copies are drawn: shifted by x, y, then turned or stretched by `then` (an SVG transform). */
+interface Placement { x: number; y: number; then?: string }
 
 /** The icon's frame: Hopsan's icon size (the description's coordinates) on our half sizes. */
 interface Frame { kx: number; ky: number; hw: number; hh: number; size: [number, number] }
@@ -37,13 +45,18 @@ function symbolParts(icon: SVGGElement): SVGElement[] {
         c instanceof SVGElement && !c.matches('.icon-frame, .glyph-port-line, .icon-inner, title, .animation-parts'));
 }
 
-/** A drawing whose copies of `originals` move as `place(frame)` says (an SVG transform). */
+/**
+ * A drawing whose copies of `originals` move as `place(frame)` says; `ports` move with them
+ * (each by the placement's shift, or by its own function of the frame).
+ */
 class CopiedParts implements PartDrawing {
     readonly element: SVGGElement;
     private readonly moving: SVGGElement;
     private transform = '';
+    private readonly shifts = new Map<string, [number, number]>();
 
-    constructor(icon: SVGGElement, private readonly originals: SVGElement[], private readonly place: (frame: PartFrame) => string,
+    constructor(icon: SVGGElement, private readonly originals: SVGElement[], private readonly place: (frame: PartFrame) => Placement,
+        private readonly ports: Map<string, ((frame: PartFrame) => [number, number]) | null> = new Map(),
         extra: SVGElement[] = [], private readonly paint?: (frame: PartFrame) => void) {
         this.moving = s('g', { class: 'movable-part' }, ...originals.map((o) => o.cloneNode(true) as SVGElement));
         this.element = s('g', { class: 'animation-parts' }, ...extra, this.moving);
@@ -51,20 +64,31 @@ class CopiedParts implements PartDrawing {
         icon.append(this.element);
     }
 
+    /** Adds shapes of ours that move with the copies. */
+    add(...shapes: SVGElement[]): void { this.moving.append(...shapes); }
+
     update(frame: PartFrame): void {
-        const transform = this.place(frame);
+        const at = this.place(frame);
+        const transform = `${translate(at.x, at.y)}${at.then ? ` ${at.then}` : ''}`;
         if (transform !== this.transform) {
             this.transform = transform;
             this.moving.setAttribute('transform', transform);
         }
+        for (const [port, shift] of this.ports) this.shifts.set(port, shift ? shift(frame) : [at.x, at.y]);
         this.paint?.(frame);
     }
+
+    portShift(port: string): [number, number] | null { return this.shifts.get(port) ?? null; }
 
     remove(): void {
         for (const o of this.originals) o.style.visibility = '';
         this.element.remove();
     }
 }
+
+/** The ports that move with movable `m` (with its shift). */
+const movingPorts = (d: AnimationDescription, m: number) =>
+    new Map((d.movables[m]?.movingPorts ?? []).map((p) => [p.port, null] as [string, null]));
 
 const round = (v: number) => Math.round(v * 100) / 100;
 const translate = (x: number, y: number) => `translate(${round(x)},${round(y)})`;
@@ -100,8 +124,8 @@ function cylinder(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDra
         return frame.values[movable]?.[at];
     };
     const shift = (frame: PartFrame) => rest + frame.states[part].dx * f.kx;
-    return new CopiedParts(icon, [piston, ...rods], (frame) => translate(shift(frame), frame.states[part].dy * f.ky),
-        [chamberA, chamberB], (frame) => {
+    return new CopiedParts(icon, [piston, ...rods], (frame) => ({ x: shift(frame), y: frame.states[part].dy * f.ky }),
+        movingPorts(d, part), [chamberA, chamberB], (frame) => {
             const x = px + shift(frame);
             chamberA.setAttribute('width', String(round(Math.max(0, x - bx))));
             chamberB.setAttribute('x', String(round(x + pw)));
@@ -118,7 +142,8 @@ function sliding(icon: SVGGElement, d: AnimationDescription, f: Frame, originals
     if (part < 0 || originals.length === 0) return null;
     // a value far out of the description's range (a wrong unit) keeps the part near its box
     const clamp = (v: number, half: number) => Math.max(-4 * half, Math.min(4 * half, v));
-    return new CopiedParts(icon, originals, (frame) => translate(clamp(frame.states[part].dx * f.kx, f.hw), clamp(frame.states[part].dy * f.ky, f.hh)));
+    return new CopiedParts(icon, originals, (frame) => ({ x: clamp(frame.states[part].dx * f.kx, f.hw), y: clamp(frame.states[part].dy * f.ky, f.hh) }),
+        movingPorts(d, part));
 }
 
 /** A part that turns about its pivot: `originals` drawn at `drawnAngle` (degrees, clockwise) turn to the movable's angle. */
@@ -128,9 +153,9 @@ function turning(icon: SVGGElement, d: AnimationDescription, f: Frame, originals
     if (part < 0 || (originals.length === 0 && extra.length === 0)) return null;
     const m = d.movables[part];
     const [cx, cy] = pivot ?? [(m.start[0] + (m.origin?.[0] ?? 0)) * f.kx - f.hw, (m.start[1] + (m.origin?.[1] ?? 0)) * f.ky - f.hh];
-    const drawing = new CopiedParts(icon, originals, (frame) => `rotate(${round(frame.states[part].angle - drawnAngle)},${round(cx)},${round(cy)})`);
+    const drawing = new CopiedParts(icon, originals, (frame) => ({ x: 0, y: 0, then: `rotate(${round(frame.states[part].angle - drawnAngle)},${round(cx)},${round(cy)})` }));
     // new shapes of ours (a rotor mark) turn with the copies
-    drawing.element.querySelector('.movable-part')!.append(...extra);
+    drawing.add(...extra);
     return drawing;
 }
 
@@ -143,6 +168,24 @@ function rotor(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDrawin
         s('line', { x1: cx - r * 0.55, y1: cy, x2: cx + r * 0.55, y2: cy, stroke: 'currentColor', 'stroke-width': 1.2, 'stroke-dasharray': '2 1.5' }),
         s('circle', { cx: cx + r * 0.55, cy, r: Math.max(1.2, r * 0.09), fill: 'currentColor' }));
     return turning(icon, d, f, [], [cx, cy], 0, [mark]);
+}
+
+/**
+ * A spring: its coil stretched between its two ends, each moving with its port (the parts
+ * that carry the ports P1 and P2), the box's sides at rest.
+ */
+function stretched(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDrawing | null {
+    const endOf = (port: string) => d.movables.findIndex((m) => m.movingPorts?.some((p) => p.port === port) && m.move?.length);
+    const [left, right] = [endOf('P1'), endOf('P2')];
+    const originals = symbolParts(icon);
+    if (left < 0 || right < 0 || originals.length === 0) return null;
+    const ends = (frame: PartFrame) => [frame.states[left].dx * f.kx, frame.states[right].dx * f.kx];
+    return new CopiedParts(icon, originals, (frame) => {
+        const [dl, dr] = ends(frame);
+        // the coil from −hw + dl to hw + dr: scaled about the left side, which moved by dl
+        const k = Math.max(0.1, (2 * f.hw + dr - dl) / (2 * f.hw));
+        return { x: -f.hw + dl, y: 0, then: `scale(${round(k)},1) translate(${round(f.hw)},0)` };
+    }, new Map([['P1', (frame: PartFrame) => [ends(frame)[0], 0]], ['P2', (frame: PartFrame) => [ends(frame)[1], 0]]]));
 }
 
 /** A volume: its symbol filled with the colour of its pressure. */
@@ -164,12 +207,13 @@ function filled(icon: SVGGElement, d: AnimationDescription): PartDrawing | null 
             const next = p === undefined ? 'none' : frame.pressureColour(p);
             if (next !== colour) fill.setAttribute('fill', (colour = next));
         },
+        portShift: () => null,
         remove: () => element.remove(),
     };
 }
 
-/** Families whose parts are left still: their movement is not one a reader follows (a spring's coils, an orifice's opening). */
-const still = new Set(['spring', 'orifice', 'torsion-spring', 'damper']);
+/** Families whose parts are left still: their movement is not one a reader follows (an orifice's opening). */
+const still = new Set(['orifice', 'torsion-spring', 'damper']);
 
 /**
  * The drawing of a component's moving parts over its icon (`icon`: the `.icon` group, our
@@ -188,6 +232,7 @@ export function partDrawing(type: string, d: AnimationDescription, icon: SVGGEle
         return turning(icon, d, f, [...icon.querySelectorAll<SVGElement>('.glyph-pointer')], gauge ? [num(gauge, 'cx'), num(gauge, 'cy')] : null, -45);
     }
     case 'pump': case 'motor': return rotor(icon, d, f);
+    case 'spring': return stretched(icon, d, f);
     case 'volume': return filled(icon, d);
     case 'shuttle-valve': case 'check-valve': return sliding(icon, d, f, [...icon.querySelectorAll<SVGElement>('.glyph-ball')]);
     default: break;
