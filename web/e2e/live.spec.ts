@@ -1,7 +1,7 @@
 // Live mode on Position Servo (issue 42 item 3): a slider on the drawing bound to the step's
 // amplitude, the model running in time with the clock, the plotted position following the
-// slider, the cylinder moving with it, pause, step, keep as run, stop; the slider is part of
-// the saved model.
+// slider, the cylinder moving with it, pause, step, keep as run, stop, a lost connection; the
+// slider is part of the saved model.
 import { copyFileSync, mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { test, expect } from './fixtures';
@@ -19,7 +19,7 @@ const streamed = (page: Page, name: string) => page.evaluate((n) =>
     (window as unknown as { __tlmhub: { live: { session: { started: { variables: string[] } } } } }).__tlmhub.live.session.started.variables.includes(n), name);
 const cylinderShift = (page: Page) => page.locator('.animation-parts[data-component="Cylinder_C"] .movable-part').first().getAttribute('transform');
 
-test('live Position Servo: a slider on the drawing steers the running model; pause, step, keep as run, stop; the slider is saved', async ({ page }) => {
+test('live Position Servo: a slider on the drawing steers the running model; pause, step, keep as run, stop, a lost connection; the slider is saved', async ({ page }) => {
     // the variables live.start asks for, as sent
     let asked: string[] = [];
     page.on('websocket', (ws) => ws.on('framesent', ({ payload }) => {
@@ -100,6 +100,17 @@ test('live Position Servo: a slider on the drawing steers the running model; pau
     await expect(page.getByTestId('live')).toBeVisible();
     await expect(page.getByTestId('live-message')).toContainText('Stopped at t =');
     await expect(input).toBeDisabled();
+
+    // a lost connection ends the session (the server ends it with its socket); live again once reconnected
+    await page.getByTestId('live').click();
+    await expect(page.getByTestId('live-status')).toContainText('Live');
+    await page.evaluate(() => (window as unknown as { __tlmhub: { ws: { dropForTest(): void } } }).__tlmhub.ws.dropForTest());
+    await expect(page.getByTestId('live-message')).toContainText('connection to the server was lost');
+    await expect(input).toBeDisabled();
+    await expect(page.getByTestId('connection-status')).toHaveAttribute('data-state', 'connected', { timeout: 30_000 });
+    await page.getByTestId('live').click();
+    await expect(page.getByTestId('live-status')).toContainText('Live');
+    await expect(input).toBeEnabled();
 
     // the slider is part of the saved copy
     await page.reload();
