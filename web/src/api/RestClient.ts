@@ -141,6 +141,11 @@ export class RestClient {
         const list = variables.map(encodeURIComponent).join(',');
         return this.call('GET', `/jobs/${id}/results?format=json&variables=${list}`);
     }
+    /** The names of a run's logged variables (a recorded live session logs only what it recorded). */
+    async loggedVariables(id: number): Promise<string[]> {
+        const reply: { variables: { name: string }[] } = await this.call('GET', `/jobs/${id}/variables`);
+        return reply.variables.map((v) => v.name);
+    }
     resultsCsv(id: number, variables: string[]): Promise<string> {
         const list = variables.map(encodeURIComponent).join(',');
         return this.call('GET', `/jobs/${id}/results?format=csv&variables=${list}`, undefined, undefined, 'text/csv');

@@ -4,7 +4,7 @@
 // rest of its per-socket state (the open model) through onReconnect.
 import { ApiError } from './ApiError';
 import { decodeBinaryFrame } from './binaryFrame';
-import type { HelloMessage, ServerEvent, ServerMessage } from '../protocol/types';
+import type { HelloMessage, LiveEvent, ServerEvent, ServerMessage } from '../protocol/types';
 import type { ReplyData, RequestFields, RequestType } from '../protocol/requests.generated';
 
 /** The part of the browser WebSocket the client uses (a fake one in tests). */
@@ -90,6 +90,7 @@ export class WsClient {
     private nextId = 1;
     private readonly pending = new Map<number | string, Pending>();
     private readonly listeners = new Set<EventListener>();
+    private readonly liveListeners = new Set<(event: LiveEvent) => void>();
     private closeListeners = new Set<(reason: string) => void>();
     private readonly statusListeners = new Set<(status: ConnectionStatus) => void>();
     private readonly reconnectListeners = new Set<() => Promise<unknown> | void>();
@@ -211,6 +212,16 @@ export class WsClient {
     onEvent(listener: EventListener): () => void {
         this.listeners.add(listener);
         return () => this.listeners.delete(listener);
+    }
+
+    /**
+     * Listens to live sessions' events (event.live.frame, event.live.state); returns the
+     * unsubscriber. A session ends with the socket that started it: a reconnect (onStatus
+     * 'reconnecting') means every session of this client is gone, with no event to say so.
+     */
+    onLive(listener: (event: LiveEvent) => void): () => void {
+        this.liveListeners.add(listener);
+        return () => this.liveListeners.delete(listener);
     }
 
     /** The socket closed and the client does not reconnect: 'auth' (the server ended the login) or 'closed'. */
@@ -358,6 +369,8 @@ export class WsClient {
             } else {
                 console.warn('tlmhub: server error without request', msg.error);
             }
+        } else if (msg.type === 'event.live.frame' || msg.type === 'event.live.state') {
+            for (const l of this.liveListeners) l(msg);
         } else if (msg.type.startsWith('event.')) {
             if (msg.type === 'event.done') {
                 const jobId = (msg as { job_id: number }).job_id;

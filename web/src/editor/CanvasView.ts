@@ -181,6 +181,9 @@ export class CanvasView {
         this.portError = null;
     }
 
+    /** Draws `layer` over the drawing, in its coordinates (the live controls): it pans and zooms with it. */
+    addLayer(layer: SVGGElement): void { this.world.append(layer); }
+
     private get pathKey(): string { return this.store.path.join('$'); }
     private key(name: string): string { return `${this.pathKey}/${name}`; }
 

@@ -11,6 +11,7 @@ import { isParameterPort } from '../model/parameterPortPlacement';
 import { parameterLabel, shortName, splitParameters } from './parameterLabels';
 import { notFiniteError } from './finiteNumber';
 import { boundsText, EditPermissions, type StructuralEdit } from './EditPermissions';
+import { CONTROLS_PARAMETER } from '../live/liveControls';
 import type { Component, PortRef, System } from '../protocol/types';
 
 export interface PanelActions {
@@ -23,6 +24,8 @@ export interface PanelActions {
     /** Shows or hides the selected components' parameter ports. */
     toggleParameterPorts(): void;
     parameterPortsShown(name: string): boolean;
+    /** Puts a live control bound to one of the component's values on the drawing (src/live/). */
+    addLiveControl?(component: string): void;
 }
 
 export class ParameterPanel {
@@ -133,6 +136,10 @@ export class ParameterPanel {
                     'aria-pressed': String(this.actions.parameterPortsShown(comp.name)), 'data-testid': 'toggle-parameter-ports',
                 }, 'Parameter ports') : null,
                 comp.system ? h('button', { onclick: () => this.store.enterSystem([...path, comp.name]) }, 'Enter') : null,
+                this.actions.addLiveControl && !comp.system ? h('button', {
+                    onclick: () => this.actions.addLiveControl?.(comp.name), 'data-testid': 'add-live-control', disabled: !this.may('system-parameters'),
+                    title: 'A slider, knob, switch or number field on the drawing that changes one of its values in live mode',
+                }, 'Add live control') : null,
                 comp.system ? h('button', { onclick: () => this.actions.ungroup(), 'data-testid': 'ungroup', disabled: !this.may('ungroup') }, 'Ungroup') : null,
                 h('button', { class: 'danger', onclick: () => this.actions.remove(), title: 'Delete (Del)', disabled: !this.may('delete') }, 'Delete')),
             h('h3', {}, 'Parameters'),
@@ -157,7 +164,8 @@ export class ParameterPanel {
 
     private systemView(system: System): HTMLElement[] {
         const path = this.store.path;
-        const rows = system.parameters.map((p) => {
+        // the live controls' parameter is drawn on the canvas, not listed
+        const rows = system.parameters.filter((p) => p.name !== CONTROLS_PARAMETER).map((p) => {
             const key = `$sys.${p.name}`;
             const refused = this.refused.get(key);
             const rule = this.permissions.parameterRule(path, null, p.name);

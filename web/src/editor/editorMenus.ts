@@ -24,6 +24,8 @@ export interface MenuContext {
     /** Adds a logged variable to the active plot window. */
     plot(variable: string, label: string, unit: string): void;
     showHelp(): void;
+    /** Puts a live control bound to one of the component's values on the drawing (src/live/). */
+    addLiveControl?(component: string): void;
 }
 
 /** An entry that changes the model: disabled where that kind of change is not allowed. */
@@ -74,6 +76,10 @@ export function componentMenu(ctx: MenuContext, name: string): MenuItem[] {
                 submenu: () => plotEntries(ctx, { component: name, port: p.name }),
             })),
         });
+        const addLiveControl = ctx.addLiveControl;
+        if (addLiveControl && !comp.system) {
+            items.push(edit(ctx, 'system-parameters', { label: 'Add live control…', id: 'add-live-control', run: () => addLiveControl(name) }));
+        }
         items.push('separator');
     }
     items.push(

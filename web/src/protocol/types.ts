@@ -1,9 +1,9 @@
 // The protocol shapes the app uses, re-exported from the generated types
 // (src/protocol/generated.ts, from protocol/*.schema.json) under the names the app reads best.
-import type { DoneEvent, ErrorReply, FrameEvent, Hello, Port, ProgressEvent, Reply, ResyncEvent } from './generated';
+import type { DoneEvent, ErrorReply, FrameEvent, Hello, LiveFrameEvent, LiveStateEvent, Port, ProgressEvent, Reply, ResyncEvent } from './generated';
 
 export type {
-    AssignmentWarning, CatalogueEntry, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
+    AssignmentWarning, CatalogueEntry, LiveFrameEvent, LiveRecordedData, LiveSpeed, LiveStartedData, LiveState, LiveStateData, LiveStateEvent, LiveValue, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
     ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, Preferences, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
     SysParam, System, SystemPort, User,
 } from './generated';
@@ -14,5 +14,7 @@ export type ErrorMessage = ErrorReply;
 export type ReplyMessage = Omit<Reply, 'data'> & { data: Record<string, unknown> };
 export type PortKind = Port['kind'];
 export type ServerEvent = ProgressEvent | FrameEvent | DoneEvent | ResyncEvent;
-export type ServerMessage = HelloMessage | ReplyMessage | ErrorMessage | ServerEvent;
+/** The events of a live session (docs/live-sessions.md): WsClient.onLive hears them, onEvent does not. */
+export type LiveEvent = LiveFrameEvent | LiveStateEvent;
+export type ServerMessage = HelloMessage | ReplyMessage | ErrorMessage | ServerEvent | LiveEvent;
 

@@ -22,6 +22,8 @@ export interface HistoryPanelOptions {
     parameters: () => Map<string, string>;
     /** The variables the plot windows show: a chosen run's results for them are loaded. */
     plotted: () => string[];
+    /** Plays the run back on the animated diagram; absent: runs have no play button. */
+    playBack?: (job: JobInfo) => void;
 }
 
 type HistoryRest = Pick<RestClient, 'runHistory' | 'labelJob'>;
@@ -141,11 +143,17 @@ export class HistoryPanel {
             class: 'history-rename', 'aria-label': `Rename ${label}`, title: 'Name the run', hidden: !own,
             onclick: () => this.rename(row, job),
         }, '✎');
+        const playBack = this.options.playBack;
+        const play = playBack ? h('button', {
+            class: 'history-play', 'aria-label': `Play back ${label}`, 'data-testid': 'history-play',
+            title: job.state === 'done' ? 'Play back: the run on the animated diagram, with a cursor in the plots' : 'Only a finished run can be played back',
+            disabled: job.state !== 'done' || job.results_dropped, onclick: () => playBack(job),
+        }, '▶') : null;
         const row = h('li', {
             class: 'history-row', 'data-job': String(job.id), 'data-state': job.state,
             title: `${label} — ${new Date(at * 1000).toLocaleString()}${choosable ? '' : ' (cannot be plotted)'}\n${differences}`,
         },
-        pin, show, renameButton,
+        pin, show, renameButton, play,
         h('span', { id: descriptionId, hidden: true }, differences));
         row.classList.toggle('unavailable', !choosable);
         this.markShown(row);

@@ -8,6 +8,7 @@ import { unitOfVariable } from './units';
 import { AnalysisWindow, type AnalysisKind } from './AnalysisWindow';
 import { XyWindow } from './XyWindow';
 import type { RunController } from './RunController';
+import type { RunData } from './RunData';
 import type { SavedPlots } from './runHistory';
 import type { UnitPreferences } from './unitPreferences';
 import { h, toast, errorText } from '../ui/dom';
@@ -25,9 +26,12 @@ export class PlotArea {
     /** A zoom or pan waiting to be remembered: at most one save per pause of the mouse, not one per frame. */
     private zoomSave: ReturnType<typeof setTimeout> | undefined;
     private fetchedFor = 0;
+    private playbackTime: number | null = null;
     private readonly unsubscribe: () => void;
     private readonly unsubscribeChoice: () => void;
     private readonly choice: AxisChoice<PlotWindow>;
+    /** A live session's run (src/live/): shown after the model's runs while it streams. */
+    private live: RunData | null = null;
 
     /**
      * `units` are the user's display units, shared by all windows; `onLayoutChange` is told when the
@@ -87,6 +91,7 @@ export class PlotArea {
             analyse: (x, kind) => (kind === 'xy' ? this.openXy(x) : this.openAnalysis(kind, x)),
         });
         this.windows.push(w);
+        w.setPlaybackTime(this.playbackTime);
         this.list.append(w.element);
         this.activate(w);
         return w;
@@ -189,13 +194,32 @@ export class PlotArea {
         this.onLayoutChange();
     };
 
+    /** Marks `time` in every plot window with the playback cursor (null: none). */
+    setPlaybackTime(time: number | null): void {
+        this.playbackTime = time;
+        for (const w of this.windows) w.setPlaybackTime(time);
+    }
+
     /** Every plotted variable, in window order, without repeats. */
     allVariables(): string[] {
         return [...new Set(this.windows.flatMap((w) => w.variables))];
     }
 
+    /** Shows a live session's run in every window as the newest run (null: the model's runs again). */
+    showLive(run: RunData | null): void {
+        this.live = run;
+        for (const w of this.windows) this.refresh(w);
+    }
+
+    /** The live run got a frame: redrawn with the next animation frame. */
+    liveUpdated(): void { this.scheduleUpdate(); }
+
+    private generations(): readonly RunData[] {
+        return this.live ? [...this.runs.generations, this.live] : this.runs.generations;
+    }
+
     private refresh(w: PlotWindow): void {
-        w.update(this.runs.generations);
+        w.update(this.generations());
         this.updateAnalyses();
         // (a run still going has no stored results: ensure() passes it over)
         this.runs.ensure(w.variables, w.shownRuns()).catch((e) => toast(`Results: ${errorText(e)}`, 'error'));
@@ -208,7 +232,7 @@ export class PlotArea {
         this.scheduled = true;
         const redraw = () => {
             this.scheduled = false;
-            for (const w of this.windows) w.update(this.runs.generations);
+            for (const w of this.windows) w.update(this.generations());
             this.updateAnalyses();
         };
         if (document.hidden) setTimeout(redraw, 50);

@@ -11,6 +11,7 @@ import { variableLabel } from '../model/variables';
 import { downloadText, h, toast } from '../ui/dom';
 import { PlotSurface } from './PlotSurface';
 import { TwoCursors } from './twoCursors';
+import { TimeMarker } from './TimeMarker';
 import { detach, type Detached } from './detachedPlot';
 import type { AnalysisKind } from './AnalysisWindow';
 import { axisUnits, MAX_AXES, siPrefix, unitOfVariable, type Prefixed } from './units';
@@ -56,6 +57,8 @@ export class PlotWindow {
     private readonly body: HTMLElement;
     private readonly surface: PlotSurface;
     private readonly cursors: TwoCursors;
+    /** The playback cursor (the instant the animated diagram shows). */
+    private readonly marker = new TimeMarker();
     private readonly chips: HTMLElement;
     private readonly compareBox: HTMLInputElement;
     private readonly allRunsBox: HTMLInputElement;
@@ -373,6 +376,11 @@ export class PlotWindow {
         }
     }
 
+    /** Marks `time` with the playback cursor (null: no cursor). */
+    setPlaybackTime(time: number | null): void {
+        this.marker.set(time);
+    }
+
     // keep the user's zoom while new samples arrive
     private zoomed(): boolean {
         const u = this.plot;
@@ -430,7 +438,7 @@ export class PlotWindow {
             cursor: { drag: { x: true, y: false }, sync: { key: 'run-time' } },
             // the previous run's marker dashed like its curve
             legend: { live: true, markers: { dash: (u, i) => (u.series[i].dash ? 'dashed' : 'solid') } },
-            hooks: { draw: [(u) => this.cursors.draw(u)] },
+            hooks: { draw: [(u) => { this.cursors.draw(u); this.marker.place(u); }] },
             axes: [{ label: TIME_AXIS, size: 50 }, ...axes.map((a, i): uPlot.Axis => ({
                 scale: a.scale, label: a.prefixed.unit ? `[${a.prefixed.unit}]` : undefined, size: 64,
                 // left, right, left, right: a fourth unit gets an axis of its own

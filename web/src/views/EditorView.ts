@@ -26,12 +26,15 @@ import { downloadText, errorText, h, toast } from '../ui/dom';
 import { createSplitter } from '../ui/splitter';
 import { openFmuDialog } from '../fmu/FmuDialog';
 import { StudyPanel } from '../studies/StudyPanel';
+import { LiveMode } from '../live/LiveMode';
+import { DiagramAnimation } from '../animation/DiagramAnimation';
+import { PlaybackBar } from '../animation/PlaybackBar';
 import { EditPermissions, permittedTransport } from '../editor/EditPermissions';
 import { instructionsPanel } from '../labs/InstructionsPanel';
 import type { Session } from '../app/Session';
 import { modelRouteHash, parseModelRoute } from '../app/modelRoute';
 import { systemAt } from '../model/modelState';
-import type { CatalogueEntry, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
+import type { CatalogueEntry, JobInfo, ModelOpenedData, ModelSummary, PortRef } from '../protocol/types';
 
 export interface EditorPage {
     dispose(): void;
@@ -168,6 +171,27 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     });
     canvas.element.append(messages.element);
 
+    // playback of a run of the history on the animated diagram (src/animation/), plots marking the time
+    const animation = new DiagramAnimation(canvas, store);
+    const playback = new PlaybackBar({
+        animation,
+        setPlotTime: (time) => plots.setPlaybackTime(time),
+        // only what the run logged is asked for (a recorded live session logs what it recorded)
+        load: async (run, names) => {
+            const logged = new Set(await rest.loggedVariables(run.jobId));
+            await runs.ensure(names.filter((n) => logged.has(n)), [run]);
+        },
+    });
+    canvas.element.append(playback.element);
+    const playBack = (job: JobInfo) => {
+        runs.choose(job, plots.allVariables())
+            .then(() => {
+                const run = runs.generations.find((r) => r.jobId === job.id);
+                return run ? playback.open(run) : undefined;
+            })
+            .catch((e) => toast(`Playback: ${errorText(e)}`, 'error'));
+    };
+
     // ---- actions shared by keys, buttons, the panel and the context menus (EditorActions.ts) ----
     // the parameter panel on a component, its first field that takes input in focus
     const focusParameters = () => {
@@ -195,11 +219,13 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             const r = anchor.getBoundingClientRect();
             showVariables(ref, { x: r.left - 200, y: r.top });
         },
+        addLiveControl: (name: string) => void live.addControlFor(name),
     };
     const menuContext: MenuContext = {
         actions: editor, store, canvas,
         plot: (variable, label, unit) => plots.addVariable(variable, label, unit),
         showHelp: () => help.open(),
+        addLiveControl: (name) => void live.addControlFor(name),
     };
     const panel = new ParameterPanel(store, actions, permissions);
     const parameterPortsButton = h('button', {
@@ -325,7 +351,16 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         panel.element,
         assignment ? instructionsPanel(assignment) : null);
     const historyPanel = new HistoryPanel(rest, runs, { modelId: () => summary.id, username: () => session.user?.username,
-        parameters: () => parameterTexts(store.model), plotted: () => plots.allVariables() });
+        parameters: () => parameterTexts(store.model), plotted: () => plots.allVariables(), playBack });
+    // live mode (src/live/): its toolbar beside ▶ Run, its controls on the drawing
+    const live = new LiveMode({
+        transport: { request: ws.request.bind(ws), onLive: ws.onLive.bind(ws), onStatus: ws.onStatus.bind(ws) },
+        store, canvas, plots, modelId: () => summary.id, defaultVariables: () => sinkVariables(store.model),
+        recorded: () => void historyPanel.reload(), editable: () => permissions.allows('system-parameters'), reportError,
+        goingLive: () => playback.close(),
+    });
+    runPanel.element.querySelector('[data-testid="cancel"]')?.after(live.bar.element);
+    live.attachDiagram(animation);
     const runArea = h('section', { class: 'run-area' }, runPanel.element, h('div', { class: 'run-body' }, historyPanel.element, plots.element));
     const layout = h('main', { class: 'editor' }, header, editorBody, runArea, picker);
     // the drawing and the run area share the height as the user last left them
@@ -430,7 +465,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
 
     // the browser tests' handle, only in their build (vite build --mode e2e)
     const testHandle = window as unknown as { __tlmhub?: unknown };
-    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws };
+    if (import.meta.env.MODE === 'e2e') testHandle.__tlmhub = { store, canvas, runs, plots, ws, animation, playback, live };
 
     return {
         dirty: () => store.dirty,
@@ -445,10 +480,12 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             offStatus();
             clearTimeout(connectionTimer);
             delete testHandle.__tlmhub;
+            playback.close();
             canvas.dispose();
             plots.dispose();
             historyPanel.dispose();
             studies.dispose();
+            live.dispose();
             runs.dispose();
             ws.close();
         },

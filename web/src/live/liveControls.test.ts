@@ -1,0 +1,76 @@
+import { describe, expect, it } from 'vitest';
+import { EditorStore } from '../editor/EditorStore';
+import { AddComponent, copySelection, Paste } from '../editor/commands';
+import { FakeServer } from '../testing/FakeServer';
+import { ChangeLiveControls } from './ChangeLiveControls';
+import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, modelValueOf, type LiveControl } from './liveControls';
+
+const at = (x: number, y: number) => ({ x, y, angle: 0, flipped: false });
+const slider: LiveControl = { kind: 'slider', name: 'Step.y_A', min: 0, max: 0.2, x: 100.4, y: 60, path: [] };
+const toggle: LiveControl = { kind: 'switch', name: 'Sub$Switch.state', min: 0, max: 1, off: 0, on: 1, x: -20, y: 5, path: ['Sub'] };
+
+async function storeWithStep() {
+    const server = new FakeServer();
+    const store = new EditorStore(structuredClone(server.model), server.handle);
+    await store.execute(new AddComponent([], 'SignalStep', 'Step', at(0, 0)));
+    return { server, store };
+}
+
+describe('live controls in the model', () => {
+    it('are saved in the model as its string system parameter and read back the same (save and reopen)', async () => {
+        const { server, store } = await storeWithStep();
+        await store.execute(new ChangeLiveControls([slider, toggle], 'Add live control'));
+        const stored = server.model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER);
+        expect(stored?.value).toContain('"Step.y_A"');
+        // what the server keeps is what a reopened editor (or a copy of the model) starts from
+        const reopened = new EditorStore(structuredClone(server.model), server.handle);
+        expect(controlsOf(reopened.model)).toEqual([{ ...slider, x: 100 }, toggle]);
+        const copied = JSON.parse(JSON.stringify(server.model));
+        expect(controlsOf(copied)).toEqual(controlsOf(reopened.model));
+    });
+
+    it('moving and removing one are undoable edits', async () => {
+        const { store } = await storeWithStep();
+        await store.execute(new ChangeLiveControls([slider], 'Add live control'));
+        await store.execute(new ChangeLiveControls([{ ...slider, x: 300 }], 'Move live control'));
+        expect(store.history.undoLabel).toBe('Move live control');
+        expect(controlsOf(store.model)[0].x).toBe(300);
+        await store.execute(new ChangeLiveControls([], 'Remove live control'));
+        expect(controlsOf(store.model)).toEqual([]);
+        await store.undo();
+        await store.undo();
+        expect(controlsOf(store.model)[0].x).toBe(100);
+    });
+
+    it('are not touched by copying and pasting components (they belong to the model)', async () => {
+        const { store } = await storeWithStep();
+        await store.execute(new ChangeLiveControls([slider], 'Add live control'));
+        const clip = copySelection(store.model, [], ['Step'])!;
+        await store.execute(new Paste([], clip));
+        expect(controlsOf(store.model)).toHaveLength(1);
+    });
+
+    it('a value edited by hand into something else gives the controls that still make sense', () => {
+        const model = (value: string) => ({ name: 'm', system: { ...new FakeServer().model.system, parameters: [{ ...controlsParameter([]), value }] } });
+        expect(controlsOf(model('not json'))).toEqual([]);
+        expect(controlsOf(model('{"kind":"slider"}'))).toEqual([]);
+        expect(controlsOf(model('[{"kind":"dial","name":"A.b","min":0,"max":1,"x":0,"y":0},{"kind":"knob","name":"A.b","min":0,"max":1,"x":0,"y":0}]')))
+            .toEqual([{ kind: 'knob', name: 'A.b', min: 0, max: 1, x: 0, y: 0, path: [] }]);
+    });
+
+    it('show the value the model gives what they set before a session runs (an input by its name)', async () => {
+        const { store } = await storeWithStep();
+        // (the fake server's step stores its amplitude as y_A#Value = 1)
+        expect(modelValueOf(store.model, 'Step.y_A')).toBe(1);
+        expect(modelValueOf(store.model, 'Step.nothing')).toBeUndefined();
+        expect(modelValueOf(store.model, 'Nobody.y_A')).toBeUndefined();
+        expect(modelValueOf(store.model, 'Sub$Step.y_A')).toBeUndefined();
+    });
+
+    it('says which numbers cannot be used', () => {
+        expect(controlProblem(slider)).toBe('');
+        expect(controlProblem({ ...slider, min: 1, max: 1 })).toMatch(/Min must be below max/);
+        expect(controlProblem({ ...slider, max: Number.NaN })).toMatch(/number/);
+        expect(controlProblem({ ...toggle, on: 0 })).toMatch(/Off and on must differ/);
+    });
+});

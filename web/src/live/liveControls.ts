@@ -1,0 +1,106 @@
+// Live controls placed on the drawing (a slider, knob, switch or number field bound to a value
+// that may change while the model runs) are part of the model: a teacher puts them in an
+// assignment's template, and they must survive save, reopen, "save as my copy" and .hmf.
+// The model the server sends has no field for GUI data of our own, so they are kept as one
+// string system parameter of the top-level system, holding JSON; Hopsan reads it as an
+// ordinary (unused) string parameter. A field for them in the model would be better (report).
+import type { Model, SysParam } from '../protocol/types';
+import { findComponent, systemAt, type SystemPath } from '../model/modelState';
+
+export type LiveControlKind = 'slider' | 'knob' | 'switch' | 'number';
+export const CONTROL_KINDS: readonly LiveControlKind[] = ['slider', 'knob', 'switch', 'number'];
+
+export interface LiveControl {
+    kind: LiveControlKind;
+    /** The live value it sets, as live.set names it: Step.y_A, Sub$Gain.k. */
+    name: string;
+    min: number;
+    max: number;
+    /** A switch's two values (min and max otherwise). */
+    off?: number;
+    on?: number;
+    /** Where on the drawing, in the coordinates of the (sub)system at `path`. */
+    x: number;
+    y: number;
+    path: SystemPath;
+}
+
+/** The system parameter that holds them (top-level system). */
+export const CONTROLS_PARAMETER = 'tlmhub_live_controls';
+const DESCRIPTION = 'Live controls on the drawing (tlmhub web app; JSON, not used by the simulation)';
+
+/** The model's live controls; a value that is not what we wrote (edited by hand) gives what of it makes sense. */
+export function controlsOf(model: Model): LiveControl[] {
+    const text = model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER)?.value;
+    if (!text) return [];
+    let parsed: unknown;
+    try {
+        parsed = JSON.parse(text);
+    } catch {
+        return [];
+    }
+    return Array.isArray(parsed) ? parsed.flatMap((c) => {
+        const control = checked(c);
+        return control ? [control] : [];
+    }) : [];
+}
+
+/** The system parameter that stores `controls`. */
+export function controlsParameter(controls: readonly LiveControl[]): SysParam {
+    const value = JSON.stringify(controls.map((c) => {
+        const stored: LiveControl = { kind: c.kind, name: c.name, min: c.min, max: c.max, x: Math.round(c.x), y: Math.round(c.y), path: [...c.path] };
+        if (c.kind === 'switch') {
+            stored.off = c.off ?? c.min;
+            stored.on = c.on ?? c.max;
+        }
+        return stored;
+    }));
+    return { name: CONTROLS_PARAMETER, value, type: 'string', unit: '', description: DESCRIPTION };
+}
+
+/**
+ * The value a live value has in the model (`Step.y_A` is Step's input y_A, stored as
+ * `y_A#Value`; `Sub$Gain.k` is inside Sub), when it is a plain number: what a control shows
+ * before a session runs.
+ */
+export function modelValueOf(model: Model, name: string): number | undefined {
+    const dot = name.lastIndexOf('.');
+    if (dot < 0) return undefined;
+    const path = name.slice(0, dot).split('$');
+    const component = path.pop()!;
+    const system = systemAt(model, path);
+    const parameters = system ? findComponent(system, component)?.parameters ?? [] : [];
+    const parameter = name.slice(dot + 1);
+    const text = parameters.find((p) => p.name === parameter || p.name === `${parameter}#Value`)?.value;
+    const value = text === undefined || text.trim() === '' ? Number.NaN : Number(text);
+    return Number.isFinite(value) ? value : undefined;
+}
+
+/** A switch's off and on values; the other kinds' ends. */
+export function controlRange(c: LiveControl): { low: number; high: number } {
+    return c.kind === 'switch' ? { low: c.off ?? c.min, high: c.on ?? c.max } : { low: c.min, high: c.max };
+}
+
+/** Why a control's numbers cannot be used, or '' (min below max; a switch's two values differ). */
+export function controlProblem(c: Pick<LiveControl, 'kind' | 'min' | 'max' | 'off' | 'on'>): string {
+    const numbers = [c.min, c.max, ...(c.kind === 'switch' ? [c.off, c.on] : [])];
+    if (!numbers.every((n) => typeof n === 'number' && Number.isFinite(n))) return 'Every value must be a number.';
+    if (c.kind === 'switch') return c.off === c.on ? 'Off and on must differ.' : '';
+    return c.min < c.max ? '' : 'Min must be below max.';
+}
+
+function checked(raw: unknown): LiveControl | null {
+    if (typeof raw !== 'object' || raw === null) return null;
+    const c = raw as Record<string, unknown>;
+    const number = (v: unknown) => (typeof v === 'number' && Number.isFinite(v) ? v : undefined);
+    const kind = CONTROL_KINDS.find((k) => k === c.kind);
+    const [min, max, x, y] = [number(c.min), number(c.max), number(c.x), number(c.y)];
+    if (!kind || typeof c.name !== 'string' || c.name === '' || min === undefined || max === undefined || x === undefined || y === undefined) return null;
+    const path = Array.isArray(c.path) && c.path.every((p) => typeof p === 'string') ? c.path as string[] : [];
+    const control: LiveControl = { kind, name: c.name, min, max, x, y, path };
+    if (kind === 'switch') {
+        control.off = number(c.off) ?? min;
+        control.on = number(c.on) ?? max;
+    }
+    return control;
+}
