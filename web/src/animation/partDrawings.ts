@@ -35,7 +35,7 @@ export interface PartDrawing {
 interface Placement { x: number; y: number; then?: string }
 
 /** The icon's frame: Hopsan's icon size (the description's coordinates) on our half sizes. */
-interface Frame { kx: number; ky: number; hw: number; hh: number; size: [number, number] }
+interface Frame { kx: number; ky: number; hw: number; hh: number }
 
 const num = (el: Element | null, name: string) => Number(el?.getAttribute(name) ?? 0);
 
@@ -220,7 +220,7 @@ const still = new Set(['orifice', 'torsion-spring', 'damper']);
  * half sizes `hw`, `hh`), or null when none of its parts is drawn moving.
  */
 export function partDrawing(type: string, d: AnimationDescription, icon: SVGGElement, hw: number, hh: number): PartDrawing | null {
-    const f: Frame = { kx: (2 * hw) / d.size[0], ky: (2 * hh) / d.size[1], hw, hh, size: d.size };
+    const f: Frame = { kx: (2 * hw) / d.size[0], ky: (2 * hh) / d.size[1], hw, hh };
     const family = iconFamily(type);
     if (family && still.has(family)) return null;
     switch (family) {
