@@ -93,6 +93,9 @@ export class DiagramAnimation {
         this.bindings = null;
         this.boundKey = '';
         this.lastShow = 0;
+        // the next run or session starts with the ranges of what it shows
+        this.range.set(0, 0, true);
+        this.flowMax = 0;
     }
 
     private drawLine(l: DrawnLine, binding: LineBinding, values: ReadonlyMap<string, number>, dt: number): void {
