@@ -147,7 +147,7 @@ export class DiagramAnimation {
         const before = this.bindings;
         const bindings = this.bound();
         const stale = this.layer === null || !this.layer.isConnected || before !== bindings
-            || this.parts.some((p) => !p.drawing.element.isConnected);
+            || this.parts.some((p) => !p.drawing.element.isConnected) || this.lines.some((l) => !l.original.isConnected);
         if (!stale) return;
         this.unbind();
         const svg = this.canvas.element.querySelector<SVGSVGElement>('svg.canvas');
