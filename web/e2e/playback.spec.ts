@@ -152,3 +152,27 @@ test('plays back a Load Sensing System run; the draw time of a frame is measured
     await expect(page.getByTestId('playback-time')).toContainText('15.000 s');
     await page.locator('.canvas-wrap').screenshot({ path: `${docsScreenshots}load-sensing-system-animated.png` });
 });
+
+test('playing back Sub System Example, the drawing inside a subsystem entered animates too', async ({ page }) => {
+    await login(page, 'alice');
+    await openExample(page, 'Sub System Example');
+    const job = await runAndWait(page);
+    await playBack(page, job);
+    await page.getByTestId('playback-slider').fill('1000');
+    await page.locator('.canvas .component[data-name="Servo1"] .icon-frame').dblclick();
+    await expect(page.locator('.breadcrumb')).toContainText('Servo1');
+    // the subsystem's values are loaded and drawn: its cylinder's rod is out of its rest place
+    await expect.poll(() => page.evaluate(() => {
+        const app = (window as unknown as { __tlmhub: { playback: { shownRun: { columns: Map<string, number[]> } } } }).__tlmhub;
+        return app.playback.shownRun.columns.has('Servo1$Cylinder_C#P3#Position');
+    })).toBe(true);
+    const rod = page.locator('.component[data-name="Cylinder_C"] .animation-parts .movable-part');
+    const restShift = await page.evaluate(() => {
+        const barrel = document.querySelector('.component[data-name="Cylinder_C"] .glyph-barrel')!;
+        const piston = document.querySelector('.component[data-name="Cylinder_C"] .icon > .glyph-piston')!;
+        const n = (el: Element, a: string) => Number(el.getAttribute(a));
+        return n(barrel, 'x') + Math.max(0.8, n(barrel, 'stroke-width')) - n(piston, 'x');
+    });
+    await expect.poll(async () => Math.abs(shiftOf(await rod.getAttribute('transform')) - restShift)).toBeGreaterThan(1);
+    await expect(page.locator('.animation-lines .animated-line').first()).toBeAttached();
+});

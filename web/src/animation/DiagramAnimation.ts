@@ -93,6 +93,9 @@ export class DiagramAnimation {
         this.bindings = null;
         this.boundKey = '';
         this.lastShow = 0;
+        // the next run or session starts with the ranges of what it shows
+        this.range.set(0, 0, true);
+        this.flowMax = 0;
     }
 
     private drawLine(l: DrawnLine, binding: LineBinding, values: ReadonlyMap<string, number>, dt: number): void {
@@ -144,7 +147,7 @@ export class DiagramAnimation {
         const before = this.bindings;
         const bindings = this.bound();
         const stale = this.layer === null || !this.layer.isConnected || before !== bindings
-            || this.parts.some((p) => !p.drawing.element.isConnected);
+            || this.parts.some((p) => !p.drawing.element.isConnected) || this.lines.some((l) => !l.original.isConnected);
         if (!stale) return;
         this.unbind();
         const svg = this.canvas.element.querySelector<SVGSVGElement>('svg.canvas');

@@ -67,17 +67,32 @@ export class PlaybackBar {
         this.run = run;
         this.title.textContent = run.label;
         this.element.hidden = false;
-        const names = this.host.animation.variables();
-        await this.host.load(run, names);
-        if (this.run !== run) return;
-        this.columns = new Map(names.flatMap((n) => {
-            const c = run.columns.get(n);
-            return c ? [[n, c] as [string, number[]]] : [];
-        }));
+        if (!await this.loadValues(run)) return;
         // the colours span the run's pressures (the user may change the range on the scale)
         const [low, high] = runPressureRange([...this.columns].filter(([n]) => n.endsWith('#Pressure')).map(([, c]) => c));
         this.host.animation.range.set(low, high);
         this.seek(this.start);
+    }
+
+    /** The drawing shows another system (a subsystem entered or left): its values are loaded, at the same instant. */
+    async refresh(): Promise<void> {
+        const run = this.run;
+        if (!run) return;
+        // drawn over the new system at once, its parts at rest until their values are in
+        this.seek(this.t);
+        if (await this.loadValues(run)) this.seek(this.t);
+    }
+
+    /** Loads the values the drawing needs; false when another run was opened meanwhile. */
+    private async loadValues(run: RunData): Promise<boolean> {
+        const names = this.host.animation.variables();
+        await this.host.load(run, names);
+        if (this.run !== run) return false;
+        this.columns = new Map(names.flatMap((n) => {
+            const c = run.columns.get(n);
+            return c ? [[n, c] as [string, number[]]] : [];
+        }));
+        return true;
     }
 
     /** Leaves playback: the drawing and the plots as they were. */

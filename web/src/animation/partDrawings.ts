@@ -35,7 +35,7 @@ export interface PartDrawing {
 interface Placement { x: number; y: number; then?: string }
 
 /** The icon's frame: Hopsan's icon size (the description's coordinates) on our half sizes. */
-interface Frame { kx: number; ky: number; hw: number; hh: number; size: [number, number] }
+interface Frame { kx: number; ky: number; hw: number; hh: number }
 
 const num = (el: Element | null, name: string) => Number(el?.getAttribute(name) ?? 0);
 
@@ -93,7 +93,7 @@ const movingPorts = (d: AnimationDescription, m: number) =>
 const round = (v: number) => Math.round(v * 100) / 100;
 const translate = (x: number, y: number) => `translate(${round(x)},${round(y)})`;
 
-/** The first movable that moves (by translation or rotation), with its index. */
+/** The index of the first movable that moves (by translation, or by rotation), or −1. */
 function firstMoving(d: AnimationDescription, rotating: boolean): number {
     return d.movables.findIndex((m) => m.move?.some((e) => (rotating ? e.a !== 0 : e.x !== 0 || e.y !== 0)));
 }
@@ -114,7 +114,7 @@ function cylinder(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDra
     const [px, pw] = [num(piston, 'x'), num(piston, 'width')];
     const wall = Math.max(0.8, Number(barrel.getAttribute('stroke-width') ?? 1));
     const rest = bx + wall - px;
-    // chamber A (cap side) is data 0 of movable 0, chamber B the pressure among the piston part's data
+    // the first part that reads a pressure is chamber A's (cap side), the next chamber B's
     const pressures = d.movables.map((m, i) => m.data.findIndex(([, v]) => v === 'Pressure') >= 0 ? i : -1).filter((i) => i >= 0);
     const chamberA = s('rect', { class: 'chamber', x: bx, y: by, height: bh, width: 0, fill: 'none', stroke: 'none' });
     const chamberB = s('rect', { class: 'chamber', x: bx, y: by, height: bh, width: 0, fill: 'none', stroke: 'none' });
@@ -220,7 +220,7 @@ const still = new Set(['orifice', 'torsion-spring', 'damper']);
  * half sizes `hw`, `hh`), or null when none of its parts is drawn moving.
  */
 export function partDrawing(type: string, d: AnimationDescription, icon: SVGGElement, hw: number, hh: number): PartDrawing | null {
-    const f: Frame = { kx: (2 * hw) / d.size[0], ky: (2 * hh) / d.size[1], hw, hh, size: d.size };
+    const f: Frame = { kx: (2 * hw) / d.size[0], ky: (2 * hh) / d.size[1], hw, hh };
     const family = iconFamily(type);
     if (family && still.has(family)) return null;
     switch (family) {

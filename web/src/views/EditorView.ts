@@ -183,6 +183,14 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         },
     });
     canvas.element.append(playback.element);
+    // entering or leaving a subsystem shows other lines and parts: their values are loaded
+    let playbackPath = '';
+    store.subscribe(() => {
+        const path = store.path.join('$');
+        if (path === playbackPath) return;
+        playbackPath = path;
+        playback.refresh().catch((e) => toast(`Playback: ${errorText(e)}`, 'error'));
+    });
     const playBack = (job: JobInfo) => {
         runs.choose(job, plots.allVariables())
             .then(() => {
