@@ -5,6 +5,7 @@
 #include "ServerHarness.h"
 
 #include "core/Results.h"
+#include "core/Simulation.h"
 #include "core/hmf/HmfLoader.h"
 #include "server/live/LivePacer.h"
 
@@ -525,11 +526,14 @@ TEST_F(LiveSessions, AThirdSessionOfAUserIsRefusedNamingTheLimitsFlag)
 // however many the model has, up to the limit (a job stream shows 16 at most).
 TEST_F(LiveSessions, EveryNamedVariableIsStreamedAndPastTheLimitTheStartIsRefused)
 {
-    const tlmhub::LoadedModel servo = tlmhub::loadHmfFile(kPositionServo.string());
+    tlmhub::LoadedModel servo = tlmhub::loadHmfFile(kPositionServo.string());
     ASSERT_TRUE(servo.root) << servo.firstError();
+    tlmhub::Result<tlmhub::Simulation> compiled = tlmhub::compile(std::move(servo.root));
+    ASSERT_TRUE(compiled) << compiled.status().message();
+    // Variables are listed once logged: ten steps do it.
+    ASSERT_TRUE(compiled->runSteps(10));
     std::vector<std::string> all;
-    for (const tlmhub::LoggedVariable& v : tlmhub::listLoggedVariables(*servo.root))
-        if (v.port->node()) all.push_back(v.fullName);
+    for (const tlmhub::LoggedVariable& v : tlmhub::listLoggedVariables(compiled->system())) all.push_back(v.fullName);
     ASSERT_GT(all.size(), 16u);
 
     HttpClient user = loggedInAs(*server, "animator");
@@ -538,7 +542,7 @@ TEST_F(LiveSessions, EveryNamedVariableIsStreamedAndPastTheLimitTheStartIsRefuse
     const nlohmann::json started = ws.call("live.start", {{"model_id", model}, {"paused", true}, {"variables", all}});
     ASSERT_EQ(started.value("type", ""), "reply") << started.dump();
     EXPECT_EQ(started["data"]["variables"].get<std::vector<std::string>>(), all);
-    const std::int64_t id = started["data"]["session_id"];
+    const std::int64_t id = started["data"]["session_id"].get<std::int64_t>();
     ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 10}})["type"], "reply");
     const nlohmann::json frame = until(ws, isFrame);
     ASSERT_TRUE(frame.is_object());
