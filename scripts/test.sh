@@ -87,7 +87,9 @@ timing_flags() {
           "-DCMAKE_CXX_LINKER_LAUNCHER=$root/scripts/ci/time-command;$log")
 }
 slowest_build_steps() {
-  echo "slowest compiles and links in $1 (seconds):"
+  awk -F '\t' -v dir="$1" '{cpu += $1} END {printf "compiles and links in %s: %.0f s of CPU\n", dir, cpu}' \
+    "$1/build-times.tsv"
+  echo "the slowest (CPU seconds, wall seconds):"
   # sed reads to the end: head would close the pipe early, and under pipefail sort's
   # SIGPIPE (exit 141) once failed a whole CI run.
   sort -rn "$1/build-times.tsv" | sed -n "1,12{s|$root/||; s|^|  |; p}"
