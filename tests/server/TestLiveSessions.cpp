@@ -538,7 +538,7 @@ TEST_F(LiveSessions, EveryNamedVariableIsStreamedAndPastTheLimitTheStartIsRefuse
     const nlohmann::json started = ws.call("live.start", {{"model_id", model}, {"paused", true}, {"variables", all}});
     ASSERT_EQ(started.value("type", ""), "reply") << started.dump();
     EXPECT_EQ(started["data"]["variables"].get<std::vector<std::string>>(), all);
-    const std::int64_t id = started["data"]["session_id"];
+    const std::int64_t id = started["data"]["session_id"].get<std::int64_t>();
     ASSERT_EQ(ws.call("live.step", {{"session_id", id}, {"steps", 10}})["type"], "reply");
     const nlohmann::json frame = until(ws, isFrame);
     ASSERT_TRUE(frame.is_object());
