@@ -1,7 +1,7 @@
 #pragma once
 // Live sessions in a lab (docs/live-sessions.md, "In a lab"): who may share a session with a
 // class and who may watch it there, and what a student's session on a locked copy may change.
-// The rules of LabAccess.h applied to live sessions; the WebSocket and the class routes ask here.
+// The rules of LabAccess.h applied to live sessions; the WebSocket (WsApi) asks here.
 #include "server/labs/LabAccess.h"
 #include "server/protocol/Messages.generated.h"
 
