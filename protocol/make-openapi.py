@@ -330,6 +330,10 @@ paths = {
                                                          "application/json": {"schema": ANY}}},
          **errors("400", "401", "403", "404")},
         params=[ID, FORMAT], tag="labs")},
+    "/classes/{id}/live": {"get": op(
+        "The live sessions shared with the class on this node (live.share), for its members to watch read-only "
+        "with live.subscribe: {sessions: [{session_id, model_name, teacher: {id, username}}]}",
+        {**ok("{sessions}", ANY), **errors("401", "404")}, params=[ID], tag="labs")},
     "/classes/{id}/assignments": {
         "get": op("The class's assignments (students: the opened ones, with their status and copy)",
                   {**ok("{assignments}", ANY), **errors("401", "404")}, params=[ID], tag="labs"),

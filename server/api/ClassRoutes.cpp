@@ -7,6 +7,7 @@
 #include "server/http/HeaderValues.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
+#include "server/live/LiveSessionRegistry.h"
 #include "server/store/UnixTime.h"
 
 #include <sstream>
@@ -225,6 +226,24 @@ Response gradebook(Services& s, Call& call)
     return res;
 }
 
+// The live sessions shared with the class on this node (docs/live-sessions.md, "In a lab"):
+// what its members may watch with live.subscribe.
+Response sharedLiveSessions(Services& s, Call& call)
+{
+    const auto view = visibleClass(s, call);
+    if (!view) return labNotFound("class");
+    nlohmann::json sessions = nlohmann::json::array();
+    for (const auto& session : s.liveSimulations.sharedWith(view->info.id)) {
+        const std::optional<std::int64_t> modelId = session->config().job.modelId;
+        const auto model = modelId ? s.models.summary(*modelId) : std::nullopt;
+        const auto owner = s.users.find(session->ownerId());
+        sessions.push_back({{"session_id", session->id()},
+                            {"model_name", model ? model->name : std::string()},
+                            {"teacher", {{"id", session->ownerId()}, {"username", owner ? owner->username : std::string()}}}});
+    }
+    return jsonResponse(http::status::ok, {{"sessions", sessions}});
+}
+
 } // namespace
 
 void addClassRoutes(std::vector<RouteSpec>& routes)
@@ -239,6 +258,7 @@ void addClassRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::put, "/classes/{id}/members/{user_id}", true, setMember});
     routes.push_back({http::verb::delete_, "/classes/{id}/members/{user_id}", true, removeMember});
     routes.push_back({http::verb::get, "/classes/{id}/gradebook", true, gradebook});
+    routes.push_back({http::verb::get, "/classes/{id}/live", true, sharedLiveSessions});
 }
 
 } // namespace tlmhub::server

@@ -7,6 +7,7 @@
 #include "server/cluster/JobStreams.h"
 #include "server/labs/LabAccess.h"
 #include "server/labs/LabService.h"
+#include "server/labs/LiveLabAccess.h"
 #include "server/live/LiveSessionRegistry.h"
 #include "server/app/ServerOptions.h"
 #include "server/jobs/PreparedJob.h"
@@ -65,7 +66,7 @@ bool answeredOnConnection(const std::string& type)
 // pool within the user's slots there, as GET /models/{id} is.
 bool buildsLargeReply(const std::string& type)
 {
-    return type == "model.open" || type == "model.get";
+    return type == "model.open" || type == "model.get" || type == "live.model";
 }
 
 // On a locked copy a system parameter keeps the template's type, unit and description, and no
@@ -246,12 +247,20 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
     if (type == "study.subscribe") return subscribeStudy(msg.get<protocol::StudySubscribeRequest>());
     if (type == "study.unsubscribe") return unsubscribeStudy(msg.get<protocol::StudyUnsubscribeRequest>());
     if (type == "live.start") return startLive(msg.get<protocol::LiveStartRequest>());
+    if (type == "live.subscribe") return watchLive(msg.get<protocol::LiveSubscribeRequest>());
+    if (type == "live.model") return liveModel(msg.get<protocol::LiveModelRequest>());
     if (type.rfind("live.", 0) == 0) {
+        // Only the owner controls a session: to a watcher (a class member) it is not there.
         const auto session = ownLiveSession(msg.at("session_id").get<std::int64_t>());
         if (!session) return failure("not_found", "no such live session");
         session->touch();
         if (type == "live.set") {
             const auto set = msg.get<protocol::LiveSetRequest>();
+            if (session->config().labCopy) {
+                const std::string problem = liveSetLockProblem(mServices.labs.store(), mUser,
+                                                               *session->config().job.modelId, set.name, set.value);
+                if (!problem.empty()) return failure("locked", problem);
+            }
             const LiveSession::Reply reply = session->set(set.name, set.value);
             return reply.ok() ? success() : failure(reply.code, reply.message);
         }
@@ -262,7 +271,8 @@ WsApi::Reply WsApi::dispatch(const std::string& type, const nlohmann::json& msg)
             return liveReply(session->step(static_cast<std::uint64_t>(msg.get<protocol::LiveStepRequest>().steps)));
         if (type == "live.stop") return liveReply(session->stop("requested"));
         if (type == "live.record") return recordLive(session);
-        if (type == "live.subscribe") return watchLive(session, msg.get<protocol::LiveSubscribeRequest>());
+        if (type == "live.share") return shareLive(session, msg.get<protocol::LiveShareRequest>().classId, true);
+        if (type == "live.unshare") return shareLive(session, msg.get<protocol::LiveUnshareRequest>().classId, false);
     }
     if (!mSession.isOpen()) return failure("not_open", "open or create a model first (model.open)");
     if (mModelIsCopy) {
@@ -573,6 +583,7 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
     if (samplesWithinResultBytes < limits.maxLogSamples)
         config.recordLimit = "the job result limit of " + std::to_string(limits.maxResultBytes >> 20) + " MiB";
     config.job = std::move(job);
+    config.labCopy = mServices.labs.store().copyByModel(model->id).has_value();
     config.resolved.start = start;
     config.resolved.step = step;
     config.resolved.stop = stop;
@@ -585,10 +596,11 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
         mLiveRuns.push_back(session);
         if (mLiveRunsClosed) session->stop(std::nullopt);   // nobody is here to watch it
     }
-    protocol::LiveStartedData data{.sessionId = static_cast<std::int64_t>(session->id()), .variables = names,
-                                   .liveValues = {}, .start = start, .step = step, .stop = stop};
-    for (const LiveValue& v : session->liveValues())
-        data.liveValues.push_back({.name = v.path, .value = v.value, .unit = v.unit});
+    // On a locked copy its student sees only what the assignment lets them change.
+    protocol::LiveStartedData data{
+        .sessionId = static_cast<std::int64_t>(session->id()), .variables = names,
+        .liveValues = changeableLiveValues(mServices.labs.store(), mUser, model->id, session->liveValues()),
+        .start = start, .step = step, .stop = stop};
     // Its frames start after the reply, so the client knows the session's id first.
     mAfterReply = [session] { session->start(); };
     return success(data);
@@ -646,17 +658,61 @@ WsApi::Reply WsApi::recordLive(const std::shared_ptr<LiveSession>& session)
                                   {"full", recording.full}});
 }
 
-WsApi::Reply WsApi::watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request)
+std::shared_ptr<LiveSession> WsApi::watchableLiveSession(std::int64_t sessionId, std::int64_t& throughClass)
 {
+    throughClass = 0;
+    auto session = sessionId > 0 ? mServices.liveSimulations.find(static_cast<std::uint64_t>(sessionId)) : nullptr;
+    if (!session || session->ownerId() == mUser.id) return session;
+    // Another user's session is there only for members of a class it is shared with.
+    const auto shared = watchingClass(mServices.labs.store(), mUser, session->sharedClasses());
+    if (!shared) return nullptr;
+    throughClass = *shared;
+    return session;
+}
+
+WsApi::Reply WsApi::watchLive(const protocol::LiveSubscribeRequest& request)
+{
+    std::int64_t throughClass = 0;
+    const auto session = watchableLiveSession(request.sessionId, throughClass);
+    if (!session) return failure("not_found", "no such live session");
+    if (session->ownerId() == mUser.id) session->touch();
     const LiveSession::Reply state = session->state();
     if (!state.ok()) return liveReply(state);
     // The kept samples and then the live ones follow the reply.
-    mAfterReply = [this, session, sink = liveSink(request.frames)]() mutable {
-        const std::uint64_t watchId = session->watch(std::move(sink));
+    mAfterReply = [this, session, throughClass, sink = liveSink(request.frames)]() mutable {
+        const std::uint64_t watchId = session->watch(std::move(sink), throughClass);
         std::lock_guard lock(mLiveRunsMutex);
         if (watchId) mLiveWatches.emplace_back(session, watchId);
     };
     return liveReply(state);
+}
+
+WsApi::Reply WsApi::liveModel(const protocol::LiveModelRequest& request)
+{
+    std::int64_t throughClass = 0;
+    const auto session = watchableLiveSession(request.sessionId, throughClass);
+    if (!session) return failure("not_found", "no such live session");
+    const JobRequest& job = session->config().job;
+    const auto summary = job.modelId ? mServices.models.summary(*job.modelId) : std::nullopt;
+    const std::string name = summary ? summary->name : std::string();
+    // The text the session was compiled from (it loaded then), not the model as it is now.
+    EditSession drawing;
+    std::string error;
+    if (!drawing.openHmf(job.hmf, name, error)) return failure("invalid_model", error);
+    return success(protocol::LiveModelData{.modelName = name, .model = drawing.model(), .variables = session->variableNames()});
+}
+
+WsApi::Reply WsApi::shareLive(const std::shared_ptr<LiveSession>& session, std::int64_t classId, bool shared)
+{
+    if (!shared) {
+        // Always allowed to its owner (also once they no longer teach the class).
+        session->unshare(classId);
+        return success(protocol::LiveSharedData{.classIds = session->sharedClasses()});
+    }
+    if (const auto refused = liveShareRefusal(mServices.labs.store(), mUser, classId))
+        return failure(refused->code, refused->message);
+    session->share(classId);
+    return success(protocol::LiveSharedData{.classIds = session->sharedClasses()});
 }
 
 } // namespace tlmhub::server

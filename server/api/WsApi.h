@@ -58,7 +58,15 @@ private:
     std::shared_ptr<LiveSession> ownLiveSession(std::int64_t sessionId);
     // live.record: the session's samples and changes so far, stored as a finished job.
     Reply recordLive(const std::shared_ptr<LiveSession>& session);
-    Reply watchLive(const std::shared_ptr<LiveSession>& session, const protocol::LiveSubscribeRequest& request);
+    // The session this user may watch: their own (`throughClass` 0), or one shared with a class
+    // they are in (`throughClass` that class); else null.
+    std::shared_ptr<LiveSession> watchableLiveSession(std::int64_t sessionId, std::int64_t& throughClass);
+    // live.subscribe: frames and state events of a watchable session (read-only).
+    Reply watchLive(const protocol::LiveSubscribeRequest& request);
+    // live.model: the model a watchable session runs, for drawing it.
+    Reply liveModel(const protocol::LiveModelRequest& request);
+    // live.share, live.unshare: the owner's session with a class they teach.
+    Reply shareLive(const std::shared_ptr<LiveSession>& session, std::int64_t classId, bool shared);
     // Where a live session's frames and events for this connection go.
     LiveSessionSink liveSink(const std::optional<std::string>& frames);
     // `variables`: at most max_stream_variables are streamed; `rate` in frames per second.

@@ -25,6 +25,9 @@ public:
     static std::optional<ParameterLock> parse(const nlohmann::json& list, std::string& error);
     nlohmann::json toJson() const;
     const std::vector<AllowedParameter>& parameters() const { return mParameters; }
+    // The listed parameter `name` names (an input's start value "Comp.x#Value" and "Comp.x"
+    // alike), or null.
+    const AllowedParameter* find(const std::string& name) const;
 
     // "" when `value` may be given to parameter `name`, else why not. A bounded parameter
     // takes plain numbers only.
@@ -35,7 +38,6 @@ public:
     std::string changeProblem(const std::string& base, const std::string& changed, const ModelLimits& limits) const;
 
 private:
-    const AllowedParameter* find(const std::string& name) const;
     std::vector<AllowedParameter> mParameters;
 };
 

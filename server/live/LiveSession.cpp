@@ -48,6 +48,13 @@ LiveSession::LiveSession(boost::asio::any_io_executor executor, LiveSessionConfi
     mStartedAt = mLastTouch = mConfig.clock();
 }
 
+std::vector<std::string> LiveSession::variableNames() const
+{
+    std::vector<std::string> names;
+    for (const LiveVariable& v : mVariables) names.push_back(v.name);   // fixed from the start
+    return names;
+}
+
 void LiveSession::arm()
 {
     std::lock_guard lock(mMutex);
@@ -171,7 +178,7 @@ void LiveSession::sendFrame(LivePacer::Clock::time_point now)
         return frame;
     };
     // A watcher too slow for its frames stops watching; the owner's ends the session.
-    std::erase_if(mWatchers, [&](auto& watcher) { return !watcher.second.frame(frameOf()); });
+    std::erase_if(mWatchers, [&](auto& watcher) { return !watcher.second.sink.frame(frameOf()); });
     if (!mSink.frame(frameOf())) end(std::nullopt);
 }
 
@@ -193,7 +200,7 @@ void LiveSession::sendState(const std::optional<std::string>& reason, const std:
                                    .reason = reason,
                                    .message = message.empty() ? std::nullopt : std::optional(message)};
     const std::string text = toJsonText(event);
-    for (const auto& [id, watcher] : mWatchers) watcher.event(text);
+    for (const auto& [id, watcher] : mWatchers) watcher.sink.event(text);
     if (toOwner) mSink.event(text);
 }
 
@@ -205,6 +212,7 @@ void LiveSession::end(const std::optional<std::string>& reason, const std::strin
     if (reason) sendState(reason, message);
     else sendState("closed", "the session's owner disconnected", false);
     mWatchers.clear();
+    mSharedClasses.clear();
     boost::asio::post(mStrand, [self = shared_from_this()] { self->mTimer.cancel(); });
     mEnded(mConfig.id);
 }
@@ -275,7 +283,7 @@ LiveSession::Reply LiveSession::stop(const std::optional<std::string>& reason)
     return stateReply();
 }
 
-std::uint64_t LiveSession::watch(LiveSessionSink sink)
+std::uint64_t LiveSession::watch(LiveSessionSink sink, std::int64_t throughClass)
 {
     std::lock_guard lock(mMutex);
     if (mStopped) return 0;
@@ -291,8 +299,41 @@ std::uint64_t LiveSession::watch(LiveSessionSink sink)
         if (!sink.frame(std::move(frame))) return 0;
     }
     const std::uint64_t id = mNextWatch++;
-    mWatchers.emplace(id, std::move(sink));
+    mWatchers.emplace(id, Watcher{std::move(sink), throughClass});
     return id;
+}
+
+void LiveSession::share(std::int64_t classId)
+{
+    std::lock_guard lock(mMutex);
+    if (!mStopped) mSharedClasses.insert(classId);
+}
+
+void LiveSession::unshare(std::int64_t classId)
+{
+    std::lock_guard lock(mMutex);
+    mSharedClasses.erase(classId);
+    // The session goes on for everyone else: only these watchers are told it stopped for them.
+    protocol::LiveStateData state = stateData();
+    const std::string text = toJsonText(protocol::LiveStateEvent{
+        .sessionId = static_cast<std::int64_t>(mConfig.id),
+        .state = "stopped",
+        .speed = state.speed,
+        .achievedSpeed = 0.0,
+        .modelTime = state.modelTime,
+        .reason = std::string("unshared"),
+        .message = std::string("the session's owner stopped sharing it with your class")});
+    std::erase_if(mWatchers, [&](auto& watcher) {
+        if (watcher.second.throughClass != classId) return false;
+        watcher.second.sink.event(text);
+        return true;
+    });
+}
+
+std::vector<std::int64_t> LiveSession::sharedClasses() const
+{
+    std::lock_guard lock(mMutex);
+    return {mSharedClasses.begin(), mSharedClasses.end()};
 }
 
 void LiveSession::record(const FrameSamples& samples)

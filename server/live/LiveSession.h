@@ -48,6 +48,9 @@ struct LiveSessionConfig {
     // stores its run as.
     JobRequest job;
     JobInfo resolved;
+    // The model is an assignment's copy: each live.set asks the lab's lock
+    // (server/labs/LiveLabAccess.h).
+    bool labCopy = false;
     // Pacing reads this clock (tests inject one); the timer waits in real time.
     std::function<LivePacer::Clock::time_point()> clock;
 };
@@ -110,6 +113,8 @@ public:
     const LiveSessionConfig& config() const { return mConfig; }
     // What live.set may change, with the values the run starts from (as live.start replies).
     const std::vector<LiveValue>& liveValues() const { return mLiveValues; }
+    // The streamed variables' names, in the order frames carry them.
+    std::vector<std::string> variableNames() const;
 
     // Starts the ticks (the registry, once the session is in it): until start(), they only
     // watch the idle timeout, so a session whose connection ended before its reply ends too.
@@ -126,10 +131,17 @@ public:
     Reply stop(const std::optional<std::string>& reason);
     // A message from the owner: the idle timeout starts again.
     void touch();
-    // Another socket of the owner's watches the session: its first frame carries the kept
-    // samples, then it gets every frame and state event. Returns the watch's id for unwatch.
-    std::uint64_t watch(LiveSessionSink sink);
+    // Another socket watches the session (the owner's, or through `throughClass`, a class it
+    // is shared with: 0 for the owner's): its first frame carries the kept samples, then it
+    // gets every frame and state event. Returns the watch's id for unwatch, 0 once stopped.
+    std::uint64_t watch(LiveSessionSink sink, std::int64_t throughClass = 0);
     void unwatch(std::uint64_t watchId);
+    // Shared with a class (docs/live-sessions.md, "In a lab"): its members may watch. Who may
+    // share and watch is the caller's to decide (server/labs/LiveLabAccess.h).
+    void share(std::int64_t classId);
+    // Ends the watches through `classId`: each gets event.live.state stopped, reason unshared.
+    void unshare(std::int64_t classId);
+    std::vector<std::int64_t> sharedClasses() const;
     Reply state() const;
     // A copy of the samples and changes recorded since the start.
     LiveRecording recording() const;
@@ -172,7 +184,12 @@ private:
     bool mStopped = false;
     std::map<std::string, double> mPendingSets;
     std::deque<std::pair<LivePacer::Clock::time_point, std::shared_ptr<const FrameSamples>>> mKept;
-    std::map<std::uint64_t, LiveSessionSink> mWatchers;
+    struct Watcher {
+        LiveSessionSink sink;
+        std::int64_t throughClass = 0;   // 0: the owner's own socket
+    };
+    std::map<std::uint64_t, Watcher> mWatchers;
+    std::set<std::int64_t> mSharedClasses;
     std::uint64_t mNextWatch = 1;
     std::map<std::string, LivePacer::Clock::time_point> mLastSetApplied;
     LiveRecording mRecording;

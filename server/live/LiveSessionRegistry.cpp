@@ -1,5 +1,6 @@
 #include "server/live/LiveSessionRegistry.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace tlmhub::server {
@@ -60,6 +61,21 @@ std::shared_ptr<LiveSession> LiveSessionRegistry::find(std::uint64_t id) const
     std::lock_guard lock(mMutex);
     const auto it = mSessions.find(id);
     return it == mSessions.end() ? nullptr : it->second;
+}
+
+std::vector<std::shared_ptr<LiveSession>> LiveSessionRegistry::sharedWith(std::int64_t classId) const
+{
+    std::vector<std::shared_ptr<LiveSession>> sessions;
+    {
+        std::lock_guard lock(mMutex);
+        for (const auto& [id, session] : mSessions) sessions.push_back(session);
+    }
+    // Asked outside the lock: a session ending holds its own lock and then takes this one.
+    std::erase_if(sessions, [classId](const std::shared_ptr<LiveSession>& session) {
+        const std::vector<std::int64_t> classes = session->sharedClasses();
+        return std::find(classes.begin(), classes.end(), classId) == classes.end();
+    });
+    return sessions;
 }
 
 void LiveSessionRegistry::ended(std::uint64_t id)

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tlmhub::server {
 
@@ -43,6 +44,8 @@ public:
                                         std::vector<LiveVariable> variables, LiveSessionSink sink);
     // A running session, or null.
     std::shared_ptr<LiveSession> find(std::uint64_t id) const;
+    // The running sessions shared with class `classId` (LiveSession::share).
+    std::vector<std::shared_ptr<LiveSession>> sharedWith(std::int64_t classId) const;
     // Stops every session, as at shutdown.
     void stopAll();
 

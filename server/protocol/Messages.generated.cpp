@@ -2081,6 +2081,8 @@ void from_json(const nlohmann::json& j, LiveValue& v)
     j.at("name").get_to(v.name);
     j.at("value").get_to(v.value);
     j.at("unit").get_to(v.unit);
+    if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
+    if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
 }
 
 void to_json(nlohmann::json& j, const LiveValue& v)
@@ -2089,6 +2091,8 @@ void to_json(nlohmann::json& j, const LiveValue& v)
     j["name"] = v.name;
     j["value"] = v.value;
     j["unit"] = v.unit;
+    if (v.min) j["min"] = *v.min;
+    if (v.max) j["max"] = *v.max;
 }
 
 void from_json(const nlohmann::json& j, LiveStateData& v)
@@ -2205,6 +2209,78 @@ void to_json(nlohmann::json& j, const LiveSubscribeRequest& v)
     j["type"] = "live.subscribe";
     j["session_id"] = v.sessionId;
     if (v.frames) j["frames"] = *v.frames;
+}
+
+void from_json(const nlohmann::json& j, LiveShareRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    j.at("class_id").get_to(v.classId);
+}
+
+void to_json(nlohmann::json& j, const LiveShareRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.share";
+    j["session_id"] = v.sessionId;
+    j["class_id"] = v.classId;
+}
+
+void from_json(const nlohmann::json& j, LiveUnshareRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+    j.at("class_id").get_to(v.classId);
+}
+
+void to_json(nlohmann::json& j, const LiveUnshareRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.unshare";
+    j["session_id"] = v.sessionId;
+    j["class_id"] = v.classId;
+}
+
+void from_json(const nlohmann::json& j, LiveSharedData& v)
+{
+    j.at("class_ids").get_to(v.classIds);
+}
+
+void to_json(nlohmann::json& j, const LiveSharedData& v)
+{
+    j = nlohmann::json::object();
+    j["class_ids"] = v.classIds;
+}
+
+void from_json(const nlohmann::json& j, LiveModelRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("session_id").get_to(v.sessionId);
+}
+
+void to_json(nlohmann::json& j, const LiveModelRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "live.model";
+    j["session_id"] = v.sessionId;
+}
+
+void from_json(const nlohmann::json& j, LiveModelData& v)
+{
+    j.at("model_name").get_to(v.modelName);
+    j.at("model").get_to(v.model);
+    j.at("variables").get_to(v.variables);
+}
+
+void to_json(nlohmann::json& j, const LiveModelData& v)
+{
+    j = nlohmann::json::object();
+    j["model_name"] = v.modelName;
+    j["model"] = v.model;
+    j["variables"] = v.variables;
 }
 
 } // namespace tlmhub::server::protocol

@@ -67,11 +67,15 @@ struct JobSettings;
 struct JobUpdate;
 struct LiveChange;
 struct LiveFrameEvent;
+struct LiveModelData;
+struct LiveModelRequest;
 struct LivePauseRequest;
 struct LiveRecordRequest;
 struct LiveRecordedData;
 struct LiveResumeRequest;
 struct LiveSetRequest;
+struct LiveShareRequest;
+struct LiveSharedData;
 struct LiveSpeedRequest;
 struct LiveStartRequest;
 struct LiveStartedData;
@@ -80,6 +84,7 @@ struct LiveStateEvent;
 struct LiveStepRequest;
 struct LiveStopRequest;
 struct LiveSubscribeRequest;
+struct LiveUnshareRequest;
 struct LiveValue;
 struct LogSubscribeRequest;
 struct LoginRequest;
@@ -1392,6 +1397,8 @@ struct LiveValue {
     std::string name{};
     double value{};
     std::string unit{};
+    std::optional<double> min;
+    std::optional<double> max;
 };
 void from_json(const nlohmann::json& j, LiveValue& v);
 void to_json(nlohmann::json& j, const LiveValue& v);
@@ -1457,8 +1464,9 @@ struct LiveStateEvent {
 void from_json(const nlohmann::json& j, LiveStateEvent& v);
 void to_json(nlohmann::json& j, const LiveStateEvent& v);
 
-// Watch one of your live sessions from another socket: the first event.live.frame carries the
-// samples of its last 60 s, later ones follow as they are taken.
+// Watch a live session from another socket: one of your own, or one shared with a class you
+// are a member of (read-only: its controls stay with its owner). The first event.live.frame
+// carries the samples of its last 60 s, later ones follow as they are taken.
 struct LiveSubscribeRequest {
     nlohmann::json id{};
     // "type": always "live.subscribe"
@@ -1467,6 +1475,56 @@ struct LiveSubscribeRequest {
 };
 void from_json(const nlohmann::json& j, LiveSubscribeRequest& v);
 void to_json(nlohmann::json& j, const LiveSubscribeRequest& v);
+
+// Share one of your live sessions with a class you teach: its members may then watch it
+// read-only (live.subscribe); GET /api/v1/classes/{id}/live lists it. Sharing ends with the
+// session.
+struct LiveShareRequest {
+    nlohmann::json id{};
+    // "type": always "live.share"
+    std::int64_t sessionId{};
+    std::int64_t classId{};
+};
+void from_json(const nlohmann::json& j, LiveShareRequest& v);
+void to_json(nlohmann::json& j, const LiveShareRequest& v);
+
+// Stop sharing a live session with a class: the class's members watching it get
+// event.live.state stopped, reason unshared; the session goes on.
+struct LiveUnshareRequest {
+    nlohmann::json id{};
+    // "type": always "live.unshare"
+    std::int64_t sessionId{};
+    std::int64_t classId{};
+};
+void from_json(const nlohmann::json& j, LiveUnshareRequest& v);
+void to_json(nlohmann::json& j, const LiveUnshareRequest& v);
+
+// The classes the session is shared with now.
+struct LiveSharedData {
+    std::vector<std::int64_t> classIds;
+};
+void from_json(const nlohmann::json& j, LiveSharedData& v);
+void to_json(nlohmann::json& j, const LiveSharedData& v);
+
+// The model a live session runs, as its saved text was when the session started: for drawing
+// it (an animated diagram) where the model itself may not be read, e.g. a class member
+// watching a shared session. Its owner and the sockets that may watch it (live.subscribe) may
+// ask.
+struct LiveModelRequest {
+    nlohmann::json id{};
+    // "type": always "live.model"
+    std::int64_t sessionId{};
+};
+void from_json(const nlohmann::json& j, LiveModelRequest& v);
+void to_json(nlohmann::json& j, const LiveModelRequest& v);
+
+struct LiveModelData {
+    std::string modelName{};
+    Model model{};
+    std::vector<std::string> variables;
+};
+void from_json(const nlohmann::json& j, LiveModelData& v);
+void to_json(nlohmann::json& j, const LiveModelData& v);
 
 // Calls visit.template operator()<T>("Name") for every struct, e.g. for a test that
 // round-trips examples through them all.
@@ -1528,11 +1586,15 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<JobUpdate>("JobUpdate");
     visit.template operator()<LiveChange>("LiveChange");
     visit.template operator()<LiveFrameEvent>("LiveFrameEvent");
+    visit.template operator()<LiveModelData>("LiveModelData");
+    visit.template operator()<LiveModelRequest>("LiveModelRequest");
     visit.template operator()<LivePauseRequest>("LivePauseRequest");
     visit.template operator()<LiveRecordRequest>("LiveRecordRequest");
     visit.template operator()<LiveRecordedData>("LiveRecordedData");
     visit.template operator()<LiveResumeRequest>("LiveResumeRequest");
     visit.template operator()<LiveSetRequest>("LiveSetRequest");
+    visit.template operator()<LiveShareRequest>("LiveShareRequest");
+    visit.template operator()<LiveSharedData>("LiveSharedData");
     visit.template operator()<LiveSpeedRequest>("LiveSpeedRequest");
     visit.template operator()<LiveStartRequest>("LiveStartRequest");
     visit.template operator()<LiveStartedData>("LiveStartedData");
@@ -1541,6 +1603,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LiveStepRequest>("LiveStepRequest");
     visit.template operator()<LiveStopRequest>("LiveStopRequest");
     visit.template operator()<LiveSubscribeRequest>("LiveSubscribeRequest");
+    visit.template operator()<LiveUnshareRequest>("LiveUnshareRequest");
     visit.template operator()<LiveValue>("LiveValue");
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");

@@ -90,6 +90,7 @@ const std::map<std::string, RouteCase>& routeCases()
         {"PUT /classes/{id}/members/{user_id}", {Case::Foreign, ""}},
         {"DELETE /classes/{id}/members/{user_id}", {Case::Foreign, ""}},
         {"GET /classes/{id}/gradebook", {Case::Foreign, ""}},
+        {"GET /classes/{id}/live", {Case::Foreign, ""}},
         {"POST /classes/{id}/assignments", {Case::Foreign, ""}},
         {"GET /classes/{id}/assignments", {Case::Foreign, ""}},
         {"GET /assignments/{id}", {Case::Foreign, ""}},
@@ -155,6 +156,9 @@ const std::map<std::string, WsCase>& wsCases()
         {"live.stop", WsCase::Foreign},
         {"live.record", WsCase::Foreign},
         {"live.subscribe", WsCase::Foreign},
+        {"live.share", WsCase::Foreign},
+        {"live.unshare", WsCase::Foreign},
+        {"live.model", WsCase::Foreign},
     };
     return cases;
 }
@@ -332,6 +336,7 @@ TEST_F(AuthorisationCases, EveryWebSocketRequestRefusesOthersObjects)
         if (message.contains("job_id")) message["job_id"] = ids["job"];
         if (message.contains("study_id")) message["study_id"] = ids["study"];
         if (message.contains("session_id")) message["session_id"] = live["data"]["session_id"];
+        if (message.contains("class_id")) message["class_id"] = ids["class"];
         WsClient ws(server->port(), olga.token());
         const auto reply = ws.call(type, message);
         ASSERT_FALSE(reply.is_null()) << type << ": no answer";

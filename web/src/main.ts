@@ -1,5 +1,5 @@
 // App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>][&path=<subsystems>], #/account,
-// #/classes, #/class/<id>, #/assignment/<id>.
+// #/classes, #/class/<id>, #/assignment/<id>, #/watch/<live session id>?class=<id>.
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
 import { Session } from './app/Session';
@@ -11,6 +11,7 @@ import { renderClassList } from './labs/ClassListView';
 import { renderClass } from './labs/ClassView';
 import { allowedText, renderAssignment } from './labs/AssignmentView';
 import type { LabPage } from './labs/LabPage';
+import { renderWatch } from './live/WatchView';
 import { h } from './ui/dom';
 import { parseModelRoute, sameModel } from './app/modelRoute';
 
@@ -84,6 +85,7 @@ async function route(): Promise<void> {
     }
     renderTopbar();
     const lab = /^#\/(class|assignment)\/(\d+)$/.exec(hash);
+    const watch = /^#\/watch\/(\d+)(?:\?class=(\d+))?$/.exec(hash);
     if (hash === '#/login') {
         renderLogin(page, session, () => { location.hash = '#/models'; });
     } else if (hash === '#/account') {
@@ -104,6 +106,12 @@ async function route(): Promise<void> {
             opened.dispose();
             await route();
         }
+    } else if (watch) {
+        // a live session shared with a class, watched read-only (it ends with the page)
+        const back = watch[2] ? { href: `#/class/${watch[2]}`, label: 'Class' } : { href: '#/classes', label: 'Classes' };
+        const shown = await renderWatch(page, session, Number(watch[1]), back);
+        if (currentHash === hash) labPage = shown;
+        else shown.dispose();
     } else if (hash === '#/classes') {
         await renderClassList(page, session);
     } else if (lab) {

@@ -9,6 +9,7 @@ import { formatTime } from './format';
 import { errorPage, noCleanup, section, type LabPage } from './LabPage';
 import { assignmentForm } from './AssignmentForm';
 import { gradebookTable } from './GradebookTable';
+import { liveNowSection } from './LiveNowSection';
 
 const ROLES: ClassRole[] = ['student', 'assistant', 'teacher'];
 
@@ -116,6 +117,8 @@ export async function renderClass(root: HTMLElement, session: Session, classId: 
 
     // ---- members
     const members = staff ? membersSection(session, theClass, teacher, rerender) : null;
+    // ---- what the teacher shares live with the class
+    const liveNow = liveNowSection(labs, classId);
 
     root.replaceChildren(h('main', { class: 'model-list-page lab-page', 'data-testid': 'class-page' },
         h('a', { href: '#/classes', class: 'back' }, '← Classes'),
@@ -124,10 +127,11 @@ export async function renderClass(root: HTMLElement, session: Session, classId: 
             theClass.archived ? h('span', { class: 'badge', 'data-testid': 'archived' }, 'archived: read-only') : null,
             h('span', { class: 'muted' }, `teacher ${theClass.owner?.username ?? ''} · you: ${theClass.role ?? session.user?.role ?? ''}`)),
         teacherTools,
+        liveNow.element,
         section('Assignments', 'assignments', newAssignment ? h('div', { class: 'toolbar' }, newAssignment) : null, formSlot, assignmentTable),
         teacher ? section('Gradebook', 'gradebook', gradebookSlot) : null,
         members));
-    return noCleanup;
+    return liveNow;
 }
 
 function membersSection(session: Session, theClass: LabClass, teacher: boolean, rerender: () => void): HTMLElement {

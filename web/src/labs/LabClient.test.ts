@@ -119,4 +119,11 @@ describe('LabClient', () => {
         expect((error as ApiError).status).toBe(429);
         expect((error as ApiError).message).toBe('too many wrong codes: try again later');
     });
+
+    it('lists the live sessions a teacher shares with the class', async () => {
+        const shared = { session_id: 3, model_name: 'Servo demo', teacher: { id: 2, username: 'tina' } };
+        const { labs, sent } = fake(() => ({ body: { sessions: [shared] } }));
+        expect(await labs.sharedLiveSessions(5)).toEqual([shared]);
+        expect(sent.map((s) => `${s.method} ${s.url}`)).toEqual(['GET /api/v1/classes/5/live']);
+    });
 });

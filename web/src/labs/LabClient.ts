@@ -3,7 +3,7 @@
 import type { RestClient } from '../api/RestClient';
 import type {
     Assignment, AssignmentInput, Check, ClassRole, Copy, DashboardRow, Gradebook, HandIn, HandInComment,
-    ImportedAccount, LabClass, Overlay, PretestResult,
+    ImportedAccount, LabClass, Overlay, PretestResult, SharedLiveSession,
 } from './types';
 
 const id = (n: number) => encodeURIComponent(String(n));
@@ -22,6 +22,10 @@ export class LabClient {
     }
     deleteClass(classId: number): Promise<void> { return this.rest.call('DELETE', `/classes/${id(classId)}`); }
     join(code: string): Promise<LabClass> { return this.rest.call('POST', '/classes/join', { code }); }
+    /** The live sessions shared with the class on the server answering (live.share). */
+    sharedLiveSessions(classId: number): Promise<SharedLiveSession[]> {
+        return this.rest.call<{ sessions: SharedLiveSession[] }>('GET', `/classes/${id(classId)}/live`).then((r) => r.sessions);
+    }
     /** One user name per line (the first column; a header `username` is skipped). */
     importAccounts(classId: number, usernames: string[]): Promise<ImportedAccount[]> {
         const csv = usernames.map((u) => u.trim()).filter((u) => u !== '').join('\n') + '\n';

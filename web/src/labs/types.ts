@@ -180,3 +180,10 @@ export function isStaff(role: ClassRole | null | undefined, serverRole?: string)
 export function isTeacher(role: ClassRole | null | undefined, serverRole?: string): boolean {
     return role === 'teacher' || serverRole === 'admin';
 }
+
+/** A live session a teacher shares with the class (GET /classes/{id}/live): members may watch it. */
+export interface SharedLiveSession {
+    session_id: number;
+    model_name: string;
+    teacher: { id: number; username: string };
+}

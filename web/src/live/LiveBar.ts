@@ -17,6 +17,8 @@ export interface LiveBarActions {
     /** Steps a paused session: one display frame of model time, or one time step with Shift. */
     step(single: boolean): void;
     plotWindowChanged(seconds: number): void;
+    /** Shares the session with a class the user teaches; absent: the user teaches none. */
+    share?(): void;
 }
 
 export class LiveBar {
@@ -26,6 +28,7 @@ export class LiveBar {
     private readonly stepButton: HTMLButtonElement;
     private readonly stopButton: HTMLButtonElement;
     private readonly recordButton: HTMLButtonElement;
+    private readonly shareButton: HTMLButtonElement | null;
     private readonly speed: HTMLSelectElement;
     private readonly window: HTMLSelectElement;
     private readonly status: HTMLElement;
@@ -53,10 +56,14 @@ export class LiveBar {
             'data-testid': 'live-record', title: 'Keep what the session has run so far as a run in the history (it goes on)', onclick: () => actions.record(),
         }, '● Keep as run');
         this.stopButton = h('button', { 'data-testid': 'live-stop', onclick: () => actions.stop() }, '■ Stop');
+        const share = actions.share;
+        this.shareButton = share ? h('button', {
+            'data-testid': 'live-share', title: 'Let a class you teach watch this session read-only', onclick: () => share(),
+        }, 'Share with class…') : null;
         this.status = h('span', { class: 'live-status', 'data-testid': 'live-status', role: 'status' });
         this.message = h('span', { class: 'live-message', 'data-testid': 'live-message', role: 'alert' });
         this.element = h('div', { class: 'live-bar' }, this.goButton, this.pauseButton, this.stepButton, this.speed, this.window,
-            this.recordButton, this.stopButton, this.status, this.message);
+            this.recordButton, this.stopButton, this.shareButton, this.status, this.message);
         session.subscribe(() => this.refresh());
         this.refresh();
     }
@@ -78,7 +85,9 @@ export class LiveBar {
         const active = phase === 'starting' || phase === 'running' || phase === 'paused';
         this.element.dataset.phase = phase;
         this.goButton.hidden = active;
-        for (const el of [this.pauseButton, this.stepButton, this.recordButton, this.stopButton, this.window]) el.hidden = !active;
+        for (const el of [this.pauseButton, this.stepButton, this.recordButton, this.stopButton, this.window, this.shareButton]) {
+            if (el) el.hidden = !active;
+        }
         this.pauseButton.disabled = phase === 'starting';
         this.pauseButton.textContent = phase === 'paused' ? '▶ Resume' : '‖ Pause';
         this.stepButton.disabled = phase !== 'paused';

@@ -7,7 +7,7 @@ import type { Point } from '../model/geometry';
 import { h, s } from '../ui/dom';
 import { ChangeLiveControls } from './ChangeLiveControls';
 import { controlWidget, type ControlWidget } from './controlWidgets';
-import { controlsOf, modelValueOf, type LiveControl } from './liveControls';
+import { controlsOf, modelValueOf, withinBounds, type LiveBounds, type LiveControl } from './liveControls';
 
 /** The control's box in drawing units (its top centre is at the control's x, y). */
 const WIDTH = 150;
@@ -20,6 +20,8 @@ export interface LiveControlsState {
     defaults: LiveControl[];
     /** The value each control starts from. */
     values: ReadonlyMap<string, number>;
+    /** Bounds of live values (an assignment's locked copy): the controls keep within them. */
+    bounds?: ReadonlyMap<string, LiveBounds>;
 }
 
 export interface LiveControlActions {
@@ -72,7 +74,7 @@ export class LiveControlLayer {
     private draw(c: LiveControl, index: number, saved: LiveControl[]): SVGGElement {
         const live = this.live;
         const settable = live !== null && live.liveNames.has(c.name);
-        const widget = controlWidget(c, (v) => {
+        const widget = controlWidget(withinBounds(c, live?.bounds?.get(c.name)), (v) => {
             // other controls of the same value follow this one
             for (const other of this.widgets.get(c.name) ?? []) if (other !== widget) other.show(v);
             this.actions.set(c.name, v);

@@ -15,6 +15,8 @@ import { askForControl, defaultRange, type ControlChoice } from './ControlDialog
 import { controlsOf, type LiveControl } from './liveControls';
 import { defaultControls } from './defaultControls';
 import { appendLiveFrame, liveRun } from './liveRun';
+import { askForClass, shareableClasses } from './ShareDialog';
+import type { LabClass } from '../labs/types';
 import './live.css';
 
 /** What the animated diagram offers live mode (src/animation/DiagramAnimation.ts). */
@@ -39,6 +41,8 @@ export interface LiveModeDeps {
     reportError(e: unknown): void;
     /** Told before a session starts: the diagram is live mode's from then on (a playback ends). */
     goingLive?(): void;
+    /** The user's classes, for "Share with class…"; absent: the user may teach none (no button). */
+    classes?(): Promise<LabClass[]>;
 }
 
 /** One display frame at 30 frames a second: what ⇥ Step runs. */
@@ -68,6 +72,7 @@ export class LiveMode {
             record: () => void this.record(),
             step: (single) => void this.step(single),
             plotWindowChanged: (seconds) => { this.plotSeconds = seconds; },
+            share: deps.classes ? () => void this.share() : undefined,
         });
         this.plotSeconds = this.bar.plotWindow();
         this.detach.push(
@@ -107,6 +112,8 @@ export class LiveMode {
             liveNames,
             defaults: defaultControls(store.system, store.path, liveNames, controlsOf(store.model)),
             values: this.session.setValues,
+            // on an assignment's locked copy: only the listed values are live, within its bounds
+            bounds: new Map(started.live_values.map((v) => [v.name, { min: v.min, max: v.max }])),
         });
     }
 
@@ -124,6 +131,24 @@ export class LiveMode {
         const timestep = this.session.started?.step ?? 0;
         const steps = single || timestep <= 0 ? 1 : Math.max(1, Math.round(FRAME_SECONDS / timestep));
         await this.session.step(steps);
+    }
+
+    /** "Share with class…": a class the user teaches may watch the session (docs/live-sessions.md). */
+    private async share(): Promise<void> {
+        let classes: LabClass[];
+        try {
+            classes = shareableClasses(await this.deps.classes!());
+        } catch (e) {
+            this.deps.reportError(e);
+            return;
+        }
+        if (classes.length === 0) {
+            toast('You teach no class (that is not archived) to share the session with.');
+            return;
+        }
+        const classId = await askForClass(classes);
+        if (classId === null || !await this.session.share(classId)) return;
+        toast(`Shared with ${classes.find((c) => c.id === classId)?.name ?? 'the class'}: its members can watch from the class page.`);
     }
 
     private async record(): Promise<void> {

@@ -189,4 +189,34 @@ describe('LiveSession', () => {
         socket.receive(state({}));
         expect(jobEvents).toEqual([]);
     });
+
+    it('watches a session read-only: live.subscribe, then its frames, and a stop says the teacher stopped sharing', async () => {
+        const { socket, session } = await setup();
+        const watching = session.watch(3);
+        expect(socket.last('live.subscribe')).toMatchObject({ session_id: 3, frames: 'json' });
+        socket.reply('live.subscribe', { state: 'running', speed: 1, model_time: 1.2 });
+        expect(await watching).toBe(true);
+        expect(session.status.phase).toBe('running');
+        expect(session.liveValues).toEqual([]);
+        const heard: number[] = [];
+        session.onFrame((_, f) => heard.push(f.model_time));
+        socket.receive(frame(1.3, [0.2], [0.001]));
+        expect(heard).toEqual([1.3]);
+        expect(session.status.modelTime).toBe(1.3);
+        // nothing is sent for a watcher's set
+        expect(await session.set('Step.y_A', 1)).toBe(false);
+        expect(socket.sent.some((m) => m.type === 'live.set')).toBe(false);
+        socket.receive(state({ state: 'stopped', achieved_speed: 0, model_time: 1.4, reason: 'unshared' }));
+        expect(session.status.phase).toBe('stopped');
+        expect(session.status.message).toContain('stopped sharing');
+    });
+
+    it('a session that is not there to watch is refused in words', async () => {
+        const { socket, session } = await setup();
+        const watching = session.watch(9);
+        socket.refuse('live.subscribe', 'not_found', 'no such live session');
+        expect(await watching).toBe(false);
+        expect(session.status.phase).toBe('stopped');
+        expect(session.status.message).toContain('ended');
+    });
 });

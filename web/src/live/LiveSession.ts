@@ -47,6 +47,8 @@ export class LiveSession {
     /** The latest value sent for each live value (what its control shows). */
     readonly setValues = new Map<string, number>();
     private sessionId: number | null = null;
+    /** Watching another's session (watch()): nothing here changes it. */
+    watching = false;
     /** Events that came while live.start's reply had not (their session id was not known yet). */
     private early: LiveEvent[] = [];
     private readonly listeners = new Set<() => void>();
@@ -84,6 +86,7 @@ export class LiveSession {
     /** Starts a session of the stored model `modelId` streaming `variables`; false when refused (status.message says why). */
     async start(modelId: number, variables: string[], speed: LiveSpeed): Promise<boolean> {
         if (this.active) return false;
+        this.watching = false;
         this.sessionId = null;
         this.started = null;
         this.early = [];
@@ -106,6 +109,34 @@ export class LiveSession {
             return true;
         } catch (e) {
             this.update({ phase: 'stopped', message: liveErrorText('Go live', e) });
+            return false;
+        }
+    }
+
+    /**
+     * Watches session `sessionId` read-only (live.subscribe): one of the user's own, or one a
+     * teacher shares with their class. Its frames and state come as a started session's do;
+     * nothing here controls it. False when refused (status.message says why).
+     */
+    async watch(sessionId: number): Promise<boolean> {
+        if (this.active) return false;
+        this.watching = true;
+        this.started = null;
+        this.values.clear();
+        this.setValues.clear();
+        // its events are told apart by its id, known before the reply
+        this.sessionId = sessionId;
+        this.early = [];
+        this.update({ phase: 'starting', achievedSpeed: 0, behind: false, modelTime: 0, message: '', notice: '' });
+        try {
+            const state = await this.transport.request('live.subscribe', { session_id: sessionId, frames: 'json' });
+            // a stopped event (or the socket lost) may have come first: that stays
+            if (this.status.phase !== 'starting') return false;
+            this.update({ phase: state.state === 'stopped' ? 'stopped' : state.state, speed: state.speed, modelTime: state.model_time });
+            return true;
+        } catch (e) {
+            this.sessionId = null;
+            this.update({ phase: 'stopped', message: liveErrorText('Watch', e) });
             return false;
         }
     }
@@ -136,13 +167,26 @@ export class LiveSession {
      */
     async set(name: string, value: number): Promise<boolean> {
         const id = this.sessionId;
-        if (id === null || !this.active) return false;
+        if (id === null || !this.active || this.watching) return false;
         this.setValues.set(name, value);
         try {
             await this.transport.request('live.set', { session_id: id, name, value });
             return true;
         } catch (e) {
             this.fail(`Set ${name}`, e);
+            return false;
+        }
+    }
+
+    /** Lets the members of class `classId` watch the session (live.share); false when refused. */
+    async share(classId: number): Promise<boolean> {
+        const id = this.sessionId;
+        if (id === null || this.watching) return false;
+        try {
+            await this.transport.request('live.share', { session_id: id, class_id: classId });
+            return true;
+        } catch (e) {
+            this.fail('Share with class', e);
             return false;
         }
     }

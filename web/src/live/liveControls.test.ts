@@ -3,7 +3,7 @@ import { EditorStore } from '../editor/EditorStore';
 import { AddComponent, copySelection, Paste } from '../editor/commands';
 import { FakeServer } from '../testing/FakeServer';
 import { ChangeLiveControls } from './ChangeLiveControls';
-import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, modelValueOf, type LiveControl } from './liveControls';
+import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, modelValueOf, withinBounds, type LiveControl } from './liveControls';
 
 const at = (x: number, y: number) => ({ x, y, angle: 0, flipped: false });
 const slider: LiveControl = { kind: 'slider', name: 'Step.y_A', min: 0, max: 0.2, x: 100.4, y: 60, path: [] };
@@ -72,5 +72,16 @@ describe('live controls in the model', () => {
         expect(controlProblem({ ...slider, min: 1, max: 1 })).toMatch(/Min must be below max/);
         expect(controlProblem({ ...slider, max: Number.NaN })).toMatch(/number/);
         expect(controlProblem({ ...toggle, on: 0 })).toMatch(/Off and on must differ/);
+    });
+});
+
+describe('a control within a locked copy\'s bounds', () => {
+    it('is cut to the bounds, or takes them when its range lies outside', () => {
+        expect(withinBounds(slider, undefined)).toBe(slider);
+        expect(withinBounds(slider, {})).toBe(slider);
+        expect(withinBounds(slider, { min: 0.05, max: 0.1 })).toMatchObject({ min: 0.05, max: 0.1 });
+        expect(withinBounds(slider, { max: 0.1 })).toMatchObject({ min: 0, max: 0.1 });
+        expect(withinBounds(slider, { min: 1, max: 2 })).toMatchObject({ min: 1, max: 2 });
+        expect(withinBounds(toggle, { min: 0, max: 0.5 })).toMatchObject({ off: 0, on: 0.5, min: 0, max: 0.5 });
     });
 });

@@ -81,6 +81,27 @@ export function controlRange(c: LiveControl): { low: number; high: number } {
     return c.kind === 'switch' ? { low: c.off ?? c.min, high: c.on ?? c.max } : { low: c.min, high: c.max };
 }
 
+/** Bounds a live value must keep (an assignment's locked copy: live_values' min and max). */
+export interface LiveBounds { min?: number; max?: number }
+
+/**
+ * The control as `bounds` allow it: its range cut to them (a switch's values too), or the
+ * bounds themselves when its range lies outside them; so it never sends a value the server
+ * would refuse (locked).
+ */
+export function withinBounds(c: LiveControl, bounds: LiveBounds | undefined): LiveControl {
+    if (!bounds || (bounds.min === undefined && bounds.max === undefined)) return c;
+    const clamp = (v: number) => Math.min(bounds.max ?? Infinity, Math.max(bounds.min ?? -Infinity, v));
+    let [min, max] = [clamp(c.min), clamp(c.max)];
+    if (min >= max && bounds.min !== undefined && bounds.max !== undefined && bounds.min < bounds.max) [min, max] = [bounds.min, bounds.max];
+    const bounded: LiveControl = { ...c, min, max };
+    if (c.kind === 'switch') {
+        bounded.off = clamp(c.off ?? c.min);
+        bounded.on = clamp(c.on ?? c.max);
+    }
+    return bounded;
+}
+
 /** Why a control's numbers cannot be used, or '' (min below max; a switch's two values differ). */
 export function controlProblem(c: Pick<LiveControl, 'kind' | 'min' | 'max' | 'off' | 'on'>): string {
     const numbers = [c.min, c.max, ...(c.kind === 'switch' ? [c.off, c.on] : [])];

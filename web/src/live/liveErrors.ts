@@ -36,6 +36,7 @@ export function stoppedText(event: Pick<LiveStateEvent, 'reason' | 'message' | '
     case 'failed': return `The simulation failed${detail}.`;
     case 'shutdown': return 'Stopped: the server is shutting down.';
     case 'closed': return 'Stopped: the window that started the session was closed.';
+    case 'unshared': return 'The teacher stopped sharing the live session with your class.';
     case 'requested': return `Stopped at t = ${formatTime(event.model_time)} s.`;
     default: return `Stopped${detail}.`;
     }

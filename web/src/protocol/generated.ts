@@ -274,6 +274,11 @@ export interface ProtocolDefinitions {
     BinaryLiveFrameHeader?: BinaryLiveFrameHeader;
     LiveStateEvent?: LiveStateEvent;
     LiveSubscribeRequest?: LiveSubscribeRequest;
+    LiveShareRequest?: LiveShareRequest;
+    LiveUnshareRequest?: LiveUnshareRequest;
+    LiveSharedData?: LiveSharedData;
+    LiveModelRequest?: LiveModelRequest;
+    LiveModelData?: LiveModelData;
 }
 export interface ErrorDetail {
     code: ErrorCode;
@@ -1121,7 +1126,7 @@ export interface LiveRecordRequest {
     session_id: number;
 }
 /**
- * Watch one of your live sessions from another socket: the first event.live.frame carries the samples of its last 60 s, later ones follow as they are taken.
+ * Watch a live session from another socket: one of your own, or one shared with a class you are a member of (read-only: its controls stay with its owner). The first event.live.frame carries the samples of its last 60 s, later ones follow as they are taken.
  */
 export interface LiveSubscribeRequest {
     id: RequestId;
@@ -1303,9 +1308,17 @@ export interface LiveStateEvent {
     achieved_speed: number;
     model_time: number;
     /**
-     * Why a session stopped (closed: its owner's socket ended; sent to the sockets that watch it); record_limit: the session goes on, but its recording for live.record holds the most samples --max-log-samples allows and keeps no more (message names the limit).
+     * Why a session stopped (closed: its owner's socket ended; sent to the sockets that watch it); record_limit: the session goes on, but its recording for live.record holds the most samples --max-log-samples allows and keeps no more (message names the limit). unshared: sent to a class member watching a shared session when its owner stopped sharing it with that class (the session goes on; only this watch ended).
      */
-    reason?: 'requested' | 'finished' | 'idle_timeout' | 'failed' | 'shutdown' | 'closed' | 'record_limit';
+    reason?:
+        | 'requested'
+        | 'finished'
+        | 'idle_timeout'
+        | 'failed'
+        | 'shutdown'
+        | 'closed'
+        | 'record_limit'
+        | 'unshared';
     message?: string;
 }
 export interface ModelSettingsData {
@@ -1570,7 +1583,7 @@ export interface LiveStartedData {
      */
     variables: string[];
     /**
-     * What live.set may change, with the values the run starts from.
+     * What live.set may change, with the values the run starts from. On an assignment's copy whose edit mode is parameters (for its student): only the values the assignment lists, with its bounds.
      */
     live_values: LiveValue[];
     start: number;
@@ -1584,6 +1597,14 @@ export interface LiveValue {
     name: string;
     value: number;
     unit: string;
+    /**
+     * On an assignment's locked copy: the lowest value the assignment allows (live.set below it is refused with locked).
+     */
+    min?: number;
+    /**
+     * On an assignment's locked copy: the highest value the assignment allows.
+     */
+    max?: number;
 }
 /**
  * The session's state once the request is taken.
@@ -1617,4 +1638,50 @@ export interface BinaryLiveFrameHeader {
         name: string;
         samples: number;
     }[];
+}
+/**
+ * Share one of your live sessions with a class you teach: its members may then watch it read-only (live.subscribe); GET /api/v1/classes/{id}/live lists it. Sharing ends with the session.
+ */
+export interface LiveShareRequest {
+    id: RequestId;
+    type: 'live.share';
+    session_id: number;
+    /**
+     * A class you teach (an administrator teaches every class).
+     */
+    class_id: number;
+}
+/**
+ * Stop sharing a live session with a class: the class's members watching it get event.live.state stopped, reason unshared; the session goes on.
+ */
+export interface LiveUnshareRequest {
+    id: RequestId;
+    type: 'live.unshare';
+    session_id: number;
+    /**
+     * A class you teach (an administrator teaches every class).
+     */
+    class_id: number;
+}
+/**
+ * The classes the session is shared with now.
+ */
+export interface LiveSharedData {
+    class_ids: number[];
+}
+/**
+ * The model a live session runs, as its saved text was when the session started: for drawing it (an animated diagram) where the model itself may not be read, e.g. a class member watching a shared session. Its owner and the sockets that may watch it (live.subscribe) may ask.
+ */
+export interface LiveModelRequest {
+    id: RequestId;
+    type: 'live.model';
+    session_id: number;
+}
+export interface LiveModelData {
+    model_name: string;
+    model: Model;
+    /**
+     * The variables each frame of the session carries, in order.
+     */
+    variables: string[];
 }

@@ -12,11 +12,15 @@ import type {
     ConnectionRouteRequest,
     DisconnectRequest,
     EmptyData,
+    LiveModelData,
+    LiveModelRequest,
     LivePauseRequest,
     LiveRecordRequest,
     LiveRecordedData,
     LiveResumeRequest,
     LiveSetRequest,
+    LiveShareRequest,
+    LiveSharedData,
     LiveSpeedRequest,
     LiveStartRequest,
     LiveStartedData,
@@ -24,6 +28,7 @@ import type {
     LiveStepRequest,
     LiveStopRequest,
     LiveSubscribeRequest,
+    LiveUnshareRequest,
     LogSubscribeRequest,
     ModelCreateRequest,
     ModelGetData,
@@ -87,6 +92,9 @@ export interface RequestMap {
     'live.stop': { request: LiveStopRequest; reply: LiveStateData };
     'live.record': { request: LiveRecordRequest; reply: LiveRecordedData };
     'live.subscribe': { request: LiveSubscribeRequest; reply: LiveStateData };
+    'live.share': { request: LiveShareRequest; reply: LiveSharedData };
+    'live.unshare': { request: LiveUnshareRequest; reply: LiveSharedData };
+    'live.model': { request: LiveModelRequest; reply: LiveModelData };
 }
 
 export type RequestType = keyof RequestMap;

@@ -1,6 +1,6 @@
 // The model editor page: palette, canvas, parameter panel, run controls and plots, wired to
 // one WebSocket on which the model is open.
-import { WsClient, socketUrl } from '../api/WsClient';
+import { appSocket } from '../app/appSocket';
 import { ApiError } from '../api/ApiError';
 import { EditorStore } from '../editor/EditorStore';
 import { CanvasView } from '../editor/CanvasView';
@@ -53,22 +53,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
     const rest = session.rest;
     // the summary, the catalogue and the model are asked for at once: one after the other
     // they took most of the time to open a big model
-    const ws = new WsClient(() => {
-        const socket = new WebSocket(socketUrl(session.token!, location));
-        socket.binaryType = 'arraybuffer';   // run frames come as binary messages (RunController)
-        return socket as unknown as import('../api/WsClient').SocketLike;
-    }, {
-        // A lost socket is opened again (another API node behind the proxy may answer), unless the
-        // login ended: a refused upgrade does not say why, /auth/me does (401 leads to the login page).
-        shouldReconnect: async () => {
-            try {
-                await rest.me();
-            } catch {
-                // the server cannot be reached yet: try the socket anyway
-            }
-            return session.token !== null;
-        },
-    });
+    const ws = appSocket(session);
     const opening = Promise.all([
         rest.components(),
         ws.connect().then(() => ws.request('model.open', { model_id: modelId })),
@@ -366,6 +351,8 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
         store, canvas, plots, modelId: () => summary.id, defaultVariables: () => sinkVariables(store.model),
         recorded: () => void historyPanel.reload(), editable: () => permissions.allows('system-parameters'), reportError,
         goingLive: () => playback.close(),
+        // a teacher (or an administrator) may share a session with a class they teach
+        classes: session.user?.role === 'teacher' || session.user?.role === 'admin' ? () => session.labs.listClasses() : undefined,
     });
     runPanel.element.querySelector('[data-testid="cancel"]')?.after(live.bar.element);
     live.attachDiagram(animation);
