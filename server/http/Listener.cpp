@@ -36,7 +36,14 @@ void Listener::accept()
     mAcceptor.async_accept(net::make_strand(mIoc), [self = shared_from_this()](
                                                        boost::system::error_code ec, tcp::socket socket) {
         if (ec == net::error::operation_aborted || !self->mAcceptor.is_open()) return;
-        if (!ec) std::make_shared<HttpSession>(std::move(socket), self->mApp, self->mLimits)->run();
+        if (!ec) {
+            // A frame or reply goes out when written: with Nagle's algorithm a small write waited
+            // for the ACK of the one before, which the client delays by up to 40 ms (a live
+            // session's live.set showed in a frame after 43 ms at the median instead of 17).
+            boost::system::error_code ignored;
+            socket.set_option(tcp::no_delay(true), ignored);
+            std::make_shared<HttpSession>(std::move(socket), self->mApp, self->mLimits)->run();
+        }
         self->accept();
     });
 }
