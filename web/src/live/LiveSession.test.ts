@@ -1,6 +1,6 @@
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { WsClient, type SocketLike } from '../api/WsClient';
-import { LiveSession } from './LiveSession';
+import { KEEP_ALIVE_MS, LiveSession } from './LiveSession';
 
 // The real WsClient over a fake socket, as the WsClient tests do: what the session sends is
 // read from the socket, what the server says is received on it.
@@ -48,6 +48,25 @@ async function live(reconnect = false) {
 }
 
 describe('LiveSession', () => {
+    it('pings while its session runs, so watching without touching does not reach the idle timeout; not once stopped', async () => {
+        vi.useFakeTimers();
+        try {
+            const { socket, session } = await live();
+            const pings = () => socket.sent.filter((m) => m.type === 'ping').length;
+            expect(pings()).toBe(0);
+            vi.advanceTimersByTime(KEEP_ALIVE_MS * 3);
+            expect(pings()).toBe(3);
+            const stopping = session.stop();
+            socket.reply('live.stop', { session_id: 3, state: 'stopped', speed: 1, achieved_speed: 0, model_time: 1 });
+            await stopping;
+            expect(session.status.phase).toBe('stopped');
+            vi.advanceTimersByTime(KEEP_ALIVE_MS * 3);
+            expect(pings()).toBe(3);
+        } finally {
+            vi.useRealTimers();
+        }
+    });
+
     it('starts with the model, the variables and the speed, and knows what live.set may change', async () => {
         const { socket, session } = await live();
         expect(socket.last('live.start')).toMatchObject({ model_id: 12, variables: ['Step#out#Value', 'Mass#P1#x'], speed: 1 });

@@ -35,6 +35,16 @@ export interface LiveStatus {
 
 export type FrameListener = (values: ReadonlyMap<string, number>, frame: LiveFrameEvent) => void;
 
+/**
+ * The server ends a session after 10 minutes without a message from its owner
+ * (--live-idle-timeout), to free what a forgotten tab holds; someone watching the drawing sends
+ * nothing. While the page is shown, a ping this often keeps the session.
+ */
+export const KEEP_ALIVE_MS = 60_000;
+
+/** Whether the user can see the page (always, where there is no document: tests, workers). */
+const pageShown = () => typeof document === 'undefined' || document.visibilityState === 'visible';
+
 /** Below this share of the asked speed the session counts as behind (the server's measure wobbles). */
 const BEHIND_SHARE = 0.95;
 
@@ -54,6 +64,7 @@ export class LiveSession {
     private readonly listeners = new Set<() => void>();
     private readonly frameListeners = new Set<FrameListener>();
     private readonly detach: (() => void)[];
+    private keepAlive: ReturnType<typeof setInterval> | null = null;
 
     constructor(private readonly transport: LiveTransport) {
         this.detach = [
@@ -64,7 +75,10 @@ export class LiveSession {
         ];
     }
 
-    dispose(): void { for (const d of this.detach) d(); }
+    dispose(): void {
+        for (const d of this.detach) d();
+        this.keepAliveWhileActive(false);
+    }
 
     get active(): boolean { return this.status.phase === 'starting' || this.status.phase === 'running' || this.status.phase === 'paused'; }
 
@@ -278,6 +292,19 @@ export class LiveSession {
 
     private update(changes: Partial<LiveStatus>): void {
         this.status = { ...this.status, ...changes };
+        this.keepAliveWhileActive(this.active && !this.watching);
         for (const l of this.listeners) l();
+    }
+
+    /** Pings while a session of this page's runs and the page is shown (KEEP_ALIVE_MS). */
+    private keepAliveWhileActive(on: boolean): void {
+        if (on && !this.keepAlive) {
+            this.keepAlive = setInterval(() => {
+                if (pageShown()) this.transport.request('ping', {}).catch(() => undefined);
+            }, KEEP_ALIVE_MS);
+        } else if (!on && this.keepAlive) {
+            clearInterval(this.keepAlive);
+            this.keepAlive = null;
+        }
     }
 }
