@@ -8,7 +8,8 @@ fresh data directory in a temporary directory, SIGTERM at the end):
    streaming 4 variables (the step's output and the first three other logged ones) at 30 frames
    a second for S seconds (default 30; the model's stop time is set to S + 10 s so no session
    reaches its end). Every session starts paused; all resume together. Once a second after the
-   step (model time > 1.5 s) each sends live.set of Step.y_A with a new value.
+   step (model time > 1.5 s), at a random moment within the second (as a hand on a slider, not
+   in step with the frames), each sends live.set of Step.y_A with a new value.
    Printed:
    - pacing: for every whole 1-s window of wall time after the first second, the model time a
      session advanced in it, from the frames' own stamps (model_time, wall_time: the server's
@@ -31,7 +32,9 @@ example: bench/live_bench.py                      # both phases, the issue's fig
 import argparse
 import json
 import os
+import random
 import re
+import signal
 import statistics
 import subprocess
 import sys
@@ -41,7 +44,8 @@ import time
 import urllib.parse
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lab_bench import ADMIN_PASSWORD, ROOT, Server, percentile, rest, variable_names, websocket  # noqa: E402
+from lab_bench import (ADMIN_PASSWORD, ROOT, Server, percentile, rest, start_profiler,  # noqa: E402
+                       variable_names, websocket)
 
 MODELS = os.path.join(ROOT, "..", "shared", "hopsan-models", "Example Models")
 STEP_OUT = "Step#out#Value"
@@ -70,7 +74,7 @@ def upload(port, token, name, hmf_text):
 
 def connect(port, token, timeout):
     ws = websocket.create_connection(f"ws://127.0.0.1:{port}/api/v1/ws?token={token}", timeout=timeout,
-                                     skip_utf8_validation=True)
+                                     skip_utf8_validation=True, enable_multithread=True)
     json.loads(ws.recv())  # hello
     return ws
 
@@ -116,10 +120,11 @@ def session_main(s, port, token, model_id, variables, rate, seconds, ready, go, 
     except threading.BrokenBarrierError:
         s.error = s.error or "the class did not start"
         return
-    request_id = 2
+    model_time = [0.0]
+    setter = threading.Thread(target=set_main, args=(s, ws, model_time, t_end), daemon=True)
     try:
-        ws.send(json.dumps({"id": request_id, "type": "live.resume", "session_id": s.session_id}))
-        next_set, set_count, model_time = time.perf_counter() + 1.0, 0, 0.0
+        ws.send(json.dumps({"id": 2, "type": "live.resume", "session_id": s.session_id}))
+        setter.start()
         ws.settimeout(0.2)
         while time.perf_counter() < t_end[0]:
             try:
@@ -132,24 +137,37 @@ def session_main(s, port, token, model_id, variables, rate, seconds, ready, go, 
                 # model_time sits near the start of the frame's JSON: found without parsing all of it.
                 at = text.find('"model_time":')
                 if at >= 0:
-                    model_time = float(re.match(r"[-+0-9.eE]+", text[at + 13:]).group(0))
+                    model_time[0] = float(re.match(r"[-+0-9.eE]+", text[at + 13:]).group(0))
             elif '"event.live.state"' in text[:64] and '"stopped"' in text:
                 s.stopped = json.loads(text).get("reason")
                 break
-            # No set in the last second: each one gets time to show in a frame.
-            if now >= next_set and model_time > 1.5 and now < t_end[0] - 1.0:
-                set_count += 1
-                y_a = 0.5 + 0.001 * set_count
-                request_id += 1
-                ws.send(json.dumps({"id": request_id, "type": "live.set", "session_id": s.session_id,
-                                    "name": "Step.y_A", "value": y_a}))
-                s.sets.append((time.perf_counter(), STEP_Y0 + y_a))
-                next_set += 1.0
+        setter.join()
         ws.settimeout(10)
-        ws.send(json.dumps({"id": request_id + 1, "type": "live.stop", "session_id": s.session_id}))
+        ws.send(json.dumps({"id": 3, "type": "live.stop", "session_id": s.session_id}))
         ws.close()
     except Exception as e:  # noqa: BLE001
         s.error = f"running: {e}"
+
+
+def set_main(s, ws, model_time, t_end):
+    """Once a second, at a random moment in it, a new Step.y_A (after the step, and none in the
+    last second, so that each one shows in a frame)."""
+    rng = random.Random(s.index)
+    second, request_id = time.perf_counter(), 100
+    while True:
+        at = second + rng.random()
+        second += 1.0
+        if at >= t_end[0] - 1.0:
+            return
+        time.sleep(max(0.0, at - time.perf_counter()))
+        if model_time[0] <= 1.5:
+            continue
+        request_id += 1
+        y_a = 0.5 + 0.001 * request_id
+        sent = time.perf_counter()
+        ws.send(json.dumps({"id": request_id, "type": "live.set", "session_id": s.session_id,
+                            "name": "Step.y_A", "value": y_a}))
+        s.sets.append((sent, STEP_Y0 + y_a))
 
 
 def window_ratios(points):
@@ -222,6 +240,7 @@ def class_phase(a, clis):
             ready.wait()
         except threading.BrokenBarrierError:
             raise RuntimeError("sessions did not start: " + "; ".join(sorted({s.error for s in sessions if s.error})))
+        profiler = start_profiler(a.perf, server.proc.pid) if a.perf else None
         cpu0, wall0 = server.cpu_seconds(), time.perf_counter()
         t_end[0] = wall0 + a.seconds
         go.wait()
@@ -229,6 +248,9 @@ def class_phase(a, clis):
             t.join(a.seconds + 60)
         wall = time.perf_counter() - wall0
         cpu = server.cpu_seconds() - cpu0
+        if profiler:
+            profiler.send_signal(signal.SIGINT)
+            profiler.wait()
     finally:
         server.stop()
         server.cleanup()
@@ -338,6 +360,7 @@ def main():
     ap.add_argument("--skip-max", action="store_true")
     ap.add_argument("--server-arg", action="append", default=[], help="one more server argument (repeatable)")
     ap.add_argument("--json", help="append the figures as one JSON line to this file")
+    ap.add_argument("--perf", help="record the server during the class with perf (call graphs) into this file")
     a = ap.parse_args()
     clis = [a.cli]
     figures = {}
