@@ -3,21 +3,15 @@
 // subscriptions to unfinished jobs renewed, pending requests rejected, and a run's data that
 // comes out exactly as an uninterrupted stream would give it.
 import { describe, expect, it } from 'vitest';
-import { backoffDelay, WsClient, type ReconnectOptions, type SocketLike } from './WsClient';
+import { backoffDelay, WsClient, type ReconnectOptions } from './WsClient';
 import { ApiError } from './ApiError';
 import { RunController } from '../run/RunController';
 import type { ResultsJson } from '../protocol/types';
+import { FakeSocket as SharedFakeSocket } from '../testing/FakeSocket';
 
-class FakeSocket implements SocketLike {
-    onopen: SocketLike['onopen'] = null;
-    onmessage: SocketLike['onmessage'] = null;
-    onclose: SocketLike['onclose'] = null;
-    onerror: SocketLike['onerror'] = null;
-    sent: Record<string, unknown>[] = [];
+class FakeSocket extends SharedFakeSocket {
     closedByClient = false;
-    send(data: string) { this.sent.push(JSON.parse(data)); }
-    close() { this.closedByClient = true; }
-    receive(msg: unknown) { this.onmessage?.({ data: msg instanceof ArrayBuffer ? msg : JSON.stringify(msg) }); }
+    override close() { this.closedByClient = true; }
     /** The connection is lost (the browser's close event; 1006: no close frame). */
     drop(code = 1006) { this.onclose?.({ code }); }
     hello() { this.receive({ type: 'hello', protocol: 'tlmhub.v1', user: { id: 1, username: 'alice', role: 'user' } }); }

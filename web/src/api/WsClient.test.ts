@@ -1,18 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { WsClient, socketUrl, type SocketLike } from './WsClient';
+import { WsClient, socketUrl } from './WsClient';
 import { ApiError } from './ApiError';
 import type { ServerEvent } from '../protocol/types';
-
-class FakeSocket implements SocketLike {
-    onopen: SocketLike['onopen'] = null;
-    onmessage: SocketLike['onmessage'] = null;
-    onclose: SocketLike['onclose'] = null;
-    onerror: SocketLike['onerror'] = null;
-    sent: Record<string, unknown>[] = [];
-    send(data: string) { this.sent.push(JSON.parse(data)); }
-    close() { this.onclose?.({}); }
-    receive(msg: unknown) { this.onmessage?.({ data: JSON.stringify(msg) }); }
-}
+import { FakeSocket } from '../testing/FakeSocket';
 
 const hello = { type: 'hello', protocol: 'tlmhub.v1', user: { id: 1, username: 'alice', role: 'user' } };
 

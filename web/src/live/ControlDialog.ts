@@ -2,6 +2,7 @@
 // (a switch: its off and on values). The values offered are those the last live session said
 // may change; before one ran here, the component's number parameters (its inputs among them).
 import { h } from '../ui/dom';
+import { runModalForm } from '../ui/modalForm';
 import { CONTROL_KINDS, controlProblem, type LiveControl, type LiveControlKind } from './liveControls';
 
 export interface ControlChoice { name: string; value: number }
@@ -55,36 +56,23 @@ export function askForControl(choices: ControlChoice[], initial: LiveControl): P
         field('Kind', kind), rangeFields, switchFields, error,
         h('div', { class: 'dialog-buttons' }, ok, cancel));
     dialog.append(form);
-    document.body.append(dialog);
-    return new Promise((resolve) => {
-        const finish = (result: LiveControl | null) => {
-            dialog.close();
-            dialog.remove();
-            resolve(result);
-        };
-        cancel.addEventListener('click', () => finish(null));
-        dialog.addEventListener('cancel', () => finish(null));
-        form.addEventListener('submit', (e) => {
-            e.preventDefault();
-            const k = kind.value as LiveControlKind;
-            const control: LiveControl = { ...initial, kind: k, name: name.value.trim(), min: Number(min.value), max: Number(max.value) };
-            if (k === 'switch') {
-                control.off = Number(off.value);
-                control.on = Number(on.value);
-                control.min = Math.min(control.off, control.on);
-                control.max = Math.max(control.off, control.on);
-            } else {
-                delete control.off;
-                delete control.on;
-            }
-            const problem = control.name === '' ? 'Name the value it sets.' : controlProblem(control);
-            if (problem) {
-                error.textContent = problem;
-                return;
-            }
-            finish(control);
-        });
-        dialog.showModal();
-        name.focus();
-    });
+    return runModalForm(dialog, form, cancel, () => {
+        const k = kind.value as LiveControlKind;
+        const control: LiveControl = { ...initial, kind: k, name: name.value.trim(), min: Number(min.value), max: Number(max.value) };
+        if (k === 'switch') {
+            control.off = Number(off.value);
+            control.on = Number(on.value);
+            control.min = Math.min(control.off, control.on);
+            control.max = Math.max(control.off, control.on);
+        } else {
+            delete control.off;
+            delete control.on;
+        }
+        const problem = control.name === '' ? 'Name the value it sets.' : controlProblem(control);
+        if (problem) {
+            error.textContent = problem;
+            return undefined;
+        }
+        return control;
+    }, name);
 }

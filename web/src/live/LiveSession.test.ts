@@ -1,18 +1,12 @@
 import { describe, expect, it, vi } from 'vitest';
-import { WsClient, type SocketLike } from '../api/WsClient';
+import { WsClient } from '../api/WsClient';
+import { FakeSocket as SharedFakeSocket } from '../testing/FakeSocket';
 import { KEEP_ALIVE_MS, LiveSession } from './LiveSession';
 
 // The real WsClient over a fake socket, as the WsClient tests do: what the session sends is
 // read from the socket, what the server says is received on it.
-class FakeSocket implements SocketLike {
-    onopen: SocketLike['onopen'] = null;
-    onmessage: SocketLike['onmessage'] = null;
-    onclose: SocketLike['onclose'] = null;
-    onerror: SocketLike['onerror'] = null;
-    sent: Record<string, unknown>[] = [];
-    send(data: string) { this.sent.push(JSON.parse(data)); }
-    close() { this.onclose?.({ code: 1006 }); }
-    receive(msg: unknown) { this.onmessage?.({ data: JSON.stringify(msg) }); }
+class FakeSocket extends SharedFakeSocket {
+    override close() { this.onclose?.({ code: 1006 }); }
     last(type: string) { return [...this.sent].reverse().find((m) => m.type === type)!; }
     reply(type: string, data: unknown) { this.receive({ id: this.last(type).id, type: 'reply', ok: true, data }); }
     refuse(type: string, code: string, message: string) { this.receive({ id: this.last(type).id, type: 'error', error: { code, message } }); }

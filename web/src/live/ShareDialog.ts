@@ -2,6 +2,7 @@
 // members may watch the session read-only. Offered: the classes the user teaches that are not
 // archived (the server refuses the others: forbidden, archived).
 import { h } from '../ui/dom';
+import { runModalForm } from '../ui/modalForm';
 import type { LabClass } from '../labs/types';
 
 /** The classes a live session may be shared with, by their names. */
@@ -21,20 +22,5 @@ export function askForClass(classes: LabClass[]): Promise<number | null> {
         h('label', {}, 'Class ', choice),
         h('div', { class: 'dialog-buttons' }, ok, cancel));
     dialog.append(form);
-    document.body.append(dialog);
-    return new Promise((resolve) => {
-        const finish = (result: number | null) => {
-            dialog.close();
-            dialog.remove();
-            resolve(result);
-        };
-        cancel.addEventListener('click', () => finish(null));
-        dialog.addEventListener('cancel', () => finish(null));
-        form.addEventListener('submit', (e) => {
-            e.preventDefault();
-            finish(Number(choice.value));
-        });
-        dialog.showModal();
-        choice.focus();
-    });
+    return runModalForm(dialog, form, cancel, () => Number(choice.value), choice);
 }
