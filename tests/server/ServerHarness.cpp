@@ -430,13 +430,25 @@ std::string testPassword(const std::string& user)
     return user == "admin" ? kAdminPassword : user + "-password";
 }
 
-void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names)
+namespace {
+void createTestAccounts(const ServerProcess& server, std::initializer_list<const char*> names, const char* role)
 {
     HttpClient admin = loggedInAs(server, "admin");
     for (const char* name : names) {
-        const auto r = admin.post("/api/v1/users", {{"username", name}, {"password", testPassword(name)}, {"role", "user"}});
+        const auto r = admin.post("/api/v1/users", {{"username", name}, {"password", testPassword(name)}, {"role", role}});
         EXPECT_EQ(r.status, 201) << name << ": " << r.body;
     }
+}
+} // namespace
+
+void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names)
+{
+    createTestAccounts(server, names, "user");
+}
+
+void createTestTeachers(const ServerProcess& server, std::initializer_list<const char*> names)
+{
+    createTestAccounts(server, names, "teacher");
 }
 
 HttpClient loggedInAs(const ServerProcess& server, const std::string& user)

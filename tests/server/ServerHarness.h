@@ -150,8 +150,10 @@ constexpr const char* kAdminPassword = "admin-secret-pw";
 
 // Test users: `name` logs in with "<name>-password" (the admin with kAdminPassword).
 std::string testPassword(const std::string& user);
-// Creates each user with role "user" through the admin (the test fails if one is refused).
+// Creates each user with role "user" (or "teacher") through the admin (the test fails if one is
+// refused).
 void createTestUsers(const ServerProcess& server, std::initializer_list<const char*> names);
+void createTestTeachers(const ServerProcess& server, std::initializer_list<const char*> names);
 // A client of `server` logged in as `user`.
 HttpClient loggedInAs(const ServerProcess& server, const std::string& user);
 // The id of the first model named `name` in the client's list (its own or an example; the

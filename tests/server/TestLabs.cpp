@@ -31,12 +31,7 @@ protected:
     {
         server = new ServerProcess(freshTempDir("labs"));
         createTestUsers(*server, {"sam", "sue", "ada", "olga", "-minus", "guesser"});
-        HttpClient admin = loggedInAs(*server, "admin");
-        for (const char* teacher : {"tina", "otto"}) {
-            const auto r = admin.post("/api/v1/users",
-                                      {{"username", teacher}, {"password", testPassword(teacher)}, {"role", "teacher"}});
-            ASSERT_EQ(r.status, 201) << r.body;
-        }
+        createTestTeachers(*server, {"tina", "otto"});
     }
     static void TearDownTestSuite()
     {

@@ -38,12 +38,7 @@ protected:
         dataDir = new fs::path(freshTempDir("livelabs"));
         server = new ServerProcess(*dataDir);
         createTestUsers(*server, {"sam", "sue", "bob", "olga"});
-        HttpClient admin = loggedInAs(*server, "admin");
-        for (const char* teacher : {"tina", "otto"}) {
-            const auto r = admin.post("/api/v1/users",
-                                      {{"username", teacher}, {"password", testPassword(teacher)}, {"role", "teacher"}});
-            ASSERT_EQ(r.status, 201) << r.body;
-        }
+        createTestTeachers(*server, {"tina", "otto"});
     }
     static void TearDownTestSuite()
     {
