@@ -609,20 +609,23 @@ WsApi::Reply WsApi::startLive(const protocol::LiveStartRequest& request)
 LiveSessionSink WsApi::liveSink(const std::optional<std::string>& frames)
 {
     // Frames queue on the connection as a job's do (merged for a slow reader); a connection
-    // that gives the stream up stops getting them (LiveSession ends or unwatches it).
+    // that gives the stream up stops getting them (LiveSession ends or unwatches it). Frames
+    // and states leave through the registry's outbox, in order, with the other sessions' of
+    // the same tick.
     std::weak_ptr<WebSocketSender> weakSender = mSender;
     auto stream = std::make_shared<FrameStream>();
     stream->id = ++mStreams;
     stream->encoding = frameEncoding(frames);
+    ConnectionOutbox& outbox = mServices.liveSimulations.outbox();
     LiveSessionSink sink;
-    sink.frame = [weakSender, stream](StreamFrame frame) {
+    sink.frame = [weakSender, stream, &outbox](StreamFrame frame) {
         auto sender = weakSender.lock();
         if (!sender || stream->givenUp.load()) return false;
-        sender->sendFrame(std::make_unique<QueuedFrame>(std::move(frame), stream));
+        sender->sendFrameVia(outbox, std::make_unique<QueuedFrame>(std::move(frame), stream));
         return true;
     };
-    sink.event = [weakSender](std::string text) {
-        if (auto sender = weakSender.lock()) sender->send(std::move(text));
+    sink.event = [weakSender, &outbox](std::string text) {
+        if (auto sender = weakSender.lock()) sender->sendVia(outbox, std::move(text));
     };
     return sink;
 }

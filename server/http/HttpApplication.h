@@ -11,6 +11,8 @@
 
 namespace tlmhub::server {
 
+class ConnectionOutbox;
+
 // Sending side of one WebSocket connection; safe to call from any thread.
 class WebSocketSender {
 public:
@@ -23,6 +25,10 @@ public:
     // Queues a stream frame, which a slow connection merges with the next frames of its
     // stream, or gives up for the frame's notice past its byte limit (OutgoingQueue).
     virtual void sendFrame(std::unique_ptr<MergeableFrame> frame) = 0;
+    // As sendFrame and send, handed to the I/O threads through `outbox` together with other
+    // connections' messages of the same burst (live sessions' frames and states).
+    virtual void sendFrameVia(ConnectionOutbox& outbox, std::unique_ptr<MergeableFrame> frame) = 0;
+    virtual void sendVia(ConnectionOutbox& outbox, std::string text) = 0;
     // Ends the connection with a close frame giving `reason`; nothing queued is sent after.
     virtual void close(std::string reason) = 0;
     // Runs `task` on the connection's strand (where its handler runs), unless the connection

@@ -1,7 +1,9 @@
 #include "server/http/WebSocketSession.h"
 
+#include "server/http/ConnectionOutbox.h"
 #include "server/http/TransportStats.h"
 
+#include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
 namespace tlmhub::server {
@@ -35,6 +37,24 @@ public:
         net::post(mExecutor, [weak = mSession, frame = std::move(frame)]() mutable {
             if (auto session = weak.lock()) session->enqueueFrame(std::move(frame));
         });
+    }
+    void sendFrameVia(ConnectionOutbox& outbox, std::unique_ptr<MergeableFrame> frame) override
+    {
+        // std::function is copyable: the frame travels in a shared pointer.
+        auto shared = std::make_shared<std::unique_ptr<MergeableFrame>>(std::move(frame));
+        outbox.add({mExecutor, [weak = mSession, executor = mExecutor, shared] {
+                        net::dispatch(executor, [weak, shared] {
+                            if (auto session = weak.lock()) session->enqueueFrame(std::move(*shared));
+                        });
+                    }});
+    }
+    void sendVia(ConnectionOutbox& outbox, std::string text) override
+    {
+        outbox.add({mExecutor, [weak = mSession, executor = mExecutor, text = std::move(text)] {
+                        net::dispatch(executor, [weak, text] {
+                            if (auto session = weak.lock()) session->enqueue(text);
+                        });
+                    }});
     }
     void close(std::string reason) override
     {

@@ -2,6 +2,7 @@
 // The live sessions running on this node, their limits (per user and per node), and the
 // threads their ticks run on. A session belongs to the connection that started it; the
 // registry finds it by id for its owner's controls.
+#include "server/http/ConnectionOutbox.h"
 #include "server/live/LiveSession.h"
 
 #include <boost/asio/thread_pool.hpp>
@@ -48,6 +49,9 @@ public:
     std::vector<std::shared_ptr<LiveSession>> sharedWith(std::int64_t classId) const;
     // Stops every session, as at shutdown.
     void stopAll();
+    // Where the sessions' frames and states leave for their connections: after each burst
+    // of ticks, in one post to the I/O threads.
+    ConnectionOutbox& outbox() { return mOutbox; }
 
 private:
     void ended(std::uint64_t id);
@@ -60,6 +64,7 @@ private:
     std::size_t mTotal = 0;
     std::uint64_t mNextId = 1;
     boost::asio::thread_pool mPool;
+    ConnectionOutbox mOutbox{mPool.get_executor()};
 };
 
 } // namespace tlmhub::server
