@@ -110,9 +110,10 @@ run_tests() {
   return $status
 }
 
+# No Google Benchmark programs: no test runs them (bench/README.md builds them).
 release_build() {
   timing_flags build
-  scripts/build.sh "${timing[@]}"
+  scripts/build.sh "${timing[@]}" -DTLMHUB_BUILD_BENCHMARKS=OFF
   slowest_build_steps build
 }
 
