@@ -8,14 +8,10 @@
 // link lines, so every parse and dump in them runs this file's optimised copy. Under ASan a
 // test that opened a 10 MB model five times spent half its CPU parsing the replies at -O0
 // (Responsiveness.OpeningLargeModels…: 111 s of CPU before, 49 s after).
-#include <nlohmann/json.hpp>
+#include "server/OptimisedJson.h"
 
-#include <string>
-
-namespace {
-using StringInput = nlohmann::detail::iterator_input_adapter<std::string::const_iterator>;
-using CharsInput = nlohmann::detail::iterator_input_adapter<const char*>;
-} // namespace
+using tlmhub::json_inputs::CharsInput;
+using tlmhub::json_inputs::StringInput;
 
 template class nlohmann::basic_json<>;
 template class nlohmann::detail::lexer<nlohmann::json, StringInput>;

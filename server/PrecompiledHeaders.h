@@ -10,6 +10,8 @@
 #include <pqxx/pqxx>
 #include <SQLiteCpp/SQLiteCpp.h>
 
+#include "server/OptimisedJson.h"
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>

@@ -26,9 +26,10 @@ public:
     // stream, or gives up for the frame's notice past its byte limit (OutgoingQueue).
     virtual void sendFrame(std::unique_ptr<MergeableFrame> frame) = 0;
     // As sendFrame and send, handed to the I/O threads through `outbox` together with other
-    // connections' messages of the same burst (live sessions' frames and states).
-    virtual void sendFrameVia(ConnectionOutbox& outbox, std::unique_ptr<MergeableFrame> frame) = 0;
-    virtual void sendVia(ConnectionOutbox& outbox, std::string text) = 0;
+    // connections' messages of the same burst (live sessions' frames and states). A sender
+    // without I/O threads of its own sends at once.
+    virtual void sendFrameVia(ConnectionOutbox&, std::unique_ptr<MergeableFrame> frame) { sendFrame(std::move(frame)); }
+    virtual void sendVia(ConnectionOutbox&, std::string text) { send(std::move(text)); }
     // Ends the connection with a close frame giving `reason`; nothing queued is sent after.
     virtual void close(std::string reason) = 0;
     // Runs `task` on the connection's strand (where its handler runs), unless the connection

@@ -7,6 +7,8 @@
 #include <boost/beast/websocket.hpp>
 #include <nlohmann/json.hpp>
 
+#include "server/OptimisedJson.h"
+
 #include <chrono>
 #include <filesystem>
 #include <map>
