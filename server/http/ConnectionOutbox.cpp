@@ -1,5 +1,6 @@
 #include "server/http/ConnectionOutbox.h"
 
+#include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
 namespace tlmhub::server {
@@ -27,8 +28,8 @@ void ConnectionOutbox::flush(const std::shared_ptr<Shared>& shared)
     // One post wakes one I/O thread; there each delivery dispatches onto its connection's
     // strand, which runs it in place when the strand is free.
     auto first = batch.front().connection;
-    boost::asio::post(first, [batch = std::move(batch)] {
-        for (const Delivery& d : batch) d.deliver();
+    boost::asio::post(first, [batch = std::move(batch)]() mutable {
+        for (Delivery& d : batch) boost::asio::dispatch(d.connection, std::move(d.deliver));
     });
 }
 

@@ -15,7 +15,7 @@ namespace tlmhub::server {
 
 class ConnectionOutbox {
 public:
-    // A delivery runs on an I/O thread and dispatches itself onto its connection's strand.
+    // `deliver` runs on the connection's strand.
     struct Delivery {
         boost::asio::any_io_executor connection;
         std::function<void()> deliver;

@@ -3,7 +3,6 @@
 #include "server/http/ConnectionOutbox.h"
 #include "server/http/TransportStats.h"
 
-#include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
 
 namespace tlmhub::server {
@@ -42,18 +41,14 @@ public:
     {
         // std::function is copyable: the frame travels in a shared pointer.
         auto shared = std::make_shared<std::unique_ptr<MergeableFrame>>(std::move(frame));
-        outbox.add({mExecutor, [weak = mSession, executor = mExecutor, shared] {
-                        net::dispatch(executor, [weak, shared] {
-                            if (auto session = weak.lock()) session->enqueueFrame(std::move(*shared));
-                        });
+        outbox.add({mExecutor, [weak = mSession, shared] {
+                        if (auto session = weak.lock()) session->enqueueFrame(std::move(*shared));
                     }});
     }
     void sendVia(ConnectionOutbox& outbox, std::string text) override
     {
-        outbox.add({mExecutor, [weak = mSession, executor = mExecutor, text = std::move(text)] {
-                        net::dispatch(executor, [weak, text] {
-                            if (auto session = weak.lock()) session->enqueue(text);
-                        });
+        outbox.add({mExecutor, [weak = mSession, text = std::move(text)]() mutable {
+                        if (auto session = weak.lock()) session->enqueue(std::move(text));
                     }});
     }
     void close(std::string reason) override
