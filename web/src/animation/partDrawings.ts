@@ -212,8 +212,28 @@ function filled(icon: SVGGElement, d: AnimationDescription): PartDrawing | null 
     };
 }
 
-/** Families whose parts are left still: their movement is not one a reader follows (an orifice's opening). */
-const still = new Set(['orifice', 'torsion-spring', 'damper']);
+/**
+ * An orifice: the two sides of its restriction part as its opening (Kc, or the area A) grows,
+ * each by its movable's displacement (the one that starts above the line moves the upper
+ * side); at most half the box's half height, so a wrong unit cannot throw them out of it.
+ */
+function opening(icon: SVGGElement, d: AnimationDescription, f: Frame): PartDrawing | null {
+    const sides = [...icon.querySelectorAll<SVGElement>('.glyph-throttle')];
+    const upper = d.movables.findIndex((m) => m.start[1] < 0 && m.move?.length);
+    const lower = d.movables.findIndex((m) => m.start[1] > 0 && m.move?.length);
+    if (sides.length !== 2 || upper < 0 || lower < 0) return null;
+    const gap = (frame: PartFrame, part: number) => Math.min(f.hh * 0.5, Math.abs(frame.states[part].dy * f.ky));
+    let copies: SVGElement[] = [];
+    const drawing: CopiedParts = new CopiedParts(icon, sides, () => ({ x: 0, y: 0 }), new Map(), [], (frame) => {
+        if (copies.length === 0) copies = [...drawing.element.querySelectorAll<SVGElement>('.movable-part > .glyph-throttle')];
+        copies[0]?.setAttribute('transform', translate(0, -gap(frame, upper)));
+        copies[1]?.setAttribute('transform', translate(0, gap(frame, lower)));
+    });
+    return drawing;
+}
+
+/** Families whose parts are left still: their movement is not one a reader follows. */
+const still = new Set(['torsion-spring', 'damper']);
 
 /**
  * The drawing of a component's moving parts over its icon (`icon`: the `.icon` group, our
@@ -234,6 +254,7 @@ export function partDrawing(type: string, d: AnimationDescription, icon: SVGGEle
     case 'pump': case 'motor': return rotor(icon, d, f);
     case 'spring': return stretched(icon, d, f);
     case 'volume': return filled(icon, d);
+    case 'orifice': return opening(icon, d, f);
     case 'shuttle-valve': case 'check-valve': return sliding(icon, d, f, [...icon.querySelectorAll<SVGElement>('.glyph-ball')]);
     default: break;
     }
