@@ -30,6 +30,17 @@ std::optional<JobInfo> visibleJob(Services& s, const User& who, const std::strin
     return std::nullopt;
 }
 
+// A run live.record stored keeps its session's changes in its request (JobRequest::live).
+std::optional<nlohmann::json> recordedSession(JobStore& store, std::int64_t id)
+{
+    const auto text = store.requestText(id);
+    // Most runs are not recordings: their request (with the whole model) is not parsed.
+    if (!text || text->find("\"live\":") == std::string::npos) return std::nullopt;
+    JobRequest request;
+    if (!JobRequest::fromJson(nlohmann::json::parse(*text, nullptr, false), request)) return std::nullopt;
+    return request.live;
+}
+
 Created createJob(Services& s, Call& call)
 {
     protocol::JobRequest body;
@@ -160,8 +171,9 @@ Response labelJob(Services& s, Call& call)
 
 Response getJob(Services& s, Call& call)
 {
-    const auto job = visibleJob(s, call.who(), call.params.path["id"]);
+    auto job = visibleJob(s, call.who(), call.params.path["id"]);
     if (!job) return apiError(http::status::not_found, "not_found", "no such job");
+    job->live = recordedSession(s.queue.store(), job->id);
     return jsonResponse(http::status::ok, job->toJson());
 }
 

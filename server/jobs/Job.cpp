@@ -112,7 +112,8 @@ nlohmann::json JobInfo::toJson() const
         .owner = std::nullopt,
         .parameters = parameters,
         .differingParameters = std::nullopt,
-        .differingParametersTruncated = std::nullopt};
+        .differingParametersTruncated = std::nullopt,
+        .live = live ? std::optional(live->get<protocol::LiveRecording>()) : std::nullopt};
 }
 
 } // namespace tlmhub::server

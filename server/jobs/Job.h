@@ -79,6 +79,9 @@ struct JobInfo {
     std::optional<std::map<std::string, std::string>> parameters;
     // Only in a model's history: JobRequest::usedParameters; nullopt for a job stored without.
     std::optional<std::map<std::string, std::string>> usedParameters;
+    // Only in GET /jobs/{id} of a run live.record stored: JobRequest::live (the session, its
+    // changes, whether the recording was full).
+    std::optional<nlohmann::json> live;
 
     // {id, model_id, state, progress, error, created_at, started_at, finished_at, steps,
     //  settings:{start,step,stop,log_samples}, name, pinned, results_dropped[, parameters]};

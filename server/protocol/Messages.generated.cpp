@@ -671,6 +671,21 @@ void to_json(nlohmann::json& j, const JobSettings& v)
     j["log_samples"] = v.logSamples;
 }
 
+void from_json(const nlohmann::json& j, LiveRecording& v)
+{
+    j.at("session_id").get_to(v.sessionId);
+    j.at("changes").get_to(v.changes);
+    j.at("full").get_to(v.full);
+}
+
+void to_json(nlohmann::json& j, const LiveRecording& v)
+{
+    j = nlohmann::json::object();
+    j["session_id"] = v.sessionId;
+    j["changes"] = v.changes;
+    j["full"] = v.full;
+}
+
 void from_json(const nlohmann::json& j, JobInfo& v)
 {
     j.at("id").get_to(v.id);
@@ -692,6 +707,7 @@ void from_json(const nlohmann::json& j, JobInfo& v)
     if (const auto x = j.find("parameters"); x != j.end()) v.parameters = x->get<std::map<std::string, std::string>>();
     if (const auto x = j.find("differing_parameters"); x != j.end()) v.differingParameters = x->get<std::map<std::string, std::string>>();
     if (const auto x = j.find("differing_parameters_truncated"); x != j.end()) v.differingParametersTruncated = x->get<bool>();
+    if (const auto x = j.find("live"); x != j.end()) v.live = x->get<LiveRecording>();
 }
 
 void to_json(nlohmann::json& j, const JobInfo& v)
@@ -716,6 +732,7 @@ void to_json(nlohmann::json& j, const JobInfo& v)
     if (v.parameters) j["parameters"] = *v.parameters;
     if (v.differingParameters) j["differing_parameters"] = *v.differingParameters;
     if (v.differingParametersTruncated) j["differing_parameters_truncated"] = *v.differingParametersTruncated;
+    if (v.live) j["live"] = *v.live;
 }
 
 void from_json(const nlohmann::json& j, ResultVariable& v)

@@ -72,6 +72,7 @@ struct LiveModelRequest;
 struct LivePauseRequest;
 struct LiveRecordRequest;
 struct LiveRecordedData;
+struct LiveRecording;
 struct LiveResumeRequest;
 struct LiveSetRequest;
 struct LiveShareRequest;
@@ -543,6 +544,16 @@ struct JobSettings {
 void from_json(const nlohmann::json& j, JobSettings& v);
 void to_json(nlohmann::json& j, const JobSettings& v);
 
+// Only in GET /api/v1/jobs/{id} of a run live.record stored: the session it came from and
+// every live.set as the session applied it.
+struct LiveRecording {
+    std::int64_t sessionId{};
+    std::vector<LiveChange> changes;
+    bool full{};
+};
+void from_json(const nlohmann::json& j, LiveRecording& v);
+void to_json(nlohmann::json& j, const LiveRecording& v);
+
 // A job. Times are unix seconds; null = not yet.
 struct JobInfo {
     std::int64_t id{};
@@ -564,6 +575,7 @@ struct JobInfo {
     std::optional<std::map<std::string, std::string>> parameters;
     std::optional<std::map<std::string, std::string>> differingParameters;
     std::optional<bool> differingParametersTruncated;
+    std::optional<LiveRecording> live;
 };
 void from_json(const nlohmann::json& j, JobInfo& v);
 void to_json(nlohmann::json& j, const JobInfo& v);
@@ -1591,6 +1603,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LivePauseRequest>("LivePauseRequest");
     visit.template operator()<LiveRecordRequest>("LiveRecordRequest");
     visit.template operator()<LiveRecordedData>("LiveRecordedData");
+    visit.template operator()<LiveRecording>("LiveRecording");
     visit.template operator()<LiveResumeRequest>("LiveResumeRequest");
     visit.template operator()<LiveSetRequest>("LiveSetRequest");
     visit.template operator()<LiveShareRequest>("LiveShareRequest");

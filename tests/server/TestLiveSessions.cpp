@@ -331,6 +331,12 @@ TEST_F(LiveSessions, ARecordedSessionIsARunInTheModelsHistoryWithItsSamplesAndCh
     EXPECT_EQ(info.json()["state"], "done");
     EXPECT_EQ(info.json()["model_id"], model);
     EXPECT_EQ(info.json()["name"], "live session " + std::to_string(id) + " (recorded)");
+    // The stored run keeps the session's changes, as live.record answered them.
+    const nlohmann::json live = info.json().value("live", nlohmann::json());
+    ASSERT_TRUE(live.is_object()) << info.body;
+    EXPECT_EQ(live["session_id"], id);
+    EXPECT_EQ(live["full"], false);
+    EXPECT_EQ(live["changes"], data["changes"]);
     const auto history = user.get("/api/v1/jobs?model_id=" + std::to_string(model));
     ASSERT_EQ(history.status, 200) << history.body;
     bool listed = false;

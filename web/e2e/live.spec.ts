@@ -101,6 +101,17 @@ test('live Position Servo: a slider on the drawing steers the running model; pau
     await expect(page.getByTestId('live-message')).toContainText('Stopped at t =');
     await expect(input).toBeDisabled();
 
+    // the recorded run plays back with the slider's changes marked on its timeline; a mark goes to its change
+    await page.locator('.history-row', { hasText: 'live session' }).locator('.history-play').click();
+    // (marks of changes close in time overlap: the last one is on top)
+    const mark = page.getByTestId('playback-change').last();
+    await expect(mark).toHaveAttribute('title', /^Step\.y_A = [\d.e-]+ at [\d.]+ s$/);
+    const markedAt = /at ([\d.]+) s$/.exec((await mark.getAttribute('title'))!)![1];
+    await mark.click();
+    await expect(page.getByTestId('playback-time')).toContainText(`${markedAt} s /`);
+    await page.screenshot({ path: `${docsScreenshots}playback-live-changes.png` });
+    await page.getByTestId('playback-close').click();
+
     // a lost connection ends the session (the server ends it with its socket); live again once reconnected
     await page.getByTestId('live').click();
     await expect(page.getByTestId('live-status')).toContainText('Live');

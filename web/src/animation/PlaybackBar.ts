@@ -3,7 +3,7 @@
 // (between samples, interpolated) and every plot window marks the time with a cursor line.
 import type { DiagramAnimation } from './DiagramAnimation';
 import type { RunData } from '../run/RunData';
-import { advance, stepOfTime, timeOfStep, valuesAt } from './timeline';
+import { advance, changeMarks, stepOfTime, timeOfStep, valuesAt, type RecordedChange } from './timeline';
 import { runPressureRange } from './pressureScale';
 import { h } from '../ui/dom';
 
@@ -17,6 +17,8 @@ export interface PlaybackHost {
     setPlotTime(time: number | null): void;
     /** Loads the run's stored values of those of `names` it logged. */
     load(run: RunData, names: string[]): Promise<void>;
+    /** The changes made while the run was recorded, if it is a recorded live session. */
+    changes(run: RunData): Promise<RecordedChange[]>;
     /** Playback ended (closed, or another run replaced it). */
     closed?(): void;
 }
@@ -28,6 +30,8 @@ export class PlaybackBar {
     private readonly timeText: HTMLElement;
     private readonly speed: HTMLSelectElement;
     private readonly title: HTMLElement;
+    /** Over the slider: a mark per change of a recorded live session; a click goes there. */
+    private readonly marks: HTMLElement;
     private run: RunData | null = null;
     private columns = new Map<string, number[]>();
     private readonly values = new Map<string, number>();
@@ -45,13 +49,14 @@ export class PlaybackBar {
         this.speed = h('select', { class: 'playback-speed', 'data-testid': 'playback-speed', 'aria-label': 'Speed', title: 'Simulated seconds per second' },
             ...SPEEDS.map((v) => h('option', { value: v, selected: v === 1 }, `${v}×`)));
         this.title = h('span', { class: 'playback-title' });
+        this.marks = h('div', { class: 'playback-changes', 'data-testid': 'playback-changes' });
         this.element = h('div', {
             class: 'playback-bar', 'data-testid': 'playback-bar', hidden: true, role: 'group', 'aria-label': 'Playback',
             onkeydown: (e: KeyboardEvent) => {
                 if (e.key === ' ' && !(e.target instanceof HTMLSelectElement)) { e.preventDefault(); this.toggle(); }
             },
         },
-        this.title, this.playButton, this.slider, this.timeText, this.speed,
+        this.title, this.playButton, h('div', { class: 'playback-track' }, this.slider, this.marks), this.timeText, this.speed,
         h('button', { class: 'playback-close', 'data-testid': 'playback-close', 'aria-label': 'Close playback', title: 'Leave playback', onclick: () => this.close() }, '✕'));
     }
 
@@ -67,7 +72,10 @@ export class PlaybackBar {
         this.run = run;
         this.title.textContent = run.label;
         this.element.hidden = false;
-        if (!await this.loadValues(run)) return;
+        this.marks.replaceChildren();
+        const [loaded, changes] = await Promise.all([this.loadValues(run), this.host.changes(run)]);
+        if (!loaded) return;
+        this.showChanges(changes);
         // the colours span the run's pressures (the user may change the range on the scale)
         const [low, high] = runPressureRange([...this.columns].filter(([n]) => n.endsWith('#Pressure')).map(([, c]) => c));
         this.host.animation.range.set(low, high);
@@ -93,6 +101,18 @@ export class PlaybackBar {
             return c ? [[n, c] as [string, number[]]] : [];
         }));
         return true;
+    }
+
+    private showChanges(changes: RecordedChange[]): void {
+        this.marks.replaceChildren(...changeMarks(changes, this.start, this.end).map((m) => {
+            const mark = h('button', {
+                class: 'playback-change', 'data-testid': 'playback-change', title: m.label, 'aria-label': m.label,
+                onclick: () => { this.pause(); this.seek(m.time); },
+            });
+            // set through the CSSOM: the page's policy refuses style attributes
+            mark.style.left = `${(m.at * 100).toFixed(3)}%`;
+            return mark;
+        }));
     }
 
     /** Leaves playback: the drawing and the plots as they were. */

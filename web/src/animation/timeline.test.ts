@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { advance, samplePlace, stepOfTime, timeOfStep, valueAt, valuesAt } from './timeline';
+import { advance, changeMarks, samplePlace, stepOfTime, timeOfStep, valueAt, valuesAt } from './timeline';
 
 describe('timeline', () => {
     const time = [0, 0.1, 0.2, 0.4];
@@ -34,5 +34,14 @@ describe('timeline', () => {
         expect(advance(1, 0.5, 0.1, 10).t).toBeCloseTo(1.05);
         expect(advance(1, 2, 10, 10)).toEqual({ t: 10, ended: true });
         expect(advance(1, -1, 1, 10)).toEqual({ t: 1, ended: false });
+    });
+
+    it("marks a recorded session's changes where they fall in the run, leaving out those outside it", () => {
+        const changes = [{ time: 0.5, name: 'Step.y_A', value: 0.3 }, { time: 2, name: 'Gain.k', value: 4 }, { time: 9, name: 'Step.y_A', value: 1 }];
+        expect(changeMarks(changes, 0, 4)).toEqual([
+            { at: 0.125, time: 0.5, label: 'Step.y_A = 0.3 at 0.500 s' },
+            { at: 0.5, time: 2, label: 'Gain.k = 4 at 2.000 s' },
+        ]);
+        expect(changeMarks(changes, 1, 1)).toEqual([]);
     });
 });

@@ -51,3 +51,16 @@ export function advance(t: number, wall: number, speed: number, end: number): { 
     const next = t + Math.max(0, wall) * speed;
     return next >= end ? { t: end, ended: true } : { t: next, ended: false };
 }
+
+/** A change made during a recorded live session, as the run's `live.changes` lists it. */
+export interface RecordedChange { time: number; name: string; value: number }
+
+/** A change's mark on the timeline: `at` the share of the way from start to end (0 … 1). */
+export interface ChangeMark { at: number; time: number; label: string }
+
+/** The marks of `changes` within a run from `start` to `end` (those outside it are left out). */
+export function changeMarks(changes: readonly RecordedChange[], start: number, end: number): ChangeMark[] {
+    if (!(end > start)) return [];
+    return changes.filter((c) => c.time >= start && c.time <= end)
+        .map((c) => ({ at: (c.time - start) / (end - start), time: c.time, label: `${c.name} = ${c.value} at ${c.time.toFixed(3)} s` }));
+}

@@ -263,6 +263,7 @@ export interface ProtocolDefinitions {
     LiveResumeRequest?: LiveResumeRequest;
     LiveStopRequest?: LiveStopRequest;
     LiveRecordRequest?: LiveRecordRequest;
+    LiveRecording?: LiveRecording;
     LiveChange?: LiveChange;
     LiveRecordedData?: LiveRecordedData;
     LiveSpeedRequest?: LiveSpeedRequest;
@@ -726,6 +727,26 @@ export interface JobInfo {
      * Only in a model's run history, and only when true: more parameters differ than differing_parameters lists.
      */
     differing_parameters_truncated?: boolean;
+    live?: LiveRecording;
+}
+/**
+ * Only in GET /api/v1/jobs/{id} of a run live.record stored: the session it came from and every live.set as the session applied it.
+ */
+export interface LiveRecording {
+    session_id: number;
+    changes: LiveChange[];
+    /**
+     * The recording reached --max-log-samples and holds only its first samples.
+     */
+    full: boolean;
+}
+/**
+ * A live.set as the session applied it: after the step at model time `time`, so samples from the next one on show it.
+ */
+export interface LiveChange {
+    time: number;
+    name: string;
+    value: number;
 }
 export interface ResultVariable {
     /**
@@ -1552,14 +1573,6 @@ export interface CommentCreate {
  */
 export interface GradeUpdate {
     grade: number | null;
-}
-/**
- * A live.set as the session applied it: after the step at model time `time`, so samples from the next one on show it.
- */
-export interface LiveChange {
-    time: number;
-    name: string;
-    value: number;
 }
 /**
  * The stored run: a done job (GET /api/v1/jobs/{job_id}/results gives the recorded samples of the session's variables), named 'live session N (recorded)'.

@@ -166,6 +166,7 @@ export async function renderEditor(root: HTMLElement, session: Session, modelId:
             const logged = new Set(await rest.loggedVariables(run.jobId));
             await runs.ensure(names.filter((n) => logged.has(n)), [run]);
         },
+        changes: async (run) => (await rest.job(run.jobId)).live?.changes ?? [],
     });
     canvas.element.append(playback.element);
     // entering or leaving a subsystem shows other lines and parts: their values are loaded
