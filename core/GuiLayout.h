@@ -59,6 +59,20 @@ struct ObjectLayout {
     bool operator==(const ObjectLayout&) const = default;
 };
 
+// A control the web app places on the top-level drawing or a subsystem's, to change one value
+// while the model runs (docs/live-mode.md), kept in the root system's
+// <hopsangui><tlmhub_livecontrols><control kind name min max x y [system off on]/>. Hopsan
+// does not read the element.
+struct LiveControlLayout {
+    std::string kind;                  // slider, knob, switch or number
+    std::string name;                  // the value it sets, as live.set names it: Step.y_A, Sub$Gain.k
+    double min = 0.0, max = 1.0;
+    std::optional<double> off, on;     // a switch's two values
+    double x = 0.0, y = 0.0;           // in the coordinates of the drawing it is on
+    std::vector<std::string> system;   // that drawing's subsystem path; empty: the top level
+    bool operator==(const LiveControlLayout&) const = default;
+};
+
 // A point of a connection's line, {x, y} in scene coordinates.
 using LinePoint = std::array<double, 2>;
 

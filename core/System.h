@@ -189,6 +189,8 @@ public:
     std::map<std::string, SystemPortExtras> systemPortExtras;
     std::map<std::string, ConnectionExtras> connectionExtras;
     std::vector<std::string> preservedObjectsXml;
+    // The root's live controls (core/GuiLayout.h), in the order the web app lists them.
+    std::vector<LiveControlLayout> liveControls;
 
 private:
     // A subsystem starts inside its parent's initialize(startTime, stopTime), never through

@@ -2,6 +2,7 @@
 
 #include "core/Parameter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tlmhub::guixml {
@@ -153,7 +154,73 @@ void writeIconPorts(pugi::xml_node gui, const std::vector<IconPort>& ports)
     if (old) modelObject.remove_child(old);
 }
 
+constexpr const char* kLiveControls = "tlmhub_livecontrols";
+
+std::optional<double> readOptionalNumber(pugi::xml_attribute a)
+{
+    return a ? std::optional(readNumber(a)) : std::nullopt;
+}
+
+std::vector<std::string> splitSystemPath(const std::string& text)
+{
+    std::vector<std::string> path;
+    for (std::size_t from = 0; from < text.size();) {
+        const std::size_t to = std::min(text.find('$', from), text.size());
+        if (to > from) path.push_back(text.substr(from, to - from));
+        from = to + 1;
+    }
+    return path;
+}
+
+std::string joinSystemPath(const std::vector<std::string>& path)
+{
+    std::string text;
+    for (const std::string& name : path) {
+        if (!text.empty()) text += '$';
+        text += name;
+    }
+    return text;
+}
+
 } // namespace
+
+std::vector<LiveControlLayout> readLiveControls(pugi::xml_node element)
+{
+    std::vector<LiveControlLayout> controls;
+    for (pugi::xml_node c : element.child("hopsangui").child(kLiveControls).children("control")) {
+        controls.push_back({.kind = c.attribute("kind").as_string(),
+                            .name = c.attribute("name").as_string(),
+                            .min = readNumber(c.attribute("min")),
+                            .max = readNumber(c.attribute("max")),
+                            .off = readOptionalNumber(c.attribute("off")),
+                            .on = readOptionalNumber(c.attribute("on")),
+                            .x = readNumber(c.attribute("x")),
+                            .y = readNumber(c.attribute("y")),
+                            .system = splitSystemPath(c.attribute("system").as_string())});
+    }
+    return controls;
+}
+
+void writeLiveControls(pugi::xml_node element, const std::vector<LiveControlLayout>& controls)
+{
+    if (readLiveControls(element) == controls) return;
+    pugi::xml_node gui = childOrNew(element, "hopsangui");
+    gui.remove_child(kLiveControls);
+    if (controls.empty()) return;
+    pugi::xml_node list = gui.append_child(kLiveControls);
+    for (const LiveControlLayout& control : controls) {
+        pugi::xml_node c = list.append_child("control");
+        c.append_attribute("kind") = control.kind.c_str();
+        c.append_attribute("name") = control.name.c_str();
+        setNumber(c, "min", control.min);
+        setNumber(c, "max", control.max);
+        if (control.off) setNumber(c, "off", *control.off);
+        if (control.on) setNumber(c, "on", *control.on);
+        setNumber(c, "x", control.x);
+        setNumber(c, "y", control.y);
+        if (!control.system.empty()) c.append_attribute("system") = joinSystemPath(control.system).c_str();
+    }
+}
 
 ObjectLayout readObjectLayout(pugi::xml_node element)
 {

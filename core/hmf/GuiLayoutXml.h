@@ -18,4 +18,8 @@ void writeObjectLayout(pugi::xml_node element, const ObjectLayout& layout);
 ConnectionLayout readConnectionLayout(pugi::xml_node connect);
 void writeConnectionLayout(pugi::xml_node connect, const ConnectionLayout& layout);
 
+// `element` is the root <system>; its controls are in its <hopsangui>.
+std::vector<LiveControlLayout> readLiveControls(pugi::xml_node element);
+void writeLiveControls(pugi::xml_node element, const std::vector<LiveControlLayout>& controls);
+
 } // namespace tlmhub::guixml

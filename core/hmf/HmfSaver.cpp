@@ -93,6 +93,7 @@ void writeSystem(pugi::xml_node e, const System& s, bool isRoot)
     }
     preserved::appendFragment(e, s.preservedXml);
     guixml::writeObjectLayout(e, s.layout);
+    if (isRoot) guixml::writeLiveControls(e, s.liveControls);
 
     pugi::xml_node objects = e.append_child("objects");
     for (Component* c : s.componentsInOrder()) writeComponent(objects, *c);

@@ -33,6 +33,7 @@ void storeComponentExtras(Component& component, pugi::xml_node element)
 void storeSystemExtras(System& root, pugi::xml_node element)
 {
     root.layout = guixml::readObjectLayout(element);
+    root.liveControls = guixml::readLiveControls(element);
     root.preservedXml = serializeChildrenExcept(
         element, {"parameters", "simulationtime", "simulationlogsettings", "objects", "connections",
                   "aliases", "numhopscript"});

@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace tlmhub::server {
@@ -141,6 +142,7 @@ Result EditSession::handle(const json& request)
         {"sysparam.set", decoding(&EditSession::sysparamSet)},
         {"sysparam.remove", decoding(&EditSession::sysparamRemove)},
         {"model.settings", decoding(&EditSession::modelSettings)},
+        {"model.controls", decoding(&EditSession::modelControls)},
         {"model.group", decoding(&EditSession::modelGroup)},
         {"model.ungroup", decoding(&EditSession::modelUngroup)},
     };
@@ -399,6 +401,28 @@ Result EditSession::modelSettings(System&, const protocol::ModelSettingsRequest&
     root.stopTime = stop;
     if (request.logSamples) root.requestedLogSamples = static_cast<std::size_t>(*request.logSamples);
     return success(protocol::ModelSettingsData{.simulation = describeSimulationSettings(root)});
+}
+
+// The root's live controls, all at once (a subsystem path, if given, is ignored: each control
+// names the drawing it is on). Saved in the model's GUI data (core/GuiLayout.h).
+Result EditSession::modelControls(System&, const protocol::ModelControlsRequest& request)
+{
+    static const std::set<std::string> kinds = {"slider", "knob", "switch", "number"};
+    std::vector<LiveControlLayout> controls;
+    for (std::size_t i = 0; i < request.controls.size(); ++i) {
+        const LiveControlLayout c = liveControlOf(request.controls[i]);
+        const std::string which = "controls[" + std::to_string(i) + "]";
+        if (!kinds.contains(c.kind)) return fail("bad_request", which + ".kind: expected slider, knob, switch or number");
+        const bool finite = std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.x) && std::isfinite(c.y)
+                            && std::isfinite(c.off.value_or(0)) && std::isfinite(c.on.value_or(0));
+        if (!finite) return fail("bad_request", which + ": every number must be finite");
+        controls.push_back(c);
+    }
+    System& root = mModel->root();
+    root.liveControls = std::move(controls);
+    protocol::ModelControlsData data;
+    for (const LiveControlLayout& c : root.liveControls) data.controls.push_back(describeLiveControl(c));
+    return success(data);
 }
 
 // ---------------------------------------------------------------- grouping

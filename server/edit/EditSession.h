@@ -1,7 +1,7 @@
 #pragma once
 // One open model being edited: applies the WebSocket editing requests (model.get,
 // component.*, connect, disconnect, parameter.*, sysparam.*, model.settings,
-// model.group, model.ungroup) to an in-memory Model.
+// model.controls, model.group, model.ungroup) to an in-memory Model.
 // It knows nothing of users, stores or sockets; the caller loads and saves the .hmf text.
 //
 // Requests arrive schema-validated, but handle() still checks every field it reads and
@@ -56,6 +56,7 @@ private:
     Result sysparamSet(System& system, const protocol::SysParamSetRequest& request);
     Result sysparamRemove(System& system, const protocol::SysParamRemoveRequest& request);
     Result modelSettings(System& system, const protocol::ModelSettingsRequest& request);
+    Result modelControls(System& system, const protocol::ModelControlsRequest& request);
     Result modelGroup(System& system, const protocol::ModelGroupRequest& request);
     Result modelUngroup(System& system, const protocol::ModelUngroupRequest& request);
 

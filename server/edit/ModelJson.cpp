@@ -152,6 +152,18 @@ protocol::Component describeComponent(const Component& c)
             .system = c.isSystem() ? std::optional(describeSystem(static_cast<const System&>(c))) : std::nullopt};
 }
 
+protocol::LiveControl describeLiveControl(const LiveControlLayout& c)
+{
+    return {.kind = c.kind, .name = c.name, .min = c.min, .max = c.max, .off = c.off, .on = c.on, .x = c.x, .y = c.y,
+            .system = c.system.empty() ? std::nullopt : std::optional(c.system)};
+}
+
+LiveControlLayout liveControlOf(const protocol::LiveControl& c)
+{
+    return {.kind = c.kind, .name = c.name, .min = c.min, .max = c.max, .off = c.off, .on = c.on, .x = c.x, .y = c.y,
+            .system = c.system.value_or(std::vector<std::string>{})};
+}
+
 protocol::System describeSystem(const System& s)
 {
     std::vector<protocol::SysParam> parameters;
@@ -164,6 +176,8 @@ protocol::System describeSystem(const System& s)
     for (const Component* c : s.componentsInOrder()) components.push_back(describeComponent(*c));
     std::vector<protocol::Connection> connections;
     for (const ConnectionEnds& e : connectionsOf(s)) connections.push_back(describeConnection(s, e));
+    std::vector<protocol::LiveControl> liveControls;
+    for (const LiveControlLayout& c : s.liveControls) liveControls.push_back(describeLiveControl(c));
     return {.name = s.name(),
             .type = s.isConditional() ? "ConditionalSubsystem" : "Subsystem",
             .timestep = s.desiredTimestep,
@@ -172,7 +186,8 @@ protocol::System describeSystem(const System& s)
             .parameters = std::move(parameters),
             .ports = std::move(ports),
             .components = std::move(components),
-            .connections = std::move(connections)};
+            .connections = std::move(connections),
+            .liveControls = liveControls.empty() ? std::nullopt : std::optional(std::move(liveControls))};
 }
 
 protocol::SimulationSettings describeSimulationSettings(const System& root)

@@ -18,6 +18,9 @@ protocol::System describeSystem(const System& system);
 // The root's own times and log samples.
 protocol::SimulationSettings describeSimulationSettings(const System& root);
 protocol::Param describeParameter(const Parameter& parameter);
+protocol::LiveControl describeLiveControl(const LiveControlLayout& control);
+// The control a request describes (the schema checked its fields' types).
+LiveControlLayout liveControlOf(const protocol::LiveControl& control);
 protocol::SysParam describeSystemParameter(const Parameter& parameter);
 
 // One connection made in a system, each end named as .hmf names it: a system port of the

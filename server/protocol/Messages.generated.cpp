@@ -223,6 +223,7 @@ void from_json(const nlohmann::json& j, System& v)
     j.at("ports").get_to(v.ports);
     j.at("components").get_to(v.components);
     j.at("connections").get_to(v.connections);
+    if (const auto x = j.find("live_controls"); x != j.end()) v.liveControls = x->get<std::vector<LiveControl>>();
 }
 
 void to_json(nlohmann::json& j, const System& v)
@@ -237,6 +238,7 @@ void to_json(nlohmann::json& j, const System& v)
     j["ports"] = v.ports;
     j["components"] = v.components;
     j["connections"] = v.connections;
+    if (v.liveControls) j["live_controls"] = *v.liveControls;
 }
 
 void from_json(const nlohmann::json& j, Component& v)
@@ -1501,6 +1503,58 @@ void to_json(nlohmann::json& j, const ModelSettingsRequest& v)
     if (v.step) j["step"] = *v.step;
     if (v.stop) j["stop"] = *v.stop;
     if (v.logSamples) j["log_samples"] = *v.logSamples;
+}
+
+void from_json(const nlohmann::json& j, LiveControl& v)
+{
+    j.at("kind").get_to(v.kind);
+    j.at("name").get_to(v.name);
+    j.at("min").get_to(v.min);
+    j.at("max").get_to(v.max);
+    if (const auto x = j.find("off"); x != j.end()) v.off = x->get<double>();
+    if (const auto x = j.find("on"); x != j.end()) v.on = x->get<double>();
+    j.at("x").get_to(v.x);
+    j.at("y").get_to(v.y);
+    if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
+}
+
+void to_json(nlohmann::json& j, const LiveControl& v)
+{
+    j = nlohmann::json::object();
+    j["kind"] = v.kind;
+    j["name"] = v.name;
+    j["min"] = v.min;
+    j["max"] = v.max;
+    if (v.off) j["off"] = *v.off;
+    if (v.on) j["on"] = *v.on;
+    j["x"] = v.x;
+    j["y"] = v.y;
+    if (v.system) j["system"] = *v.system;
+}
+
+void from_json(const nlohmann::json& j, ModelControlsRequest& v)
+{
+    if (const auto x = j.find("id"); x != j.end()) v.id = *x;
+    j.at("controls").get_to(v.controls);
+}
+
+void to_json(nlohmann::json& j, const ModelControlsRequest& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["type"] = "model.controls";
+    j["controls"] = v.controls;
+}
+
+void from_json(const nlohmann::json& j, ModelControlsData& v)
+{
+    j.at("controls").get_to(v.controls);
+}
+
+void to_json(nlohmann::json& j, const ModelControlsData& v)
+{
+    j = nlohmann::json::object();
+    j["controls"] = v.controls;
 }
 
 void from_json(const nlohmann::json& j, ModelSettingsData& v)

@@ -66,6 +66,7 @@ struct JobRequest;
 struct JobSettings;
 struct JobUpdate;
 struct LiveChange;
+struct LiveControl;
 struct LiveFrameEvent;
 struct LiveModelData;
 struct LiveModelRequest;
@@ -92,6 +93,8 @@ struct LoginRequest;
 struct LoginResponse;
 struct MemberUpdate;
 struct Model;
+struct ModelControlsData;
+struct ModelControlsRequest;
 struct ModelCreate;
 struct ModelCreateRequest;
 struct ModelDetail;
@@ -283,6 +286,7 @@ struct System {
     std::vector<SystemPort> ports;
     std::vector<Component> components;
     std::vector<Connection> connections;
+    std::optional<std::vector<LiveControl>> liveControls;
 };
 void from_json(const nlohmann::json& j, System& v);
 void to_json(nlohmann::json& j, const System& v);
@@ -1047,6 +1051,37 @@ struct ModelSettingsRequest {
 void from_json(const nlohmann::json& j, ModelSettingsRequest& v);
 void to_json(nlohmann::json& j, const ModelSettingsRequest& v);
 
+// A slider, knob, switch or number field placed on a drawing that sets one value while the
+// model runs (live.set), saved in the model's GUI data.
+struct LiveControl {
+    std::string kind{};
+    std::string name{};
+    double min{};
+    double max{};
+    std::optional<double> off;
+    std::optional<double> on;
+    double x{};
+    double y{};
+    std::optional<std::vector<std::string>> system;
+};
+void from_json(const nlohmann::json& j, LiveControl& v);
+void to_json(nlohmann::json& j, const LiveControl& v);
+
+// Replace the open model's live controls (saved with it, in its GUI data).
+struct ModelControlsRequest {
+    nlohmann::json id{};
+    // "type": always "model.controls"
+    std::vector<LiveControl> controls;
+};
+void from_json(const nlohmann::json& j, ModelControlsRequest& v);
+void to_json(nlohmann::json& j, const ModelControlsRequest& v);
+
+struct ModelControlsData {
+    std::vector<LiveControl> controls;
+};
+void from_json(const nlohmann::json& j, ModelControlsData& v);
+void to_json(nlohmann::json& j, const ModelControlsData& v);
+
 struct ModelSettingsData {
     SimulationSettings simulation{};
 };
@@ -1597,6 +1632,7 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<JobSettings>("JobSettings");
     visit.template operator()<JobUpdate>("JobUpdate");
     visit.template operator()<LiveChange>("LiveChange");
+    visit.template operator()<LiveControl>("LiveControl");
     visit.template operator()<LiveFrameEvent>("LiveFrameEvent");
     visit.template operator()<LiveModelData>("LiveModelData");
     visit.template operator()<LiveModelRequest>("LiveModelRequest");
@@ -1623,6 +1659,8 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LoginResponse>("LoginResponse");
     visit.template operator()<MemberUpdate>("MemberUpdate");
     visit.template operator()<Model>("Model");
+    visit.template operator()<ModelControlsData>("ModelControlsData");
+    visit.template operator()<ModelControlsRequest>("ModelControlsRequest");
     visit.template operator()<ModelCreate>("ModelCreate");
     visit.template operator()<ModelCreateRequest>("ModelCreateRequest");
     visit.template operator()<ModelDetail>("ModelDetail");

@@ -133,6 +133,7 @@ const std::map<std::string, WsCase>& wsCases()
         {"model.save", WsCase::OpenModel},
         {"model.get", WsCase::OpenModel},
         {"model.settings", WsCase::OpenModel},
+        {"model.controls", WsCase::OpenModel},
         {"component.add", WsCase::OpenModel},
         {"component.remove", WsCase::OpenModel},
         {"component.rename", WsCase::OpenModel},

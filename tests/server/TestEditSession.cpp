@@ -434,6 +434,38 @@ TEST(EditSession, ModelSettingsAreSavedWithTheModel)
     EXPECT_EQ(simulation["log_samples"], 1000);
 }
 
+TEST(EditSession, LiveControlsAreReplacedWholeAndSavedInTheModelsGuiData)
+{
+    EditSession session = openServo();
+    EXPECT_FALSE(rootSystem(session).contains("live_controls")) << "none until one is placed";
+    const json controls = json::array({
+        {{"kind", "slider"}, {"name", "Step.y_A"}, {"min", 0}, {"max", 1}, {"x", 120.5}, {"y", 40}},
+        {{"kind", "switch"}, {"name", "Sub$Switch.state"}, {"min", 0}, {"max", 1}, {"off", 0}, {"on", 2},
+         {"x", -5}, {"y", 7}, {"system", {"Sub"}}},
+    });
+    const auto r = session.handle({{"id", 1}, {"type", "model.controls"}, {"controls", controls}});
+    expectReplyShape("model.controls", r);
+    EXPECT_EQ(r.data["controls"], controls);
+    EXPECT_EQ(rootSystem(session).at("live_controls"), controls);
+    // in the root's GUI data, not among its parameters
+    const std::string hmf = session.saveHmf();
+    EXPECT_NE(hmf.find("<tlmhub_livecontrols>"), std::string::npos);
+    EXPECT_EQ(findByName(rootSystem(session).at("parameters"), "tlmhub_live_controls"), nullptr);
+    EditSession reloaded;
+    std::string error;
+    ASSERT_TRUE(reloaded.openHmf(hmf, "again", error)) << error;
+    EXPECT_EQ(rootSystem(reloaded).at("live_controls"), controls);
+
+    EXPECT_EQ(session.handle({{"id", 2}, {"type", "model.controls"},
+                              {"controls", {{{"kind", "dial"}, {"name", "A.b"}, {"min", 0}, {"max", 1}, {"x", 0}, {"y", 0}}}}})
+                  .code,
+              "bad_request");
+    EXPECT_EQ(rootSystem(session).at("live_controls"), controls) << "a refused request changes nothing";
+    ASSERT_TRUE(session.handle({{"id", 3}, {"type", "model.controls"}, {"controls", json::array()}}).ok);
+    EXPECT_FALSE(rootSystem(session).contains("live_controls"));
+    EXPECT_EQ(session.saveHmf().find("tlmhub_livecontrols"), std::string::npos);
+}
+
 TEST(EditSession, MoveChangesOnlyThePose)
 {
     EditSession session = openServo();

@@ -224,3 +224,32 @@ TEST(GuiLayout, EverySharedModelSavesWithNoLayoutRewrittenAndReloadsWithTheSameL
     }
     EXPECT_GT(models, 100u);
 }
+
+TEST(GuiLayout, LiveControlsAreSavedInTheRootsGuiDataAndReloadTheSame)
+{
+    Model model = loadSubSystemExample();
+    const std::string before = model.toHmf();
+    const std::vector<LiveControlLayout> controls = {
+        {.kind = "slider", .name = "ForceSource1.f", .min = -100, .max = 250.5, .off = std::nullopt,
+         .on = std::nullopt, .x = 2410, .y = 2380, .system = {}},
+        {.kind = "switch", .name = "Servo1$Gain.k", .min = 0, .max = 1, .off = 0.5, .on = 2, .x = -3.25, .y = 7,
+         .system = {"Servo1"}},
+    };
+    model.root().liveControls = controls;
+    const std::string saved = model.toHmf();
+    EXPECT_NE(saved.find("<tlmhub_livecontrols>"), std::string::npos);
+
+    LoadedModel reloaded = loadHmfString(saved, ".", "saved");
+    ASSERT_FALSE(reloaded.hasErrors()) << reloaded.firstError();
+    EXPECT_EQ(reloaded.root->liveControls, controls);
+    // inside the root's <hopsangui>, where Hopsan keeps the GUI's own data of the model
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(saved.c_str()));
+    EXPECT_EQ(doc.select_nodes("/hopsanmodelfile/system/hopsangui/tlmhub_livecontrols/control").size(), 2u);
+
+    // Saved again unchanged, the file is the same; with none left, as it was before.
+    Model again(std::move(reloaded.root));
+    EXPECT_EQ(again.toHmf(), saved);
+    again.root().liveControls.clear();
+    EXPECT_EQ(again.toHmf(), before);
+}

@@ -10,11 +10,12 @@ import type { EditRequest, EditRequestOf, EditType, SystemPath } from '../model/
 /** A change other than a parameter's value: what a menu entry, a button or a gesture does. */
 export type StructuralEdit =
     | 'add' | 'delete' | 'move' | 'rotate' | 'flip' | 'connect' | 'disconnect' | 'rename'
-    | 'group' | 'ungroup' | 'paste' | 'replace' | 'lines' | 'system-parameters' | 'settings';
+    | 'group' | 'ungroup' | 'paste' | 'replace' | 'lines' | 'system-parameters' | 'settings' | 'live-controls';
 
 /** The edits each request type makes (reading requests make none). */
 const REQUEST_EDITS: Partial<Record<EditRequest['type'], StructuralEdit>> = {
     'model.settings': 'settings',
+    'model.controls': 'live-controls',
     'component.add': 'add',
     'component.remove': 'delete',
     'component.rename': 'rename',

@@ -234,7 +234,7 @@ export class SetParameter implements Command {
 }
 
 // The request's "type" is the message type; the parameter's own type travels as param_type.
-function sysParamRequest(path: SystemPath, p: SysParam): EditRequestOf<'sysparam.set'> {
+export function sysParamRequest(path: SystemPath, p: SysParam): EditRequestOf<'sysparam.set'> {
     return { type: 'sysparam.set', system: path, name: p.name, value: p.value, param_type: p.type, unit: p.unit, description: p.description };
 }
 

@@ -2,8 +2,9 @@ import { describe, expect, it } from 'vitest';
 import { EditorStore } from '../editor/EditorStore';
 import { AddComponent, copySelection, Paste } from '../editor/commands';
 import { FakeServer } from '../testing/FakeServer';
+import type { SysParam } from '../protocol/types';
 import { ChangeLiveControls } from './ChangeLiveControls';
-import { CONTROLS_PARAMETER, controlProblem, controlsOf, controlsParameter, modelValueOf, withinBounds, type LiveControl } from './liveControls';
+import { CONTROLS_PARAMETER, controlProblem, controlsOf, modelValueOf, withinBounds, type LiveControl } from './liveControls';
 
 const at = (x: number, y: number) => ({ x, y, angle: 0, flipped: false });
 const slider: LiveControl = { kind: 'slider', name: 'Step.y_A', min: 0, max: 0.2, x: 100.4, y: 60, path: [] };
@@ -17,11 +18,14 @@ async function storeWithStep() {
 }
 
 describe('live controls in the model', () => {
-    it('are saved in the model as its string system parameter and read back the same (save and reopen)', async () => {
+    it("are saved in the model's GUI data (model.controls) and read back the same (save and reopen)", async () => {
         const { server, store } = await storeWithStep();
         await store.execute(new ChangeLiveControls([slider, toggle], 'Add live control'));
-        const stored = server.model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER);
-        expect(stored?.value).toContain('"Step.y_A"');
+        expect(server.model.system.live_controls).toEqual([
+            { kind: 'slider', name: 'Step.y_A', min: 0, max: 0.2, x: 100, y: 60 },
+            { kind: 'switch', name: 'Sub$Switch.state', min: 0, max: 1, off: 0, on: 1, x: -20, y: 5, system: ['Sub'] },
+        ]);
+        expect(server.model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER)).toBeUndefined();
         // what the server keeps is what a reopened editor (or a copy of the model) starts from
         const reopened = new EditorStore(structuredClone(server.model), server.handle);
         expect(controlsOf(reopened.model)).toEqual([{ ...slider, x: 100 }, toggle]);
@@ -50,8 +54,23 @@ describe('live controls in the model', () => {
         expect(controlsOf(store.model)).toHaveLength(1);
     });
 
+    it('a model saved with them in the old system parameter shows them, and loses the parameter with the first change (undoable)', async () => {
+        const { server } = await storeWithStep();
+        const legacy: SysParam = { name: CONTROLS_PARAMETER, value: JSON.stringify([{ ...slider, x: 100 }]), type: 'string', unit: '', description: 'old' };
+        server.model.system.parameters.push(legacy);
+        const reopened = new EditorStore(structuredClone(server.model), server.handle);
+        expect(controlsOf(reopened.model)).toEqual([{ ...slider, x: 100 }]);
+        await reopened.execute(new ChangeLiveControls([{ ...slider, x: 300 }], 'Move live control'));
+        expect(server.model.system.parameters.some((p) => p.name === CONTROLS_PARAMETER)).toBe(false);
+        expect(controlsOf(reopened.model)).toEqual([{ ...slider, x: 300 }]);
+        await reopened.undo();
+        expect(server.model.system.live_controls).toBeUndefined();
+        expect(server.model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER)?.value).toBe(legacy.value);
+        expect(controlsOf(reopened.model)).toEqual([{ ...slider, x: 100 }]);
+    });
+
     it('a value edited by hand into something else gives the controls that still make sense', () => {
-        const model = (value: string) => ({ name: 'm', system: { ...new FakeServer().model.system, parameters: [{ ...controlsParameter([]), value }] } });
+        const model = (value: string) => ({ name: 'm', system: { ...new FakeServer().model.system, parameters: [{ name: CONTROLS_PARAMETER, type: 'string' as const, unit: '', description: '', value }] } });
         expect(controlsOf(model('not json'))).toEqual([]);
         expect(controlsOf(model('{"kind":"slider"}'))).toEqual([]);
         expect(controlsOf(model('[{"kind":"dial","name":"A.b","min":0,"max":1,"x":0,"y":0},{"kind":"knob","name":"A.b","min":0,"max":1,"x":0,"y":0}]')))

@@ -1,10 +1,10 @@
 // Live controls placed on the drawing (a slider, knob, switch or number field bound to a value
 // that may change while the model runs) are part of the model: a teacher puts them in an
 // assignment's template, and they must survive save, reopen, "save as my copy" and .hmf.
-// The model the server sends has no field for GUI data of our own, so they are kept as one
-// string system parameter of the top-level system, holding JSON; Hopsan reads it as an
-// ordinary (unused) string parameter. A field for them in the model would be better (report).
-import type { Model, SysParam } from '../protocol/types';
+// The server keeps them in the model's GUI data (the root's `live_controls`, model.controls;
+// <hopsangui><tlmhub_livecontrols> in the .hmf). Models saved before that kept them as a
+// JSON string system parameter, which is still read until the controls are next changed.
+import type { LiveControl as StoredControl, Model, SysParam } from '../protocol/types';
 import { findComponent, systemAt, type SystemPath } from '../model/modelState';
 
 export type LiveControlKind = 'slider' | 'knob' | 'switch' | 'number';
@@ -25,13 +25,26 @@ export interface LiveControl {
     path: SystemPath;
 }
 
-/** The system parameter that holds them (top-level system). */
+/** The system parameter that held them in models saved before they had their own place (top-level system). */
 export const CONTROLS_PARAMETER = 'tlmhub_live_controls';
-const DESCRIPTION = 'Live controls on the drawing (tlmhub web app; JSON, not used by the simulation)';
 
-/** The model's live controls; a value that is not what we wrote (edited by hand) gives what of it makes sense. */
+/** The model's live controls; those that do not make sense (edited by hand) are left out. */
 export function controlsOf(model: Model): LiveControl[] {
-    const text = model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER)?.value;
+    const stored = model.system.live_controls;
+    if (stored?.length) return stored.flatMap((c) => {
+        const control = checked({ ...c, path: c.system ?? [] });
+        return control ? [control] : [];
+    });
+    return legacyControlsOf(model);
+}
+
+/** The controls the model's old system parameter holds, if it has it (and not yet controls of its own). */
+export function legacyControlParameter(model: Model): SysParam | undefined {
+    return model.system.live_controls?.length ? undefined : model.system.parameters.find((p) => p.name === CONTROLS_PARAMETER);
+}
+
+function legacyControlsOf(model: Model): LiveControl[] {
+    const text = legacyControlParameter(model)?.value;
     if (!text) return [];
     let parsed: unknown;
     try {
@@ -45,17 +58,17 @@ export function controlsOf(model: Model): LiveControl[] {
     }) : [];
 }
 
-/** The system parameter that stores `controls`. */
-export function controlsParameter(controls: readonly LiveControl[]): SysParam {
-    const value = JSON.stringify(controls.map((c) => {
-        const stored: LiveControl = { kind: c.kind, name: c.name, min: c.min, max: c.max, x: Math.round(c.x), y: Math.round(c.y), path: [...c.path] };
+/** `controls` as model.controls stores them: on whole pixels, a switch with both of its values. */
+export function storedControls(controls: readonly LiveControl[]): StoredControl[] {
+    return controls.map((c) => {
+        const stored: StoredControl = { kind: c.kind, name: c.name, min: c.min, max: c.max, x: Math.round(c.x), y: Math.round(c.y) };
         if (c.kind === 'switch') {
             stored.off = c.off ?? c.min;
             stored.on = c.on ?? c.max;
         }
+        if (c.path.length) stored.system = [...c.path];
         return stored;
-    }));
-    return { name: CONTROLS_PARAMETER, value, type: 'string', unit: '', description: DESCRIPTION };
+    });
 }
 
 /**

@@ -92,7 +92,7 @@ function mapComponent(system: System, name: string, change: (c: Component) => Co
 }
 
 /** The request types that read or change the open model. */
-export type EditType = 'model.get' | 'model.settings' | 'component.add' | 'component.remove' | 'component.rename'
+export type EditType = 'model.get' | 'model.settings' | 'model.controls' | 'component.add' | 'component.remove' | 'component.rename'
     | 'component.move' | 'connect' | 'disconnect' | 'connection.route' | 'parameter.get' | 'parameter.set' | 'sysparam.set'
     | 'sysparam.remove' | 'model.group' | 'model.ungroup';
 /** An edit request as the editor sends it: the message type and the request's fields. */
@@ -106,6 +106,11 @@ const unchanged = (model: Model): Model => model;
 const appliers: { [T in EditType]: Apply<T> } = {
     'model.get': (_model, _request, reply) => reply.model,
     'model.settings': (model, _request, reply) => ({ ...model, system: { ...model.system, simulation: reply.simulation } }),
+    // as the server sends the model: the root has live_controls only when it has any
+    'model.controls': (model, _request, reply) => {
+        const { live_controls: _old, ...system } = model.system;
+        return { ...model, system: reply.controls.length ? { ...system, live_controls: reply.controls } : system };
+    },
     'component.add': (model, request, reply) =>
         updateSystem(model, request.system ?? [], (s) => ({ ...s, components: [...s.components, reply.component] })),
     'component.remove': (model, request) => updateSystem(model, request.system ?? [], (s) => refreshConnected({

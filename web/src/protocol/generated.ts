@@ -59,6 +59,12 @@ export type Point = [number, number];
 export type NodeTypeName = string;
 export type ParameterType =
     'double' | 'integer' | 'bool' | 'string' | 'textblock' | 'filepath' | 'conditional';
+/**
+ * The drawing it is on, in whose coordinates x and y are; [] or absent: the top level.
+ *
+ * @maxItems 64
+ */
+export type SystemPath1 = string[];
 export type Catalogue = CatalogueEntry[];
 export type ModelName = string;
 /**
@@ -80,6 +86,7 @@ export type ClientMessage =
     | ModelSaveRequest
     | ModelGetRequest
     | ModelSettingsRequest
+    | ModelControlsRequest
     | ComponentAddRequest
     | ComponentRemoveRequest
     | ComponentRenameRequest
@@ -235,6 +242,9 @@ export interface ProtocolDefinitions {
     ModelGroupRequest?: ModelGroupRequest;
     ModelUngroupRequest?: ModelUngroupRequest;
     ModelSettingsRequest?: ModelSettingsRequest;
+    LiveControl?: LiveControl;
+    ModelControlsRequest?: ModelControlsRequest;
+    ModelControlsData?: ModelControlsData;
     ModelSettingsData?: ModelSettingsData;
     BinaryFrameHeader?: BinaryFrameHeader;
     StudyCreate?: StudyCreate;
@@ -414,6 +424,10 @@ export interface System {
     ports: SystemPort[];
     components: Component[];
     connections: Connection[];
+    /**
+     * Only on the root, and only when it has any: the controls placed on its drawings (model.controls).
+     */
+    live_controls?: LiveControl[];
 }
 /**
  * A component; system is present for subsystems only.
@@ -429,6 +443,29 @@ export interface Component {
     ports: Port[];
     parameters: Param[];
     system?: System;
+}
+/**
+ * A slider, knob, switch or number field placed on a drawing that sets one value while the model runs (live.set), saved in the model's GUI data.
+ */
+export interface LiveControl {
+    kind: 'slider' | 'knob' | 'switch' | 'number';
+    /**
+     * The value it sets, as live.set names it: Step.y_A, Sub$Gain.k.
+     */
+    name: string;
+    min: number;
+    max: number;
+    /**
+     * A switch's value when off.
+     */
+    off?: number;
+    /**
+     * A switch's value when on.
+     */
+    on?: number;
+    x: number;
+    y: number;
+    system?: SystemPath1;
 }
 /**
  * The editable view of a model (ModelJson).
@@ -1013,6 +1050,17 @@ export interface ModelSettingsRequest {
     log_samples?: number;
 }
 /**
+ * Replace the open model's live controls (saved with it, in its GUI data).
+ */
+export interface ModelControlsRequest {
+    id: RequestId;
+    type: 'model.controls';
+    /**
+     * @maxItems 256
+     */
+    controls: LiveControl[];
+}
+/**
  * Remove a system parameter (components that use it then fail to evaluate until it is set again).
  */
 export interface SysParamRemoveRequest {
@@ -1341,6 +1389,9 @@ export interface LiveStateEvent {
         | 'record_limit'
         | 'unshared';
     message?: string;
+}
+export interface ModelControlsData {
+    controls: LiveControl[];
 }
 export interface ModelSettingsData {
     simulation: SimulationSettings;

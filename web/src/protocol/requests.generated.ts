@@ -30,6 +30,8 @@ import type {
     LiveSubscribeRequest,
     LiveUnshareRequest,
     LogSubscribeRequest,
+    ModelControlsData,
+    ModelControlsRequest,
     ModelCreateRequest,
     ModelGetData,
     ModelGetRequest,
@@ -64,6 +66,7 @@ export interface RequestMap {
     'model.save': { request: ModelSaveRequest; reply: ModelSavedData };
     'model.get': { request: ModelGetRequest; reply: ModelGetData };
     'model.settings': { request: ModelSettingsRequest; reply: ModelSettingsData };
+    'model.controls': { request: ModelControlsRequest; reply: ModelControlsData };
     'component.add': { request: ComponentAddRequest; reply: ComponentAddedData };
     'component.remove': { request: ComponentRemoveRequest; reply: EmptyData };
     'component.rename': { request: ComponentRenameRequest; reply: ComponentRenamedData };

@@ -3,7 +3,7 @@
 import type { DoneEvent, ErrorReply, FrameEvent, Hello, LiveFrameEvent, LiveStateEvent, Port, ProgressEvent, Reply, ResyncEvent } from './generated';
 
 export type {
-    AssignmentWarning, CatalogueEntry, LiveFrameEvent, LiveModelData, LiveRecordedData, LiveSharedData, LiveSpeed, LiveStartedData, LiveState, LiveStateData, LiveStateEvent, LiveValue, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
+    AssignmentWarning, CatalogueEntry, LiveControl, LiveFrameEvent, LiveModelData, LiveRecordedData, LiveSharedData, LiveSpeed, LiveStartedData, LiveState, LiveStateData, LiveStateEvent, LiveValue, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
     ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, Preferences, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
     SysParam, System, SystemPort, User,
 } from './generated';

@@ -3,7 +3,7 @@
 import { ApiError } from '../api/ApiError';
 import { systemAt, type SystemPath } from '../model/modelState';
 import type { Transport } from '../editor/EditorStore';
-import type { Component, Model, Param, PortRef, System } from '../protocol/types';
+import type { Component, LiveControl, Model, Param, PortRef, System } from '../protocol/types';
 
 interface TypeInfo { kind: Component['kind']; ports: [string, 'power' | 'read' | 'write', string][]; params: [string, string][] }
 
@@ -189,6 +189,12 @@ export class FakeServer {
             }
             this.model.system.simulation = next;
             return { simulation: structuredClone(next) };
+        }
+        case 'model.controls': {
+            const controls = request.controls as LiveControl[];
+            if (controls.length) this.model.system.live_controls = structuredClone(controls);
+            else delete this.model.system.live_controls;
+            return { controls: structuredClone(controls) };
         }
         case 'sysparam.remove': {
             const index = system.parameters.findIndex((x) => x.name === request.name);
