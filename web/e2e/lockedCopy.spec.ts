@@ -22,12 +22,17 @@ async function as(request: APIRequestContext, username: string, secret = passwor
     return async (method, path, data) => {
         const response = await request.fetch(`${baseUrl()}/api/v1${path}`, { method, data, headers: { Authorization: `Bearer ${token}` } });
         expect(response.ok(), `${method} ${path}: ${await response.text()}`).toBe(true);
-        return response.status() === 204 ? null : response.json();
+        if (response.status() === 204) return null;
+        return (response.headers()['content-type'] ?? '').includes('json') ? response.json() : response.text();
     };
 }
 
-/** A teacher, students who joined, and an assignment on Position Servo that lets them change GainP.k within 0 … 0.1. */
-async function lockedAssignment(request: APIRequestContext, prefix: string, students: string[]) {
+/**
+ * A teacher, students who joined, and an assignment on Position Servo (or on the model
+ * `template` makes of it as the teacher) that lets them change GainP.k within 0 … 0.1.
+ */
+async function lockedAssignment(request: APIRequestContext, prefix: string, students: string[],
+    template?: (teacher: Call, servoId: number) => Promise<number>) {
     const admin = await as(request, 'admin', ADMIN_PASSWORD);
     const teacherName = `${prefix}teacher`;
     for (const [username, role] of [[teacherName, 'teacher'], ...students.map((s) => [s, 'user'])]) {
@@ -37,8 +42,9 @@ async function lockedAssignment(request: APIRequestContext, prefix: string, stud
     const models = await teacher('GET', '/models') as { id: number; name: string; is_example: boolean }[];
     const servo = models.find((m) => m.is_example && m.name === 'Position Servo')!;
     const theClass = await teacher('POST', '/classes', { name: 'Fluid power lab' });
+    const templateId = template ? await template(teacher, servo.id) : servo.id;
     const assignment = await teacher('POST', `/classes/${theClass.id}/assignments`, {
-        title: 'Tune the servo', instructions: INSTRUCTIONS, template_model_id: servo.id,
+        title: 'Tune the servo', instructions: INSTRUCTIONS, template_model_id: templateId,
         edit_mode: 'parameters', parameters: [{ name: 'GainP.k', min: 0, max: 0.1 }],
     });
     const copies = new Map<string, { call: Call; modelId: number }>();
@@ -129,4 +135,83 @@ test('the teacher\'s gradebook is a table that sorts by a column click', async (
     await expect(table.locator('tr[data-username="gbstella"]')).toContainText('4');
     const box = (await page.getByTestId('gradebook').boundingBox())!;
     await page.screenshot({ path: `${docsScreenshots}gradebook-table.png`, clip: { x: box.x - 12, y: box.y - 12, width: box.width + 24, height: box.height + 24 } });
+});
+
+/**
+ * The teacher's template: Position Servo running for 60 s, with two sliders in its GUI data (as
+ * the editor saves them): one for the step's amplitude, one for the proportional gain up to 0.5.
+ */
+async function servoWithControls(teacher: Call, servoId: number): Promise<number> {
+    const shown = await teacher('GET', `/models/${servoId}`) as { model: { system: { components: { name: string; pose: { x: number; y: number } }[] } } };
+    const at = (name: string) => shown.model.system.components.find((c) => c.name === name)!.pose;
+    const [step, gain] = [at('Step'), at('GainP')];
+    const controls = `<tlmhub_livecontrols>`
+        + `<control kind="slider" name="Step.y_A" min="0" max="1" x="${step.x}" y="${step.y + 70}"/>`
+        + `<control kind="slider" name="GainP.k" min="0" max="0.5" x="${gain.x}" y="${gain.y - 90}"/>`
+        + `</tlmhub_livecontrols>`;
+    const hmf = (await teacher('GET', `/models/${servoId}?format=hmf`) as string)
+        .replace(/(<simulationtime[^>]*\bstop=")[^"]*/, '$160')
+        .replace('<hopsangui>', `<hopsangui>${controls}`);
+    const created = await teacher('POST', '/models', { name: 'Position Servo with controls', hmf });
+    return created.id as number;
+}
+
+test("a student's live session on a locked copy: the template's controls, only the listed value acts, within its bounds", async ({ browser, request }) => {
+    const { assignmentId, copies } = await lockedAssignment(request, 'lv', ['lvstudent'], servoWithControls);
+    const page = await loggedIn(browser, 'lvstudent');
+    // live.set requests as sent, and the replies that refused one
+    const sets: { name: string; value: number }[] = [];
+    const refusals: string[] = [];
+    let sessionId = 0;
+    page.on('websocket', (ws) => {
+        ws.on('framesent', ({ payload }) => {
+            if (typeof payload === 'string' && payload.includes('"live.set"')) sets.push(JSON.parse(payload) as { name: string; value: number });
+        });
+        ws.on('framereceived', ({ payload }) => {
+            if (typeof payload !== 'string') return;
+            const message = JSON.parse(payload) as { ok?: boolean; data?: { session_id?: number }; error?: { code: string } };
+            if (message.ok === false) refusals.push(message.error?.code ?? '?');
+            if (message.ok && message.data?.session_id) sessionId = message.data.session_id;
+        });
+    });
+    await page.goto(`${baseUrl()}/#/model/${copies.get('lvstudent')!.modelId}?assignment=${assignmentId}`);
+    const gain = page.locator('[data-testid="live-control"][data-name="GainP.k"]');
+    const step = page.locator('[data-testid="live-control"][data-name="Step.y_A"]');
+    // the template's controls are in the copy, and the student cannot change or remove them
+    await expect(gain).toBeVisible();
+    await expect(step).toBeVisible();
+    await expect(page.locator('.live-control-edit, .live-control-remove')).toHaveCount(0);
+
+    await page.getByTestId('live').click();
+    await expect(page.getByTestId('live-status')).toContainText('Live');
+    // only the listed value acts, its range cut to the assignment's bounds
+    await expect(step).toHaveClass(/unavailable/);
+    await expect(step.getByTestId('live-control-input')).toBeDisabled();
+    const input = gain.getByTestId('live-control-input');
+    await expect(input).toBeEnabled();
+    await expect(input).toHaveAttribute('max', '0.1');
+
+    // dragged to its far end, the gain goes to the bound and the server takes it
+    const box = (await input.boundingBox())!;
+    await page.mouse.move(box.x + 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width + 40, box.y + box.height / 2, { steps: 6 });
+    await page.mouse.up();
+    await expect.poll(() => sets.at(-1)).toEqual(expect.objectContaining({ name: 'GainP.k', value: 0.1 }));
+    expect(sets.every((s) => s.name === 'GainP.k' && s.value >= 0 && s.value <= 0.1)).toBe(true);
+    await expect(page.getByTestId('live-status')).toContainText('Live');
+    expect(refusals).toEqual([]);
+    await page.screenshot({ path: `${docsScreenshots}live-locked-copy.png` });
+
+    // what the page does not offer, the server refuses: the step's amplitude, and the gain out of bounds
+    expect(sessionId).toBeGreaterThan(0);
+    const codes = await page.evaluate(async (id) => {
+        type Ws = { request(type: string, fields: unknown): Promise<unknown> };
+        const ws = (window as unknown as { __tlmhub: { ws: Ws } }).__tlmhub.ws;
+        const codeOf = (p: Promise<unknown>) => p.then(() => 'ok', (e: { code?: string }) => e.code ?? String(e));
+        return [await codeOf(ws.request('live.set', { session_id: id, name: 'Step.y_A', value: 0.5 })),
+            await codeOf(ws.request('live.set', { session_id: id, name: 'GainP.k', value: 0.4 }))];
+    }, sessionId);
+    expect(codes).toEqual(['locked', 'locked']);
+    await page.getByTestId('live-stop').click();
 });
