@@ -5,11 +5,11 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build lld pkg-config libmuparser-dev libpugixml-dev nlohmann-json3-dev
           libgtest-dev libbenchmark-dev libboost-dev libboost-system-dev libsqlite3-dev
-          libsqlitecpp-dev libsodium-dev libzstd-dev libzip-dev postgresql-15 libpqxx-dev libssl-dev nginx-light
+          libsqlitecpp-dev libsodium-dev libzstd-dev libzip-dev postgresql-15 libpqxx-dev libssl-dev nginx-light libldap-dev
           python3-venv python3-websocket python3-numpy)
 # Without their Recommends: pandas would bring scipy, matplotlib and numba (89 packages),
-# which nothing here uses.
-lean_packages=(python3-pandas)
+# which nothing here uses. slapd: the LDAP directory the sign-in tests start on loopback.
+lean_packages=(python3-pandas slapd)
 # The web app needs Node.js and npm; a machine that already has them (any install) keeps them.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 for flag in "$@"; do

@@ -31,6 +31,7 @@ class JobStreams;
 class StudyService;
 class LabService;
 class LiveSessionRegistry;
+class DirectorySignIn;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -53,6 +54,7 @@ struct Services {
     JobStreams& jobStreams;             // log.subscribe: the local hub, or relays from other nodes
     IdempotencyKeyStore& idempotencyKeys;   // Idempotency-Key of POST /jobs and /studies
     LiveSessionRegistry& liveSimulations;   // live.start: models run with the wall clock on this node
+    DirectorySignIn* directory;             // LDAP sign-in; null without --ldap-url
 };
 
 struct Call {

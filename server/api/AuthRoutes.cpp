@@ -1,8 +1,11 @@
 // POST /auth/login, POST /auth/logout, GET /auth/me, POST /auth/password
 #include "server/api/ApiSupport.h"
 #include "server/app/ServerOptions.h"
+#include "server/auth/DirectorySignIn.h"
 #include "server/jobs/JobQueue.h"
 #include "server/store/ResultStore.h"
+
+#include <iostream>
 
 namespace tlmhub::server {
 
@@ -27,7 +30,26 @@ Response login(Services& s, Call& call)
     };
     if (!s.loginLimiter.allowed(userKey)) return limited(s.loginLimiter, userKey);
     const bool addressLimited = !s.addressLimiter.allowed(addressKey);
-    const auto user = s.users.authenticate(username, body.password);
+    std::optional<User> user = s.users.authenticate(username, body.password);
+    // Not a local account's password: the directory's, when there is one (the same limits).
+    if (!user && s.directory) {
+        const DirectorySignInResult signedIn = s.directory->signIn(username, body.password);
+        using Outcome = DirectorySignInResult::Outcome;
+        if (signedIn.outcome == Outcome::Unavailable) {
+            // The name as a JSON string: a control character in it cannot forge a log line.
+            std::cerr << "LDAP sign-in of " << nlohmann::json(username).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
+                      << ": " << signedIn.message << std::endl;
+            Response r = apiError(http::status::service_unavailable, "directory_unavailable",
+                                  "the directory cannot be asked now (" + signedIn.message + "); try again later");
+            r.set(http::field::retry_after, "30");
+            return r;
+        }
+        if (signedIn.outcome == Outcome::NoAccount) {
+            s.loginLimiter.recordSuccess(userKey);
+            return apiError(http::status::forbidden, "no_account", signedIn.message);
+        }
+        user = signedIn.user;
+    }
     if (!user) {
         s.loginLimiter.recordFailure(userKey);
         s.addressLimiter.recordFailure(addressKey);

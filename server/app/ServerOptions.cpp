@@ -89,6 +89,17 @@ const std::string kHelp = std::string(
     "  --node-secret-file PATH  the secret this deployment's nodes share (at least 32 bytes,\n"
     "                           readable by its owner only): a WebSocket that shows it as\n"
     "                           'Authorization: Bearer tlmhub-node.<secret>' may follow any job\n"
+    "  --ldap-url URL           sign in with a directory's names and passwords: ldaps://host, or\n"
+    "                           ldap://host with StartTLS; the certificate is always verified\n"
+    "  --ldap-bind-dn TEMPLATE  the user's DN, {username} in it (uid={username},ou=people,...)\n"
+    "  --ldap-search-base DN    else: search the user under DN as a service account ...\n"
+    "  --ldap-search-filter F   ... with this filter (default (uid={username})) ...\n"
+    "  --ldap-service-dn DN     ... binding as DN ...\n"
+    "  --ldap-service-password-file PATH  ... with the password in PATH (mode 0600)\n"
+    "  --ldap-ca-file PATH      CAs that sign the directory's certificate (default: the system's)\n"
+    "  --ldap-role-group ROLE=DN  members of group DN get server role ROLE (repeatable)\n"
+    "  --ldap-create-accounts on|off  make an account on a person's first sign-in (default on)\n"
+    "  --ldap-timeout S         limit of each connection and operation (default 5)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -211,6 +222,35 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.fmuCacheBytes);
         } else if (flag == "--max-ws-queue-messages") {
             ok = parseNumber(value, o.wsQueueLimit) && o.wsQueueLimit > 0;
+        } else if (flag == "--ldap-url") {
+            ok = value.starts_with("ldaps://") || value.starts_with("ldap://");
+            o.ldap.url = value;
+        } else if (flag == "--ldap-bind-dn") {
+            ok = value.find("{username}") != std::string::npos;
+            o.ldap.bindDnTemplate = value;
+        } else if (flag == "--ldap-search-base") {
+            o.ldap.searchBase = value;
+        } else if (flag == "--ldap-search-filter") {
+            ok = value.find("{username}") != std::string::npos && value.starts_with("(") && value.ends_with(")");
+            o.ldap.searchFilter = value;
+        } else if (flag == "--ldap-service-dn") {
+            o.ldap.serviceDn = value;
+        } else if (flag == "--ldap-service-password-file") {
+            o.ldapServicePasswordFile = value;
+        } else if (flag == "--ldap-ca-file") {
+            o.ldap.caFile = value;
+        } else if (flag == "--ldap-role-group") {
+            const std::size_t equals = value.find('=');
+            const std::string role = value.substr(0, std::min(equals, value.size()));
+            ok = equals != std::string::npos && isValidRole(role) && equals + 1 < value.size();
+            if (ok) o.ldap.roleGroups.push_back({.role = role, .groupDn = value.substr(equals + 1)});
+        } else if (flag == "--ldap-create-accounts") {
+            ok = value == "on" || value == "off";
+            o.ldapCreateAccounts = value == "on";
+        } else if (flag == "--ldap-timeout") {
+            double s = 0;
+            ok = parseNumber(value, s) && s > 0 && s <= 300;
+            o.ldap.timeout = std::chrono::milliseconds(static_cast<long long>(s * 1000));
         } else if (flag == "--node-secret-file") {
             o.nodeSecretFile = value;
         } else if (flag == "--max-ws-queue-bytes") {
@@ -244,6 +284,12 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
     }
     if (!o.backupFile.empty() && !o.restoreFile.empty()) {
         error = "--backup and --restore cannot be given together";
+        return false;
+    }
+    if (!o.ldap.url.empty() && o.ldap.bindDnTemplate.empty()
+        && (o.ldap.searchBase.empty() || o.ldap.serviceDn.empty() || o.ldapServicePasswordFile.empty())) {
+        error = "--ldap-url needs --ldap-bind-dn, or --ldap-search-base with --ldap-service-dn and "
+                "--ldap-service-password-file";
         return false;
     }
     if (!examplesGiven && std::filesystem::is_directory("examples"))

@@ -1,6 +1,7 @@
 #pragma once
 // Start-up options of tlmhub-server: command-line flags over embedded defaults.
 #include "core/ParameterEvaluator.h"
+#include "server/auth/LdapDirectory.h"
 #include "server/auth/PasswordHasher.h"
 #include "server/jobs/Job.h"
 #include "server/jobs/QueueNode.h"
@@ -40,6 +41,11 @@ struct ServerOptions {
     // Non-empty: the file holding the secret nodes share (server/cluster/NodeSecret.h); a
     // WebSocket showing it may follow any job. Empty: no node may connect.
     std::string nodeSecretFile;
+    // LDAP sign-in (docs/sign-in.md); off while ldap.url is empty. The service account's
+    // password is read from ldapServicePasswordFile at start.
+    LdapSettings ldap;
+    std::string ldapServicePasswordFile;
+    bool ldapCreateAccounts = true;
     // Cost of new password hashes; Minimal only for test servers (see --help).
     PasswordCost passwordCost = PasswordCost::Interactive;
     // Parameter expressions one evaluation pass may evaluate (core/ParameterEvaluator.h).

@@ -2,6 +2,7 @@
 
 #include "server/api/WsApi.h"
 #include "server/app/Bootstrap.h"
+#include "server/auth/SecretFile.h"
 #include "server/http/HttpSession.h"
 
 #include <algorithm>
@@ -63,10 +64,17 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     mLiveSimulations = std::make_unique<LiveSessionRegistry>(
         LiveSessionRegistry::Limits{mOptions.maxLiveSessionsPerUser, mOptions.maxLiveSessions, mOptions.liveIdleTimeout},
         std::max(1u, cores / 2));
+    if (!mOptions.ldap.url.empty()) {
+        LdapSettings ldap = mOptions.ldap;
+        if (!mOptions.ldapServicePasswordFile.empty())
+            ldap.servicePassword = readSecretFile(mOptions.ldapServicePasswordFile, "LDAP service password file");
+        mDirectory = std::make_unique<LdapDirectory>(std::move(ldap));
+        mDirectorySignIn = std::make_unique<DirectorySignIn>(*mDirectory, mStorage->users(), mOptions.ldapCreateAccounts);
+    }
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
                                  *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,
-                                 mStorage->idempotencyKeys(), *mLiveSimulations});
+                                 mStorage->idempotencyKeys(), *mLiveSimulations, mDirectorySignIn.get()});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});

@@ -5,6 +5,7 @@
 #include "server/app/FairTaskQueue.h"
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
+#include "server/auth/DirectorySignIn.h"
 #include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
 #include "server/http/HttpApplication.h"
@@ -89,6 +90,8 @@ private:
     std::unique_ptr<DownloadLinks> mDownloadLinks;
     // Before the services (destroyed after them); its sessions end at shutdown().
     std::unique_ptr<LiveSessionRegistry> mLiveSimulations;
+    std::unique_ptr<LdapDirectory> mDirectory;          // only with --ldap-url
+    std::unique_ptr<DirectorySignIn> mDirectorySignIn;
     std::unique_ptr<Services> mServices;
     Router<Route> mRouter;
     StaticFiles mStaticFiles;

@@ -1,13 +1,11 @@
 #include "server/cluster/NodeSecret.h"
 
+#include "server/auth/SecretFile.h"
 #include "server/auth/Sodium.h"
 
 #include <sodium.h>
-#include <sys/stat.h>
 
 #include <array>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace tlmhub::server {
@@ -28,24 +26,12 @@ Digest digest(std::string_view text)
 
 NodeSecret NodeSecret::load(const std::filesystem::path& path)
 {
-    const std::string where = "node secret file " + path.string();
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) throw std::runtime_error(where + ": cannot be read");
     // Anyone who can read the secret can act as a node and follow every user's jobs.
-    if ((info.st_mode & (S_IRGRP | S_IROTH)) != 0) {
-        std::ostringstream mode;
-        mode << std::oct << (info.st_mode & 0777);
-        throw std::runtime_error(where + " can be read by group or others (mode 0" + mode.str() +
-                                 "); make it private: chmod 600 " + path.string());
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(where + ": cannot be read");
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string secret = readSecretFile(path, "node secret file");
     try {
-        return fromText(text.str());
+        return fromText(secret);
     } catch (const std::runtime_error& e) {
-        throw std::runtime_error(where + ": " + e.what());
+        throw std::runtime_error("node secret file " + path.string() + ": " + e.what());
     }
 }
 

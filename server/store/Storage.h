@@ -70,7 +70,7 @@ public:
 
 // The newest schema version this build knows. Both back ends keep their migrations in an
 // array of this size, so a migration added to one and not the other does not compile.
-inline constexpr int kSchemaVersion = 9;
+inline constexpr int kSchemaVersion = 10;
 
 // Opens the back end `config.database` names and migrates its schema. Throws StoreError
 // (Unavailable when it cannot be reached or opened, Corrupt when its schema is newer than

@@ -6,6 +6,13 @@
 
 namespace tlmhub::server {
 
+std::string suffixedUsername(const std::string& username, int n)
+{
+    const std::string suffix = "-" + std::to_string(n);
+    constexpr std::size_t kMaxLength = 64;
+    return username.substr(0, kMaxLength - std::min(kMaxLength, suffix.size())) + suffix;
+}
+
 UserChangeOutcome applyUserChange(const std::vector<User>& all, std::int64_t id, const UserChange& change,
                                   User& updated)
 {

@@ -30,6 +30,9 @@ enum class UserChangeOutcome { Changed, NoSuchUser, LastAdmin };
 UserChangeOutcome applyUserChange(const std::vector<User>& all, std::int64_t id, const UserChange& change,
                                   User& updated);
 
+// `username` with "-n" appended, cut so the result stays within a name's 64 characters.
+std::string suffixedUsername(const std::string& username, int n);
+
 class UserStore {
 public:
     virtual ~UserStore() = default;
@@ -60,6 +63,18 @@ public:
     // Existing names that differ only in case (made before names were compared that way),
     // one "alice, ALICE" line per group, names in id order.
     virtual std::vector<std::string> namesDifferingOnlyInCase() = 0;
+
+    // Accounts of people who sign in through a directory or a provider (table identities):
+    // `provider` names it ("ldap ldaps://ldap.example.org"), `subject` is who they are there
+    // (an entry's DN). Never matched by name or e-mail: a directory's "admin" is not ours.
+    //
+    // The account linked to `subject` at `provider`; nullopt when none is.
+    virtual std::optional<User> findByIdentity(const std::string& provider, const std::string& subject) = 0;
+    // The account of `subject` at `provider`: the linked one, else a new one without a password
+    // (it signs in there only), linked in the same transaction, named `username` or, when that
+    // is taken, `username-2`, `username-3`, ... Two first sign-ins at once make one account.
+    virtual User insertLinked(const std::string& provider, const std::string& subject, const std::string& username,
+                              const std::string& role) = 0;
 };
 
 } // namespace tlmhub::server

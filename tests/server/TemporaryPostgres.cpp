@@ -1,5 +1,7 @@
 #include "TemporaryPostgres.h"
 
+#include "ChildProcess.h"
+
 #include <pqxx/pqxx>
 
 #include <cerrno>
@@ -25,99 +27,6 @@ namespace tlmhub::test {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// The account the PostgreSQL binaries run as. initdb and postgres refuse to run as root (CI
-// runs the tests as root), so as root they run as `nobody`: the child process drops to it with
-// setgid/setuid itself before exec (no runuser/setpriv needed), and the temporary directory is
-// chown'ed to it. Otherwise they run as the current user.
-struct RunAs {
-    bool drop = false;
-    uid_t uid = 0;
-    gid_t gid = 0;
-};
-
-RunAs runAs()
-{
-    RunAs r;
-    if (::geteuid() != 0) return r;
-    const passwd* pw = ::getpwnam("nobody");
-    if (pw == nullptr) throw std::runtime_error("TemporaryPostgres: running as root and there is no user 'nobody' to run PostgreSQL as");
-    r.drop = true;
-    r.uid = pw->pw_uid;
-    r.gid = pw->pw_gid;
-    return r;
-}
-
-std::string tailOf(const std::filesystem::path& file, std::size_t maxBytes)
-{
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return "(no log at " + file.string() + ")";
-    std::ostringstream s;
-    s << in.rdbuf();
-    std::string text = s.str();
-    if (text.size() > maxBytes) text = "..." + text.substr(text.size() - maxBytes);
-    return text;
-}
-
-// Starts `args` (args[0] an absolute path) as `who` in `cwd`, stdout and stderr appended to
-// `log`. Everything the child needs is prepared before fork (the test process has threads).
-int spawn(const std::vector<std::string>& args, const std::filesystem::path& log,
-          const std::filesystem::path& cwd, const RunAs& who)
-{
-    const int logFd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-    if (logFd < 0) throw std::runtime_error("TemporaryPostgres: cannot open " + log.string() + ": " + std::strerror(errno));
-    if (who.drop && ::fchown(logFd, who.uid, who.gid) != 0) {
-        ::close(logFd);
-        throw std::runtime_error("TemporaryPostgres: cannot chown " + log.string());
-    }
-    std::vector<std::string> copy = args;
-    std::vector<char*> argv;
-    for (auto& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const std::string dir = cwd.string();
-    const pid_t parent = ::getpid();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-        ::close(logFd);
-        throw std::runtime_error("TemporaryPostgres: fork failed");
-    }
-    if (pid == 0) {
-        ::dup2(logFd, STDOUT_FILENO);
-        ::dup2(logFd, STDERR_FILENO);
-        ::setpgid(0, 0); // a Ctrl-C in the terminal reaches the test, not the server directly
-        if (who.drop && (::setgroups(0, nullptr) != 0 || ::setgid(who.gid) != 0 || ::setuid(who.uid) != 0)) {
-            static const char msg[] = "TemporaryPostgres: cannot drop to user nobody\n";
-            (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
-            ::_exit(126);
-        }
-        // A test process that dies without its destructors (a crash, a sanitizer abort, ctest's
-        // timeout) takes its server along (SIGQUIT: immediate shutdown) instead of leaving it
-        // running. (Linux sends it when the thread that forked ends: construct TemporaryPostgres
-        // on a thread that lives as long as it.) Set after the user change, which clears it;
-        // the parent may already be gone by then.
-        if (::prctl(PR_SET_PDEATHSIG, SIGQUIT) != 0 || ::getppid() != parent) ::_exit(126);
-        if (::chdir(dir.c_str()) != 0) ::_exit(126);
-        ::execv(argv[0], argv.data());
-        static const char msg[] = "TemporaryPostgres: exec failed\n";
-        (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
-        ::_exit(127);
-    }
-    ::close(logFd);
-    return pid;
-}
-
-// Waits for `pid` until `deadline`; returns its wait status, or -1 (still running) at the deadline.
-int waitUntil(int pid, Clock::time_point deadline)
-{
-    for (;;) {
-        int status = 0;
-        const pid_t r = ::waitpid(pid, &status, WNOHANG);
-        if (r == pid) return status;
-        if (r < 0 && errno != EINTR) return 0;
-        if (Clock::now() >= deadline) return -1;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-}
 
 // A loopback port nobody listens on right now (postgres binds it a moment later; a lost race
 // shows up as "Address already in use" in the log and is retried with another port).
@@ -196,7 +105,7 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName
                                      " not found or not executable: install Debian's postgresql-15 "
                                      "(apt-get install postgresql-15, or scripts/install-deps.sh)");
     }
-    const RunAs who = runAs();
+    const RunAs who = runAsNobodyIfRoot();
 
     std::string tmpl = (std::filesystem::temp_directory_path() / "tlmhub-pg-XXXXXX").string();
     if (::mkdtemp(tmpl.data()) == nullptr)
@@ -255,7 +164,7 @@ TemporaryPostgres::TemporaryPostgres(std::string dbName, bool durable) : mDbName
 void TemporaryPostgres::start(unsigned short port)
 {
     const std::filesystem::path bin = kBinDir;
-    const RunAs who = runAs();
+    const RunAs who = runAsNobodyIfRoot();
     const auto data = mDir / "data";
     const auto socketDir = mDir / "socket";
     const auto deadline = Clock::now() + std::chrono::seconds(30);

@@ -264,10 +264,23 @@ void addStudyNodes(pqxx::transaction_base& tx)
     tx.exec0("CREATE INDEX studies_active ON studies(state) WHERE state IN ('queued', 'running')");
 }
 
+// Version 10: accounts of people who sign in through a directory or a provider, as SQLite's version 10.
+void addIdentities(pqxx::transaction_base& tx)
+{
+    tx.exec0("CREATE TABLE identities ("
+             " provider TEXT NOT NULL,"
+             " subject TEXT NOT NULL,"
+             " user_id BIGINT NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+             " created_at BIGINT NOT NULL,"
+             " PRIMARY KEY(provider, subject))");
+    tx.exec0("CREATE INDEX identities_user ON identities(user_id)");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences, addIdempotencyKeys, addStudyNodes};
+                                                             addPreferences, addIdempotencyKeys, addStudyNodes,
+                                                             addIdentities};
 
 int versionIn(pqxx::transaction_base& tx)
 {

@@ -41,6 +41,21 @@ constexpr PgStatement kNamesDifferingOnlyInCase{
     "SELECT string_agg(username, ', ' ORDER BY id) FROM users GROUP BY lower(username)"
     " HAVING COUNT(*) > 1 ORDER BY MIN(id)"};
 
+constexpr PgStatement kFindByIdentity{
+    "users_find_by_identity",
+    "SELECT u.id, u.username, u.role, u.disabled FROM identities i JOIN users u ON u.id = i.user_id"
+    " WHERE i.provider = $1 AND i.subject = $2"};
+// First sign-ins take turns ("tlmhub\0\3"; migrations use "tlmhub\0\1"): rare, and two of one
+// person must make one account.
+constexpr long long kFirstSignInLock = 0x746c6d6875620003;
+constexpr PgStatement kFirstSignInLockStatement{"users_first_sign_in_lock", "SELECT pg_advisory_xact_lock($1)"};
+constexpr PgStatement kInsertWithoutPassword{
+    "users_insert_without_password",
+    "INSERT INTO users(username, password_hash, role, created_at) VALUES($1, NULL, $2, $3)"
+    " ON CONFLICT ((lower(username))) DO NOTHING RETURNING id"};
+constexpr PgStatement kLink{"identities_link",
+                            "INSERT INTO identities(provider, subject, user_id, created_at) VALUES($1, $2, $3, $4)"};
+
 User readUser(const pqxx::row& row)
 {
     return User{row[0].as<std::int64_t>(), row[1].as<std::string>(), row[2].as<std::string>(std::string()),
@@ -174,6 +189,38 @@ std::vector<std::string> PostgresUserStore::namesDifferingOnlyInCase()
         std::vector<std::string> groups;
         for (const auto& row : c.exec(tx, kNamesDifferingOnlyInCase)) groups.push_back(row[0].as<std::string>());
         return groups;
+    });
+}
+
+std::optional<User> PostgresUserStore::findByIdentity(const std::string& provider, const std::string& subject)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<User> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, kFindByIdentity, provider, subject);
+        if (r.empty()) return std::nullopt;
+        return readUser(r[0]);
+    });
+}
+
+User PostgresUserStore::insertLinked(const std::string& provider, const std::string& subject,
+                                     const std::string& username, const std::string& role)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::work tx(c.raw());
+        c.exec(tx, kFirstSignInLockStatement, kFirstSignInLock);
+        if (const auto r = c.exec(tx, kFindByIdentity, provider, subject); !r.empty()) return readUser(r[0]);
+        const auto now = static_cast<std::int64_t>(unixNow());
+        std::string name = username;
+        for (int n = 2;; ++n) {
+            const auto inserted = c.exec(tx, kInsertWithoutPassword, name, role, now);
+            if (!inserted.empty()) {
+                const auto id = inserted[0][0].as<std::int64_t>();
+                c.exec(tx, kLink, provider, subject, id, now);
+                tx.commit();
+                return User{id, name, role, false};
+            }
+            name = suffixedUsername(username, n);
+        }
     });
 }
 

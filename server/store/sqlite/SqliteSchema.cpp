@@ -268,10 +268,23 @@ void addStudyNodes(SQLite::Database& db)
     db.exec("CREATE INDEX studies_active ON studies(state) WHERE state IN ('queued', 'running')");
 }
 
+// Accounts of people who sign in through a directory or a provider (UserStore::insertLinked).
+void addIdentities(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE identities ("
+            " provider TEXT NOT NULL,"
+            " subject TEXT NOT NULL,"
+            " user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " created_at INTEGER NOT NULL,"
+            " PRIMARY KEY(provider, subject))");
+    db.exec("CREATE INDEX identities_user ON identities(user_id)");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
-                                                             addPreferences, addIdempotencyKeys, addStudyNodes};
+                                                             addPreferences, addIdempotencyKeys, addStudyNodes,
+                                                             addIdentities};
 
 } // namespace
 

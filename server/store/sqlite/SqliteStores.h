@@ -36,6 +36,9 @@ public:
     std::size_t count() override;
     UserChangeOutcome change(std::int64_t id, const UserChange& change, User& updated) override;
     std::vector<std::string> namesDifferingOnlyInCase() override;
+    std::optional<User> findByIdentity(const std::string& provider, const std::string& subject) override;
+    User insertLinked(const std::string& provider, const std::string& subject, const std::string& username,
+                      const std::string& role) override;
 
 private:
     SqliteDatabase& mDb;

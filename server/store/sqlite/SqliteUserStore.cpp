@@ -23,6 +23,19 @@ Credentials readCredentials(SQLite::Statement& q)
     return c;
 }
 
+constexpr const char* kSelectByIdentity =
+    "SELECT u.id, u.username, u.role, u.disabled FROM identities i JOIN users u ON u.id = i.user_id"
+    " WHERE i.provider = ? AND i.subject = ?";
+
+std::optional<User> linkedUser(SqliteConnection& c, const std::string& provider, const std::string& subject)
+{
+    auto q = c.prepared(kSelectByIdentity);
+    q->bind(1, provider);
+    q->bind(2, subject);
+    if (!q->executeStep()) return std::nullopt;
+    return readUser(*q);
+}
+
 } // namespace
 
 std::optional<User> SqliteUserStore::insert(const std::string& username, const std::string& passwordHash,
@@ -177,6 +190,43 @@ std::vector<std::string> SqliteUserStore::namesDifferingOnlyInCase()
         std::vector<std::string> groups;
         while (q->executeStep()) groups.push_back(q->getColumn(0).getString());
         return groups;
+    });
+}
+
+std::optional<User> SqliteUserStore::findByIdentity(const std::string& provider, const std::string& subject)
+{
+    return mDb.run([&](SqliteConnection& c) { return linkedUser(c, provider, subject); });
+}
+
+User SqliteUserStore::insertLinked(const std::string& provider, const std::string& subject, const std::string& username,
+                                   const std::string& role)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        // IMMEDIATE: a second first sign-in of the same person waits, then finds the link.
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        if (auto linked = linkedUser(c, provider, subject)) return *linked;
+        auto taken = c.prepared("SELECT 1 FROM users WHERE username = ? COLLATE NOCASE");
+        std::string name = username;
+        for (int n = 2;; ++n) {
+            taken->reset();
+            taken->bind(1, name);
+            if (!taken->executeStep()) break;
+            name = suffixedUsername(username, n);
+        }
+        auto user = c.prepared("INSERT INTO users(username, password_hash, role, created_at) VALUES(?, NULL, ?, ?)");
+        user->bind(1, name);
+        user->bind(2, role);
+        user->bind(3, static_cast<std::int64_t>(unixNow()));
+        user->exec();
+        const std::int64_t id = c.db().getLastInsertRowid();
+        auto link = c.prepared("INSERT INTO identities(provider, subject, user_id, created_at) VALUES(?, ?, ?, ?)");
+        link->bind(1, provider);
+        link->bind(2, subject);
+        link->bind(3, id);
+        link->bind(4, static_cast<std::int64_t>(unixNow()));
+        link->exec();
+        transaction.commit();
+        return User{id, name, role, false};
     });
 }
 

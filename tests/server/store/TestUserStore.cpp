@@ -268,5 +268,46 @@ TEST_P(UserStoreConformance, PreferencesStartEmptyAndAreReplacedWholePerAccount)
     EXPECT_FALSE(store().users().setPreferences(bob.id + 1000, units));
 }
 
+TEST_P(UserStoreConformance, AnIdentityGetsItsOwnPasswordlessAccountNeverALocalOneOfTheSameName)
+{
+    UserStore& users = store().users();
+    const std::string ldap = "ldap ldaps://directory.example.org";
+    const auto local = users.insert("admin", "h-admin", kRoleAdmin);
+    ASSERT_TRUE(local);
+    EXPECT_FALSE(users.findByIdentity(ldap, "uid=admin,ou=people,dc=example,dc=org"));
+
+    // The directory's "admin" is someone else: a new account, named apart, that has no password.
+    const User theirs = users.insertLinked(ldap, "uid=admin,ou=people,dc=example,dc=org", "admin", kRoleUser);
+    EXPECT_NE(theirs.id, local->id);
+    EXPECT_EQ(theirs.username, "admin-2");
+    EXPECT_EQ(theirs.role, kRoleUser);
+    ASSERT_TRUE(users.credentials(theirs.id));
+    EXPECT_FALSE(users.credentials(theirs.id)->passwordHash);
+    const auto found = users.findByIdentity(ldap, "uid=admin,ou=people,dc=example,dc=org");
+    ASSERT_TRUE(found);
+    expectSameUser(*found, theirs);
+    // Signing in again finds the same account; the subject elsewhere, or another one, does not.
+    expectSameUser(users.insertLinked(ldap, "uid=admin,ou=people,dc=example,dc=org", "admin", kRoleTeacher), theirs);
+    EXPECT_FALSE(users.findByIdentity("ldap ldaps://other.example.org", "uid=admin,ou=people,dc=example,dc=org"));
+    EXPECT_FALSE(users.findByIdentity(ldap, "uid=Admin,ou=people,dc=example,dc=org"));
+    EXPECT_EQ(users.insertLinked(ldap, "uid=third,dc=example,dc=org", "admin", kRoleUser).username, "admin-3");
+    // A long name keeps to 64 characters with its number.
+    const std::string longName(64, 'x');
+    ASSERT_TRUE(users.insert(longName, "h", kRoleUser));
+    EXPECT_EQ(users.insertLinked(ldap, "uid=long", longName, kRoleUser).username, std::string(62, 'x') + "-2");
+}
+
+TEST_P(UserStoreConformance, ConcurrentFirstSignInsOfOnePersonMakeOneAccount)
+{
+    constexpr int kAttempts = 8;
+    std::vector<std::int64_t> ids(kAttempts, 0);
+    runAtOnce(kAttempts, [&](int i) {
+        ids[static_cast<std::size_t>(i)] =
+            store().users().insertLinked("ldap ldap://x", "uid=dora,dc=x", "dora", kRoleUser).id;
+    });
+    for (std::int64_t id : ids) EXPECT_EQ(id, ids[0]);
+    EXPECT_EQ(store().users().count(), 1u);
+}
+
 } // namespace
 } // namespace tlmhub::test
