@@ -7,23 +7,14 @@
 import type { LiveControl as StoredControl, Model, SysParam } from '../protocol/types';
 import { findComponent, systemAt, type SystemPath } from '../model/modelState';
 
-export type LiveControlKind = 'slider' | 'knob' | 'switch' | 'number';
+export type LiveControlKind = StoredControl['kind'];
 export const CONTROL_KINDS: readonly LiveControlKind[] = ['slider', 'knob', 'switch', 'number'];
 
-export interface LiveControl {
-    kind: LiveControlKind;
-    /** The live value it sets, as live.set names it: Step.y_A, Sub$Gain.k. */
-    name: string;
-    min: number;
-    max: number;
-    /** A switch's two values (min and max otherwise). */
-    off?: number;
-    on?: number;
-    /** Where on the drawing, in the coordinates of the (sub)system at `path`. */
-    x: number;
-    y: number;
+/** A control as the editor handles it: as stored, its drawing's subsystem path always given. */
+export type LiveControl = Omit<StoredControl, 'system'> & {
+    /** The drawing it is on; x and y are in its coordinates. */
     path: SystemPath;
-}
+};
 
 /** The system parameter that held them in models saved before they had their own place (top-level system). */
 export const CONTROLS_PARAMETER = 'tlmhub_live_controls';
