@@ -66,8 +66,12 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
         std::max(1u, cores / 2));
     if (!mOptions.ldap.url.empty()) {
         LdapSettings ldap = mOptions.ldap;
-        if (!mOptions.ldapServicePasswordFile.empty())
+        if (!mOptions.ldapServicePasswordFile.empty()) {
             ldap.servicePassword = readSecretFile(mOptions.ldapServicePasswordFile, "LDAP service password file");
+            // An empty password would make the service account's bind an anonymous one.
+            if (ldap.servicePassword.empty())
+                throw std::runtime_error("LDAP service password file " + mOptions.ldapServicePasswordFile + " is empty");
+        }
         mDirectory = std::make_unique<LdapDirectory>(std::move(ldap));
         mDirectorySignIn = std::make_unique<DirectorySignIn>(*mDirectory, mStorage->users(), mOptions.ldapCreateAccounts);
     }
