@@ -184,7 +184,9 @@ def build_struct(name, s):
             field = Field(prop, cpp_type(nullable_type(ps), name + pascal(prop), uses), True, nullable=True)
         else:
             field = Field(prop, cpp_type(ps, name + pascal(prop), uses), is_required)
-        struct.strong.update(used for used, by_value in uses if by_value)
+        # std::optional<std::vector<T>> needs T complete where it is declared (clang).
+        held = field.required and not field.nullable
+        struct.strong.update(used for used, by_value in uses if by_value or not held)
         struct.fields.append(field)
 
 

@@ -212,6 +212,33 @@ void to_json(nlohmann::json& j, const SimulationSettings& v)
     j["log_samples"] = v.logSamples;
 }
 
+void from_json(const nlohmann::json& j, LiveControl& v)
+{
+    j.at("kind").get_to(v.kind);
+    j.at("name").get_to(v.name);
+    j.at("min").get_to(v.min);
+    j.at("max").get_to(v.max);
+    if (const auto x = j.find("off"); x != j.end()) v.off = x->get<double>();
+    if (const auto x = j.find("on"); x != j.end()) v.on = x->get<double>();
+    j.at("x").get_to(v.x);
+    j.at("y").get_to(v.y);
+    if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
+}
+
+void to_json(nlohmann::json& j, const LiveControl& v)
+{
+    j = nlohmann::json::object();
+    j["kind"] = v.kind;
+    j["name"] = v.name;
+    j["min"] = v.min;
+    j["max"] = v.max;
+    if (v.off) j["off"] = *v.off;
+    if (v.on) j["on"] = *v.on;
+    j["x"] = v.x;
+    j["y"] = v.y;
+    if (v.system) j["system"] = *v.system;
+}
+
 void from_json(const nlohmann::json& j, System& v)
 {
     j.at("name").get_to(v.name);
@@ -1505,33 +1532,6 @@ void to_json(nlohmann::json& j, const ModelSettingsRequest& v)
     if (v.logSamples) j["log_samples"] = *v.logSamples;
 }
 
-void from_json(const nlohmann::json& j, LiveControl& v)
-{
-    j.at("kind").get_to(v.kind);
-    j.at("name").get_to(v.name);
-    j.at("min").get_to(v.min);
-    j.at("max").get_to(v.max);
-    if (const auto x = j.find("off"); x != j.end()) v.off = x->get<double>();
-    if (const auto x = j.find("on"); x != j.end()) v.on = x->get<double>();
-    j.at("x").get_to(v.x);
-    j.at("y").get_to(v.y);
-    if (const auto x = j.find("system"); x != j.end()) v.system = x->get<std::vector<std::string>>();
-}
-
-void to_json(nlohmann::json& j, const LiveControl& v)
-{
-    j = nlohmann::json::object();
-    j["kind"] = v.kind;
-    j["name"] = v.name;
-    j["min"] = v.min;
-    j["max"] = v.max;
-    if (v.off) j["off"] = *v.off;
-    if (v.on) j["on"] = *v.on;
-    j["x"] = v.x;
-    j["y"] = v.y;
-    if (v.system) j["system"] = *v.system;
-}
-
 void from_json(const nlohmann::json& j, ModelControlsRequest& v)
 {
     if (const auto x = j.find("id"); x != j.end()) v.id = *x;
@@ -1805,6 +1805,21 @@ void to_json(nlohmann::json& j, const MemberUpdate& v)
     j["role"] = v.role;
 }
 
+void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v)
+{
+    j.at("name").get_to(v.name);
+    if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
+    if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
+}
+
+void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    if (v.min) j["min"] = *v.min;
+    if (v.max) j["max"] = *v.max;
+}
+
 void from_json(const nlohmann::json& j, AssignmentCreate& v)
 {
     j.at("title").get_to(v.title);
@@ -1830,14 +1845,14 @@ void to_json(nlohmann::json& j, const AssignmentCreate& v)
     if (v.parameters) j["parameters"] = *v.parameters;
 }
 
-void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v)
+void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v)
 {
     j.at("name").get_to(v.name);
     if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
     if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
 }
 
-void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v)
+void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v)
 {
     j = nlohmann::json::object();
     j["name"] = v.name;
@@ -1868,21 +1883,6 @@ void to_json(nlohmann::json& j, const AssignmentUpdate& v)
     if (v.dueAt) j["due_at"] = *v.dueAt;
     if (v.editMode) j["edit_mode"] = *v.editMode;
     if (v.parameters) j["parameters"] = *v.parameters;
-}
-
-void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v)
-{
-    j.at("name").get_to(v.name);
-    if (const auto x = j.find("min"); x != j.end()) v.min = x->get<double>();
-    if (const auto x = j.find("max"); x != j.end()) v.max = x->get<double>();
-}
-
-void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v)
-{
-    j = nlohmann::json::object();
-    j["name"] = v.name;
-    if (v.min) j["min"] = *v.min;
-    if (v.max) j["max"] = *v.max;
 }
 
 void from_json(const nlohmann::json& j, ChecksUpdate& v)

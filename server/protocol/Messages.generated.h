@@ -275,6 +275,22 @@ struct SimulationSettings {
 void from_json(const nlohmann::json& j, SimulationSettings& v);
 void to_json(nlohmann::json& j, const SimulationSettings& v);
 
+// A slider, knob, switch or number field placed on a drawing that sets one value while the
+// model runs (live.set), saved in the model's GUI data.
+struct LiveControl {
+    std::string kind{};
+    std::string name{};
+    double min{};
+    double max{};
+    std::optional<double> off;
+    std::optional<double> on;
+    double x{};
+    double y{};
+    std::optional<std::vector<std::string>> system;
+};
+void from_json(const nlohmann::json& j, LiveControl& v);
+void to_json(nlohmann::json& j, const LiveControl& v);
+
 // A (sub)system; simulation is present on the root only.
 struct System {
     std::string name{};
@@ -1051,22 +1067,6 @@ struct ModelSettingsRequest {
 void from_json(const nlohmann::json& j, ModelSettingsRequest& v);
 void to_json(nlohmann::json& j, const ModelSettingsRequest& v);
 
-// A slider, knob, switch or number field placed on a drawing that sets one value while the
-// model runs (live.set), saved in the model's GUI data.
-struct LiveControl {
-    std::string kind{};
-    std::string name{};
-    double min{};
-    double max{};
-    std::optional<double> off;
-    std::optional<double> on;
-    double x{};
-    double y{};
-    std::optional<std::vector<std::string>> system;
-};
-void from_json(const nlohmann::json& j, LiveControl& v);
-void to_json(nlohmann::json& j, const LiveControl& v);
-
 // Replace the open model's live controls (saved with it, in its GUI data).
 struct ModelControlsRequest {
     nlohmann::json id{};
@@ -1226,6 +1226,14 @@ struct MemberUpdate {
 void from_json(const nlohmann::json& j, MemberUpdate& v);
 void to_json(nlohmann::json& j, const MemberUpdate& v);
 
+struct AssignmentCreateParametersItem {
+    std::string name{};
+    std::optional<double> min;
+    std::optional<double> max;
+};
+void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v);
+void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v);
+
 // A new assignment of a class (docs/labs.md).
 struct AssignmentCreate {
     std::string title{};
@@ -1240,13 +1248,13 @@ struct AssignmentCreate {
 void from_json(const nlohmann::json& j, AssignmentCreate& v);
 void to_json(nlohmann::json& j, const AssignmentCreate& v);
 
-struct AssignmentCreateParametersItem {
+struct AssignmentUpdateParametersItem {
     std::string name{};
     std::optional<double> min;
     std::optional<double> max;
 };
-void from_json(const nlohmann::json& j, AssignmentCreateParametersItem& v);
-void to_json(nlohmann::json& j, const AssignmentCreateParametersItem& v);
+void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v);
+void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v);
 
 // Changed fields of an assignment; a template_model_id publishes a new template version.
 struct AssignmentUpdate {
@@ -1261,14 +1269,6 @@ struct AssignmentUpdate {
 };
 void from_json(const nlohmann::json& j, AssignmentUpdate& v);
 void to_json(nlohmann::json& j, const AssignmentUpdate& v);
-
-struct AssignmentUpdateParametersItem {
-    std::string name{};
-    std::optional<double> min;
-    std::optional<double> max;
-};
-void from_json(const nlohmann::json& j, AssignmentUpdateParametersItem& v);
-void to_json(nlohmann::json& j, const AssignmentUpdateParametersItem& v);
 
 // An assignment's checks, replacing the earlier ones (docs/labs.md).
 struct ChecksUpdate {
