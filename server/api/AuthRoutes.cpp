@@ -39,8 +39,9 @@ Response login(Services& s, Call& call)
             // The name as a JSON string: a control character in it cannot forge a log line.
             std::cerr << "LDAP sign-in of " << nlohmann::json(username).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
                       << ": " << signedIn.message << std::endl;
+            // Why stays in the log: it names the directory's address and the service account.
             Response r = apiError(http::status::service_unavailable, "directory_unavailable",
-                                  "the directory cannot be asked now (" + signedIn.message + "); try again later");
+                                  "the directory cannot be asked now; try again later (the server's log says why)");
             r.set(http::field::retry_after, "30");
             return r;
         }

@@ -1,7 +1,5 @@
 #include "server/auth/DirectorySignIn.h"
 
-#include "server/auth/AccessPolicy.h"
-
 #include <algorithm>
 
 namespace tlmhub::server {
