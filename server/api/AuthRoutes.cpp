@@ -5,6 +5,7 @@
 #include "server/jobs/JobQueue.h"
 #include "server/store/ResultStore.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace tlmhub::server {
@@ -30,7 +31,9 @@ Response login(Services& s, Call& call)
     };
     if (!s.loginLimiter.allowed(userKey)) return limited(s.loginLimiter, userKey);
     const bool addressLimited = !s.addressLimiter.allowed(addressKey);
-    std::optional<User> user = s.users.authenticate(username, body.password);
+    const bool passwordAllowed = s.options.passwordLogin || std::ranges::find(s.options.localLoginUsers, username) !=
+                                                                s.options.localLoginUsers.end();
+    std::optional<User> user = passwordAllowed ? s.users.authenticate(username, body.password) : std::nullopt;
     // Not a local account's password: the directory's, when there is one (the same limits).
     if (!user && s.directory) {
         const DirectorySignInResult signedIn = s.directory->signIn(username, body.password);
@@ -51,6 +54,9 @@ Response login(Services& s, Call& call)
         }
         user = signedIn.user;
     }
+    if (!user && !passwordAllowed && !s.directory)
+        return apiError(http::status::forbidden, "password_login_off",
+                        "this server's own passwords are turned off: sign in through your organisation");
     if (!user) {
         s.loginLimiter.recordFailure(userKey);
         s.addressLimiter.recordFailure(addressKey);

@@ -100,6 +100,9 @@ const std::string kHelp = std::string(
     "  --ldap-role-group ROLE=DN  members of group DN get server role ROLE (repeatable)\n"
     "  --ldap-create-accounts on|off  make an account on a person's first sign-in (default on)\n"
     "  --ldap-timeout S         limit of each connection and operation (default 5)\n"
+    "  --password-login on|off  off: this server's own passwords log in only the accounts\n"
+    "                           named by --local-login-user (default on)\n"
+    "  --local-login-user NAME  an account that keeps its password login (repeatable)\n"
     "environment: TLMHUB_ADMIN_PASSWORD sets the password of 'admin' on first start\n";
 
 template <typename T>
@@ -247,6 +250,12 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
         } else if (flag == "--ldap-create-accounts") {
             ok = value == "on" || value == "off";
             o.ldapCreateAccounts = value == "on";
+        } else if (flag == "--password-login") {
+            ok = value == "on" || value == "off";
+            o.passwordLogin = value == "on";
+        } else if (flag == "--local-login-user") {
+            ok = !value.empty();
+            o.localLoginUsers.push_back(value);
         } else if (flag == "--ldap-timeout") {
             double s = 0;
             ok = parseNumber(value, s) && s > 0 && s <= 300;
@@ -290,6 +299,11 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
         && (o.ldap.searchBase.empty() || o.ldap.serviceDn.empty() || o.ldapServicePasswordFile.empty())) {
         error = "--ldap-url needs --ldap-bind-dn, or --ldap-search-base with --ldap-service-dn and "
                 "--ldap-service-password-file";
+        return false;
+    }
+    if (!o.passwordLogin && o.localLoginUsers.empty() && o.ldap.url.empty()) {
+        error = "--password-login off would let nobody log in: name the administrator's account with "
+                "--local-login-user, or give --ldap-url";
         return false;
     }
     if (!examplesGiven && std::filesystem::is_directory("examples"))

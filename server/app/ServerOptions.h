@@ -46,6 +46,11 @@ struct ServerOptions {
     LdapSettings ldap;
     std::string ldapServicePasswordFile;
     bool ldapCreateAccounts = true;
+    // --password-login off: only the accounts named here log in with a password of this
+    // server's own (the administrator's way in); everyone else signs in through the directory
+    // or a provider. Directory passwords and API tokens are not affected.
+    bool passwordLogin = true;
+    std::vector<std::string> localLoginUsers;
     // Cost of new password hashes; Minimal only for test servers (see --help).
     PasswordCost passwordCost = PasswordCost::Interactive;
     // Parameter expressions one evaluation pass may evaluate (core/ParameterEvaluator.h).

@@ -211,3 +211,13 @@ TEST_F(LdapLogins, DirectoryLoginsCountTowardsTheLoginLimitsAndNoAccountIsMadeWh
     EXPECT_EQ(alice.status, 403) << alice.body;
     EXPECT_EQ(alice.json()["error"]["code"], "no_account");
 }
+
+TEST_F(LdapLogins, WithPasswordLoginOffDirectoryPeopleSignInAndLocalPasswordsDoNot)
+{
+    const auto server = bindingServer("ldap-password-off", {"--password-login", "off", "--local-login-user", "admin"});
+    createTestUsers(*server, {"carol"});
+    EXPECT_EQ(signInTo(*server, "alice", "alice-password").status, 200) << "a directory password is not a local one";
+    // carol is not in the directory, and her local password no longer logs her in.
+    EXPECT_EQ(signInTo(*server, "carol", testPassword("carol")).status, 401);
+    EXPECT_EQ(signInTo(*server, "admin", kAdminPassword).status, 200);
+}
