@@ -1,13 +1,14 @@
 #include "server/auth/oidc/JsonWebKeySet.h"
 
 #include "server/auth/oidc/Base64Url.h"
-
-#include <algorithm>
+#include "server/auth/oidc/JsonMembers.h"
 
 #include <openssl/bn.h>
 #include <openssl/core_names.h>
 #include <openssl/evp.h>
 #include <openssl/param_build.h>
+
+#include <algorithm>
 
 namespace tlmhub::server {
 
@@ -23,12 +24,6 @@ using ParamBuilder = std::unique_ptr<OSSL_PARAM_BLD, Freeing<OSSL_PARAM_BLD, OSS
 using Params = std::unique_ptr<OSSL_PARAM, Freeing<OSSL_PARAM, OSSL_PARAM_free>>;
 using KeyContext = std::unique_ptr<EVP_PKEY_CTX, Freeing<EVP_PKEY_CTX, EVP_PKEY_CTX_free>>;
 using BigNumber = std::unique_ptr<BIGNUM, Freeing<BIGNUM, BN_free>>;
-
-std::string stringMember(const nlohmann::json& object, const char* name)
-{
-    const auto it = object.find(name);
-    return it != object.end() && it->is_string() ? it->get<std::string>() : std::string{};
-}
 
 // A member holding base64url bytes (a key's number or coordinate); nullopt when missing or not.
 std::optional<std::string> bytesMember(const nlohmann::json& object, const char* name)
