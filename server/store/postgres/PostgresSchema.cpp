@@ -276,11 +276,24 @@ void addIdentities(pqxx::transaction_base& tx)
     tx.exec0("CREATE INDEX identities_user ON identities(user_id)");
 }
 
+// Version 11: sign-ins through a provider between their start and its answer, as SQLite's version 11.
+void addSignInAttempts(pqxx::transaction_base& tx)
+{
+    tx.exec0("CREATE TABLE sign_in_attempts ("
+             " state TEXT PRIMARY KEY,"
+             " provider TEXT NOT NULL,"
+             " nonce TEXT NOT NULL,"
+             " code_verifier TEXT NOT NULL,"
+             " return_to TEXT NOT NULL,"
+             " created_at BIGINT NOT NULL)");
+    tx.exec0("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");
+}
+
 using Migration = void (*)(pqxx::transaction_base&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
                                                              addPreferences, addIdempotencyKeys, addStudyNodes,
-                                                             addIdentities};
+                                                             addIdentities, addSignInAttempts};
 
 int versionIn(pqxx::transaction_base& tx)
 {

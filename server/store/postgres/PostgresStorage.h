@@ -23,6 +23,7 @@ public:
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
     IdempotencyKeyStore& idempotencyKeys() override { return mIdempotencyKeys; }
+    SignInStore& signIns() override { return mSignIns; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
@@ -41,6 +42,7 @@ private:
     PostgresResultStore mResults{mDb};
     PostgresMetaStore mMeta{mDb};
     PostgresIdempotencyKeyStore mIdempotencyKeys{mDb};
+    PostgresSignInStore mSignIns{mDb};
     PostgresApiTokenStore mApiTokens{mDb};
     PostgresStudyStore mStudies{mDb};
     PostgresLabStore mLabs{mDb};

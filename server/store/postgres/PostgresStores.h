@@ -10,6 +10,7 @@
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
 #include "server/store/SessionStore.h"
+#include "server/store/SignInStore.h"
 #include "server/store/StudyStore.h"
 #include "server/store/UserStore.h"
 #include "server/store/postgres/PostgresDatabase.h"
@@ -268,6 +269,17 @@ public:
     std::optional<std::int64_t> addComment(std::int64_t handInId, std::int64_t authorId,
                                            const std::string& text) override;
     std::vector<HandInComment> comments(std::int64_t handInId) override;
+
+private:
+    PostgresDatabase& mDb;
+};
+
+class PostgresSignInStore final : public SignInStore {
+public:
+    explicit PostgresSignInStore(PostgresDatabase& db) : mDb(db) {}
+    void add(const SignInAttempt& attempt) override;
+    std::optional<SignInAttempt> take(const std::string& state, std::int64_t notBeforeUnix) override;
+    std::size_t purge(std::int64_t notBeforeUnix) override;
 
 private:
     PostgresDatabase& mDb;

@@ -280,11 +280,24 @@ void addIdentities(SQLite::Database& db)
     db.exec("CREATE INDEX identities_user ON identities(user_id)");
 }
 
+// Version 11: sign-ins through a provider between their start and its answer (SignInStore).
+void addSignInAttempts(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE sign_in_attempts ("
+            " state TEXT PRIMARY KEY,"
+            " provider TEXT NOT NULL,"
+            " nonce TEXT NOT NULL,"
+            " code_verifier TEXT NOT NULL,"
+            " return_to TEXT NOT NULL,"
+            " created_at INTEGER NOT NULL)");
+    db.exec("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
                                                              addPreferences, addIdempotencyKeys, addStudyNodes,
-                                                             addIdentities};
+                                                             addIdentities, addSignInAttempts};
 
 } // namespace
 

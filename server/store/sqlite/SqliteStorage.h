@@ -21,6 +21,7 @@ public:
     ResultStore& results() override { return mResults; }
     MetaStore& meta() override { return mMeta; }
     IdempotencyKeyStore& idempotencyKeys() override { return mIdempotencyKeys; }
+    SignInStore& signIns() override { return mSignIns; }
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
@@ -38,6 +39,7 @@ private:
     SqliteResultStore mResults{mDb};
     SqliteMetaStore mMeta{mDb};
     SqliteIdempotencyKeyStore mIdempotencyKeys{mDb};
+    SqliteSignInStore mSignIns{mDb};
     SqliteApiTokenStore mApiTokens{mDb};
     SqliteStudyStore mStudies{mDb};
     SqliteLabStore mLabs{mDb};
