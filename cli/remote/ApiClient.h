@@ -1,7 +1,7 @@
 #pragma once
 // The tlmhub REST API (/api/v1) as the remote commands use it: JSON in and out, the bearer
 // token on every call, and the server's {"error":{code,message}} turned into an ApiError.
-#include "cli/remote/HttpClient.h"
+#include "net/HttpClient.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +10,17 @@
 #include <type_traits>
 
 namespace tlmhub::cli::remote {
+
+// The HTTP client and the server's address, shared with the server (net/).
+using net::ConnectionError;
+using net::HttpClient;
+using net::HttpLimits;
+using net::HttpMethod;
+using net::HttpRequest;
+using net::HttpResponse;
+using net::parseUrl;
+using net::percentEncode;
+using net::Url;
 
 // An answer of 400 or above; what() is "CODE: message" as the server gave them.
 class ApiError : public std::runtime_error {

@@ -1,6 +1,6 @@
 // The credentials file of `tlmhub-cli remote` (no server needed).
 #include "cli/remote/Credentials.h"
-#include "cli/remote/Url.h"
+#include "net/Url.h"
 #include "server/TemporaryDirectory.h"
 
 #include <nlohmann/json.hpp>
@@ -14,6 +14,10 @@
 
 namespace tlmhub::cli::remote {
 namespace {
+
+using net::parseUrl;
+using net::percentEncode;
+using net::Url;
 
 unsigned mode(const std::filesystem::path& path)
 {

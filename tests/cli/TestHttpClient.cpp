@@ -1,8 +1,17 @@
-// The remote CLI's HttpClient against a scripted server on loopback: what a real server does
-// only rarely (close a kept connection, stall, send too much, answer in chunks).
-#include "cli/remote/HttpClient.h"
+// The HTTP client of the remote CLI and of the server's calls to OpenID providers, against a
+// scripted server on loopback: what a real server does only rarely (close a kept connection,
+// stall, send too much, answer in chunks), the header fields both ways, and https trusted
+// through a given CA file (openssl s_server with a certificate made for the test).
+#include "net/HttpClient.h"
+
+#include "server/ChildProcess.h"
+#include "ServerHarness.h"
 
 #include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <sys/wait.h>
 
 #include <atomic>
 #include <functional>
@@ -11,7 +20,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace tlmhub::cli::remote {
+namespace tlmhub::net {
 namespace {
 
 // Accepts connections on a loopback port and hands each to `serve` (with its index), one
@@ -58,11 +67,12 @@ private:
 };
 
 // Reads one request's head (these requests have no body).
-void readRequest(int fd)
+std::string readRequest(int fd)
 {
     std::string head;
     char c;
     while (head.find("\r\n\r\n") == std::string::npos && ::read(fd, &c, 1) == 1) head += c;
+    return head;
 }
 
 HttpRequest get(const std::string& target)
@@ -139,5 +149,72 @@ TEST(HttpClient, AResponseOverTheLimitIsRefused)
     }
 }
 
+TEST(HttpClient, MoreHeaderFieldsAreSentAndTheResponsesAreRead)
+{
+    std::string head;
+    ScriptedServer server([&](int fd, int) {
+        head = readRequest(fd);
+        send(fd, "HTTP/1.1 303 See Other\r\nLocation: /next?x=1\r\nSet-Cookie: a=1\r\nset-cookie: b=2\r\n"
+                 "Content-Length: 0\r\n\r\n");
+    });
+    HttpClient client(server.url());
+    HttpRequest request = get("/start");
+    request.headers = {{"Accept", "application/json"}, {"Authorization", "Basic dGxtaHViOnNlY3JldA=="}};
+    request.userAgent = "tlmhub-server";
+    const HttpResponse response = client.send(request);
+    EXPECT_NE(head.find("\r\nAccept: application/json\r\n"), std::string::npos) << head;
+    EXPECT_NE(head.find("\r\nAuthorization: Basic dGxtaHViOnNlY3JldA==\r\n"), std::string::npos) << head;
+    EXPECT_NE(head.find("\r\nUser-Agent: tlmhub-server\r\n"), std::string::npos) << head;
+    EXPECT_EQ(response.status, 303);
+    EXPECT_EQ(response.header("location"), "/next?x=1");
+    int cookies = 0;
+    for (const auto& [name, value] : response.headers) cookies += name == "Set-Cookie" || name == "set-cookie";
+    EXPECT_EQ(cookies, 2);
+    EXPECT_EQ(response.header("X-Missing"), "");
+}
+
+TEST(HttpClient, AnHttpsServerIsTrustedThroughTheGivenCaFileAndNoOther)
+{
+    const std::filesystem::path dir = test::freshTempDir("http-client-tls");
+    const auto run = [&](const std::string& command) {
+        ASSERT_EQ(std::system(("cd '" + dir.string() + "' && " + command + " >>openssl.log 2>&1").c_str()), 0) << command;
+    };
+    for (const std::string ca : {"ca", "other-ca"})
+        run("openssl req -x509 -newkey rsa:2048 -nodes -keyout " + ca + ".key -out " + ca + ".pem -days 2 -subj /CN=" + ca);
+    run("openssl req -newkey rsa:2048 -nodes -keyout key.pem -out request.csr -subj /CN=127.0.0.1");
+    run("printf 'subjectAltName=IP:127.0.0.1\\n' >san.ext && openssl x509 -req -in request.csr -CA ca.pem -CAkey ca.key"
+        " -CAcreateserial -out cert.pem -days 2 -extfile san.ext");
+    const unsigned short port = test::freeLoopbackPort();
+    const int pid = test::spawn({"/usr/bin/openssl", "s_server", "-accept", "127.0.0.1:" + std::to_string(port), "-cert",
+                                 "cert.pem", "-key", "key.pem", "-www", "-quiet"},
+                                dir / "s_server.log", dir, {});
+    const Url url{true, "127.0.0.1", std::to_string(port), ""};
+    std::optional<HttpResponse> answer;
+    for (int tries = 0; tries < 100 && !answer; ++tries) {   // until s_server listens
+        try {
+            answer = HttpClient(url, {.connect = std::chrono::seconds(5)}, dir / "ca.pem").send(get("/"));
+        } catch (const ConnectionError&) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    }
+    ASSERT_TRUE(answer) << test::tailOf(dir / "s_server.log", 2000);
+    EXPECT_EQ(answer->status, 200);
+    try {
+        HttpClient(url, {}, dir / "other-ca.pem").send(get("/"));
+        ADD_FAILURE() << "a certificate of another CA was taken";
+    } catch (const ConnectionError& e) {
+        EXPECT_NE(std::string(e.what()).find("certificate"), std::string::npos) << e.what();
+    }
+    try {
+        HttpClient(url, {}, dir / "missing.pem");
+        ADD_FAILURE() << "a missing CA file was taken";
+    } catch (const ConnectionError& e) {
+        EXPECT_NE(std::string(e.what()).find("missing.pem"), std::string::npos) << e.what();
+    }
+    ::kill(pid, SIGTERM);
+    test::waitUntil(pid, std::chrono::steady_clock::now() + std::chrono::seconds(10));
+    std::filesystem::remove_all(dir);
+}
+
 } // namespace
-} // namespace tlmhub::cli::remote
+} // namespace tlmhub::net

@@ -3,6 +3,8 @@
 #include "server/auth/Sodium.h"
 #include "server/auth/oidc/Base64Url.h"
 
+#include "net/Url.h"
+
 #include <sodium.h>
 
 namespace tlmhub::server {
@@ -33,31 +35,12 @@ std::string pkceChallenge(std::string_view codeVerifier)
     return encodeBase64Url(digest);
 }
 
-std::string percentEncode(std::string_view text)
-{
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    std::string out;
-    out.reserve(text.size());
-    for (const char ch : text) {
-        const auto c = static_cast<unsigned char>(ch);
-        if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.' ||
-            c == '_' || c == '~') {
-            out += ch;
-        } else {
-            out += '%';
-            out += kHex[c >> 4];
-            out += kHex[c & 0xf];
-        }
-    }
-    return out;
-}
-
 std::string formEncode(const std::vector<std::pair<std::string, std::string>>& fields)
 {
     std::string out;
     for (const auto& [name, value] : fields) {
         if (!out.empty()) out += '&';
-        out += percentEncode(name) + '=' + percentEncode(value);
+        out += net::percentEncode(name) + '=' + net::percentEncode(value);
     }
     return out;
 }

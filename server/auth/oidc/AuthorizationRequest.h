@@ -22,8 +22,6 @@ SignInSecrets newSignInSecrets();
 // BASE64URL(SHA-256(verifier)): the challenge of PKCE's S256 method.
 std::string pkceChallenge(std::string_view codeVerifier);
 
-// `text` percent-encoded but for RFC 3986's unreserved characters (what a query's name or value may carry).
-std::string percentEncode(std::string_view text);
 // name=value&... with each part percent-encoded (application/x-www-form-urlencoded, spaces as %20).
 std::string formEncode(const std::vector<std::pair<std::string, std::string>>& fields);
 

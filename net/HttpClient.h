@@ -1,16 +1,21 @@
 #pragma once
-// A synchronous HTTP/1.1 client for one server (Boost.Beast; https through OpenSSL). It keeps
-// the connection open between requests while the server allows it, and reconnects once
-// when a kept connection turns out to be closed.
-#include "cli/remote/Url.h"
+// A synchronous HTTP/1.1 client for one server (Boost.Beast; https through OpenSSL, the
+// certificate verified against the system's CAs or a given CA file). It keeps the connection
+// open between requests while the server allows it, and reconnects once when a kept
+// connection turns out to be closed.
+#include "net/Url.h"
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
-namespace tlmhub::cli::remote {
+namespace tlmhub::net {
 
 enum class HttpMethod { Get, Post, Delete };
 
@@ -20,11 +25,17 @@ struct HttpRequest {
     std::string body;
     std::string contentType;     // with a body
     std::string bearerToken;     // empty: no Authorization header
+    std::vector<std::pair<std::string, std::string>> headers;   // more fields (Accept, Authorization: Basic ...)
+    std::string userAgent = "tlmhub-cli";
 };
 
 struct HttpResponse {
     int status = 0;
     std::string body;
+    std::vector<std::pair<std::string, std::string>> headers;   // as received, in order
+
+    // The first field named `name` (any case); "" when there is none.
+    std::string header(std::string_view name) const;
 };
 
 // The server could not be reached, the TLS handshake failed, or the exchange broke off; the
@@ -44,7 +55,8 @@ struct HttpLimits {
 
 class HttpClient {
 public:
-    explicit HttpClient(Url server, HttpLimits limits = {});
+    // `caFile`: the CAs an https server's certificate must chain to; empty: the system's.
+    explicit HttpClient(Url server, HttpLimits limits = {}, const std::filesystem::path& caFile = {});
     ~HttpClient();
     HttpClient(const HttpClient&) = delete;
     HttpClient& operator=(const HttpClient&) = delete;
@@ -58,4 +70,4 @@ private:
     std::unique_ptr<Connection> mConnection;
 };
 
-} // namespace tlmhub::cli::remote
+} // namespace tlmhub::net

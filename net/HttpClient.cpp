@@ -1,4 +1,4 @@
-#include "cli/remote/HttpClient.h"
+#include "net/HttpClient.h"
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -11,13 +11,13 @@
 
 #include <optional>
 
-namespace tlmhub::cli::remote {
+namespace tlmhub::net {
 
 namespace beast = boost::beast;
 namespace http = beast::http;
-namespace net = boost::asio;
-namespace ssl = net::ssl;
-using tcp = net::ip::tcp;
+namespace asio = boost::asio;
+namespace ssl = asio::ssl;
+using tcp = asio::ip::tcp;
 
 namespace {
 
@@ -37,7 +37,7 @@ http::verb verbOf(HttpMethod method)
 // is what lets the stream's deadline (tcp_stream::expires_after) bound a blocking call.
 class HttpClient::Connection {
 public:
-    Connection(Url server, HttpLimits limits);
+    Connection(Url server, HttpLimits limits, const std::filesystem::path& caFile);
     HttpResponse send(const HttpRequest& request);
     const Url& server() const { return mServer; }
 
@@ -60,20 +60,26 @@ private:
 
     Url mServer;
     HttpLimits mLimits;
-    net::io_context mIoc;
+    asio::io_context mIoc;
     ssl::context mTls{ssl::context::tls_client};
     std::unique_ptr<beast::tcp_stream> mPlain;
     std::unique_ptr<beast::ssl_stream<beast::tcp_stream>> mSecure;
     beast::flat_buffer mBuffer;
 };
 
-HttpClient::Connection::Connection(Url server, HttpLimits limits) : mServer(std::move(server)), mLimits(limits)
+HttpClient::Connection::Connection(Url server, HttpLimits limits, const std::filesystem::path& caFile)
+    : mServer(std::move(server)), mLimits(limits)
 {
     if (!mServer.secure) return;
-    // The system's certificate store; OpenSSL reads SSL_CERT_FILE and SSL_CERT_DIR here.
     beast::error_code error;
-    mTls.set_default_verify_paths(error);
-    if (error) throw ConnectionError("cannot load the system's certificate store: " + error.message());
+    if (!caFile.empty()) {
+        mTls.load_verify_file(caFile.string(), error);
+        if (error) throw ConnectionError("cannot load the CA file " + caFile.string() + ": " + error.message());
+    } else {
+        // The system's certificate store; OpenSSL reads SSL_CERT_FILE and SSL_CERT_DIR here.
+        mTls.set_default_verify_paths(error);
+        if (error) throw ConnectionError("cannot load the system's certificate store: " + error.message());
+    }
     mTls.set_verify_mode(ssl::verify_peer);
     SSL_CTX_set_min_proto_version(mTls.native_handle(), TLS1_2_VERSION);
 }
@@ -105,7 +111,7 @@ void HttpClient::Connection::connect()
         mSecure = std::make_unique<beast::ssl_stream<beast::tcp_stream>>(mIoc, mTls);
         SSL* tls = mSecure->native_handle();
         beast::error_code notAddress;
-        net::ip::make_address(mServer.host, notAddress);
+        asio::ip::make_address(mServer.host, notAddress);
         // SNI carries host names only (RFC 6066). OpenSSL checks the certificate's names
         // while verifying it, so a mismatch fails the handshake with its own reason.
         if (notAddress) {
@@ -182,16 +188,20 @@ std::optional<HttpResponse> HttpClient::Connection::exchange(Stream& stream, htt
     }
     http::response<http::string_body> response = parser.release();
     if (!response.keep_alive()) close();
-    return HttpResponse{static_cast<int>(response.result_int()), std::move(response.body())};
+    HttpResponse out{static_cast<int>(response.result_int()), std::move(response.body()), {}};
+    for (const auto& field : response)
+        out.headers.emplace_back(std::string(field.name_string()), std::string(field.value()));
+    return out;
 }
 
 HttpResponse HttpClient::Connection::send(const HttpRequest& request)
 {
     http::request<http::string_body> message{verbOf(request.method), request.target, 11};
     message.set(http::field::host, mServer.authority());
-    message.set(http::field::user_agent, "tlmhub-cli");
+    message.set(http::field::user_agent, request.userAgent);
     if (!request.bearerToken.empty()) message.set(http::field::authorization, "Bearer " + request.bearerToken);
     if (!request.contentType.empty()) message.set(http::field::content_type, request.contentType);
+    for (const auto& [name, value] : request.headers) message.set(name, value);
     message.body() = request.body;
     message.prepare_payload();
 
@@ -215,15 +225,22 @@ HttpResponse HttpClient::Connection::send(const HttpRequest& request)
     }
 }
 
-HttpClient::HttpClient(Url server, HttpLimits limits)
-    : mConnection(std::make_unique<Connection>(std::move(server), limits))
+HttpClient::HttpClient(Url server, HttpLimits limits, const std::filesystem::path& caFile)
+    : mConnection(std::make_unique<Connection>(std::move(server), limits, caFile))
 {
 }
 
 HttpClient::~HttpClient() = default;
 
+std::string HttpResponse::header(std::string_view name) const
+{
+    for (const auto& [field, value] : headers)
+        if (beast::iequals(field, name)) return value;
+    return {};
+}
+
 HttpResponse HttpClient::send(const HttpRequest& request) { return mConnection->send(request); }
 
 const Url& HttpClient::server() const { return mConnection->server(); }
 
-} // namespace tlmhub::cli::remote
+} // namespace tlmhub::net

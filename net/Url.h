@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-namespace tlmhub::cli::remote {
+namespace tlmhub::net {
 
 struct Url {
     bool secure = false;        // https
@@ -24,4 +24,4 @@ std::optional<Url> parseUrl(const std::string& text, std::string& error);
 // `text` with everything but unreserved characters percent-encoded (a query value).
 std::string percentEncode(const std::string& text);
 
-} // namespace tlmhub::cli::remote
+} // namespace tlmhub::net

@@ -1,9 +1,9 @@
-#include "cli/remote/Url.h"
+#include "net/Url.h"
 
 #include <cctype>
 #include <cstdio>
 
-namespace tlmhub::cli::remote {
+namespace tlmhub::net {
 
 namespace {
 
@@ -108,4 +108,4 @@ std::string percentEncode(const std::string& text)
     return out;
 }
 
-} // namespace tlmhub::cli::remote
+} // namespace tlmhub::net
