@@ -5,12 +5,12 @@
 #include "net/HttpClient.h"
 
 #include "server/ChildProcess.h"
+#include "server/TestCertificates.h"
 #include "ServerHarness.h"
 
 #include <gtest/gtest.h>
 
 #include <csignal>
-#include <cstdlib>
 #include <sys/wait.h>
 
 #include <atomic>
@@ -176,14 +176,7 @@ TEST(HttpClient, MoreHeaderFieldsAreSentAndTheResponsesAreRead)
 TEST(HttpClient, AnHttpsServerIsTrustedThroughTheGivenCaFileAndNoOther)
 {
     const std::filesystem::path dir = test::freshTempDir("http-client-tls");
-    const auto run = [&](const std::string& command) {
-        ASSERT_EQ(std::system(("cd '" + dir.string() + "' && " + command + " >>openssl.log 2>&1").c_str()), 0) << command;
-    };
-    for (const std::string ca : {"ca", "other-ca"})
-        run("openssl req -x509 -newkey rsa:2048 -nodes -keyout " + ca + ".key -out " + ca + ".pem -days 2 -subj /CN=" + ca);
-    run("openssl req -newkey rsa:2048 -nodes -keyout key.pem -out request.csr -subj /CN=127.0.0.1");
-    run("printf 'subjectAltName=IP:127.0.0.1\\n' >san.ext && openssl x509 -req -in request.csr -CA ca.pem -CAkey ca.key"
-        " -CAcreateserial -out cert.pem -days 2 -extfile san.ext");
+    test::makeTestCertificates(dir);
     const unsigned short port = test::freeLoopbackPort();
     const int pid = test::spawn({"/usr/bin/openssl", "s_server", "-accept", "127.0.0.1:" + std::to_string(port), "-cert",
                                  "cert.pem", "-key", "key.pem", "-www", "-quiet"},
