@@ -124,6 +124,18 @@ paths = {
     "/auth/login": {"post": op("Log in; returns a bearer token",
                                {**ok("Logged in", "LoginResponse"), **errors("400", "401", "429", "503")},
                                body=json_body("LoginRequest"), public=True, tag="auth")},
+    "/auth/providers": {"get": op("How to sign in: the OpenID providers, and whether local passwords log in everyone",
+                                  ok("The sign-in methods", "SignInProviders"), public=True, tag="auth")},
+    "/auth/oidc/{name}/start": {"get": op("Start a sign-in with an OpenID provider: a redirect to it (302)",
+                                          {"302": {"description": "To the provider"}, **errors("404", "503")},
+                                          public=True, tag="auth")},
+    "/auth/oidc/{name}/callback": {"get": op(
+        "The provider's answer (code, state, iss, or error): a redirect (303) to the app with a one-time key "
+        "(#/signed-in/KEY) or the reason (#/sign-in-failed/CODE)",
+        {"303": {"description": "To the app"}}, public=True, tag="auth")},
+    "/auth/oidc/collect": {"post": op("Trade a provider sign-in's one-time key for the login (once, within a minute)",
+                                      {**ok("Logged in", "LoginResponse"), **errors("400", "401")},
+                                      body=json_body("SignInCollect"), public=True, tag="auth")},
     "/auth/logout": {"post": op("Revoke the token used", {"204": {"description": "Logged out"},
                                                           **errors("401")}, tag="auth")},
     "/auth/me": {"get": op("The logged-in user, with their stored bytes and quota",

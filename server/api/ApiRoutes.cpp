@@ -7,6 +7,7 @@ std::vector<RouteSpec> apiRoutes()
     std::vector<RouteSpec> routes;
     addCatalogueRoutes(routes);
     addAuthRoutes(routes);
+    addOidcRoutes(routes);
     addUserRoutes(routes);
     addPreferenceRoutes(routes);
     addModelRoutes(routes);

@@ -32,6 +32,7 @@ class StudyService;
 class LabService;
 class LiveSessionRegistry;
 class DirectorySignIn;
+class OidcSignIn;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -55,6 +56,7 @@ struct Services {
     IdempotencyKeyStore& idempotencyKeys;   // Idempotency-Key of POST /jobs and /studies
     LiveSessionRegistry& liveSimulations;   // live.start: models run with the wall clock on this node
     DirectorySignIn* directory;             // LDAP sign-in; null without --ldap-url
+    OidcSignIn* oidc;                       // OpenID Connect sign-in; null without --oidc-issuer
 };
 
 struct Call {
@@ -123,6 +125,7 @@ bool wantsXml(const Call& call);
 
 // Route tables, one per resource.
 void addAuthRoutes(std::vector<RouteSpec>& routes);
+void addOidcRoutes(std::vector<RouteSpec>& routes);
 void addUserRoutes(std::vector<RouteSpec>& routes);
 void addModelRoutes(std::vector<RouteSpec>& routes);
 void addFmuRoutes(std::vector<RouteSpec>& routes);

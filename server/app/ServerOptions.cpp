@@ -100,6 +100,16 @@ const std::string kHelp = std::string(
     "  --ldap-role-group ROLE=DN  members of group DN get server role ROLE (repeatable)\n"
     "  --ldap-create-accounts on|off  make an account on a person's first sign-in (default on)\n"
     "  --ldap-timeout S         limit of each connection and operation (default 5)\n"
+    "  --oidc-issuer URL        sign in with an OpenID provider (https://...; repeatable: each\n"
+    "                           starts a provider, the --oidc-* flags after it are its own)\n"
+    "  --oidc-client-id ID      the client id this server has at the provider\n"
+    "  --oidc-client-secret-file PATH  the client's secret (mode 0600)\n"
+    "  --oidc-name TEXT         the button's \"Sign in with TEXT\"\n"
+    "  --oidc-role ROLE=VALUE   people whose role claim holds VALUE get server role ROLE\n"
+    "  --oidc-role-claim NAME   the ID token claim roles come from (default groups)\n"
+    "  --oidc-ca-file PATH      CAs of the providers' certificates (default: the system's)\n"
+    "  --oidc-create-accounts on|off  make an account on a person's first sign-in (default on)\n"
+    "  --public-url URL         the server's address as browsers reach it (needed by --oidc-issuer)\n"
     "  --password-login on|off  off: this server's own passwords log in only the accounts\n"
     "                           named by --local-login-user (default on)\n"
     "  --local-login-user NAME  an account that keeps its password login (repeatable)\n"
@@ -250,6 +260,35 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
         } else if (flag == "--ldap-create-accounts") {
             ok = value == "on" || value == "off";
             o.ldapCreateAccounts = value == "on";
+        } else if (flag == "--oidc-issuer") {
+            ok = value.starts_with("https://") && value.size() > 8;
+            o.oidcProviders.push_back({.issuer = value});
+        } else if (flag == "--oidc-client-id" || flag == "--oidc-client-secret-file" || flag == "--oidc-name" ||
+                   flag == "--oidc-role" || flag == "--oidc-role-claim") {
+            if (o.oidcProviders.empty()) {
+                error = flag + " belongs to a provider: give --oidc-issuer first";
+                return false;
+            }
+            auto& provider = o.oidcProviders.back();
+            ok = !value.empty();
+            if (flag == "--oidc-client-id") provider.clientId = value;
+            else if (flag == "--oidc-client-secret-file") provider.clientSecretFile = value;
+            else if (flag == "--oidc-name") provider.displayName = value;
+            else if (flag == "--oidc-role-claim") provider.roleClaim = value;
+            else {
+                const std::size_t equals = value.find('=');
+                const std::string role = value.substr(0, std::min(equals, value.size()));
+                ok = equals != std::string::npos && isValidRole(role) && equals + 1 < value.size();
+                if (ok) provider.roles.emplace_back(role, value.substr(equals + 1));
+            }
+        } else if (flag == "--oidc-ca-file") {
+            o.oidcCaFile = value;
+        } else if (flag == "--oidc-create-accounts") {
+            ok = value == "on" || value == "off";
+            o.oidcCreateAccounts = value == "on";
+        } else if (flag == "--public-url") {
+            ok = (value.starts_with("https://") || value.starts_with("http://")) && !value.ends_with("/");
+            o.publicUrl = value;
         } else if (flag == "--password-login") {
             ok = value == "on" || value == "off";
             o.passwordLogin = value == "on";
@@ -301,9 +340,18 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
                 "--ldap-service-password-file";
         return false;
     }
-    if (!o.passwordLogin && o.localLoginUsers.empty() && o.ldap.url.empty()) {
+    for (const auto& provider : o.oidcProviders)
+        if (provider.clientId.empty() || provider.clientSecretFile.empty() || provider.displayName.empty()) {
+            error = "--oidc-issuer " + provider.issuer + " needs --oidc-client-id, --oidc-client-secret-file and --oidc-name";
+            return false;
+        }
+    if (!o.oidcProviders.empty() && o.publicUrl.empty()) {
+        error = "--oidc-issuer needs --public-url: the address providers send people back to";
+        return false;
+    }
+    if (!o.passwordLogin && o.localLoginUsers.empty() && o.ldap.url.empty() && o.oidcProviders.empty()) {
         error = "--password-login off would let nobody log in: name the administrator's account with "
-                "--local-login-user, or give --ldap-url";
+                "--local-login-user, or give --ldap-url or --oidc-issuer";
         return false;
     }
     if (!examplesGiven && std::filesystem::is_directory("examples"))

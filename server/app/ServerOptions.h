@@ -46,6 +46,19 @@ struct ServerOptions {
     LdapSettings ldap;
     std::string ldapServicePasswordFile;
     bool ldapCreateAccounts = true;
+    // OpenID Connect sign-in (docs/sign-in.md): one entry per --oidc-issuer, the flags after it
+    // its settings. Its client secret is read from the file at start.
+    struct OidcProviderOption {
+        std::string issuer, clientId, clientSecretFile, displayName;
+        std::string roleClaim = "groups";   // the ID token claim roles are read from
+        std::vector<std::pair<std::string, std::string>> roles;   // role, a value of that claim
+    };
+    std::vector<OidcProviderOption> oidcProviders;
+    std::string oidcCaFile;           // CAs the providers' certificates chain to; empty: the system's
+    bool oidcCreateAccounts = true;
+    // The server's address as browsers reach it (https://tlmhub.uni.edu): where providers send
+    // people back to (/api/v1/auth/oidc/{name}/callback).
+    std::string publicUrl;
     // --password-login off: only the accounts named here log in with a password of this
     // server's own (the administrator's way in); everyone else signs in through the directory
     // or a provider. Directory passwords and API tokens are not affected.

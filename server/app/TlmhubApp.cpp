@@ -75,10 +75,12 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
         mDirectory = std::make_unique<LdapDirectory>(std::move(ldap));
         mDirectorySignIn = std::make_unique<DirectorySignIn>(*mDirectory, mStorage->users(), mOptions.ldapCreateAccounts);
     }
+    if (!mOptions.oidcProviders.empty())
+        mOidcSignIn = std::make_unique<OidcSignIn>(mOptions, mStorage->users(), mStorage->signIns());
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
                                  *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,
-                                 mStorage->idempotencyKeys(), *mLiveSimulations, mDirectorySignIn.get()});
+                                 mStorage->idempotencyKeys(), *mLiveSimulations, mDirectorySignIn.get(), mOidcSignIn.get()});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});

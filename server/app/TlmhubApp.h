@@ -6,6 +6,7 @@
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
 #include "server/auth/DirectorySignIn.h"
+#include "server/auth/oidc/OidcSignIn.h"
 #include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
 #include "server/http/HttpApplication.h"
@@ -92,6 +93,7 @@ private:
     std::unique_ptr<LiveSessionRegistry> mLiveSimulations;
     std::unique_ptr<LdapDirectory> mDirectory;          // only with --ldap-url
     std::unique_ptr<DirectorySignIn> mDirectorySignIn;
+    std::unique_ptr<OidcSignIn> mOidcSignIn;           // null without --oidc-issuer
     std::unique_ptr<Services> mServices;
     Router<Route> mRouter;
     StaticFiles mStaticFiles;

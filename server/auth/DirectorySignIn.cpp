@@ -4,16 +4,6 @@
 
 namespace tlmhub::server {
 
-namespace {
-
-// admin above teacher above user: the highest the mapped groups give.
-int rank(const std::string& role)
-{
-    return role == kRoleAdmin ? 2 : role == kRoleTeacher ? 1 : 0;
-}
-
-} // namespace
-
 std::string accountNameFor(const std::string& directoryName)
 {
     std::string name;
@@ -41,7 +31,7 @@ DirectorySignInResult DirectorySignIn::signIn(const std::string& username, const
     const auto& groups = mDirectory.settings().roleGroups;
     std::string role = kRoleUser;
     for (const LdapSettings::RoleGroup& group : groups)
-        if (std::ranges::find(found.groups, group.groupDn) != found.groups.end() && rank(group.role) > rank(role))
+        if (std::ranges::find(found.groups, group.groupDn) != found.groups.end() && roleRank(group.role) > roleRank(role))
             role = group.role;
 
     std::optional<User> user = mUsers.findByIdentity(mProvider, found.subject);

@@ -21,4 +21,10 @@ inline bool isValidRole(const std::string& role)
     return role == kRoleAdmin || role == kRoleTeacher || role == kRoleUser;
 }
 
+// admin above teacher above user: when several mapped groups give roles, the highest counts.
+inline int roleRank(const std::string& role)
+{
+    return role == kRoleAdmin ? 2 : role == kRoleTeacher ? 1 : 0;
+}
+
 } // namespace tlmhub::server

@@ -386,6 +386,43 @@ void to_json(nlohmann::json& j, const LoginRequest& v)
     j["password"] = v.password;
 }
 
+void from_json(const nlohmann::json& j, SignInProviders& v)
+{
+    j.at("providers").get_to(v.providers);
+    j.at("password_login").get_to(v.passwordLogin);
+}
+
+void to_json(nlohmann::json& j, const SignInProviders& v)
+{
+    j = nlohmann::json::object();
+    j["providers"] = v.providers;
+    j["password_login"] = v.passwordLogin;
+}
+
+void from_json(const nlohmann::json& j, SignInProvidersProvidersItem& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("display_name").get_to(v.displayName);
+}
+
+void to_json(nlohmann::json& j, const SignInProvidersProvidersItem& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["display_name"] = v.displayName;
+}
+
+void from_json(const nlohmann::json& j, SignInCollect& v)
+{
+    j.at("key").get_to(v.key);
+}
+
+void to_json(nlohmann::json& j, const SignInCollect& v)
+{
+    j = nlohmann::json::object();
+    j["key"] = v.key;
+}
+
 void from_json(const nlohmann::json& j, LoginResponse& v)
 {
     j.at("token").get_to(v.token);

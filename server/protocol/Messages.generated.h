@@ -128,6 +128,9 @@ struct ResultVariable;
 struct ResultsJson;
 struct ResyncEvent;
 struct ServerStats;
+struct SignInCollect;
+struct SignInProviders;
+struct SignInProvidersProvidersItem;
 struct SimulateStartRequest;
 struct SimulateStartedData;
 struct SimulateStopRequest;
@@ -372,6 +375,30 @@ struct LoginRequest {
 };
 void from_json(const nlohmann::json& j, LoginRequest& v);
 void to_json(nlohmann::json& j, const LoginRequest& v);
+
+// How people sign in: the OpenID providers configured (one button each), and whether this
+// server's own passwords log in everyone.
+struct SignInProviders {
+    std::vector<SignInProvidersProvidersItem> providers;
+    bool passwordLogin{};
+};
+void from_json(const nlohmann::json& j, SignInProviders& v);
+void to_json(nlohmann::json& j, const SignInProviders& v);
+
+struct SignInProvidersProvidersItem {
+    std::string name{};
+    std::string displayName{};
+};
+void from_json(const nlohmann::json& j, SignInProvidersProvidersItem& v);
+void to_json(nlohmann::json& j, const SignInProvidersProvidersItem& v);
+
+// The one-time key a provider sign-in's end handed to the app (in the address's fragment),
+// traded once, within a minute, for the login.
+struct SignInCollect {
+    std::string key{};
+};
+void from_json(const nlohmann::json& j, SignInCollect& v);
+void to_json(nlohmann::json& j, const SignInCollect& v);
 
 struct LoginResponse {
     std::string token{};
@@ -1694,6 +1721,9 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<ResultsJson>("ResultsJson");
     visit.template operator()<ResyncEvent>("ResyncEvent");
     visit.template operator()<ServerStats>("ServerStats");
+    visit.template operator()<SignInCollect>("SignInCollect");
+    visit.template operator()<SignInProviders>("SignInProviders");
+    visit.template operator()<SignInProvidersProvidersItem>("SignInProvidersProvidersItem");
     visit.template operator()<SimulateStartRequest>("SimulateStartRequest");
     visit.template operator()<SimulateStartedData>("SimulateStartedData");
     visit.template operator()<SimulateStopRequest>("SimulateStopRequest");

@@ -3,7 +3,9 @@
 // sign_in_attempts; OpenID Connect now, LTI's third-party-initiated login later): what the
 // answer is checked with, kept in the database so that any API node takes the answer, and
 // taken once, so a replayed answer finds nothing (its state, and with it its nonce, are
-// used). Attempts that never come back are purged once older than the wait allowed.
+// used). Once the person is signed in, a second row hands the sign-in to the browser app: a new
+// random key that the app trades once for a login, so no token appears in an address or is
+// stored here. Rows that are never taken are purged once older than the wait allowed.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -17,6 +19,7 @@ struct SignInAttempt {
     std::string nonce, codeVerifier;
     std::string returnTo;       // the app's path to go back to once signed in
     std::int64_t createdAt = 0; // unix s
+    std::int64_t userId = 0;    // a hand-over to the app: the account signed in (else 0)
 };
 
 class SignInStore {

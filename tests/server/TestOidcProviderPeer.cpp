@@ -3,7 +3,9 @@
 // pages brings the code back; the server's side (discovery, the code exchanged with the PKCE
 // verifier and the client's secret, the ID token checked against the provider's published
 // keys) takes it, and refuses a used code, a wrong verifier or nonce, and a provider it
-// cannot trust or reach.
+// cannot trust or reach. Through a running server: the start's redirect, the callback's
+// one-time hand-over to the app, the person's own account (never a local one by name), the
+// role from the groups claim, and answers replayed or made up.
 #include "ServerHarness.h"
 #include "TemporaryOidcProvider.h"
 
@@ -12,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <ctime>
+#include <filesystem>
+#include <fstream>
 
 using namespace tlmhub::server;
 using tlmhub::test::TemporaryOidcProvider;
@@ -55,7 +59,10 @@ class OidcProviderPeer : public ::testing::Test {
 protected:
     static void SetUpTestSuite()
     {
-        peer = new TemporaryOidcProvider({kRedirect}, {{"jane", R"({"name": "Jane Doe", "groups": ["teachers"]})"}});
+        serverPort = tlmhub::test::freeLoopbackPort();
+        peer = new TemporaryOidcProvider({kRedirect, serverUrl() + "/api/v1/auth/oidc/university/callback"},
+                                         {{"jane", R"({"name": "Jane Doe", "groups": ["teachers"]})"},
+                                          {"admin", R"({"preferred_username": "admin"})"}});
     }
     static void TearDownTestSuite()
     {
@@ -77,10 +84,40 @@ protected:
         return peer->signInThroughBrowser(*url, "jane");
     }
 
+    static std::string serverUrl() { return "http://127.0.0.1:" + std::to_string(serverPort); }
+
+    // A server signing in through the peer as "University", teachers' group mapped.
+    std::unique_ptr<tlmhub::test::ServerProcess> server(const std::string& name, std::vector<std::string> more = {})
+    {
+        const auto dir = tlmhub::test::freshTempDir(name);
+        const auto secret = dir.parent_path() / (name + "-client-secret");
+        std::ofstream(secret) << TemporaryOidcProvider::kClientSecret << "\n";
+        std::filesystem::permissions(secret, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+        std::vector<std::string> args = {"--listen", "127.0.0.1:" + std::to_string(serverPort), "--public-url", serverUrl(),
+                                         "--oidc-issuer", peer->issuer(), "--oidc-client-id", TemporaryOidcProvider::kClientId,
+                                         "--oidc-client-secret-file", secret.string(), "--oidc-name", "University",
+                                         "--oidc-role", "teacher=teachers", "--oidc-ca-file", peer->caFile().string()};
+        args.insert(args.end(), more.begin(), more.end());
+        return std::make_unique<tlmhub::test::ServerProcess>(dir, args);
+    }
+    // The start, the provider's pages, the callback: where the server sends the browser back to.
+    std::string signInThroughServer(const tlmhub::test::ServerProcess& server, const std::string& login)
+    {
+        tlmhub::test::HttpClient client(server.port());
+        const auto started = client.get("/api/v1/auth/oidc/university/start");
+        if (started.status != 302) throw std::runtime_error("start: " + std::to_string(started.status) + " " + started.body);
+        const std::string callback = peer->signInThroughBrowser(started.headers.at("Location"), login);
+        const auto back = client.get(callback.substr(serverUrl().size()));
+        if (back.status != 303) throw std::runtime_error("callback: " + std::to_string(back.status) + " " + back.body);
+        return back.headers.at("Location");
+    }
+
     static TemporaryOidcProvider* peer;
+    static unsigned short serverPort;
     ProviderHttp http{peer->caFile()};
 };
 TemporaryOidcProvider* OidcProviderPeer::peer = nullptr;
+unsigned short OidcProviderPeer::serverPort = 0;
 
 } // namespace
 
@@ -137,4 +174,59 @@ TEST_F(OidcProviderPeer, AProviderOfAnotherCaOrUnreachableCannotBeAskedAndSaysWh
     EXPECT_NE(error.find("cannot connect"), std::string::npos) << error;
     const auto finished = unreachable.finish("code", "verifier", "nonce", kRedirect, std::time(nullptr));
     EXPECT_EQ(refusal(finished), "provider_unavailable");
+}
+
+TEST_F(OidcProviderPeer, ThroughTheServerAPersonGetsTheirOwnAccountWithTheRoleOfTheirGroup)
+{
+    const auto running = server("oidc-server");
+    tlmhub::test::HttpClient client(running->port());
+    const auto listed = client.get("/api/v1/auth/providers").json();
+    EXPECT_EQ(listed["providers"], nlohmann::json::parse(R"([{"name": "university", "display_name": "University"}])"));
+    EXPECT_EQ(listed["password_login"], true);
+
+    const std::string back = signInThroughServer(*running, "jane");
+    const std::string prefix = serverUrl() + "/#/signed-in/";
+    ASSERT_TRUE(back.starts_with(prefix)) << back;
+    const std::string key = back.substr(prefix.size());
+    const auto collected = client.post("/api/v1/auth/oidc/collect", {{"key", key}});
+    ASSERT_EQ(collected.status, 200) << collected.body;
+    EXPECT_EQ(collected.json()["user"]["username"], "Jane_Doe");
+    EXPECT_EQ(collected.json()["user"]["role"], "teacher") << "her groups claim holds teachers";
+    EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", key}}).status, 401) << "a key is collected once";
+    tlmhub::test::HttpClient jane(running->port());
+    jane.setToken(collected.json()["token"].get<std::string>());
+    EXPECT_EQ(jane.get("/api/v1/auth/me").json()["username"], "Jane_Doe");
+
+    // The same person again: the same account, not a second one.
+    const std::string again = signInThroughServer(*running, "jane");
+    const auto second = client.post("/api/v1/auth/oidc/collect", {{"key", again.substr(prefix.size())}});
+    EXPECT_EQ(second.json()["user"]["id"], collected.json()["user"]["id"]);
+    // A provider's "admin" is not the local administrator.
+    const std::string admin = signInThroughServer(*running, "admin");
+    const auto theirs = client.post("/api/v1/auth/oidc/collect", {{"key", admin.substr(prefix.size())}});
+    EXPECT_EQ(theirs.json()["user"]["username"], "admin-2");
+    EXPECT_EQ(theirs.json()["user"]["role"], "user");
+}
+
+TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithTheReason)
+{
+    const auto running = server("oidc-replay", {"--oidc-create-accounts", "off"});
+    tlmhub::test::HttpClient client(running->port());
+    const auto started = client.get("/api/v1/auth/oidc/university/start");
+    ASSERT_EQ(started.status, 302);
+    const std::string callback = peer->signInThroughBrowser(started.headers.at("Location"), "jane");
+    const std::string failed = serverUrl() + "/#/sign-in-failed/";
+    EXPECT_EQ(client.get(callback.substr(serverUrl().size())).headers.at("Location"), failed + "no_account")
+        << "account making is off";
+    EXPECT_EQ(client.get(callback.substr(serverUrl().size())).headers.at("Location"), failed + "sign_in_failed")
+        << "the same answer twice";
+    EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?code=made-up&state=made-up").headers.at("Location"),
+              failed + "sign_in_failed");
+    // The provider's own refusal (the person cancelled) uses up the sign-in too.
+    const auto another = client.get("/api/v1/auth/oidc/university/start");
+    const std::string state = queryValue(another.headers.at("Location"), "state");
+    EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?error=access_denied&state=" + state).headers.at("Location"),
+              failed + "sign_in_failed");
+    EXPECT_EQ(client.get("/api/v1/auth/oidc/nowhere/start").status, 404);
+    EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", "made-up"}}).status, 401);
 }

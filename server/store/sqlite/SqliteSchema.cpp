@@ -289,7 +289,8 @@ void addSignInAttempts(SQLite::Database& db)
             " nonce TEXT NOT NULL,"
             " code_verifier TEXT NOT NULL,"
             " return_to TEXT NOT NULL,"
-            " created_at INTEGER NOT NULL)");
+            " created_at INTEGER NOT NULL,"
+            " user_id INTEGER NOT NULL DEFAULT 0)");
     db.exec("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");
 }
 

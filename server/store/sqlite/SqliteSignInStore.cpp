@@ -5,14 +5,15 @@ namespace tlmhub::server {
 void SqliteSignInStore::add(const SignInAttempt& attempt)
 {
     mDb.run([&](SqliteConnection& c) {
-        auto insert = c.prepared("INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, return_to, created_at)"
-                                 " VALUES(?, ?, ?, ?, ?, ?)");
+        auto insert = c.prepared("INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, return_to, created_at,"
+                                 " user_id) VALUES(?, ?, ?, ?, ?, ?, ?)");
         insert->bind(1, attempt.state);
         insert->bind(2, attempt.provider);
         insert->bind(3, attempt.nonce);
         insert->bind(4, attempt.codeVerifier);
         insert->bind(5, attempt.returnTo);
         insert->bind(6, attempt.createdAt);
+        insert->bind(7, attempt.userId);
         insert->exec();
     });
 }
@@ -21,7 +22,7 @@ std::optional<SignInAttempt> SqliteSignInStore::take(const std::string& state, s
 {
     return mDb.run([&](SqliteConnection& c) -> std::optional<SignInAttempt> {
         auto remove = c.prepared("DELETE FROM sign_in_attempts WHERE state = ?"
-                                 " RETURNING provider, nonce, code_verifier, return_to, created_at");
+                                 " RETURNING provider, nonce, code_verifier, return_to, created_at, user_id");
         remove->bind(1, state);
         if (!remove->executeStep()) return std::nullopt;
         SignInAttempt attempt{state,
@@ -29,7 +30,8 @@ std::optional<SignInAttempt> SqliteSignInStore::take(const std::string& state, s
                               remove->getColumn(1).getString(),
                               remove->getColumn(2).getString(),
                               remove->getColumn(3).getString(),
-                              remove->getColumn(4).getInt64()};
+                              remove->getColumn(4).getInt64(),
+                              remove->getColumn(5).getInt64()};
         while (remove->executeStep()) {}   // the statement runs to its end: the delete is done
         if (attempt.createdAt < notBeforeUnix) return std::nullopt;
         return attempt;

@@ -15,7 +15,7 @@ class SignInStoreConformance : public StoreTest {
 protected:
     static SignInAttempt attempt(const std::string& state, std::int64_t createdAt)
     {
-        return {state, "uni", "nonce-" + state, "verifier-" + state, "/#/models", createdAt};
+        return {state, "uni", "nonce-" + state, "verifier-" + state, "/#/models", createdAt, 0};
     }
 };
 TLMHUB_STORE_CONFORMANCE(SignInStoreConformance);
@@ -35,7 +35,12 @@ TEST_P(SignInStoreConformance, AnAttemptIsTakenOnceWithWhatItWasStartedWith)
     EXPECT_EQ(taken->createdAt, 1000);
     EXPECT_FALSE(signIns.take("s1", 900)) << "a replayed answer finds nothing";
     EXPECT_FALSE(signIns.take("unknown", 0));
+    EXPECT_EQ(taken->userId, 0);
     EXPECT_TRUE(signIns.take("s2", 900)) << "the other attempt is still there";
+    SignInAttempt handOver = attempt("h1", 1000);
+    handOver.userId = 42;
+    signIns.add(handOver);
+    EXPECT_EQ(signIns.take("h1", 900)->userId, 42);
 }
 
 TEST_P(SignInStoreConformance, AnAttemptPastItsWaitIsNotTakenAndTheUnansweredArePurged)

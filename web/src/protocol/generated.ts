@@ -166,6 +166,8 @@ export interface ProtocolDefinitions {
     Catalogue?: Catalogue;
     HealthResponse?: HealthResponse;
     LoginRequest?: LoginRequest;
+    SignInProviders?: SignInProviders;
+    SignInCollect?: SignInCollect;
     LoginResponse?: LoginResponse;
     TokenCreate?: TokenCreate;
     TokenCreated?: TokenCreated;
@@ -505,6 +507,31 @@ export interface HealthResponse {
 export interface LoginRequest {
     username: string;
     password: string;
+}
+/**
+ * How people sign in: the OpenID providers configured (one button each), and whether this server's own passwords log in everyone.
+ */
+export interface SignInProviders {
+    providers: {
+        /**
+         * In the sign-in's addresses: GET /api/v1/auth/oidc/{name}/start.
+         */
+        name: string;
+        /**
+         * The button's "Sign in with ...".
+         */
+        display_name: string;
+    }[];
+    /**
+     * False: only the accounts the administrator named log in with a password of this server's own.
+     */
+    password_login: boolean;
+}
+/**
+ * The one-time key a provider sign-in's end handed to the app (in the address's fragment), traded once, within a minute, for the login.
+ */
+export interface SignInCollect {
+    key: string;
 }
 export interface LoginResponse {
     token: string;

@@ -1,3 +1,3 @@
 // The non-template parts of Boost.Asio's TLS streams, compiled once (net/CMakeLists.txt says
-// why); only the CLI's remote commands speak TLS.
+// why): the TLS of the HTTP client (the CLI's remote commands, the server's calls to OpenID providers).
 #include <boost/asio/ssl/impl/src.hpp>

@@ -1,0 +1,86 @@
+// GET /auth/providers; the OpenID Connect sign-in: GET /auth/oidc/{name}/start, GET
+// /auth/oidc/{name}/callback, POST /auth/oidc/collect (docs/sign-in.md). All public: they
+// are how someone without a login gets one.
+#include "server/api/ApiSupport.h"
+#include "server/app/ServerOptions.h"
+#include "server/auth/oidc/OidcSignIn.h"
+
+#include <ctime>
+
+namespace tlmhub::server {
+
+namespace {
+
+Response redirect(http::status status, const std::string& location)
+{
+    Response r = textResponse(status, "", "text/plain");
+    r.set(http::field::location, location);
+    r.set(http::field::cache_control, "no-store");
+    return r;
+}
+
+std::string queryValue(const Call& call, const char* name)
+{
+    const auto it = call.params.query.find(name);
+    return it == call.params.query.end() ? std::string{} : it->second.substr(0, 4096);
+}
+
+Response providers(Services& s, Call&)
+{
+    protocol::SignInProviders body{.providers = {}, .passwordLogin = s.options.passwordLogin};
+    if (s.oidc)
+        for (const nlohmann::json& p : s.oidc->providersJson())
+            body.providers.push_back({.name = p["name"].get<std::string>(), .displayName = p["display_name"].get<std::string>()});
+    return jsonResponse(http::status::ok, body);
+}
+
+Response start(Services& s, Call& call)
+{
+    if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
+    const OidcOutcome started = s.oidc->start(call.params.path.at("name"), std::time(nullptr));
+    if (started.code == "not_found") return apiError(http::status::not_found, started.code, started.message);
+    if (!started.code.empty()) {
+        Response r = apiError(http::status::service_unavailable, started.code, started.message);
+        r.set(http::field::retry_after, "60");
+        return r;
+    }
+    return redirect(http::status::found, started.location);
+}
+
+// Back to the app whatever happened: with a one-time key, or with the reason's code.
+Response callback(Services& s, Call& call)
+{
+    if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
+    const std::string app = s.oidc->publicUrl() + "/";
+    OidcOutcome finished = s.oidc->finish(call.params.path.at("name"), queryValue(call, "code"), queryValue(call, "state"),
+                                          queryValue(call, "iss"), queryValue(call, "error"), std::time(nullptr));
+    if (finished.user && finished.user->disabled) finished = {.code = "account_disabled"};
+    if (!finished.user) return redirect(http::status::see_other, app + "#/sign-in-failed/" + finished.code);
+    return redirect(http::status::see_other, app + "#/signed-in/" + s.oidc->handOver(*finished.user, std::time(nullptr)));
+}
+
+Response collect(Services& s, Call& call)
+{
+    protocol::SignInCollect body;
+    Response error;
+    if (!readBody(call, "SignInCollect", body, error)) return error;
+    const auto userId = s.oidc ? s.oidc->collect(body.key, std::time(nullptr)) : std::nullopt;
+    const auto user = userId ? s.users.find(*userId) : std::nullopt;
+    if (!user || user->disabled)
+        return apiError(http::status::unauthorized, "unauthorized", "this sign-in has expired or was collected; sign in again");
+    const auto issued = s.tokens.issue(*user);
+    return jsonResponse(http::status::ok,
+                        protocol::LoginResponse{.token = issued.token, .expiresAt = issued.expiresAt, .user = publicUser(*user)});
+}
+
+} // namespace
+
+void addOidcRoutes(std::vector<RouteSpec>& routes)
+{
+    routes.push_back({http::verb::get, "/auth/providers", false, providers});
+    routes.push_back({http::verb::get, "/auth/oidc/{name}/start", false, start});
+    routes.push_back({http::verb::get, "/auth/oidc/{name}/callback", false, callback});
+    routes.push_back({http::verb::post, "/auth/oidc/collect", false, collect});
+}
+
+} // namespace tlmhub::server

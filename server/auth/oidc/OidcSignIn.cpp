@@ -1,0 +1,166 @@
+#include "server/auth/oidc/OidcSignIn.h"
+
+#include "server/auth/DirectorySignIn.h"
+#include "server/auth/SecretFile.h"
+#include "server/auth/Sodium.h"
+#include "server/auth/oidc/JsonMembers.h"
+
+#include <iostream>
+
+namespace tlmhub::server {
+
+namespace {
+
+// The display name's letters and digits, lower case, other runs as '-': "TU Graz" -> "tu-graz".
+std::string addressName(const std::string& displayName)
+{
+    std::string name;
+    for (const char c : displayName) {
+        const bool alnum = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+        const bool upper = c >= 'A' && c <= 'Z';
+        if (alnum || upper) name += upper ? static_cast<char>(c - 'A' + 'a') : c;
+        else if (!name.empty() && name.back() != '-') name += '-';
+    }
+    while (!name.empty() && name.back() == '-') name.pop_back();
+    return name.empty() ? "provider" : name.substr(0, 40);
+}
+
+// Whether the claim (a string or an array of strings) holds `value`.
+bool claimHolds(const nlohmann::json& claims, const std::string& claim, const std::string& value)
+{
+    const auto it = claims.find(claim);
+    if (it == claims.end()) return false;
+    if (it->is_string()) return it->get<std::string>() == value;
+    if (!it->is_array()) return false;
+    for (const nlohmann::json& item : *it)
+        if (item.is_string() && item.get<std::string>() == value) return true;
+    return false;
+}
+
+// A name for a new account: the provider's user name, else the person's name, else the
+// e-mail address's part before the @ (only for the name: accounts are never matched by it).
+std::string wantedName(const nlohmann::json& claims)
+{
+    for (const char* claim : {"preferred_username", "name"})
+        if (const std::string value = stringMember(claims, claim); !value.empty()) return value;
+    const std::string email = stringMember(claims, "email");
+    return email.empty() ? "user" : email.substr(0, email.find('@'));
+}
+
+} // namespace
+
+OidcSignIn::OidcSignIn(const ServerOptions& options, UserStore& users, SignInStore& signIns)
+    : mUsers(users), mSignIns(signIns), mPublicUrl(options.publicUrl), mCreateAccounts(options.oidcCreateAccounts),
+      mHttp(options.oidcCaFile)
+{
+    for (const ServerOptions::OidcProviderOption& option : options.oidcProviders) {
+        std::string name = addressName(option.displayName);
+        for (int n = 2; find(name); ++n) name = addressName(option.displayName) + "-" + std::to_string(n);
+        OidcProviderSettings settings{name, option.displayName, option.issuer, option.clientId,
+                                      readSecretFile(option.clientSecretFile, "OpenID client secret file")};
+        if (settings.clientSecret.empty())
+            throw std::runtime_error("OpenID client secret file " + option.clientSecretFile + " is empty");
+        mProviders.push_back({name, option, std::make_unique<OidcProvider>(std::move(settings), mHttp)});
+    }
+}
+
+nlohmann::json OidcSignIn::providersJson() const
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const Provider& provider : mProviders)
+        list.push_back({{"name", provider.name}, {"display_name", provider.option.displayName}});
+    return list;
+}
+
+OidcSignIn::Provider* OidcSignIn::find(const std::string& name)
+{
+    for (Provider& provider : mProviders)
+        if (provider.name == name) return &provider;
+    return nullptr;
+}
+
+std::string OidcSignIn::redirectUri(const Provider& provider) const
+{
+    return mPublicUrl + "/api/v1/auth/oidc/" + provider.name + "/callback";
+}
+
+OidcOutcome OidcSignIn::start(const std::string& name, std::int64_t nowUnix)
+{
+    Provider* provider = find(name);
+    if (!provider) return {.code = "not_found", .message = "no such sign-in provider"};
+    // Unanswered starts are purged after their wait; past the cap the next starts wait too.
+    if (mSignIns.purge(nowUnix - kSignInSeconds) >= kMaxPendingSignIns)
+        return {.code = "busy", .message = "too many sign-ins are under way; try again in a minute"};
+    const SignInSecrets secrets = newSignInSecrets();
+    std::string error;
+    const auto location = provider->client->authorizationUrl(secrets, redirectUri(*provider), error);
+    if (!location) {
+        std::cerr << "OpenID sign-in with " << provider->option.issuer << ": " << error << std::endl;
+        return {.code = "provider_unavailable",
+                .message = provider->option.displayName + " cannot be reached now; try again later"};
+    }
+    mSignIns.add({secrets.state, provider->name, secrets.nonce, secrets.codeVerifier, "", nowUnix, 0});
+    return {.location = *location};
+}
+
+OidcOutcome OidcSignIn::finish(const std::string& name, const std::string& code, const std::string& state,
+                               const std::string& iss, const std::string& providerError, std::int64_t nowUnix)
+{
+    // Taken whatever comes next: an answer is used once.
+    const auto attempt = state.empty() ? std::nullopt : mSignIns.take(state, nowUnix - kSignInSeconds);
+    Provider* provider = find(name);
+    if (!provider || !attempt || attempt->provider != provider->name || attempt->userId != 0)
+        return {.code = "sign_in_failed", .message = "this sign-in has expired or was used already; start again"};
+    if (!providerError.empty())
+        return {.code = "sign_in_failed", .message = provider->option.displayName + " did not sign you in (" +
+                                                     providerError.substr(0, 60) + ")"};
+    // RFC 9207: an answer naming another issuer came from another provider (a mix-up).
+    if (!iss.empty() && iss != provider->option.issuer)
+        return {.code = "sign_in_failed", .message = "the answer came from another provider"};
+    const auto outcome = provider->client->finish(code, attempt->codeVerifier, attempt->nonce, redirectUri(*provider),
+                                                  nowUnix);
+    if (const auto* refused = std::get_if<IdTokenError>(&outcome)) {
+        std::cerr << "OpenID sign-in with " << provider->option.issuer << " refused (" << refused->code
+                  << "): " << refused->message << std::endl;
+        return {.code = "sign_in_failed", .message = "the sign-in could not be checked (" + refused->code + ")"};
+    }
+    return account(*provider, std::get<IdToken>(outcome));
+}
+
+OidcOutcome OidcSignIn::account(const Provider& provider, const IdToken& token)
+{
+    std::string role = kRoleUser;
+    for (const auto& [mapped, value] : provider.option.roles)
+        if (claimHolds(token.claims, provider.option.roleClaim, value) && roleRank(mapped) > roleRank(role)) role = mapped;
+    const std::string identityProvider = "oidc " + provider.option.issuer;
+    std::optional<User> user = mUsers.findByIdentity(identityProvider, token.subject);
+    if (!user && !mCreateAccounts)
+        return {.code = "no_account",
+                .message = provider.option.displayName + " knows you, but this server makes no accounts on first "
+                                                         "sign-in; ask an administrator"};
+    if (!user) return {.user = mUsers.insertLinked(identityProvider, token.subject, accountNameFor(wantedName(token.claims)), role)};
+    // The claim decides the role when any roles are mapped (the last administrator keeps theirs).
+    if (!provider.option.roles.empty() && user->role != role) {
+        User updated;
+        UserChange change;
+        change.role = role;
+        if (mUsers.change(user->id, change, updated) == UserChangeOutcome::Changed) user = updated;
+    }
+    return {.user = user};
+}
+
+std::string OidcSignIn::handOver(const User& user, std::int64_t nowUnix)
+{
+    const std::string key = newSignInSecrets().state;
+    mSignIns.add({key, "", "", "", "", nowUnix, user.id});
+    return key;
+}
+
+std::optional<std::int64_t> OidcSignIn::collect(const std::string& key, std::int64_t nowUnix)
+{
+    const auto handed = mSignIns.take(key, nowUnix - kHandOverSeconds);
+    if (!handed || handed->userId == 0) return std::nullopt;
+    return handed->userId;
+}
+
+} // namespace tlmhub::server
