@@ -126,8 +126,10 @@ paths = {
                                body=json_body("LoginRequest"), public=True, tag="auth")},
     "/auth/providers": {"get": op("How to sign in: the OpenID providers, and whether local passwords log in everyone",
                                   ok("The sign-in methods", "SignInProviders"), public=True, tag="auth")},
-    "/auth/oidc/{name}/start": {"get": op("Start a sign-in with an OpenID provider: a redirect to it (302)",
-                                          {"302": {"description": "To the provider"}, **errors("404", "503")},
+    "/auth/oidc/{name}/start": {"get": op("Start a sign-in with an OpenID provider: a redirect to it (302), or "
+                                          "back to the app (303) when it cannot be asked now",
+                                          {"302": {"description": "To the provider"},
+                                           "303": {"description": "To the app's #/sign-in-failed/CODE"}, **errors("404")},
                                           public=True, tag="auth")},
     "/auth/oidc/{name}/callback": {"get": op(
         "The provider's answer (code, state, iss, or error): a redirect (303) to the app with a one-time key "

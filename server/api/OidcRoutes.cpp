@@ -39,11 +39,9 @@ Response start(Services& s, Call& call)
     if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
     const OidcOutcome started = s.oidc->start(call.params.path.at("name"), std::time(nullptr));
     if (started.code == "not_found") return apiError(http::status::not_found, started.code, started.message);
-    if (!started.code.empty()) {
-        Response r = apiError(http::status::service_unavailable, started.code, started.message);
-        r.set(http::field::retry_after, "60");
-        return r;
-    }
+    // A browser's navigation: a refusal goes back to the login page, which says what to do.
+    if (!started.code.empty())
+        return redirect(http::status::see_other, s.oidc->publicUrl() + "/#/sign-in-failed/" + started.code);
     return redirect(http::status::found, started.location);
 }
 

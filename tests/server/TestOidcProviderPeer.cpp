@@ -210,7 +210,14 @@ TEST_F(OidcProviderPeer, ThroughTheServerAPersonGetsTheirOwnAccountWithTheRoleOf
 
 TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithTheReason)
 {
-    const auto running = server("oidc-replay", {"--oidc-create-accounts", "off"});
+    // A second provider that cannot be reached.
+    const auto secret = tlmhub::test::freshTempDir("oidc-down-secret") / "secret";
+    std::ofstream(secret) << "secret\n";
+    std::filesystem::permissions(secret, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+    const auto running = server("oidc-replay", {"--oidc-create-accounts", "off", "--oidc-issuer",
+                                                "https://127.0.0.1:" + std::to_string(tlmhub::test::freeLoopbackPort()),
+                                                "--oidc-client-id", "tlmhub", "--oidc-client-secret-file", secret.string(),
+                                                "--oidc-name", "Down"});
     tlmhub::test::HttpClient client(running->port());
     const auto started = client.get("/api/v1/auth/oidc/university/start");
     ASSERT_EQ(started.status, 302);
@@ -228,5 +235,8 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
     EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?error=access_denied&state=" + state).headers.at("Location"),
               failed + "sign_in_failed");
     EXPECT_EQ(client.get("/api/v1/auth/oidc/nowhere/start").status, 404);
+    const auto down = client.get("/api/v1/auth/oidc/down/start");
+    EXPECT_EQ(down.status, 303) << down.body;
+    EXPECT_EQ(down.headers.at("Location"), failed + "provider_unavailable") << "the browser goes back to the login page";
     EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", "made-up"}}).status, 401);
 }

@@ -79,6 +79,25 @@ async function route(): Promise<void> {
     labPage?.dispose();
     labPage = null;
     currentHash = hash;
+    // The end of a sign-in through a provider: the one-time key, taken out of the history at once.
+    const signedIn = /^#\/signed-in\/([A-Za-z0-9_-]+)$/.exec(hash);
+    const signInFailed = /^#\/sign-in-failed\/([a-z_]+)$/.exec(hash);
+    if (signedIn || signInFailed) {
+        history.replaceState(null, '', '#/login');
+        currentHash = '#/login';
+        let failure = signInFailed?.[1];
+        if (signedIn) {
+            try {
+                await session.collectSignIn(signedIn[1]);
+                location.hash = '#/models';
+                return;
+            } catch {
+                failure = 'expired';
+            }
+        }
+        renderLogin(page, session, () => { location.hash = '#/models'; }, failure);
+        return;
+    }
     if (!session.user && !(await session.restore()) && hash !== '#/login') {
         location.hash = '#/login';
         return;

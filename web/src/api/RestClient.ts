@@ -1,7 +1,7 @@
 // REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
 import { ApiError } from './ApiError';
 import type {
-    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, Preferences, ResultsJson, User,
+    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, Preferences, ResultsJson, SignInProviders, User,
 } from '../protocol/types';
 
 export interface LoginResult { token: string; expires_at: number; user: User }
@@ -81,6 +81,10 @@ export class RestClient {
     login(username: string, password: string): Promise<LoginResult> {
         return this.call('POST', '/auth/login', { username, password });
     }
+    /** How to sign in: the OpenID providers' buttons, and whether passwords log in everyone. */
+    signInProviders(): Promise<SignInProviders> { return this.call('GET', '/auth/providers'); }
+    /** The login of a provider sign-in, by the one-time key its end handed to the app. */
+    collectSignIn(key: string): Promise<LoginResult> { return this.call('POST', '/auth/oidc/collect', { key }); }
     logout(): Promise<void> { return this.call('POST', '/auth/logout'); }
     me(): Promise<User> { return this.call('GET', '/auth/me'); }
     changePassword(oldPassword: string, newPassword: string): Promise<void> {

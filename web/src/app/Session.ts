@@ -1,5 +1,5 @@
 // The logged-in user: token kept in sessionStorage (per tab) so a reload stays logged in.
-import { RestClient } from '../api/RestClient';
+import { RestClient, type LoginResult } from '../api/RestClient';
 import { LabClient } from '../labs/LabClient';
 import type { User } from '../protocol/types';
 import { UnitPreferences } from '../run/unitPreferences';
@@ -25,7 +25,15 @@ export class Session {
     get token(): string | null { return this.rest.getToken(); }
 
     async login(username: string, password: string): Promise<User> {
-        const result = await this.rest.login(username, password);
+        return this.adopt(await this.rest.login(username, password));
+    }
+
+    /** Finishes a sign-in through a provider: the key of #/signed-in/KEY, traded once. */
+    async collectSignIn(key: string): Promise<User> {
+        return this.adopt(await this.rest.collectSignIn(key));
+    }
+
+    private adopt(result: LoginResult): User {
         // another user may have been logged in in this tab
         this.units.forget();
         this.rest.setToken(result.token);
