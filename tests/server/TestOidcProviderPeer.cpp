@@ -238,5 +238,7 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
     const auto down = client.get("/api/v1/auth/oidc/down/start");
     EXPECT_EQ(down.status, 303) << down.body;
     EXPECT_EQ(down.headers.at("Location"), failed + "provider_unavailable") << "the browser goes back to the login page";
+    EXPECT_EQ(client.post("/api/v1/auth/login", {{"username", "admin"}, {"password", tlmhub::test::kAdminPassword}}).status, 200)
+        << "local logins are not affected";
     EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", "made-up"}}).status, 401);
 }
