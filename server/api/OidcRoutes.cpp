@@ -6,6 +6,7 @@
 #include "server/auth/oidc/OidcSignIn.h"
 
 #include <ctime>
+#include <iostream>
 
 namespace tlmhub::server {
 
@@ -17,6 +18,17 @@ Response redirect(http::status status, const std::string& location)
     r.set(http::field::location, location);
     r.set(http::field::cache_control, "no-store");
     return r;
+}
+
+// A refused sign-in's details go to the server's log only (as JSON text: a control character in
+// what the provider or the browser sent cannot forge a log line).
+void logRefusal(const std::string& provider, const OidcOutcome& refused)
+{
+    const auto text = [](const std::string& s) {
+        return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    };
+    std::cerr << "OpenID sign-in with " << text(provider) << " refused (" << refused.code << "): " << text(refused.message)
+              << std::endl;
 }
 
 std::string queryValue(const Call& call, const char* name)
@@ -37,9 +49,10 @@ Response providers(Services& s, Call&)
 Response start(Services& s, Call& call)
 {
     if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
-    const OidcOutcome started = s.oidc->start(call.params.path.at("name"), std::time(nullptr));
+    const OidcOutcome started = s.oidc->start(call.params.path.at("name"), call.clientAddress, std::time(nullptr));
     if (started.code == "not_found") return apiError(http::status::not_found, started.code, started.message);
     // A browser's navigation: a refusal goes back to the login page, which says what to do.
+    if (!started.code.empty()) logRefusal(call.params.path.at("name"), started);
     if (!started.code.empty())
         return redirect(http::status::see_other, s.oidc->publicUrl() + "/#/sign-in-failed/" + started.code);
     return redirect(http::status::found, started.location);
@@ -52,8 +65,11 @@ Response callback(Services& s, Call& call)
     const std::string app = s.oidc->publicUrl() + "/";
     OidcOutcome finished = s.oidc->finish(call.params.path.at("name"), queryValue(call, "code"), queryValue(call, "state"),
                                           queryValue(call, "iss"), queryValue(call, "error"), std::time(nullptr));
-    if (finished.user && finished.user->disabled) finished = {.code = "account_disabled"};
-    if (!finished.user) return redirect(http::status::see_other, app + "#/sign-in-failed/" + finished.code);
+    if (finished.user && finished.user->disabled) finished = OidcOutcome::refused("account_disabled", "the account is disabled");
+    if (!finished.user) {
+        logRefusal(call.params.path.at("name"), finished);
+        return redirect(http::status::see_other, app + "#/sign-in-failed/" + finished.code);
+    }
     return redirect(http::status::see_other, app + "#/signed-in/" + s.oidc->handOver(*finished.user, std::time(nullptr)));
 }
 

@@ -262,7 +262,7 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             o.ldapCreateAccounts = value == "on";
         } else if (flag == "--oidc-issuer") {
             ok = value.starts_with("https://") && value.size() > 8;
-            o.oidcProviders.push_back({.issuer = value});
+            o.oidcProviders.emplace_back().issuer = value;
         } else if (flag == "--oidc-client-id" || flag == "--oidc-client-secret-file" || flag == "--oidc-name" ||
                    flag == "--oidc-role" || flag == "--oidc-role-claim") {
             if (o.oidcProviders.empty()) {

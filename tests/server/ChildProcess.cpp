@@ -99,4 +99,13 @@ int waitUntil(int pid, std::chrono::steady_clock::time_point deadline)
     }
 }
 
+void stopChild(int pid, std::chrono::seconds grace)
+{
+    ::kill(pid, SIGTERM);
+    if (waitUntil(pid, std::chrono::steady_clock::now() + grace) == -1) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+    }
+}
+
 } // namespace tlmhub::test

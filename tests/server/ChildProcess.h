@@ -30,5 +30,7 @@ int spawn(const std::vector<std::string>& args, const std::filesystem::path& log
 
 // Waits for `pid` until `deadline`; returns its wait status, or -1 (still running) at the deadline.
 int waitUntil(int pid, std::chrono::steady_clock::time_point deadline);
+// Stops `pid` and reaps it: SIGTERM, then SIGKILL when it has not ended within `grace`.
+void stopChild(int pid, std::chrono::seconds grace);
 
 } // namespace tlmhub::test

@@ -107,7 +107,9 @@ ServerProcess::ServerProcess(const std::filesystem::path& dataDir, std::vector<s
     args.insert(args.begin(), launcher.begin(), launcher.end());
     mPid = ::fork();
     if (mPid == 0) {
+        // Its log, both streams: what it reports (stdout) and what went wrong (stderr).
         ::dup2(fds[1], STDOUT_FILENO);
+        ::dup2(fds[1], STDERR_FILENO);
         ::close(fds[0]);
         ::close(fds[1]);
         ::setenv("TLMHUB_ADMIN_PASSWORD", kAdminPassword, 1);

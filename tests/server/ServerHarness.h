@@ -39,7 +39,8 @@ public:
 
     unsigned short port() const { return mPort; }
     int pid() const { return mPid; }   // -1 once it has ended
-    // What it printed up to "listening on", and after kill9() or terminate() everything.
+    // What it printed (stdout and stderr) up to "listening on", and after kill9() or terminate()
+    // everything.
     const std::string& output() const { return mOutput; }
     void kill9();          // crash: no cleanup at all
     int terminate();       // SIGTERM, wait; returns the exit status

@@ -10,10 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <csignal>
 #include <fstream>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -66,8 +64,7 @@ TemporaryOidcProvider::TemporaryOidcProvider(const std::vector<std::string>& red
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         if (logTail().find("ready") != std::string::npos) return;
         // Ended (the port taken meanwhile) or too slow: again on another port, while there is time.
-        ::kill(mPid, SIGKILL);
-        ::waitpid(mPid, nullptr, 0);
+        stopChild(mPid, std::chrono::seconds(0));
         mPid = -1;
         if (Clock::now() >= deadline || attempt == 3) {
             const std::string log = logTail();
@@ -79,13 +76,7 @@ TemporaryOidcProvider::TemporaryOidcProvider(const std::vector<std::string>& red
 
 TemporaryOidcProvider::~TemporaryOidcProvider()
 {
-    if (mPid > 0) {
-        ::kill(mPid, SIGTERM);
-        if (waitUntil(mPid, Clock::now() + std::chrono::seconds(10)) == -1) {
-            ::kill(mPid, SIGKILL);
-            ::waitpid(mPid, nullptr, 0);
-        }
-    }
+    if (mPid > 0) stopChild(mPid, std::chrono::seconds(10));
     std::error_code ec;
     std::filesystem::remove_all(mDir, ec);
 }

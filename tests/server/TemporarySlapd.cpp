@@ -113,8 +113,7 @@ TemporarySlapd::TemporarySlapd(const std::string& ldif)
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         if (accepts(mPort) && accepts(mTlsPort)) return;
         // Ended (a port taken meanwhile) or too slow: again with other ports, while there is time.
-        ::kill(mPid, SIGKILL);
-        ::waitpid(mPid, nullptr, 0);
+        stopChild(mPid, std::chrono::seconds(0));
         mPid = -1;
         if (Clock::now() >= deadline || attempt == 3) {
             const std::string log = logTail();
@@ -126,13 +125,7 @@ TemporarySlapd::TemporarySlapd(const std::string& ldif)
 
 TemporarySlapd::~TemporarySlapd()
 {
-    if (mPid > 0) {
-        ::kill(mPid, SIGTERM);
-        if (waitUntil(mPid, Clock::now() + std::chrono::seconds(10)) == -1) {
-            ::kill(mPid, SIGKILL);
-            ::waitpid(mPid, nullptr, 0);
-        }
-    }
+    if (mPid > 0) stopChild(mPid, std::chrono::seconds(10));
     std::error_code ec;
     std::filesystem::remove_all(mDir, ec);
 }

@@ -241,4 +241,14 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
     EXPECT_EQ(client.post("/api/v1/auth/login", {{"username", "admin"}, {"password", tlmhub::test::kAdminPassword}}).status, 200)
         << "local logins are not affected";
     EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", "made-up"}}).status, 401);
+    // An answer naming another issuer came from another provider (RFC 9207's mix-up).
+    const auto mixed = client.get("/api/v1/auth/oidc/university/start");
+    EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?code=x&iss=https%3A%2F%2Fevil.example.com&state=" +
+                         queryValue(mixed.headers.at("Location"), "state")).headers.at("Location"),
+              failed + "sign_in_failed");
+    // Each refusal's details are in the server's log, and only there.
+    running->terminate();
+    for (const char* logged : {"(no_account)", "has expired or was used", "the provider answered access_denied",
+                               "another provider", "(provider_unavailable)"})
+        EXPECT_NE(running->output().find(logged), std::string::npos) << logged << "\n" << running->output();
 }

@@ -5,8 +5,6 @@
 #include "server/auth/Sodium.h"
 #include "server/auth/oidc/JsonMembers.h"
 
-#include <iostream>
-
 namespace tlmhub::server {
 
 namespace {
@@ -84,23 +82,22 @@ std::string OidcSignIn::redirectUri(const Provider& provider) const
     return mPublicUrl + "/api/v1/auth/oidc/" + provider.name + "/callback";
 }
 
-OidcOutcome OidcSignIn::start(const std::string& name, std::int64_t nowUnix)
+OidcOutcome OidcSignIn::start(const std::string& name, const std::string& clientAddress, std::int64_t nowUnix)
 {
     Provider* provider = find(name);
-    if (!provider) return {.code = "not_found", .message = "no such sign-in provider"};
+    if (!provider) return OidcOutcome::refused("not_found", "no such sign-in provider");
+    if (!mStartsPerAddress.allowed(clientAddress))
+        return OidcOutcome::refused("busy", "too many sign-ins started from " + clientAddress);
+    mStartsPerAddress.recordFailure(clientAddress);   // counts the start
     // Unanswered starts are purged after their wait; past the cap the next starts wait too.
     if (mSignIns.purge(nowUnix - kSignInSeconds) >= kMaxPendingSignIns)
-        return {.code = "busy", .message = "too many sign-ins are under way; try again in a minute"};
+        return OidcOutcome::refused("busy", "10,000 sign-ins are under way");
     const SignInSecrets secrets = newSignInSecrets();
     std::string error;
     const auto location = provider->client->authorizationUrl(secrets, redirectUri(*provider), error);
-    if (!location) {
-        std::cerr << "OpenID sign-in with " << provider->option.issuer << ": " << error << std::endl;
-        return {.code = "provider_unavailable",
-                .message = provider->option.displayName + " cannot be reached now; try again later"};
-    }
+    if (!location) return OidcOutcome::refused("provider_unavailable", provider->option.issuer + ": " + error);
     mSignIns.add({secrets.state, provider->name, secrets.nonce, secrets.codeVerifier, "", nowUnix, 0});
-    return {.location = *location};
+    return OidcOutcome::sendTo(*location);
 }
 
 OidcOutcome OidcSignIn::finish(const std::string& name, const std::string& code, const std::string& state,
@@ -110,20 +107,16 @@ OidcOutcome OidcSignIn::finish(const std::string& name, const std::string& code,
     const auto attempt = state.empty() ? std::nullopt : mSignIns.take(state, nowUnix - kSignInSeconds);
     Provider* provider = find(name);
     if (!provider || !attempt || attempt->provider != provider->name || attempt->userId != 0)
-        return {.code = "sign_in_failed", .message = "this sign-in has expired or was used already; start again"};
+        return OidcOutcome::refused("sign_in_failed", "this sign-in has expired or was used already; start again");
     if (!providerError.empty())
-        return {.code = "sign_in_failed", .message = provider->option.displayName + " did not sign you in (" +
-                                                     providerError.substr(0, 60) + ")"};
+        return OidcOutcome::refused("sign_in_failed", "the provider answered " + providerError.substr(0, 60));
     // RFC 9207: an answer naming another issuer came from another provider (a mix-up).
     if (!iss.empty() && iss != provider->option.issuer)
-        return {.code = "sign_in_failed", .message = "the answer came from another provider"};
+        return OidcOutcome::refused("sign_in_failed", "the answer came from another provider");
     const auto outcome = provider->client->finish(code, attempt->codeVerifier, attempt->nonce, redirectUri(*provider),
                                                   nowUnix);
-    if (const auto* refused = std::get_if<IdTokenError>(&outcome)) {
-        std::cerr << "OpenID sign-in with " << provider->option.issuer << " refused (" << refused->code
-                  << "): " << refused->message << std::endl;
-        return {.code = "sign_in_failed", .message = "the sign-in could not be checked (" + refused->code + ")"};
-    }
+    if (const auto* refused = std::get_if<IdTokenError>(&outcome))
+        return OidcOutcome::refused("sign_in_failed", refused->code + ": " + refused->message);
     return account(*provider, std::get<IdToken>(outcome));
 }
 
@@ -135,10 +128,10 @@ OidcOutcome OidcSignIn::account(const Provider& provider, const IdToken& token)
     const std::string identityProvider = "oidc " + provider.option.issuer;
     std::optional<User> user = mUsers.findByIdentity(identityProvider, token.subject);
     if (!user && !mCreateAccounts)
-        return {.code = "no_account",
-                .message = provider.option.displayName + " knows you, but this server makes no accounts on first "
-                                                         "sign-in; ask an administrator"};
-    if (!user) return {.user = mUsers.insertLinked(identityProvider, token.subject, accountNameFor(wantedName(token.claims)), role)};
+        return OidcOutcome::refused("no_account", "no account is made on first sign-in (--oidc-create-accounts off)");
+    if (!user)
+        return OidcOutcome::signedIn(
+            mUsers.insertLinked(identityProvider, token.subject, accountNameFor(wantedName(token.claims)), role));
     // The claim decides the role when any roles are mapped (the last administrator keeps theirs).
     if (!provider.option.roles.empty() && user->role != role) {
         User updated;
@@ -146,7 +139,7 @@ OidcOutcome OidcSignIn::account(const Provider& provider, const IdToken& token)
         change.role = role;
         if (mUsers.change(user->id, change, updated) == UserChangeOutcome::Changed) user = updated;
     }
-    return {.user = user};
+    return OidcOutcome::signedIn(*user);
 }
 
 std::string OidcSignIn::handOver(const User& user, std::int64_t nowUnix)

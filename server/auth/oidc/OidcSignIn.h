@@ -7,6 +7,7 @@
 // role the configured claim gives. The login then goes to the browser app by a one-time
 // hand-over key, traded once for a login, so no token appears in an address.
 #include "server/app/ServerOptions.h"
+#include "server/auth/LoginRateLimiter.h"
 #include "server/auth/User.h"
 #include "server/auth/oidc/OidcProvider.h"
 #include "server/auth/oidc/ProviderHttp.h"
@@ -26,7 +27,16 @@ namespace tlmhub::server {
 struct OidcOutcome {
     std::optional<User> user;   // signed in
     std::string location;       // start: where the browser goes
-    std::string code, message;  // else why not (not_found, provider_unavailable, busy, sign_in_failed, no_account)
+    // else why not: the code (not_found, provider_unavailable, busy, sign_in_failed, no_account)
+    // for the person, the message with the details for the server's log
+    std::string code, message;
+
+    static OidcOutcome signedIn(User user) { return {std::move(user), {}, {}, {}}; }
+    static OidcOutcome sendTo(std::string location) { return {std::nullopt, std::move(location), {}, {}}; }
+    static OidcOutcome refused(std::string code, std::string message)
+    {
+        return {std::nullopt, {}, std::move(code), std::move(message)};
+    }
 };
 
 class OidcSignIn {
@@ -36,8 +46,9 @@ public:
 
     // [{name, display_name}] in the order configured.
     nlohmann::json providersJson() const;
-    // The provider's authorization address for a new sign-in.
-    OidcOutcome start(const std::string& name, std::int64_t nowUnix);
+    // The provider's authorization address for a new sign-in from `clientAddress` (busy past
+    // kMaxStartsPerAddress in kStartWindow, so one address cannot use up the pending sign-ins).
+    OidcOutcome start(const std::string& name, const std::string& clientAddress, std::int64_t nowUnix);
     // The provider's answer (the callback's query: code, state, iss, error): the account.
     OidcOutcome finish(const std::string& name, const std::string& code, const std::string& state,
                        const std::string& iss, const std::string& providerError, std::int64_t nowUnix);
@@ -51,6 +62,9 @@ public:
     static constexpr std::int64_t kSignInSeconds = 600;   // from the start to the provider's answer
     static constexpr std::int64_t kHandOverSeconds = 60;
     static constexpr std::size_t kMaxPendingSignIns = 10'000;
+    // A class of 40 behind one address, each starting a few times, stays far below.
+    static constexpr int kMaxStartsPerAddress = 300;
+    static constexpr std::chrono::minutes kStartWindow{10};
 
 private:
     struct Provider {
@@ -69,6 +83,7 @@ private:
     const bool mCreateAccounts;
     ProviderHttp mHttp;
     std::vector<Provider> mProviders;
+    LoginRateLimiter mStartsPerAddress{kMaxStartsPerAddress, kStartWindow};
 };
 
 } // namespace tlmhub::server
