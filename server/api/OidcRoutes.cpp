@@ -52,9 +52,10 @@ Response start(Services& s, Call& call)
     const OidcOutcome started = s.oidc->start(call.params.path.at("name"), call.clientAddress, std::time(nullptr));
     if (started.code == "not_found") return apiError(http::status::not_found, started.code, started.message);
     // A browser's navigation: a refusal goes back to the login page, which says what to do.
-    if (!started.code.empty()) logRefusal(call.params.path.at("name"), started);
-    if (!started.code.empty())
+    if (!started.code.empty()) {
+        logRefusal(call.params.path.at("name"), started);
         return redirect(http::status::see_other, s.oidc->publicUrl() + "/#/sign-in-failed/" + started.code);
+    }
     return redirect(http::status::found, started.location);
 }
 

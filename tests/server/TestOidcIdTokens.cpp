@@ -258,7 +258,7 @@ TEST_F(OidcIdTokens, ARotatedKeyIsFetchedAtOnceButUnknownKeysAtMostOncePerMinute
     EXPECT_EQ(provider.fetches, 4);
 
     // the old key withdrawn: after the set's hour its tokens are refused
-    provider.published["keys"] = {rotated.jwk()};
+    provider.published["keys"] = nlohmann::json::array({rotated.jwk()});
     EXPECT_EQ(refusal(verifyIdToken(sRsa->sign(validClaims()), keys, expectations(), later + std::chrono::seconds(62))), "")
         << "within the hour the kept set still holds it";
     EXPECT_EQ(refusal(verifyIdToken(sRsa->sign(validClaims()), keys, expectations(), start + std::chrono::hours(2))),
