@@ -31,6 +31,30 @@ void logRefusal(const std::string& provider, const OidcOutcome& refused)
               << std::endl;
 }
 
+// The cookie that ties a provider's answer to the browser that started the sign-in: HttpOnly,
+// sent only to these routes, Lax so that the provider's redirect back (a top-level GET) carries it.
+constexpr const char* kSignInCookie = "tlmhub_sign_in";
+
+std::string signInCookie(const std::string& value, const std::string& publicUrl, int maxAgeSeconds)
+{
+    return std::string(kSignInCookie) + "=" + value + "; Path=/api/v1/auth/oidc; Max-Age=" +
+           std::to_string(maxAgeSeconds) + "; HttpOnly; SameSite=Lax" + (publicUrl.starts_with("https://") ? "; Secure" : "");
+}
+
+// The sign-in cookie's value in the request; "" without one.
+std::string signInCookieValue(const Call& call)
+{
+    const std::string cookies(call.request[http::field::cookie]);
+    const std::string prefix = std::string(kSignInCookie) + "=";
+    for (std::size_t at = 0; at < cookies.size();) {
+        while (at < cookies.size() && (cookies[at] == ' ' || cookies[at] == ';')) ++at;
+        const std::size_t end = std::min(cookies.find(';', at), cookies.size());
+        if (cookies.compare(at, prefix.size(), prefix) == 0) return cookies.substr(at + prefix.size(), end - at - prefix.size());
+        at = end;
+    }
+    return {};
+}
+
 std::string queryValue(const Call& call, const char* name)
 {
     const auto it = call.params.query.find(name);
@@ -56,7 +80,10 @@ Response start(Services& s, Call& call)
         logRefusal(call.params.path.at("name"), started);
         return redirect(http::status::see_other, s.oidc->publicUrl() + "/#/sign-in-failed/" + started.code);
     }
-    return redirect(http::status::found, started.location);
+    Response r = redirect(http::status::found, started.location);
+    r.set(http::field::set_cookie,
+          signInCookie(started.browserKey, s.oidc->publicUrl(), static_cast<int>(OidcSignIn::kSignInSeconds)));
+    return r;
 }
 
 // Back to the app whatever happened: with a one-time key, or with the reason's code.
@@ -65,13 +92,15 @@ Response callback(Services& s, Call& call)
     if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
     const std::string app = s.oidc->publicUrl() + "/";
     OidcOutcome finished = s.oidc->finish(call.params.path.at("name"), queryValue(call, "code"), queryValue(call, "state"),
-                                          queryValue(call, "iss"), queryValue(call, "error"), std::time(nullptr));
+                                          queryValue(call, "iss"), queryValue(call, "error"), signInCookieValue(call),
+                                          std::time(nullptr));
     if (finished.user && finished.user->disabled) finished = OidcOutcome::refused("account_disabled", "the account is disabled");
-    if (!finished.user) {
-        logRefusal(call.params.path.at("name"), finished);
-        return redirect(http::status::see_other, app + "#/sign-in-failed/" + finished.code);
-    }
-    return redirect(http::status::see_other, app + "#/signed-in/" + s.oidc->handOver(*finished.user, std::time(nullptr)));
+    Response r = finished.user
+        ? redirect(http::status::see_other, app + "#/signed-in/" + s.oidc->handOver(*finished.user, std::time(nullptr)))
+        : redirect(http::status::see_other, app + "#/sign-in-failed/" + finished.code);
+    if (!finished.user) logRefusal(call.params.path.at("name"), finished);
+    r.set(http::field::set_cookie, signInCookie("", s.oidc->publicUrl(), 0));   // used: forgotten
+    return r;
 }
 
 Response collect(Services& s, Call& call)

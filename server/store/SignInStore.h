@@ -17,7 +17,9 @@ struct SignInAttempt {
     std::string state;          // the key: the random value the provider hands back
     std::string provider;       // the configured provider's name
     std::string nonce, codeVerifier;
-    std::string returnTo;       // the app's path to go back to once signed in
+    // The random value of the cookie the start gave the browser: the answer is taken only from
+    // that browser (no login CSRF: someone else's answer pushed into this browser)
+    std::string browserKey;
     std::int64_t createdAt = 0; // unix s
     std::int64_t userId = 0;    // a hand-over to the app: the account signed in (else 0)
 };

@@ -100,13 +100,20 @@ protected:
         args.insert(args.end(), more.begin(), more.end());
         return std::make_unique<tlmhub::test::ServerProcess>(dir, args);
     }
+    // A browser at the server: the start, keeping its sign-in cookie; returns the provider's address.
+    static std::string startIn(tlmhub::test::HttpClient& browser)
+    {
+        const auto started = browser.get("/api/v1/auth/oidc/university/start");
+        if (started.status != 302) throw std::runtime_error("start: " + std::to_string(started.status) + " " + started.body);
+        const std::string cookie = started.headers.at("Set-Cookie");
+        browser.addHeader("Cookie", cookie.substr(0, cookie.find(';')));
+        return started.headers.at("Location");
+    }
     // The start, the provider's pages, the callback: where the server sends the browser back to.
     std::string signInThroughServer(const tlmhub::test::ServerProcess& server, const std::string& login)
     {
         tlmhub::test::HttpClient client(server.port());
-        const auto started = client.get("/api/v1/auth/oidc/university/start");
-        if (started.status != 302) throw std::runtime_error("start: " + std::to_string(started.status) + " " + started.body);
-        const std::string callback = peer->signInThroughBrowser(started.headers.at("Location"), login);
+        const std::string callback = peer->signInThroughBrowser(startIn(client), login);
         const auto back = client.get(callback.substr(serverUrl().size()));
         if (back.status != 303) throw std::runtime_error("callback: " + std::to_string(back.status) + " " + back.body);
         return back.headers.at("Location");
@@ -219,10 +226,14 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
                                                 "--oidc-client-id", "tlmhub", "--oidc-client-secret-file", secret.string(),
                                                 "--oidc-name", "Down"});
     tlmhub::test::HttpClient client(running->port());
-    const auto started = client.get("/api/v1/auth/oidc/university/start");
-    ASSERT_EQ(started.status, 302);
-    const std::string callback = peer->signInThroughBrowser(started.headers.at("Location"), "jane");
     const std::string failed = serverUrl() + "/#/sign-in-failed/";
+    // Someone signs in and sends the answer on to another browser (a login CSRF): refused there.
+    tlmhub::test::HttpClient attacker(running->port());
+    const std::string pushed = peer->signInThroughBrowser(startIn(attacker), "jane");
+    tlmhub::test::HttpClient victim(running->port());
+    EXPECT_EQ(victim.get(pushed.substr(serverUrl().size())).headers.at("Location"), failed + "sign_in_failed");
+
+    const std::string callback = peer->signInThroughBrowser(startIn(client), "jane");
     EXPECT_EQ(client.get(callback.substr(serverUrl().size())).headers.at("Location"), failed + "no_account")
         << "account making is off";
     EXPECT_EQ(client.get(callback.substr(serverUrl().size())).headers.at("Location"), failed + "sign_in_failed")
@@ -230,9 +241,10 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
     EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?code=made-up&state=made-up").headers.at("Location"),
               failed + "sign_in_failed");
     // The provider's own refusal (the person cancelled) uses up the sign-in too.
-    const auto another = client.get("/api/v1/auth/oidc/university/start");
-    const std::string state = queryValue(another.headers.at("Location"), "state");
-    EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?error=access_denied&state=" + state).headers.at("Location"),
+    tlmhub::test::HttpClient cancelling(running->port());
+    const std::string state = queryValue(startIn(cancelling), "state");
+    EXPECT_EQ(cancelling.get("/api/v1/auth/oidc/university/callback?error=access_denied&state=" + state)
+                  .headers.at("Location"),
               failed + "sign_in_failed");
     EXPECT_EQ(client.get("/api/v1/auth/oidc/nowhere/start").status, 404);
     const auto down = client.get("/api/v1/auth/oidc/down/start");
@@ -242,13 +254,14 @@ TEST_F(OidcProviderPeer, ReplayedMadeUpOrRefusedAnswersSendTheBrowserBackWithThe
         << "local logins are not affected";
     EXPECT_EQ(client.post("/api/v1/auth/oidc/collect", {{"key", "made-up"}}).status, 401);
     // An answer naming another issuer came from another provider (RFC 9207's mix-up).
-    const auto mixed = client.get("/api/v1/auth/oidc/university/start");
-    EXPECT_EQ(client.get("/api/v1/auth/oidc/university/callback?code=x&iss=https%3A%2F%2Fevil.example.com&state=" +
-                         queryValue(mixed.headers.at("Location"), "state")).headers.at("Location"),
+    tlmhub::test::HttpClient mixedUp(running->port());
+    const std::string mixedState = queryValue(startIn(mixedUp), "state");
+    EXPECT_EQ(mixedUp.get("/api/v1/auth/oidc/university/callback?code=x&iss=https%3A%2F%2Fevil.example.com&state=" +
+                          mixedState).headers.at("Location"),
               failed + "sign_in_failed");
     // Each refusal's details are in the server's log, and only there.
     running->terminate();
-    for (const char* logged : {"(no_account)", "has expired or was used", "the provider answered access_denied",
-                               "another provider", "(provider_unavailable)"})
+    for (const char* logged : {"another browser", "(no_account)", "has expired or was used",
+                               "the provider answered access_denied", "another provider", "(provider_unavailable)"})
         EXPECT_NE(running->output().find(logged), std::string::npos) << logged << "\n" << running->output();
 }

@@ -5,6 +5,8 @@
 #include "server/auth/Sodium.h"
 #include "server/auth/oidc/JsonMembers.h"
 
+#include <openssl/crypto.h>
+
 namespace tlmhub::server {
 
 namespace {
@@ -96,18 +98,25 @@ OidcOutcome OidcSignIn::start(const std::string& name, const std::string& client
     std::string error;
     const auto location = provider->client->authorizationUrl(secrets, redirectUri(*provider), error);
     if (!location) return OidcOutcome::refused("provider_unavailable", provider->option.issuer + ": " + error);
-    mSignIns.add({secrets.state, provider->name, secrets.nonce, secrets.codeVerifier, "", nowUnix, 0});
-    return OidcOutcome::sendTo(*location);
+    const std::string browserKey = newSignInSecrets().state;
+    mSignIns.add({secrets.state, provider->name, secrets.nonce, secrets.codeVerifier, browserKey, nowUnix, 0});
+    return OidcOutcome::sendTo(*location, browserKey);
 }
 
 OidcOutcome OidcSignIn::finish(const std::string& name, const std::string& code, const std::string& state,
-                               const std::string& iss, const std::string& providerError, std::int64_t nowUnix)
+                               const std::string& iss, const std::string& providerError,
+                               const std::string& browserKey, std::int64_t nowUnix)
 {
     // Taken whatever comes next: an answer is used once.
     const auto attempt = state.empty() ? std::nullopt : mSignIns.take(state, nowUnix - kSignInSeconds);
     Provider* provider = find(name);
     if (!provider || !attempt || attempt->provider != provider->name || attempt->userId != 0)
         return OidcOutcome::refused("sign_in_failed", "this sign-in has expired or was used already; start again");
+    // Another browser's answer: someone signed in at the provider and sent the answer on (a
+    // login CSRF would sign this browser in to their account).
+    if (browserKey.size() != attempt->browserKey.size() ||
+        CRYPTO_memcmp(browserKey.data(), attempt->browserKey.data(), browserKey.size()) != 0)
+        return OidcOutcome::refused("sign_in_failed", "the answer came to another browser than the sign-in's");
     if (!providerError.empty())
         return OidcOutcome::refused("sign_in_failed", "the provider answered " + providerError.substr(0, 60));
     // RFC 9207: an answer naming another issuer came from another provider (a mix-up).
@@ -145,7 +154,7 @@ OidcOutcome OidcSignIn::account(const Provider& provider, const IdToken& token)
 std::string OidcSignIn::handOver(const User& user, std::int64_t nowUnix)
 {
     const std::string key = newSignInSecrets().state;
-    mSignIns.add({key, "", "", "", "", nowUnix, user.id});
+    mSignIns.add({key, "", "", "", "", nowUnix, user.id});   // collected by key alone: the app's POST
     return key;
 }
 

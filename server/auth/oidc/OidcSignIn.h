@@ -26,16 +26,20 @@ namespace tlmhub::server {
 
 struct OidcOutcome {
     std::optional<User> user;   // signed in
-    std::string location;       // start: where the browser goes
+    std::string location;       // start: where the browser goes ...
+    std::string browserKey;     // ... with this value in its sign-in cookie
     // else why not: the code (not_found, provider_unavailable, busy, sign_in_failed, no_account)
     // for the person, the message with the details for the server's log
     std::string code, message;
 
-    static OidcOutcome signedIn(User user) { return {std::move(user), {}, {}, {}}; }
-    static OidcOutcome sendTo(std::string location) { return {std::nullopt, std::move(location), {}, {}}; }
+    static OidcOutcome signedIn(User user) { return {std::move(user), {}, {}, {}, {}}; }
+    static OidcOutcome sendTo(std::string location, std::string browserKey)
+    {
+        return {std::nullopt, std::move(location), std::move(browserKey), {}, {}};
+    }
     static OidcOutcome refused(std::string code, std::string message)
     {
-        return {std::nullopt, {}, std::move(code), std::move(message)};
+        return {std::nullopt, {}, {}, std::move(code), std::move(message)};
     }
 };
 
@@ -49,9 +53,11 @@ public:
     // The provider's authorization address for a new sign-in from `clientAddress` (busy past
     // kMaxStartsPerAddress in kStartWindow, so one address cannot use up the pending sign-ins).
     OidcOutcome start(const std::string& name, const std::string& clientAddress, std::int64_t nowUnix);
-    // The provider's answer (the callback's query: code, state, iss, error): the account.
+    // The provider's answer (the callback's query: code, state, iss, error) in the browser
+    // whose sign-in cookie holds `browserKey`: the account.
     OidcOutcome finish(const std::string& name, const std::string& code, const std::string& state,
-                       const std::string& iss, const std::string& providerError, std::int64_t nowUnix);
+                       const std::string& iss, const std::string& providerError, const std::string& browserKey,
+                       std::int64_t nowUnix);
     // A one-time key for the app to collect the sign-in of `user` with, within a minute.
     std::string handOver(const User& user, std::int64_t nowUnix);
     // The account of a hand-over key, once; nullopt when unknown, used or too old.

@@ -284,7 +284,7 @@ void addSignInAttempts(pqxx::transaction_base& tx)
              " provider TEXT NOT NULL,"
              " nonce TEXT NOT NULL,"
              " code_verifier TEXT NOT NULL,"
-             " return_to TEXT NOT NULL,"
+             " browser_key TEXT NOT NULL,"
              " created_at BIGINT NOT NULL,"
              " user_id BIGINT NOT NULL DEFAULT 0)");
     tx.exec0("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");

@@ -5,10 +5,10 @@ namespace tlmhub::server {
 namespace {
 
 constexpr PgStatement kAdd{"sign_in_add",
-                           "INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, return_to, created_at, user_id)"
+                           "INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, browser_key, created_at, user_id)"
                            " VALUES($1, $2, $3, $4, $5, $6, $7)"};
 constexpr PgStatement kTake{"sign_in_take", "DELETE FROM sign_in_attempts WHERE state = $1"
-                                            " RETURNING provider, nonce, code_verifier, return_to, created_at, user_id"};
+                                            " RETURNING provider, nonce, code_verifier, browser_key, created_at, user_id"};
 constexpr PgStatement kPurge{"sign_in_purge", "DELETE FROM sign_in_attempts WHERE created_at < $1"};
 constexpr PgStatement kCount{"sign_in_count", "SELECT COUNT(*) FROM sign_in_attempts"};
 
@@ -18,7 +18,7 @@ void PostgresSignInStore::add(const SignInAttempt& attempt)
 {
     mDb.run(Idempotent::No, [&](PostgresConnection& c) {
         pqxx::nontransaction tx(c.raw());
-        c.exec(tx, kAdd, attempt.state, attempt.provider, attempt.nonce, attempt.codeVerifier, attempt.returnTo,
+        c.exec(tx, kAdd, attempt.state, attempt.provider, attempt.nonce, attempt.codeVerifier, attempt.browserKey,
                attempt.createdAt, attempt.userId);
     });
 }

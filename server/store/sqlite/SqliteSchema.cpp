@@ -288,7 +288,7 @@ void addSignInAttempts(SQLite::Database& db)
             " provider TEXT NOT NULL,"
             " nonce TEXT NOT NULL,"
             " code_verifier TEXT NOT NULL,"
-            " return_to TEXT NOT NULL,"
+            " browser_key TEXT NOT NULL,"
             " created_at INTEGER NOT NULL,"
             " user_id INTEGER NOT NULL DEFAULT 0)");
     db.exec("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");

@@ -5,13 +5,13 @@ namespace tlmhub::server {
 void SqliteSignInStore::add(const SignInAttempt& attempt)
 {
     mDb.run([&](SqliteConnection& c) {
-        auto insert = c.prepared("INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, return_to, created_at,"
+        auto insert = c.prepared("INSERT INTO sign_in_attempts(state, provider, nonce, code_verifier, browser_key, created_at,"
                                  " user_id) VALUES(?, ?, ?, ?, ?, ?, ?)");
         insert->bind(1, attempt.state);
         insert->bind(2, attempt.provider);
         insert->bind(3, attempt.nonce);
         insert->bind(4, attempt.codeVerifier);
-        insert->bind(5, attempt.returnTo);
+        insert->bind(5, attempt.browserKey);
         insert->bind(6, attempt.createdAt);
         insert->bind(7, attempt.userId);
         insert->exec();
@@ -22,7 +22,7 @@ std::optional<SignInAttempt> SqliteSignInStore::take(const std::string& state, s
 {
     return mDb.run([&](SqliteConnection& c) -> std::optional<SignInAttempt> {
         auto remove = c.prepared("DELETE FROM sign_in_attempts WHERE state = ?"
-                                 " RETURNING provider, nonce, code_verifier, return_to, created_at, user_id");
+                                 " RETURNING provider, nonce, code_verifier, browser_key, created_at, user_id");
         remove->bind(1, state);
         if (!remove->executeStep()) return std::nullopt;
         SignInAttempt attempt{state,

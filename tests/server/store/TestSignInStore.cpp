@@ -15,7 +15,7 @@ class SignInStoreConformance : public StoreTest {
 protected:
     static SignInAttempt attempt(const std::string& state, std::int64_t createdAt)
     {
-        return {state, "uni", "nonce-" + state, "verifier-" + state, "/#/models", createdAt, 0};
+        return {state, "uni", "nonce-" + state, "verifier-" + state, "browser-" + state, createdAt, 0};
     }
 };
 TLMHUB_STORE_CONFORMANCE(SignInStoreConformance);
@@ -31,7 +31,7 @@ TEST_P(SignInStoreConformance, AnAttemptIsTakenOnceWithWhatItWasStartedWith)
     EXPECT_EQ(taken->provider, "uni");
     EXPECT_EQ(taken->nonce, "nonce-s1");
     EXPECT_EQ(taken->codeVerifier, "verifier-s1");
-    EXPECT_EQ(taken->returnTo, "/#/models");
+    EXPECT_EQ(taken->browserKey, "browser-s1");
     EXPECT_EQ(taken->createdAt, 1000);
     EXPECT_FALSE(signIns.take("s1", 900)) << "a replayed answer finds nothing";
     EXPECT_FALSE(signIns.take("unknown", 0));
