@@ -10,6 +10,7 @@
 #include "TemporaryOidcProvider.h"
 
 #include "server/auth/oidc/OidcProvider.h"
+#include "server/http/Router.h"
 
 #include <gtest/gtest.h>
 
@@ -29,25 +30,9 @@ std::string queryValue(const std::string& url, const std::string& name)
 {
     const std::size_t query = url.find('?');
     if (query == std::string::npos) return {};
-    std::size_t at = query;
-    while (at != std::string::npos) {
-        const std::size_t start = at + 1;
-        const std::size_t end = url.find('&', start);
-        const std::string pair = url.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        if (pair.starts_with(name + "=")) {
-            std::string value;
-            for (std::size_t i = name.size() + 1; i < pair.size(); ++i)
-                if (pair[i] == '%' && i + 2 < pair.size()) {
-                    value += static_cast<char>(std::stoi(pair.substr(i + 1, 2), nullptr, 16));
-                    i += 2;
-                } else {
-                    value += pair[i];
-                }
-            return value;
-        }
-        at = end;
-    }
-    return {};
+    const auto params = tlmhub::server::parseRequestTarget(url.substr(query)).query;
+    const auto it = params.find(name);
+    return it == params.end() ? std::string{} : it->second;
 }
 
 std::string refusal(const std::variant<IdToken, IdTokenError>& outcome)
