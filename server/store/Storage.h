@@ -1,7 +1,7 @@
 #pragma once
 // The server's storage: one object per back end that hands out the stores of every aggregate
 // (users, sessions, models, jobs and their leases, results, meta facts, API tokens, studies, teaching labs,
-// sign-ins through a provider).
+// sign-ins through a provider, the learning platforms tlmhub is an LTI tool of).
 // Opening it applies the schema migrations the database lacks, so every store finds the
 // current schema.
 // No SQLite or PostgreSQL type appears in this header or in any store interface; the back
@@ -13,6 +13,7 @@
 #include "server/store/IdempotencyKeyStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
+#include "server/store/LtiStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
 #include "server/store/ResultStore.h"
@@ -60,6 +61,7 @@ public:
     virtual StudyStore& studies() = 0;
     virtual LabStore& labs() = 0;
     virtual SignInStore& signIns() = 0;
+    virtual LtiStore& lti() = 0;
 
     // The schema version the database is at (the newest migration applied).
     virtual int schemaVersion() = 0;
@@ -73,7 +75,7 @@ public:
 
 // The newest schema version this build knows. Both back ends keep their migrations in an
 // array of this size, so a migration added to one and not the other does not compile.
-inline constexpr int kSchemaVersion = 11;
+inline constexpr int kSchemaVersion = 12;
 
 // Opens the back end `config.database` names and migrates its schema. Throws StoreError
 // (Unavailable when it cannot be reached or opened, Corrupt when its schema is newer than

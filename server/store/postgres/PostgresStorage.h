@@ -27,6 +27,7 @@ public:
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
+    LtiStore& lti() override { return mLti; }
     int schemaVersion() override;
     std::string describe() const override;
     // Always throws: a PostgreSQL database is backed up with pg_dump.
@@ -46,6 +47,7 @@ private:
     PostgresApiTokenStore mApiTokens{mDb};
     PostgresStudyStore mStudies{mDb};
     PostgresLabStore mLabs{mDb};
+    PostgresLtiStore mLti{mDb};
 };
 
 std::unique_ptr<Storage> openPostgresStorage(const StorageConfig& config);

@@ -294,11 +294,61 @@ void addSignInAttempts(SQLite::Database& db)
     db.exec("CREATE INDEX sign_in_attempts_age ON sign_in_attempts(created_at)");
 }
 
+// Version 12: the learning platforms tlmhub is an LTI tool of (LtiStore).
+void addLtiPlatforms(SQLite::Database& db)
+{
+    db.exec("CREATE TABLE lti_platforms ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " name TEXT NOT NULL,"
+            " issuer TEXT NOT NULL,"
+            " client_id TEXT NOT NULL,"
+            " auth_url TEXT NOT NULL,"
+            " token_url TEXT NOT NULL,"
+            " jwks_url TEXT NOT NULL,"
+            " created_at INTEGER NOT NULL,"
+            " UNIQUE(issuer, client_id))");
+    db.exec("CREATE TABLE lti_deployments ("
+            " platform_id INTEGER NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+            " deployment_id TEXT NOT NULL,"
+            " PRIMARY KEY(platform_id, deployment_id))");
+    db.exec("CREATE TABLE lti_contexts ("
+            " platform_id INTEGER NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+            " context_id TEXT NOT NULL,"
+            " class_id INTEGER NOT NULL REFERENCES classes(id) ON DELETE CASCADE,"
+            " PRIMARY KEY(platform_id, context_id))");
+    db.exec("CREATE TABLE lti_line_items ("
+            " platform_id INTEGER NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+            " assignment_id INTEGER NOT NULL REFERENCES assignments(id) ON DELETE CASCADE,"
+            " url TEXT NOT NULL,"
+            " PRIMARY KEY(platform_id, assignment_id))");
+    db.exec("CREATE TABLE lti_scores ("
+            " id INTEGER PRIMARY KEY AUTOINCREMENT,"
+            " platform_id INTEGER NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+            " line_item_url TEXT NOT NULL,"
+            " user_subject TEXT NOT NULL,"
+            " user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " assignment_id INTEGER NOT NULL REFERENCES assignments(id) ON DELETE CASCADE,"
+            " score_given REAL NOT NULL,"
+            " score_maximum REAL NOT NULL,"
+            " comment TEXT NOT NULL,"
+            " timestamp_ms INTEGER NOT NULL,"
+            " state TEXT NOT NULL,"
+            " attempts INTEGER NOT NULL DEFAULT 0,"
+            " next_attempt_at INTEGER NOT NULL,"
+            " last_error TEXT NOT NULL DEFAULT '',"
+            " created_at INTEGER NOT NULL,"
+            " delivered_at INTEGER NOT NULL DEFAULT 0,"
+            " lease INTEGER NOT NULL DEFAULT 0,"
+            " lease_until INTEGER NOT NULL DEFAULT 0)");
+    db.exec("CREATE INDEX lti_scores_due ON lti_scores(state, next_attempt_at)");
+    db.exec("CREATE INDEX lti_scores_assignment ON lti_scores(assignment_id)");
+}
+
 using Migration = void (*)(SQLite::Database&);
 constexpr std::array<Migration, kSchemaVersion> kMigrations{createTables,   indexSessions, createTokensAndStudies,
                                                              createLabs,     addJobLeases,  addRunHistory,
                                                              addPreferences, addIdempotencyKeys, addStudyNodes,
-                                                             addIdentities, addSignInAttempts};
+                                                             addIdentities, addSignInAttempts, addLtiPlatforms};
 
 } // namespace
 

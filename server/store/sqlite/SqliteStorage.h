@@ -25,6 +25,7 @@ public:
     ApiTokenStore& apiTokens() override { return mApiTokens; }
     StudyStore& studies() override { return mStudies; }
     LabStore& labs() override { return mLabs; }
+    LtiStore& lti() override { return mLti; }
     int schemaVersion() override;
     std::string describe() const override;
     void backup(const std::filesystem::path& file) override;
@@ -43,6 +44,7 @@ private:
     SqliteApiTokenStore mApiTokens{mDb};
     SqliteStudyStore mStudies{mDb};
     SqliteLabStore mLabs{mDb};
+    SqliteLtiStore mLti{mDb};
 };
 
 // Replaces the database at `databasePath` with the snapshot `backupFile` (written by

@@ -5,6 +5,7 @@
 #include "server/store/JobLeaseStore.h"
 #include "server/store/JobStore.h"
 #include "server/store/LabStore.h"
+#include "server/store/LtiStore.h"
 #include "server/store/IdempotencyKeyStore.h"
 #include "server/store/MetaStore.h"
 #include "server/store/ModelStore.h"
@@ -266,6 +267,30 @@ public:
     void add(const SignInAttempt& attempt) override;
     std::optional<SignInAttempt> take(const std::string& state, std::int64_t notBeforeUnix) override;
     std::size_t purge(std::int64_t notBeforeUnix) override;
+
+private:
+    SqliteDatabase& mDb;
+};
+
+class SqliteLtiStore final : public LtiStore {
+public:
+    explicit SqliteLtiStore(SqliteDatabase& db) : mDb(db) {}
+    std::optional<std::int64_t> addPlatform(const LtiPlatform& platform) override;
+    std::optional<LtiPlatform> platform(std::int64_t id) override;
+    std::vector<LtiPlatform> platformsOf(const std::string& issuer) override;
+    std::vector<LtiPlatform> listPlatforms() override;
+    bool updatePlatform(const LtiPlatform& platform) override;
+    bool removePlatform(std::int64_t id) override;
+    std::optional<std::int64_t> classOfContext(std::int64_t platformId, const std::string& contextId) override;
+    std::int64_t linkContext(std::int64_t platformId, const std::string& contextId, std::int64_t classId) override;
+    void setLineItem(std::int64_t platformId, const std::string& url, std::int64_t assignmentId) override;
+    std::optional<std::string> lineItemOf(std::int64_t platformId, std::int64_t assignmentId) override;
+    std::int64_t addScore(const LtiScore& score) override;
+    std::vector<LtiScore> claimScores(std::int64_t nowUnix, std::int64_t leaseSeconds, std::size_t limit) override;
+    bool markDelivered(std::int64_t id, std::int64_t lease, std::int64_t nowUnix) override;
+    bool markFailed(std::int64_t id, std::int64_t lease, const std::string& error, std::int64_t nextAttemptAt,
+                    bool giveUp) override;
+    std::vector<LtiScore> scoresOf(std::int64_t assignmentId) override;
 
 private:
     SqliteDatabase& mDb;
