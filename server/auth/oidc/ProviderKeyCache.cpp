@@ -10,9 +10,13 @@ ProviderKeyCache::ProviderKeyCache(Fetch fetch, std::chrono::seconds minRefetch,
 std::shared_ptr<const JsonWebKeySet> ProviderKeyCache::keys(bool refetch, Clock::time_point now, std::string& error)
 {
     std::lock_guard lock(mMutex);
-    const bool stale = !mKeys || refetch || now - *mFetchedAt >= mMaxAge;
-    const bool mayTry = !mTriedAt || now - *mTriedAt >= mMinRefetch;
-    if (stale && mayTry) {
+    // A key the set lacks is asked for at once after the set's own fetch (a rotation just
+    // published), but made-up key ids make at most one fetch per mMinRefetch; so do fetches
+    // that fail.
+    const auto since = [&](const std::optional<Clock::time_point>& at) { return !at || now - *at >= mMinRefetch; };
+    const bool stale = !mKeys || now - *mFetchedAt >= mMaxAge;
+    if ((stale && since(mTriedAt)) || (mKeys && refetch && !stale && since(mRefetchTriedAt))) {
+        if (!stale) mRefetchTriedAt = now;
         mTriedAt = now;
         std::string fetchError;
         if (auto fetched = mFetch(fetchError)) {

@@ -1,7 +1,8 @@
 #pragma once
 // A provider's key set as this server last fetched it. A token signed with a key the set
-// lacks means the provider rotated its keys: the set is fetched again, but at most once per
-// `minRefetch`, so tokens with made-up key ids cannot make the server hammer the provider.
+// lacks means the provider rotated its keys: the set is fetched again at once, but for such
+// tokens at most once per `minRefetch`, so tokens with made-up key ids cannot make the server
+// hammer the provider (nor can a provider that cannot be reached: its fetches too wait).
 // A set older than `maxAge` is fetched again at its next use, so a key the provider withdrew
 // stops being trusted; when that fetch fails the old set is kept until it succeeds.
 #include "server/auth/oidc/JsonWebKeySet.h"
@@ -34,6 +35,7 @@ private:
     std::mutex mMutex;   // one fetch at a time; the members below
     std::shared_ptr<const JsonWebKeySet> mKeys;
     std::optional<Clock::time_point> mFetchedAt, mTriedAt;
+    std::optional<Clock::time_point> mRefetchTriedAt;   // the last fetch for a key the set lacked
     std::string mLastError;
 };
 
