@@ -1,5 +1,7 @@
 // App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>][&path=<subsystems>], #/account,
-// #/classes, #/class/<id>, #/assignment/<id>, #/watch/<live session id>?class=<id>.
+// #/classes, #/class/<id>, #/assignment/<id>, #/watch/<live session id>?class=<id>, #/admin/lti;
+// the ends of a sign-in, #/signed-in/<key>[/class/<id>|/assignment/<id>] and #/sign-in-failed/<reason>.
+// Only the hash routes and absolute asset paths: the same index.html also serves as the LTI launch page.
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
 import { Session } from './app/Session';
@@ -7,6 +9,7 @@ import { renderLogin } from './views/LoginView';
 import { renderModelList } from './views/ModelListView';
 import { renderEditor, type BackLink, type EditorPage } from './views/EditorView';
 import { renderAccounts } from './views/AccountsView';
+import { renderLtiPlatforms } from './views/LtiPlatformsView';
 import { renderClassList } from './labs/ClassListView';
 import { renderClass } from './labs/ClassView';
 import { allowedText, renderAssignment } from './labs/AssignmentView';
@@ -14,6 +17,7 @@ import type { LabPage } from './labs/LabPage';
 import { renderWatch } from './live/WatchView';
 import { h } from './ui/dom';
 import { parseModelRoute, sameModel } from './app/modelRoute';
+import { finishSignIn, parseSignInEnd } from './app/signInRoute';
 
 const session = new Session();
 const app = document.getElementById('app')!;
@@ -79,23 +83,19 @@ async function route(): Promise<void> {
     labPage?.dispose();
     labPage = null;
     currentHash = hash;
-    // The end of a sign-in through a provider: the one-time key, taken out of the history at once.
-    const signedIn = /^#\/signed-in\/([A-Za-z0-9_-]+)$/.exec(hash);
-    const signInFailed = /^#\/sign-in-failed\/([a-z_]+)$/.exec(hash);
-    if (signedIn || signInFailed) {
-        history.replaceState(null, '', '#/login');
-        currentHash = '#/login';
-        let failure = signInFailed?.[1];
-        if (signedIn) {
-            try {
-                await session.collectSignIn(signedIn[1]);
-                location.hash = '#/models';
-                return;
-            } catch {
-                failure = 'expired';
-            }
-        }
-        renderLogin(page, session, () => { location.hash = '#/models'; }, failure);
+    // The end of a sign-in through a provider or a learning platform's launch (signInRoute.ts):
+    // the one-time key, taken out of the history at once, then on to the page named or the models.
+    const signInEnd = parseSignInEnd(hash);
+    if (signInEnd) {
+        await finishSignIn(signInEnd, {
+            replaceAddress: (to) => {
+                history.replaceState(null, '', to);
+                currentHash = to;
+            },
+            collect: (key) => session.collectSignIn(key),
+            go: (to) => { location.hash = to; },
+            showLogin: (failure) => renderLogin(page, session, () => { location.hash = '#/models'; }, failure),
+        });
         return;
     }
     if (!session.user && !(await session.restore()) && hash !== '#/login') {
@@ -109,6 +109,8 @@ async function route(): Promise<void> {
         renderLogin(page, session, () => { location.hash = '#/models'; });
     } else if (hash === '#/account') {
         renderAccounts(page, session, () => { void session.logout().catch(() => undefined).finally(() => { location.hash = '#/login'; }); });
+    } else if (hash === '#/admin/lti') {
+        renderLtiPlatforms(page, session);
     } else if (modelRoute) {
         let back: BackLink | undefined;
         if (modelRoute.assignment !== undefined) {

@@ -1,7 +1,8 @@
 // REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
 import { ApiError } from './ApiError';
 import type {
-    CatalogueEntry, FmuInterface, JobInfo, Model, ModelSummary, Preferences, ResultsJson, SignInProviders, User,
+    CatalogueEntry, FmuInterface, JobInfo, LtiPlatform, LtiPlatformList, LtiPlatformSettings, Model, ModelSummary, Preferences,
+    ResultsJson, SignInProviders, User,
 } from '../protocol/types';
 
 export interface LoginResult { token: string; expires_at: number; user: User }
@@ -102,6 +103,17 @@ export class RestClient {
     updateUser(id: number, change: { role?: User['role']; disabled?: boolean }): Promise<Account> {
         return this.call('PATCH', `/users/${id}`, change);
     }
+
+    /** The registered LTI platforms and this tool's own addresses (administrators). */
+    ltiPlatforms(): Promise<LtiPlatformList> { return this.call('GET', '/admin/lti/platforms'); }
+    createLtiPlatform(settings: LtiPlatformSettings): Promise<LtiPlatform> {
+        return this.call('POST', '/admin/lti/platforms', settings);
+    }
+    updateLtiPlatform(id: number, settings: LtiPlatformSettings): Promise<LtiPlatform> {
+        return this.call('PUT', `/admin/lti/platforms/${id}`, settings);
+    }
+    /** Removes the platform with its course links, line items and pending scores (the classes stay). */
+    deleteLtiPlatform(id: number): Promise<void> { return this.call('DELETE', `/admin/lti/platforms/${id}`); }
 
     listModels(): Promise<ModelSummary[]> { return this.call('GET', '/models'); }
     getModel(id: number): Promise<ModelSummary & { model: Model; writable?: boolean }> { return this.call('GET', `/models/${id}`); }

@@ -27,6 +27,11 @@ const FIELD_WORDS: Record<string, string> = {
     new_name: 'new name',
     component_type: 'component type',
     expires_in_days: 'lifetime in days',
+    client_id: 'client id',
+    auth_url: 'authentication URL',
+    token_url: 'token URL',
+    jwks_url: 'keyset URL',
+    deployment_ids: 'deployment ids',
 };
 
 export function fieldWords(key: string): string {

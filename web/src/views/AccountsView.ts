@@ -1,5 +1,5 @@
 // The account page: everyone changes their own password; an administrator also lists,
-// creates and disables accounts and sets their roles.
+// creates and disables accounts and sets their roles, and finds the learning platforms' page.
 import { h, errorText, toast } from '../ui/dom';
 import type { Session } from '../app/Session';
 import type { Account } from '../api/RestClient';
@@ -91,5 +91,7 @@ export function renderAccounts(root: HTMLElement, session: Session, onLoggedOut:
     root.replaceChildren(h('main', { class: 'model-list-page accounts-page' },
         h('h1', {}, 'Account'),
         passwordForm(session, onLoggedOut),
+        admin ? h('p', { class: 'admin-links' }, h('a', { href: '#/admin/lti', 'data-testid': 'admin-lti' }, 'Learning platforms (LTI)'),
+            h('span', { class: 'muted' }, ': Moodle, Canvas and others that open tlmhub from their courses')) : null,
         admin ? usersSection(session) : null));
 }
