@@ -115,8 +115,9 @@ release_build() {
   timing_flags build
   scripts/build.sh "${timing[@]}" -DTLMHUB_BUILD_BENCHMARKS=OFF
   slowest_build_steps build
-  # The OpenID provider the sign-in tests start (tests/peers/oidc-provider, label sso).
+  # The OpenID provider and the LTI platform the sign-in tests start (tests/peers/, label sso).
   npm ci --prefix tests/peers/oidc-provider --no-audit --no-fund
+  npm ci --prefix tests/peers/lti-platform --no-audit --no-fund
 }
 
 # Sanitizer builds: clang 14, -O1 with line tables (enough for file:line in every report),

@@ -8,6 +8,7 @@ std::vector<RouteSpec> apiRoutes()
     addCatalogueRoutes(routes);
     addAuthRoutes(routes);
     addOidcRoutes(routes);
+    addLtiRoutes(routes);
     addUserRoutes(routes);
     addPreferenceRoutes(routes);
     addModelRoutes(routes);

@@ -33,6 +33,9 @@ class LabService;
 class LiveSessionRegistry;
 class DirectorySignIn;
 class OidcSignIn;
+class LtiTool;
+class SignInStore;
+class LtiStore;
 
 // The long-lived objects of a running server (owned by TlmhubApp).
 struct Services {
@@ -57,6 +60,9 @@ struct Services {
     LiveSessionRegistry& liveSimulations;   // live.start: models run with the wall clock on this node
     DirectorySignIn* directory;             // LDAP sign-in; null without --ldap-url
     OidcSignIn* oidc;                       // OpenID Connect sign-in; null without --oidc-issuer
+    LtiTool* lti;                           // LTI 1.3 launches; null without --lti-key-file
+    SignInStore& signIns;                   // sign-ins under way and hand-overs to the app
+    LtiStore& ltiPlatforms;                 // the registered learning platforms
 };
 
 struct Call {
@@ -126,6 +132,7 @@ bool wantsXml(const Call& call);
 // Route tables, one per resource.
 void addAuthRoutes(std::vector<RouteSpec>& routes);
 void addOidcRoutes(std::vector<RouteSpec>& routes);
+void addLtiRoutes(std::vector<RouteSpec>& routes);
 void addUserRoutes(std::vector<RouteSpec>& routes);
 void addModelRoutes(std::vector<RouteSpec>& routes);
 void addFmuRoutes(std::vector<RouteSpec>& routes);

@@ -3,6 +3,7 @@
 // are how someone without a login gets one.
 #include "server/api/ApiSupport.h"
 #include "server/app/ServerOptions.h"
+#include "server/auth/SignInHandOver.h"
 #include "server/auth/oidc/OidcSignIn.h"
 
 #include <ctime>
@@ -108,7 +109,7 @@ Response collect(Services& s, Call& call)
     protocol::SignInCollect body;
     Response error;
     if (!readBody(call, "SignInCollect", body, error)) return error;
-    const auto userId = s.oidc ? s.oidc->collect(body.key, std::time(nullptr)) : std::nullopt;
+    const auto userId = collectSignIn(s.signIns, body.key, std::time(nullptr));
     const auto user = userId ? s.users.find(*userId) : std::nullopt;
     if (!user || user->disabled)
         return apiError(http::status::unauthorized, "unauthorized", "this sign-in has expired or was collected; sign in again");

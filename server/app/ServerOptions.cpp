@@ -109,7 +109,11 @@ const std::string kHelp = std::string(
     "  --oidc-role-claim NAME   the ID token claim roles come from (default groups)\n"
     "  --oidc-ca-file PATH      CAs of the providers' certificates (default: the system's)\n"
     "  --oidc-create-accounts on|off  make an account on a person's first sign-in (default on)\n"
-    "  --public-url URL         the server's address as browsers reach it (needed by --oidc-issuer)\n"
+    "  --lti-key-file PATH      be an LTI 1.3 tool with the RSA key in PATH (mode 0600;\n"
+    "                           repeatable: the first signs, all are published)\n"
+    "  --lti-ca-file PATH       CAs of the learning platforms' certificates (default: the system's)\n"
+    "  --public-url URL         the server's address as browsers reach it (needed by --oidc-issuer\n"
+    "                           and --lti-key-file)\n"
     "  --password-login on|off  off: this server's own passwords log in only the accounts\n"
     "                           named by --local-login-user (default on)\n"
     "  --local-login-user NAME  an account that keeps its password login (repeatable)\n"
@@ -283,6 +287,11 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             }
         } else if (flag == "--oidc-ca-file") {
             o.oidcCaFile = value;
+        } else if (flag == "--lti-key-file") {
+            ok = !value.empty();
+            o.ltiKeyFiles.push_back(value);
+        } else if (flag == "--lti-ca-file") {
+            o.ltiCaFile = value;
         } else if (flag == "--oidc-create-accounts") {
             ok = value == "on" || value == "off";
             o.oidcCreateAccounts = value == "on";
@@ -347,6 +356,10 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
         }
     if (!o.oidcProviders.empty() && o.publicUrl.empty()) {
         error = "--oidc-issuer needs --public-url: the address providers send people back to";
+        return false;
+    }
+    if (!o.ltiKeyFiles.empty() && o.publicUrl.empty()) {
+        error = "--lti-key-file needs --public-url: the address learning platforms launch";
         return false;
     }
     if (!o.passwordLogin && o.localLoginUsers.empty() && o.ldap.url.empty() && o.oidcProviders.empty()) {

@@ -56,8 +56,12 @@ struct ServerOptions {
     std::vector<OidcProviderOption> oidcProviders;
     std::string oidcCaFile;           // CAs the providers' certificates chain to; empty: the system's
     bool oidcCreateAccounts = true;
+    // LTI 1.3 tool (docs/sign-in.md): on with at least one key file. The tool's RSA keys are
+    // read from the files at start; the first signs, all are published.
+    std::vector<std::string> ltiKeyFiles;
+    std::string ltiCaFile;            // CAs the platforms' certificates chain to; empty: the system's
     // The server's address as browsers reach it (https://tlmhub.uni.edu): where providers send
-    // people back to (/api/v1/auth/oidc/{name}/callback).
+    // people back to (/api/v1/auth/oidc/{name}/callback), what platforms launch.
     std::string publicUrl;
     // --password-login off: only the accounts named here log in with a password of this
     // server's own (the administrator's way in); everyone else signs in through the directory

@@ -77,10 +77,14 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
     }
     if (!mOptions.oidcProviders.empty())
         mOidcSignIn = std::make_unique<OidcSignIn>(mOptions, mStorage->users(), mStorage->signIns());
+    if (!mOptions.ltiKeyFiles.empty())
+        mLtiTool = std::make_unique<LtiTool>(mOptions, mStorage->users(), mStorage->signIns(), mStorage->lti(),
+                                             mStorage->labs());
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
                                  *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,
-                                 mStorage->idempotencyKeys(), *mLiveSimulations, mDirectorySignIn.get(), mOidcSignIn.get()});
+                                 mStorage->idempotencyKeys(), *mLiveSimulations, mDirectorySignIn.get(), mOidcSignIn.get(),
+                                 mLtiTool.get(), mStorage->signIns(), mStorage->lti()});
 
     for (RouteSpec& r : apiRoutes())
         mRouter.add(r.method, kApiPrefix + r.pattern, Route{r.needsAuth, r.work, std::move(r.handler)});

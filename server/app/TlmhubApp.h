@@ -6,6 +6,7 @@
 #include "server/app/HandlerPools.h"
 #include "server/app/ServerOptions.h"
 #include "server/auth/DirectorySignIn.h"
+#include "server/auth/lti/LtiTool.h"
 #include "server/auth/oidc/OidcSignIn.h"
 #include "server/cluster/JobStreams.h"
 #include "server/cluster/NodeSecret.h"
@@ -94,6 +95,7 @@ private:
     std::unique_ptr<LdapDirectory> mDirectory;          // only with --ldap-url
     std::unique_ptr<DirectorySignIn> mDirectorySignIn;
     std::unique_ptr<OidcSignIn> mOidcSignIn;           // null without --oidc-issuer
+    std::unique_ptr<LtiTool> mLtiTool;                 // null without --lti-key-file
     std::unique_ptr<Services> mServices;
     Router<Route> mRouter;
     StaticFiles mStaticFiles;

@@ -2,6 +2,8 @@
 
 namespace tlmhub::server {
 
+const char* const kContentSecurityPolicyWithoutFrameAncestors =
+    "default-src 'self'; script-src 'self'; object-src 'none'; base-uri 'none'";
 const char* const kContentSecurityPolicy =
     "default-src 'self'; script-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'self'";
 

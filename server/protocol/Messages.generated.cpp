@@ -423,6 +423,88 @@ void to_json(nlohmann::json& j, const SignInCollect& v)
     j["key"] = v.key;
 }
 
+void from_json(const nlohmann::json& j, LtiPlatformSettings& v)
+{
+    j.at("name").get_to(v.name);
+    j.at("issuer").get_to(v.issuer);
+    j.at("client_id").get_to(v.clientId);
+    j.at("auth_url").get_to(v.authUrl);
+    j.at("token_url").get_to(v.tokenUrl);
+    j.at("jwks_url").get_to(v.jwksUrl);
+    j.at("deployment_ids").get_to(v.deploymentIds);
+}
+
+void to_json(nlohmann::json& j, const LtiPlatformSettings& v)
+{
+    j = nlohmann::json::object();
+    j["name"] = v.name;
+    j["issuer"] = v.issuer;
+    j["client_id"] = v.clientId;
+    j["auth_url"] = v.authUrl;
+    j["token_url"] = v.tokenUrl;
+    j["jwks_url"] = v.jwksUrl;
+    j["deployment_ids"] = v.deploymentIds;
+}
+
+void from_json(const nlohmann::json& j, LtiPlatform& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("name").get_to(v.name);
+    j.at("issuer").get_to(v.issuer);
+    j.at("client_id").get_to(v.clientId);
+    j.at("auth_url").get_to(v.authUrl);
+    j.at("token_url").get_to(v.tokenUrl);
+    j.at("jwks_url").get_to(v.jwksUrl);
+    j.at("deployment_ids").get_to(v.deploymentIds);
+    j.at("created_at").get_to(v.createdAt);
+}
+
+void to_json(nlohmann::json& j, const LtiPlatform& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["name"] = v.name;
+    j["issuer"] = v.issuer;
+    j["client_id"] = v.clientId;
+    j["auth_url"] = v.authUrl;
+    j["token_url"] = v.tokenUrl;
+    j["jwks_url"] = v.jwksUrl;
+    j["deployment_ids"] = v.deploymentIds;
+    j["created_at"] = v.createdAt;
+}
+
+void from_json(const nlohmann::json& j, LtiToolSettings& v)
+{
+    j.at("enabled").get_to(v.enabled);
+    j.at("login_url").get_to(v.loginUrl);
+    j.at("launch_url").get_to(v.launchUrl);
+    j.at("deep_link_url").get_to(v.deepLinkUrl);
+    j.at("jwks_url").get_to(v.jwksUrl);
+}
+
+void to_json(nlohmann::json& j, const LtiToolSettings& v)
+{
+    j = nlohmann::json::object();
+    j["enabled"] = v.enabled;
+    j["login_url"] = v.loginUrl;
+    j["launch_url"] = v.launchUrl;
+    j["deep_link_url"] = v.deepLinkUrl;
+    j["jwks_url"] = v.jwksUrl;
+}
+
+void from_json(const nlohmann::json& j, LtiPlatformList& v)
+{
+    j.at("platforms").get_to(v.platforms);
+    j.at("tool").get_to(v.tool);
+}
+
+void to_json(nlohmann::json& j, const LtiPlatformList& v)
+{
+    j = nlohmann::json::object();
+    j["platforms"] = v.platforms;
+    j["tool"] = v.tool;
+}
+
 void from_json(const nlohmann::json& j, LoginResponse& v)
 {
     j.at("token").get_to(v.token);

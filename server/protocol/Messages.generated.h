@@ -91,6 +91,10 @@ struct LiveValue;
 struct LogSubscribeRequest;
 struct LoginRequest;
 struct LoginResponse;
+struct LtiPlatform;
+struct LtiPlatformList;
+struct LtiPlatformSettings;
+struct LtiToolSettings;
 struct MemberUpdate;
 struct Model;
 struct ModelControlsData;
@@ -399,6 +403,57 @@ struct SignInCollect {
 };
 void from_json(const nlohmann::json& j, SignInCollect& v);
 void to_json(nlohmann::json& j, const SignInCollect& v);
+
+// JSON body of POST /admin/lti/platforms and PUT /admin/lti/platforms/{id} (administrators): a
+// learning platform this server is an LTI 1.3 tool of, with the values its administrator got
+// when registering the tool.
+struct LtiPlatformSettings {
+    std::string name{};
+    std::string issuer{};
+    std::string clientId{};
+    std::string authUrl{};
+    std::string tokenUrl{};
+    std::string jwksUrl{};
+    std::vector<std::string> deploymentIds;
+};
+void from_json(const nlohmann::json& j, LtiPlatformSettings& v);
+void to_json(nlohmann::json& j, const LtiPlatformSettings& v);
+
+// A registered learning platform.
+struct LtiPlatform {
+    std::int64_t id{};
+    std::string name{};
+    std::string issuer{};
+    std::string clientId{};
+    std::string authUrl{};
+    std::string tokenUrl{};
+    std::string jwksUrl{};
+    std::vector<std::string> deploymentIds;
+    std::int64_t createdAt{};
+};
+void from_json(const nlohmann::json& j, LtiPlatform& v);
+void to_json(nlohmann::json& j, const LtiPlatform& v);
+
+// What a platform's administrator enters when registering this tool (empty addresses while LTI
+// is off).
+struct LtiToolSettings {
+    bool enabled{};
+    std::string loginUrl{};
+    std::string launchUrl{};
+    std::string deepLinkUrl{};
+    std::string jwksUrl{};
+};
+void from_json(const nlohmann::json& j, LtiToolSettings& v);
+void to_json(nlohmann::json& j, const LtiToolSettings& v);
+
+// Reply of GET /admin/lti/platforms: the registered platforms by id, and this tool's own
+// addresses.
+struct LtiPlatformList {
+    std::vector<LtiPlatform> platforms;
+    LtiToolSettings tool{};
+};
+void from_json(const nlohmann::json& j, LtiPlatformList& v);
+void to_json(nlohmann::json& j, const LtiPlatformList& v);
 
 struct LoginResponse {
     std::string token{};
@@ -1684,6 +1739,10 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");
     visit.template operator()<LoginResponse>("LoginResponse");
+    visit.template operator()<LtiPlatform>("LtiPlatform");
+    visit.template operator()<LtiPlatformList>("LtiPlatformList");
+    visit.template operator()<LtiPlatformSettings>("LtiPlatformSettings");
+    visit.template operator()<LtiToolSettings>("LtiToolSettings");
     visit.template operator()<MemberUpdate>("MemberUpdate");
     visit.template operator()<Model>("Model");
     visit.template operator()<ModelControlsData>("ModelControlsData");

@@ -46,6 +46,16 @@ const std::map<std::string, RouteCase>& routeCases()
         {"GET /auth/oidc/{name}/start", {Case::Public, ""}},
         {"GET /auth/oidc/{name}/callback", {Case::Public, ""}},
         {"POST /auth/oidc/collect", {Case::Public, ""}},
+        {"GET /lti/jwks", {Case::Public, ""}},
+        {"GET /lti/login", {Case::Public, ""}},
+        {"POST /lti/login", {Case::Public, ""}},
+        {"POST /lti/launch", {Case::Public, ""}},
+        {"GET /lti/app", {Case::Public, ""}},
+        {"GET /admin/lti/platforms", {Case::Administrator, ""}},
+        {"POST /admin/lti/platforms", {Case::Administrator, ""}},
+        {"GET /admin/lti/platforms/{id}", {Case::Administrator, ""}},
+        {"PUT /admin/lti/platforms/{id}", {Case::Administrator, ""}},
+        {"DELETE /admin/lti/platforms/{id}", {Case::Administrator, ""}},
         {"POST /auth/logout", {Case::Own, "revokes the token it is called with"}},
         {"GET /auth/me", {Case::Own, "the caller's account"}},
         {"POST /auth/password", {Case::Own, "the caller's password, with the old one"}},
@@ -276,6 +286,10 @@ protected:
         if (name == "PATCH /jobs/{id}") return {R"({"name": "mine", "pinned": true})", "application/json"};
         if (name == "POST /classes") return {R"({"name": "x"})", "application/json"};
         if (name == "PUT /preferences") return {R"({"units": {"Pressure": "bar"}})", "application/json"};
+        if (name == "POST /admin/lti/platforms" || name == "PUT /admin/lti/platforms/{id}")
+            return {R"({"name": "x", "issuer": "https://lms.example", "client_id": "c", "auth_url": "https://lms.example/a",
+                        "token_url": "https://lms.example/t", "jwks_url": "https://lms.example/k", "deployment_ids": ["1"]})",
+                    "application/json"};
         return {"{}", "application/json"};
     }
 

@@ -35,7 +35,7 @@ std::string queryValue(const std::string& url, const std::string& name)
     return it == params.end() ? std::string{} : it->second;
 }
 
-std::string refusal(const std::variant<IdToken, IdTokenError>& outcome)
+std::string peerRefusal(const std::variant<IdToken, IdTokenError>& outcome)
 {
     return std::holds_alternative<IdTokenError>(outcome) ? std::get<IdTokenError>(outcome).code : "";
 }
@@ -123,7 +123,7 @@ TEST_F(OidcProviderPeer, ASignInEndsInAnIdTokenCheckedAgainstTheProvidersKeys)
     EXPECT_EQ(queryValue(callback, "iss"), peer->issuer());
     const auto outcome =
         provider.finish(queryValue(callback, "code"), secrets.codeVerifier, secrets.nonce, kRedirect, std::time(nullptr));
-    ASSERT_EQ(refusal(outcome), "") << std::get<IdTokenError>(outcome).message << "\n" << peer->logTail();
+    ASSERT_EQ(peerRefusal(outcome), "") << std::get<IdTokenError>(outcome).message << "\n" << peer->logTail();
     const IdToken& token = std::get<IdToken>(outcome);
     EXPECT_EQ(token.subject, "jane");
     EXPECT_EQ(token.claims.at("name"), "Jane Doe");
@@ -136,18 +136,18 @@ TEST_F(OidcProviderPeer, ACodeIsTakenOnceAndOnlyWithItsVerifierAndItsNonce)
     const std::time_t now = std::time(nullptr);
     const SignInSecrets first = newSignInSecrets();
     const std::string code = queryValue(signIn(provider, first), "code");
-    ASSERT_EQ(refusal(provider.finish(code, first.codeVerifier, first.nonce, kRedirect, now)), "");
-    EXPECT_EQ(refusal(provider.finish(code, first.codeVerifier, first.nonce, kRedirect, now)), "token_refused")
+    ASSERT_EQ(peerRefusal(provider.finish(code, first.codeVerifier, first.nonce, kRedirect, now)), "");
+    EXPECT_EQ(peerRefusal(provider.finish(code, first.codeVerifier, first.nonce, kRedirect, now)), "token_refused")
         << "a code is used once";
 
     const SignInSecrets second = newSignInSecrets();
     const std::string secondCode = queryValue(signIn(provider, second), "code");
-    EXPECT_EQ(refusal(provider.finish(secondCode, first.codeVerifier, second.nonce, kRedirect, now)), "token_refused")
+    EXPECT_EQ(peerRefusal(provider.finish(secondCode, first.codeVerifier, second.nonce, kRedirect, now)), "token_refused")
         << "another sign-in's verifier (PKCE)";
 
     const SignInSecrets third = newSignInSecrets();
     const std::string thirdCode = queryValue(signIn(provider, third), "code");
-    EXPECT_EQ(refusal(provider.finish(thirdCode, third.codeVerifier, first.nonce, kRedirect, now)), "wrong_nonce")
+    EXPECT_EQ(peerRefusal(provider.finish(thirdCode, third.codeVerifier, first.nonce, kRedirect, now)), "wrong_nonce")
         << "a token for another sign-in";
 }
 
@@ -165,7 +165,7 @@ TEST_F(OidcProviderPeer, AProviderOfAnotherCaOrUnreachableCannotBeAskedAndSaysWh
     EXPECT_FALSE(unreachable.authorizationUrl(newSignInSecrets(), kRedirect, error));
     EXPECT_NE(error.find("cannot connect"), std::string::npos) << error;
     const auto finished = unreachable.finish("code", "verifier", "nonce", kRedirect, std::time(nullptr));
-    EXPECT_EQ(refusal(finished), "provider_unavailable");
+    EXPECT_EQ(peerRefusal(finished), "provider_unavailable");
 }
 
 TEST_F(OidcProviderPeer, ThroughTheServerAPersonGetsTheirOwnAccountWithTheRoleOfTheirGroup)

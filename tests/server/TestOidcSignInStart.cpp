@@ -12,14 +12,14 @@ using namespace tlmhub::server;
 
 namespace {
 
-const std::string kIssuer = "https://login.example.edu/realms/staff";
+const std::string kStartIssuer = "https://login.example.edu/realms/staff";
 
 nlohmann::json keycloakLikeDocument()
 {
-    return {{"issuer", kIssuer},
-            {"authorization_endpoint", kIssuer + "/protocol/openid-connect/auth"},
-            {"token_endpoint", kIssuer + "/protocol/openid-connect/token"},
-            {"jwks_uri", kIssuer + "/protocol/openid-connect/certs"},
+    return {{"issuer", kStartIssuer},
+            {"authorization_endpoint", kStartIssuer + "/protocol/openid-connect/auth"},
+            {"token_endpoint", kStartIssuer + "/protocol/openid-connect/token"},
+            {"jwks_uri", kStartIssuer + "/protocol/openid-connect/certs"},
             {"response_types_supported", {"code", "id_token", "code id_token"}},
             {"id_token_signing_alg_values_supported", {"PS384", "ES384", "RS256", "HS256"}},
             {"code_challenge_methods_supported", {"plain", "S256"}},
@@ -29,7 +29,7 @@ nlohmann::json keycloakLikeDocument()
 std::string refusal(const nlohmann::json& document)
 {
     std::string error;
-    return parseProviderMetadata(document, kIssuer, error) ? std::string{} : error;
+    return parseProviderMetadata(document, kStartIssuer, error) ? std::string{} : error;
 }
 
 } // namespace
@@ -37,11 +37,11 @@ std::string refusal(const nlohmann::json& document)
 TEST(OidcSignInStart, ADiscoveryDocumentIsTakenOnlyForTheIssuerAndWhatTheServerAsks)
 {
     std::string error;
-    const auto metadata = parseProviderMetadata(keycloakLikeDocument(), kIssuer, error);
+    const auto metadata = parseProviderMetadata(keycloakLikeDocument(), kStartIssuer, error);
     ASSERT_TRUE(metadata) << error;
-    EXPECT_EQ(metadata->tokenEndpoint, kIssuer + "/protocol/openid-connect/token");
+    EXPECT_EQ(metadata->tokenEndpoint, kStartIssuer + "/protocol/openid-connect/token");
     EXPECT_EQ(metadata->tokenAuthMethod, "client_secret_basic");
-    EXPECT_EQ(discoveryUrl(kIssuer), kIssuer + "/.well-known/openid-configuration");
+    EXPECT_EQ(discoveryUrl(kStartIssuer), kStartIssuer + "/.well-known/openid-configuration");
     EXPECT_EQ(discoveryUrl("https://accounts.example.com/"), "https://accounts.example.com/.well-known/openid-configuration");
 
     struct Case {
@@ -51,7 +51,7 @@ TEST(OidcSignInStart, ADiscoveryDocumentIsTakenOnlyForTheIssuerAndWhatTheServerA
     };
     const std::vector<Case> cases = {
         {"another issuer", {{"issuer", "https://evil.example.com"}}, "another issuer"},
-        {"the issuer with a slash more", {{"issuer", kIssuer + "/"}}, "another issuer"},
+        {"the issuer with a slash more", {{"issuer", kStartIssuer + "/"}}, "another issuer"},
         {"plain http", {{"token_endpoint", "http://login.example.edu/token"}}, "token_endpoint"},
         {"credentials in the address", {{"authorization_endpoint", "https://user:pw@login.example.edu/auth"}},
          "authorization_endpoint"},
@@ -74,7 +74,7 @@ TEST(OidcSignInStart, ADiscoveryDocumentIsTakenOnlyForTheIssuerAndWhatTheServerA
     EXPECT_EQ(refusal(minimal), "");
     nlohmann::json postOnly = keycloakLikeDocument();
     postOnly["token_endpoint_auth_methods_supported"] = {"client_secret_post"};
-    EXPECT_EQ(parseProviderMetadata(postOnly, kIssuer, error)->tokenAuthMethod, "client_secret_post");
+    EXPECT_EQ(parseProviderMetadata(postOnly, kStartIssuer, error)->tokenAuthMethod, "client_secret_post");
     EXPECT_NE(refusal(nlohmann::json::array()).find("not a JSON object"), std::string::npos);
 }
 

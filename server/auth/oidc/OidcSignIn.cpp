@@ -1,5 +1,7 @@
 #include "server/auth/oidc/OidcSignIn.h"
 
+#include "server/auth/SignInHandOver.h"
+
 #include "server/auth/DirectorySignIn.h"
 #include "server/auth/SecretFile.h"
 #include "server/auth/Sodium.h"
@@ -153,16 +155,7 @@ OidcOutcome OidcSignIn::account(const Provider& provider, const IdToken& token)
 
 std::string OidcSignIn::handOver(const User& user, std::int64_t nowUnix)
 {
-    const std::string key = newSignInSecrets().state;
-    mSignIns.add({key, "", "", "", "", nowUnix, user.id});   // collected by key alone: the app's POST
-    return key;
-}
-
-std::optional<std::int64_t> OidcSignIn::collect(const std::string& key, std::int64_t nowUnix)
-{
-    const auto handed = mSignIns.take(key, nowUnix - kHandOverSeconds);
-    if (!handed || handed->userId == 0) return std::nullopt;
-    return handed->userId;
+    return handOverSignIn(mSignIns, user.id, nowUnix);
 }
 
 } // namespace tlmhub::server

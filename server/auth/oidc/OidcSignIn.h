@@ -58,15 +58,12 @@ public:
     OidcOutcome finish(const std::string& name, const std::string& code, const std::string& state,
                        const std::string& iss, const std::string& providerError, const std::string& browserKey,
                        std::int64_t nowUnix);
-    // A one-time key for the app to collect the sign-in of `user` with, within a minute.
+    // A one-time key for the app to collect the sign-in of `user` with (SignInHandOver.h).
     std::string handOver(const User& user, std::int64_t nowUnix);
-    // The account of a hand-over key, once; nullopt when unknown, used or too old.
-    std::optional<std::int64_t> collect(const std::string& key, std::int64_t nowUnix);
 
     const std::string& publicUrl() const { return mPublicUrl; }
 
     static constexpr std::int64_t kSignInSeconds = 600;   // from the start to the provider's answer
-    static constexpr std::int64_t kHandOverSeconds = 60;
     static constexpr std::size_t kMaxPendingSignIns = 10'000;
     // A class of 40 behind one address, each starting a few times, stays far below.
     static constexpr int kMaxStartsPerAddress = 300;

@@ -2,6 +2,8 @@
 
 #include "server/store/UnixTime.h"
 
+#include <SQLiteCpp/Transaction.h>
+
 #include <algorithm>
 
 namespace tlmhub::server {

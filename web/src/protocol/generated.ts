@@ -168,6 +168,10 @@ export interface ProtocolDefinitions {
     LoginRequest?: LoginRequest;
     SignInProviders?: SignInProviders;
     SignInCollect?: SignInCollect;
+    LtiPlatformSettings?: LtiPlatformSettings;
+    LtiPlatform?: LtiPlatform;
+    LtiToolSettings?: LtiToolSettings;
+    LtiPlatformList?: LtiPlatformList;
     LoginResponse?: LoginResponse;
     TokenCreate?: TokenCreate;
     TokenCreated?: TokenCreated;
@@ -532,6 +536,115 @@ export interface SignInProviders {
  */
 export interface SignInCollect {
     key: string;
+}
+/**
+ * JSON body of POST /admin/lti/platforms and PUT /admin/lti/platforms/{id} (administrators): a learning platform this server is an LTI 1.3 tool of, with the values its administrator got when registering the tool.
+ */
+export interface LtiPlatformSettings {
+    /**
+     * Shown to administrators.
+     */
+    name: string;
+    /**
+     * The platform's issuer (`iss` of its launches), exactly as it sends it.
+     */
+    issuer: string;
+    /**
+     * The client id the platform gave this tool (the launches' `aud`).
+     */
+    client_id: string;
+    /**
+     * The platform's OpenID Connect authentication address (where a launch's login goes).
+     */
+    auth_url: string;
+    /**
+     * The platform's OAuth 2 token address (grade services).
+     */
+    token_url: string;
+    /**
+     * The platform's public keys.
+     */
+    jwks_url: string;
+    /**
+     * The deployments of this tool at the platform; launches from others are refused.
+     *
+     * @minItems 1
+     * @maxItems 100
+     */
+    deployment_ids: [string, ...string[]];
+}
+/**
+ * A registered learning platform.
+ */
+export interface LtiPlatform {
+    id: number;
+    /**
+     * Shown to administrators.
+     */
+    name: string;
+    /**
+     * The platform's issuer (`iss` of its launches), exactly as it sends it.
+     */
+    issuer: string;
+    /**
+     * The client id the platform gave this tool (the launches' `aud`).
+     */
+    client_id: string;
+    /**
+     * The platform's OpenID Connect authentication address (where a launch's login goes).
+     */
+    auth_url: string;
+    /**
+     * The platform's OAuth 2 token address (grade services).
+     */
+    token_url: string;
+    /**
+     * The platform's public keys.
+     */
+    jwks_url: string;
+    /**
+     * The deployments of this tool at the platform; launches from others are refused.
+     *
+     * @minItems 1
+     * @maxItems 100
+     */
+    deployment_ids: [string, ...string[]];
+    /**
+     * Unix seconds.
+     */
+    created_at: number;
+}
+/**
+ * What a platform's administrator enters when registering this tool (empty addresses while LTI is off).
+ */
+export interface LtiToolSettings {
+    /**
+     * False: launches are refused (the server was started without --lti-key-file or --public-url).
+     */
+    enabled: boolean;
+    /**
+     * The tool's OpenID Connect login initiation address.
+     */
+    login_url: string;
+    /**
+     * The tool's launch (redirect) address; also the target link.
+     */
+    launch_url: string;
+    /**
+     * The tool's deep-linking address.
+     */
+    deep_link_url: string;
+    /**
+     * The tool's public keys.
+     */
+    jwks_url: string;
+}
+/**
+ * Reply of GET /admin/lti/platforms: the registered platforms by id, and this tool's own addresses.
+ */
+export interface LtiPlatformList {
+    platforms: LtiPlatform[];
+    tool: LtiToolSettings;
 }
 export interface LoginResponse {
     token: string;

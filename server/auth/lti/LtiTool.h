@@ -1,0 +1,87 @@
+#pragma once
+// tlmhub as an LTI 1.3 tool (docs/sign-in.md, "LTI 1.3"): a registered platform's
+// third-party-initiated login is answered by sending the browser to the platform's
+// authentication address with a new state and nonce (kept in SignInStore, as a provider
+// sign-in's), and the platform's launch that comes back is taken once, in that browser only,
+// and checked: the ID token against the platform's key set (IdTokenVerifier), then the LTI
+// claims (LtiMessage). A valid launch signs the person in to the account linked to the
+// platform's issuer and their `sub`, made on their first launch, and puts them in the class
+// mapped to the launch's course with the class role their course roles give; a teacher's first
+// launch from a course makes that class. The browser then goes to the app's launch page with a
+// one-time hand-over key, as after a provider sign-in.
+#include "server/app/ServerOptions.h"
+#include "server/auth/LoginRateLimiter.h"
+#include "server/auth/User.h"
+#include "server/auth/lti/ToolKeys.h"
+#include "server/auth/oidc/ProviderHttp.h"
+#include "server/auth/oidc/ProviderKeyCache.h"
+#include "server/store/LabStore.h"
+#include "server/store/LtiStore.h"
+#include "server/store/SignInStore.h"
+#include "server/store/UserStore.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+namespace tlmhub::server {
+
+// The parameters of a third-party-initiated login (LTI 1.3 Core §5.1.1.1).
+struct LtiLoginRequest {
+    std::string issuer, loginHint, targetLinkUri, messageHint, clientId, deploymentId;
+};
+
+struct LtiOutcome {
+    std::optional<User> user;   // launched: signed in ...
+    std::string location;       // ... and sent here (the app's page); login: the platform's address
+    std::string browserKey;     // login: the value of the launch cookie
+    // else why not: a stable code for the page and the details for the server's log
+    std::string code, message;
+};
+
+class LtiTool {
+public:
+    // Reads the tool's keys (throws naming the file when it cannot).
+    LtiTool(const ServerOptions& options, UserStore& users, SignInStore& signIns, LtiStore& platforms, LabStore& labs);
+
+    LtiOutcome login(const LtiLoginRequest& request, const std::string& clientAddress, std::int64_t nowUnix);
+    // The platform's form post (id_token and state, or error) in the browser whose launch
+    // cookie holds `browserKey`.
+    LtiOutcome launch(const std::string& idToken, const std::string& state, const std::string& platformError,
+                      const std::string& browserKey, std::int64_t nowUnix);
+
+    const ToolKeys& keys() const { return mKeys; }
+    const std::string& publicUrl() const { return mPublicUrl; }
+    std::string loginUrl() const { return mPublicUrl + "/api/v1/lti/login"; }
+    std::string launchUrl() const { return mPublicUrl + "/api/v1/lti/launch"; }
+    std::string keySetUrl() const { return mPublicUrl + "/api/v1/lti/jwks"; }
+    // The origins of the registered platforms' addresses: who may frame the launch pages.
+    std::string frameAncestors();
+
+    static constexpr std::int64_t kLaunchSeconds = 600;   // from the login to the platform's launch
+    static constexpr int kMaxLoginsPerAddress = 300;      // as a provider sign-in's starts
+    static constexpr std::chrono::minutes kLoginWindow{10};
+
+private:
+    // The key cache of the platform, made anew when its key set's address changed.
+    std::shared_ptr<ProviderKeyCache> keyCache(const LtiPlatform& platform);
+    // The class of the launch's course, made on the teacher's first launch; 0 with `refusal`.
+    std::int64_t courseClass(const LtiPlatform& platform, const struct LtiMessage& message, const User& user,
+                             LtiOutcome& refusal);
+
+    UserStore& mUsers;
+    SignInStore& mSignIns;
+    LtiStore& mPlatforms;
+    LabStore& mLabs;
+    const std::string mPublicUrl;
+    ToolKeys mKeys;
+    ProviderHttp mHttp;
+    LoginRateLimiter mLoginsPerAddress{kMaxLoginsPerAddress, kLoginWindow};
+    std::mutex mKeyCachesMutex;
+    std::map<std::int64_t, std::pair<std::string, std::shared_ptr<ProviderKeyCache>>> mKeyCaches;
+};
+
+} // namespace tlmhub::server

@@ -1,0 +1,43 @@
+#pragma once
+// Test support for LTI 1.3: a learning platform (tests/peers/lti-platform, on npm's jose)
+// started by the test on Node.js, over TLS on a free loopback port with a certificate from a CA
+// made for it, registered with the tool at `toolUrl`. Its control routes stage launches (with
+// one claim or the signature broken on purpose) and report what the tool sent it. A missing
+// Node.js or peer install throws (the test fails, naming the command that installs it).
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace tlmhub::test {
+
+class TemporaryLtiPlatform {
+public:
+    static constexpr const char* kClientId = "tlmhub-tool";
+    static constexpr const char* kDeploymentId = "deployment-1";
+
+    explicit TemporaryLtiPlatform(const std::string& toolUrl);
+    ~TemporaryLtiPlatform();
+    TemporaryLtiPlatform(const TemporaryLtiPlatform&) = delete;
+    TemporaryLtiPlatform& operator=(const TemporaryLtiPlatform&) = delete;
+
+    std::string issuer() const { return "https://127.0.0.1:" + std::to_string(mPort); }
+    std::filesystem::path caFile() const { return mDir / "ca.pem"; }
+    std::string logTail() const;
+    // The body of POST /admin/lti/platforms that registers this platform.
+    nlohmann::json registration() const;
+
+    // A control route: POST with `body` (GET when null); the reply's JSON.
+    nlohmann::json control(const std::string& path, const nlohmann::json& body = nullptr) const;
+    // What the platform does with the tool's authentication request (its address, from the
+    // tool's login redirect): the launch form's fields as JSON {action, id_token, state}, or
+    // {action, error, state}.
+    nlohmann::json authenticate(const std::string& authenticationUrl) const;
+
+private:
+    std::filesystem::path mDir;
+    unsigned short mPort = 0;
+    int mPid = -1;
+};
+
+} // namespace tlmhub::test
