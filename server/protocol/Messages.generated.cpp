@@ -505,6 +505,87 @@ void to_json(nlohmann::json& j, const LtiPlatformList& v)
     j["tool"] = v.tool;
 }
 
+void from_json(const nlohmann::json& j, LtiDeepLink& v)
+{
+    j.at("class_id").get_to(v.classId);
+    j.at("platform").get_to(v.platform);
+    j.at("expires_at").get_to(v.expiresAt);
+}
+
+void to_json(nlohmann::json& j, const LtiDeepLink& v)
+{
+    j = nlohmann::json::object();
+    j["class_id"] = v.classId;
+    j["platform"] = v.platform;
+    j["expires_at"] = v.expiresAt;
+}
+
+void from_json(const nlohmann::json& j, LtiDeepLinkPlace& v)
+{
+    j.at("assignment_id").get_to(v.assignmentId);
+}
+
+void to_json(nlohmann::json& j, const LtiDeepLinkPlace& v)
+{
+    j = nlohmann::json::object();
+    j["assignment_id"] = v.assignmentId;
+}
+
+void from_json(const nlohmann::json& j, LtiDeepLinkAnswer& v)
+{
+    j.at("return_url").get_to(v.returnUrl);
+    j.at("jwt").get_to(v.jwt);
+}
+
+void to_json(nlohmann::json& j, const LtiDeepLinkAnswer& v)
+{
+    j = nlohmann::json::object();
+    j["return_url"] = v.returnUrl;
+    j["jwt"] = v.jwt;
+}
+
+void from_json(const nlohmann::json& j, LtiScoreInfo& v)
+{
+    j.at("id").get_to(v.id);
+    j.at("platform").get_to(v.platform);
+    j.at("user").get_to(v.user);
+    j.at("score_given").get_to(v.scoreGiven);
+    j.at("score_maximum").get_to(v.scoreMaximum);
+    j.at("state").get_to(v.state);
+    j.at("attempts").get_to(v.attempts);
+    j.at("next_attempt_at").get_to(v.nextAttemptAt);
+    j.at("last_error").get_to(v.lastError);
+    j.at("created_at").get_to(v.createdAt);
+    j.at("delivered_at").get_to(v.deliveredAt);
+}
+
+void to_json(nlohmann::json& j, const LtiScoreInfo& v)
+{
+    j = nlohmann::json::object();
+    j["id"] = v.id;
+    j["platform"] = v.platform;
+    j["user"] = v.user;
+    j["score_given"] = v.scoreGiven;
+    j["score_maximum"] = v.scoreMaximum;
+    j["state"] = v.state;
+    j["attempts"] = v.attempts;
+    j["next_attempt_at"] = v.nextAttemptAt;
+    j["last_error"] = v.lastError;
+    j["created_at"] = v.createdAt;
+    j["delivered_at"] = v.deliveredAt;
+}
+
+void from_json(const nlohmann::json& j, LtiScoreList& v)
+{
+    j.at("scores").get_to(v.scores);
+}
+
+void to_json(nlohmann::json& j, const LtiScoreList& v)
+{
+    j = nlohmann::json::object();
+    j["scores"] = v.scores;
+}
+
 void from_json(const nlohmann::json& j, LoginResponse& v)
 {
     j.at("token").get_to(v.token);

@@ -91,9 +91,14 @@ struct LiveValue;
 struct LogSubscribeRequest;
 struct LoginRequest;
 struct LoginResponse;
+struct LtiDeepLink;
+struct LtiDeepLinkAnswer;
+struct LtiDeepLinkPlace;
 struct LtiPlatform;
 struct LtiPlatformList;
 struct LtiPlatformSettings;
+struct LtiScoreInfo;
+struct LtiScoreList;
 struct LtiToolSettings;
 struct MemberUpdate;
 struct Model;
@@ -454,6 +459,57 @@ struct LtiPlatformList {
 };
 void from_json(const nlohmann::json& j, LtiPlatformList& v);
 void to_json(nlohmann::json& j, const LtiPlatformList& v);
+
+// Reply of GET /lti/deep-links/{key}: a teacher's deep-linking launch waiting for the
+// assignment to place in the platform's course.
+struct LtiDeepLink {
+    std::int64_t classId{};
+    std::string platform{};
+    std::int64_t expiresAt{};
+};
+void from_json(const nlohmann::json& j, LtiDeepLink& v);
+void to_json(nlohmann::json& j, const LtiDeepLink& v);
+
+// JSON body of POST /lti/deep-links/{key}: the assignment to place.
+struct LtiDeepLinkPlace {
+    std::int64_t assignmentId{};
+};
+void from_json(const nlohmann::json& j, LtiDeepLinkPlace& v);
+void to_json(nlohmann::json& j, const LtiDeepLinkPlace& v);
+
+// Reply of POST /lti/deep-links/{key}: the signed deep-linking answer the browser posts (form
+// field JWT) to the platform's return address.
+struct LtiDeepLinkAnswer {
+    std::string returnUrl{};
+    std::string jwt{};
+};
+void from_json(const nlohmann::json& j, LtiDeepLinkAnswer& v);
+void to_json(nlohmann::json& j, const LtiDeepLinkAnswer& v);
+
+// A score sent or to be sent to a learning platform's grade book.
+struct LtiScoreInfo {
+    std::int64_t id{};
+    std::string platform{};
+    UserRef user{};
+    double scoreGiven{};
+    double scoreMaximum{};
+    std::string state{};
+    std::int64_t attempts{};
+    std::int64_t nextAttemptAt{};
+    std::string lastError{};
+    std::int64_t createdAt{};
+    std::int64_t deliveredAt{};
+};
+void from_json(const nlohmann::json& j, LtiScoreInfo& v);
+void to_json(nlohmann::json& j, const LtiScoreInfo& v);
+
+// Reply of GET /assignments/{id}/lti-scores (the class's staff): the assignment's scores for
+// learning platforms, newest first.
+struct LtiScoreList {
+    std::vector<LtiScoreInfo> scores;
+};
+void from_json(const nlohmann::json& j, LtiScoreList& v);
+void to_json(nlohmann::json& j, const LtiScoreList& v);
 
 struct LoginResponse {
     std::string token{};
@@ -1739,9 +1795,14 @@ void visitDefinitions(Visitor&& visit)
     visit.template operator()<LogSubscribeRequest>("LogSubscribeRequest");
     visit.template operator()<LoginRequest>("LoginRequest");
     visit.template operator()<LoginResponse>("LoginResponse");
+    visit.template operator()<LtiDeepLink>("LtiDeepLink");
+    visit.template operator()<LtiDeepLinkAnswer>("LtiDeepLinkAnswer");
+    visit.template operator()<LtiDeepLinkPlace>("LtiDeepLinkPlace");
     visit.template operator()<LtiPlatform>("LtiPlatform");
     visit.template operator()<LtiPlatformList>("LtiPlatformList");
     visit.template operator()<LtiPlatformSettings>("LtiPlatformSettings");
+    visit.template operator()<LtiScoreInfo>("LtiScoreInfo");
+    visit.template operator()<LtiScoreList>("LtiScoreList");
     visit.template operator()<LtiToolSettings>("LtiToolSettings");
     visit.template operator()<MemberUpdate>("MemberUpdate");
     visit.template operator()<Model>("Model");

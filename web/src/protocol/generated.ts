@@ -172,6 +172,11 @@ export interface ProtocolDefinitions {
     LtiPlatform?: LtiPlatform;
     LtiToolSettings?: LtiToolSettings;
     LtiPlatformList?: LtiPlatformList;
+    LtiDeepLink?: LtiDeepLink;
+    LtiDeepLinkPlace?: LtiDeepLinkPlace;
+    LtiDeepLinkAnswer?: LtiDeepLinkAnswer;
+    LtiScoreInfo?: LtiScoreInfo;
+    LtiScoreList?: LtiScoreList;
     LoginResponse?: LoginResponse;
     TokenCreate?: TokenCreate;
     TokenCreated?: TokenCreated;
@@ -645,6 +650,67 @@ export interface LtiToolSettings {
 export interface LtiPlatformList {
     platforms: LtiPlatform[];
     tool: LtiToolSettings;
+}
+/**
+ * Reply of GET /lti/deep-links/{key}: a teacher's deep-linking launch waiting for the assignment to place in the platform's course.
+ */
+export interface LtiDeepLink {
+    /**
+     * The course's class: its assignments may be placed.
+     */
+    class_id: number;
+    /**
+     * The platform's name.
+     */
+    platform: string;
+    /**
+     * Unix seconds; afterwards the teacher launches again.
+     */
+    expires_at: number;
+}
+/**
+ * JSON body of POST /lti/deep-links/{key}: the assignment to place.
+ */
+export interface LtiDeepLinkPlace {
+    assignment_id: number;
+}
+/**
+ * Reply of POST /lti/deep-links/{key}: the signed deep-linking answer the browser posts (form field JWT) to the platform's return address.
+ */
+export interface LtiDeepLinkAnswer {
+    return_url: string;
+    jwt: string;
+}
+/**
+ * A score sent or to be sent to a learning platform's grade book.
+ */
+export interface LtiScoreInfo {
+    id: number;
+    /**
+     * The platform's name.
+     */
+    platform: string;
+    user: UserRef;
+    score_given: number;
+    score_maximum: number;
+    /**
+     * pending: to be sent (again at next_attempt_at); delivered; superseded by a newer score of the same person; failed: given up (last_error says why).
+     */
+    state: 'pending' | 'delivered' | 'superseded' | 'failed';
+    attempts: number;
+    next_attempt_at: number;
+    last_error: string;
+    created_at: number;
+    /**
+     * Unix seconds; 0 until delivered.
+     */
+    delivered_at: number;
+}
+/**
+ * Reply of GET /assignments/{id}/lti-scores (the class's staff): the assignment's scores for learning platforms, newest first.
+ */
+export interface LtiScoreList {
+    scores: LtiScoreInfo[];
 }
 export interface LoginResponse {
     token: string;
