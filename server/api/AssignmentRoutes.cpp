@@ -3,6 +3,7 @@
 #include "server/api/ApiSupport.h"
 
 #include "server/api/LabSupport.h"
+#include "server/auth/lti/LtiTool.h"
 #include "server/labs/ParameterLock.h"
 #include "server/store/UnixTime.h"
 
@@ -257,7 +258,41 @@ Response handIn(Services& s, Call& call)
     const auto receivedAt = std::chrono::duration_cast<std::chrono::seconds>(call.receivedAt.time_since_epoch()).count();
     const auto stored = s.labs.handIn(view->assignment, call.who(), receivedAt, failure);
     if (!stored) return labErrorResponse(failure);
+    if (s.lti)
+        s.lti->queueScore(view->assignment.id, call.who().id, stored->score, stored->maxScore,
+                          "hand-in " + std::to_string(stored->attempt), receivedAt * 1000);
     return jsonResponse(http::status::created, LabService::handInJson(*stored, view->classView.isStaff()));
+}
+
+// What went, or goes, to the learning platforms' grade books: for the class's staff.
+Response ltiScores(Services& s, Call& call)
+{
+    const auto view = visibleAssignment(s, call);
+    if (!view) return labNotFound("assignment");
+    if (!view->classView.isStaff()) return apiError(http::status::forbidden, "forbidden", "the grades sent are for staff");
+    std::map<std::int64_t, std::string> platformNames, userNames;
+    for (const LtiPlatform& p : s.ltiPlatforms.listPlatforms()) platformNames[p.id] = p.name;
+    protocol::LtiScoreList out;
+    for (const LtiScore& score : s.ltiPlatforms.scoresOf(view->assignment.id)) {
+        if (!userNames.count(score.userId)) {
+            const auto user = s.users.find(score.userId);
+            userNames[score.userId] = user ? user->username : "";
+        }
+        protocol::LtiScoreInfo info;
+        info.id = score.id;
+        info.platform = platformNames[score.platformId];
+        info.user = {score.userId, userNames[score.userId]};
+        info.scoreGiven = score.scoreGiven;
+        info.scoreMaximum = score.scoreMaximum;
+        info.state = score.state;
+        info.attempts = score.attempts;
+        info.nextAttemptAt = score.nextAttemptAt;
+        info.lastError = score.lastError;
+        info.createdAt = score.createdAt;
+        info.deliveredAt = score.deliveredAt;
+        out.scores.push_back(std::move(info));
+    }
+    return jsonResponse(http::status::ok, out);
 }
 
 Response listHandIns(Services& s, Call& call)
@@ -317,6 +352,7 @@ void addAssignmentRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/assignments/{id}/reset", true, resetCopy});
     routes.push_back({http::verb::post, "/assignments/{id}/pretest", true, pretest, RouteWork::Checks});
     routes.push_back({http::verb::post, "/assignments/{id}/handin", true, handIn, RouteWork::Checks});
+    routes.push_back({http::verb::get, "/assignments/{id}/lti-scores", true, ltiScores});
     routes.push_back({http::verb::get, "/assignments/{id}/handins", true, listHandIns});
     routes.push_back({http::verb::get, "/assignments/{id}/dashboard", true, dashboard});
     routes.push_back({http::verb::get, "/assignments/{id}/overlay", true, overlay});

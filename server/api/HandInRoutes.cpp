@@ -3,6 +3,7 @@
 #include "server/api/ApiSupport.h"
 
 #include "server/api/LabSupport.h"
+#include "server/auth/lti/LtiTool.h"
 #include "server/http/HeaderValues.h"
 #include "server/store/UnixTime.h"
 
@@ -91,6 +92,16 @@ Response setGrade(Services& s, Call& call)
     if (!readJsonBody(call, "GradeUpdate", body, error)) return error;
     const std::optional<double> grade = body["grade"].is_null() ? std::nullopt : std::optional(body["grade"].get<double>());
     s.labs.store().setGrade(view->handIn.id, grade, call.who().id);
+    // The platforms' grade books follow the gradebook: the grade of the student's latest hand-in,
+    // else its score.
+    const auto attempts = s.labs.store().handIns(view->handIn.assignmentId, view->handIn.studentId);
+    const bool latest = std::none_of(attempts.begin(), attempts.end(),
+                                     [&](const HandIn& h) { return h.attempt > view->handIn.attempt; });
+    if (s.lti && latest)
+        s.lti->queueScore(view->handIn.assignmentId, view->handIn.studentId, grade.value_or(view->handIn.score),
+                          view->handIn.maxScore, grade ? "graded by the teacher" : "hand-in " + std::to_string(view->handIn.attempt),
+                          std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+                              .count());
     return jsonResponse(http::status::ok, LabService::handInJson(*s.labs.store().handIn(view->handIn.id), true));
 }
 

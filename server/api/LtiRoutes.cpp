@@ -1,8 +1,10 @@
 // tlmhub as an LTI 1.3 tool (docs/sign-in.md): the platforms' public routes GET /lti/jwks,
-// GET|POST /lti/login and POST /lti/launch, and the administrators' registry of platforms,
+// GET|POST /lti/login, POST /lti/launch and the launch page GET /lti/app; a teacher's deep
+// linking, GET|POST /lti/deep-links/{key}; and the administrators' registry of platforms,
 // /admin/lti/platforms[/{id}].
 #include "server/api/ApiSupport.h"
 #include "server/auth/lti/LtiTool.h"
+#include "server/labs/LabService.h"
 #include "server/store/LtiStore.h"
 #include "server/store/ModelName.h"
 
@@ -140,6 +142,41 @@ Response launch(Services& s, Call& call)
     return r;
 }
 
+// The teacher's deep-linking launch waiting under the path's key: 404 for anyone else.
+std::optional<LtiDeepLinkRequest> callersDeepLink(Services& s, const Call& call)
+{
+    return s.lti ? s.lti->deepLinkOf(call.params.path.at("key"), call.who().id, std::time(nullptr)) : std::nullopt;
+}
+
+Response deepLinkNotFound()
+{
+    return apiError(http::status::not_found, "not_found", "this placement has expired or was used; add the activity again");
+}
+
+Response getDeepLink(Services& s, Call& call)
+{
+    const auto request = callersDeepLink(s, call);
+    const auto platform = request ? s.ltiPlatforms.platform(request->platformId) : std::nullopt;
+    if (!platform) return deepLinkNotFound();
+    return jsonResponse(http::status::ok, protocol::LtiDeepLink{request->classId, platform->name,
+                                                                request->createdAt + LtiTool::kLaunchSeconds});
+}
+
+Response placeDeepLink(Services& s, Call& call)
+{
+    const auto request = callersDeepLink(s, call);
+    if (!request) return deepLinkNotFound();
+    protocol::LtiDeepLinkPlace body;
+    Response error;
+    if (!readBody(call, "LtiDeepLinkPlace", body, error)) return error;
+    const auto assignment = s.labs.store().assignment(body.assignmentId);
+    if (!assignment || assignment->classId != request->classId)
+        return apiError(http::status::not_found, "not_found", "no such assignment in the course's class");
+    const auto jwt = s.lti->placeAssignment(*request, *assignment, std::time(nullptr));
+    if (!jwt) return deepLinkNotFound();
+    return jsonResponse(http::status::ok, protocol::LtiDeepLinkAnswer{request->returnUrl, *jwt});
+}
+
 protocol::LtiPlatform platformJson(const LtiPlatform& p)
 {
     return {p.id, p.name, p.issuer, p.clientId, p.authUrl, p.tokenUrl, p.jwksUrl, p.deploymentIds, p.createdAt};
@@ -240,6 +277,8 @@ void addLtiRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/lti/login", false, login});
     routes.push_back({http::verb::post, "/lti/launch", false, launch});
     routes.push_back({http::verb::get, "/lti/app", false, launchPage});
+    routes.push_back({http::verb::get, "/lti/deep-links/{key}", true, getDeepLink});
+    routes.push_back({http::verb::post, "/lti/deep-links/{key}", true, placeDeepLink});
     routes.push_back({http::verb::get, "/admin/lti/platforms", true, listPlatforms});
     routes.push_back({http::verb::post, "/admin/lti/platforms", true, createPlatform});
     routes.push_back({http::verb::get, "/admin/lti/platforms/{id}", true, getPlatform});

@@ -111,6 +111,7 @@ void TlmhubApp::startJobs()
 {
     mStudies->start();
     mQueue->start();
+    if (mLtiTool) mLtiTool->startDelivery();
 }
 
 void TlmhubApp::shutdown()
@@ -120,6 +121,7 @@ void TlmhubApp::shutdown()
     if (mStudies) mStudies->stop();
     if (mQueue) mQueue->shutdown();
     if (mLiveSimulations) mLiveSimulations->stopAll();
+    if (mLtiTool) mLtiTool->stopDelivery();
     if (mCheckRuns) mCheckRuns->stop();
     if (mPools) mPools->stop();
 }

@@ -25,6 +25,22 @@ struct LtiPlatform {
     std::int64_t createdAt = 0;              // unix s
 };
 
+// A teacher's deep-linking launch, waiting for the assignment to place in the platform's course.
+struct LtiDeepLinkRequest {
+    std::string key;                         // random: in the app's address
+    std::int64_t platformId = 0;
+    std::string deploymentId;
+    std::string returnUrl, data;             // where the answer goes, what it must echo
+    std::int64_t classId = 0, userId = 0;    // the course's class and the teacher
+    std::int64_t createdAt = 0;              // unix s
+};
+
+// Where a person's score for an assignment goes: a platform's line item and who they are there.
+struct LtiScoreTarget {
+    std::int64_t platformId = 0;
+    std::string lineItemUrl, userSubject;
+};
+
 // A score on its way to a platform's line item.
 struct LtiScore {
     std::int64_t id = 0;
@@ -75,6 +91,17 @@ public:
     virtual void setLineItem(std::int64_t platformId, const std::string& url, std::int64_t assignmentId) = 0;
     // The line item of the assignment at the platform.
     virtual std::optional<std::string> lineItemOf(std::int64_t platformId, std::int64_t assignmentId) = 0;
+
+    // People launched from a platform are linked to it as identities "lti <issuer>"
+    // (UserStore): the line items of the assignment at the platforms `userId` is linked to.
+    virtual std::vector<LtiScoreTarget> scoreTargets(std::int64_t assignmentId, std::int64_t userId) = 0;
+
+    // ---- deep linking
+    // Stores a request; those made before `purgeBeforeUnix` (never answered) go.
+    virtual void addDeepLink(const LtiDeepLinkRequest& request, std::int64_t purgeBeforeUnix) = 0;
+    // The request with `key`, made at or after `notBeforeUnix`; `take` removes it in the same
+    // step (of two racing, one gets it).
+    virtual std::optional<LtiDeepLinkRequest> deepLink(const std::string& key, std::int64_t notBeforeUnix, bool take) = 0;
 
     // ---- outbox
     // Stores a pending score, due now; older pending scores of the same person and line item

@@ -112,4 +112,23 @@ nlohmann::json TemporaryLtiPlatform::authenticate(const std::string& authenticat
     return nlohmann::json::parse(response.body);
 }
 
+nlohmann::json TemporaryLtiPlatform::deepLinkReturn(const std::string& returnUrl, const std::string& jwt) const
+{
+    std::string error;
+    const auto server = net::parseUrl(issuer(), error);
+    if (!returnUrl.starts_with(issuer() + "/"))
+        throw std::runtime_error("TemporaryLtiPlatform: not this platform's address: " + returnUrl);
+    net::HttpRequest request;
+    request.method = net::HttpMethod::Post;
+    request.target = returnUrl.substr(issuer().size());
+    request.body = "JWT=" + net::percentEncode(jwt);
+    request.contentType = "application/x-www-form-urlencoded";
+    request.headers.emplace_back("Accept", "application/json");
+    const net::HttpResponse response = net::HttpClient(*server, {}, caFile()).send(request);
+    if (response.status != 200)
+        throw std::runtime_error("TemporaryLtiPlatform: the deep-linking answer was refused (" +
+                                 std::to_string(response.status) + "): " + response.body.substr(0, 500));
+    return nlohmann::json::parse(response.body);
+}
+
 } // namespace tlmhub::test

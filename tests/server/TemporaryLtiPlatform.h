@@ -34,6 +34,10 @@ public:
     // {action, error, state}.
     nlohmann::json authenticate(const std::string& authenticationUrl) const;
 
+    // What a browser does with the tool's deep-linking answer: posts `jwt` as form field JWT to
+    // `returnUrl` (the platform's); the platform's JSON answer ({"placed": [...]}).
+    nlohmann::json deepLinkReturn(const std::string& returnUrl, const std::string& jwt) const;
+
 private:
     std::filesystem::path mDir;
     unsigned short mPort = 0;

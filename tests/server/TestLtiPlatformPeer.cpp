@@ -10,6 +10,7 @@
 // registry is for administrators only; the launch page may be framed by registered platforms.
 #include "ServerHarness.h"
 #include "TemporaryLtiPlatform.h"
+#include "TestFiles.h"
 
 #include "server/auth/lti/ToolKeys.h"
 #include "server/auth/oidc/JsonWebKeySet.h"
@@ -20,8 +21,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 using tlmhub::test::HttpClient;
 using tlmhub::test::HttpReply;
@@ -125,6 +128,28 @@ protected:
         if (collected.status != 200) throw std::runtime_error("collect: " + collected.body);
         browser.setToken(nlohmann::json::parse(collected.body).at("token").get<std::string>());
         return rest.find('/') == std::string::npos ? std::string{} : rest.substr(rest.find('/'));
+    }
+    // The teacher's placement of an assignment from a deep-linking launch: what the platform placed.
+    static nlohmann::json placeAt(HttpClient& teacher, const std::string& key, std::int64_t assignmentId)
+    {
+        const HttpReply answer = teacher.post("/api/v1/lti/deep-links/" + key, {{"assignment_id", assignmentId}});
+        if (answer.status != 200) throw std::runtime_error("place: " + answer.body);
+        const auto signed_ = nlohmann::json::parse(answer.body);
+        return platform->deepLinkReturn(signed_.at("return_url").get<std::string>(), signed_.at("jwt").get<std::string>());
+    }
+    // Polls the teacher's view of the assignment's scores until `done` holds (the outbox works
+    // on its own thread); the last list.
+    static nlohmann::json scoresUntil(HttpClient& teacher, std::int64_t assignmentId,
+                                      const std::function<bool(const nlohmann::json&)>& done)
+    {
+        nlohmann::json scores;
+        for (int i = 0; i < 600; ++i) {
+            scores = nlohmann::json::parse(teacher.get("/api/v1/assignments/" + std::to_string(assignmentId) + "/lti-scores").body)
+                         .at("scores");
+            if (done(scores)) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        return scores;
     }
     static nlohmann::json person(const std::string& sub, const std::string& name, const std::string& role)
     {
@@ -388,4 +413,103 @@ TEST_F(LtiPlatformPeer, OnlyAdministratorsManageThePlatforms)
     EXPECT_EQ(admin.request(http::verb::delete_, path).status, 204);
     EXPECT_EQ(admin.get(path).status, 404);
     EXPECT_EQ(nlohmann::json::parse(admin.get("/api/v1/admin/lti/platforms").body).at("platforms").size(), 1U);
+}
+
+TEST_F(LtiPlatformPeer, ATeacherPlacesAnAssignmentAndTheLinkOpensItAndItsScoresReachTheGradeBook)
+{
+    const nlohmann::json course = {{"id", "placement"}, {"title", "Placement"}};
+    HttpClient teacher(server->port());
+    const std::string route = launchAndSignIn(
+        teacher, {{"user", person("t-9", "Tina Teacher", "Instructor")}, {"context", course}, {"messageType", "LtiDeepLinkingRequest"}});
+    ASSERT_TRUE(route.starts_with("/place/")) << route;
+    const std::string key = route.substr(7);
+    const auto waiting = nlohmann::json::parse(teacher.get("/api/v1/lti/deep-links/" + key).body);
+    EXPECT_EQ(waiting.at("platform"), "Test platform");
+    const std::int64_t classId = waiting.at("class_id").get<std::int64_t>();
+
+    const std::int64_t templateId = tlmhub::test::uploadModel(teacher, tlmhub::test::kPositionServo, "servo");
+    const HttpReply created = teacher.post("/api/v1/classes/" + std::to_string(classId) + "/assignments",
+                                           {{"title", "Tune the servo"}, {"template_model_id", templateId}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    const std::int64_t assignmentId = nlohmann::json::parse(created.body).at("id").get<std::int64_t>();
+    const std::string assignmentPath = "/api/v1/assignments/" + std::to_string(assignmentId);
+    ASSERT_EQ(teacher.request(http::verb::put, assignmentPath + "/checks",
+                              nlohmann::json{{"checks",
+                                              {{{"name", "Ends near the target"}, {"points", 4},
+                                                {"definition", {{"kind", "scalar"}, {"variable", "Position_Sensor#out#Value"},
+                                                                {"measure", "final"}, {"min", -1}, {"max", 1}}}}}}}
+                                  .dump())
+                  .status,
+              200);
+
+    HttpClient stranger(server->port());
+    stranger.login("admin", tlmhub::test::kAdminPassword);
+    EXPECT_EQ(stranger.get("/api/v1/lti/deep-links/" + key).status, 404) << "another user's placement";
+    EXPECT_EQ(stranger.post("/api/v1/lti/deep-links/" + key, {{"assignment_id", assignmentId}}).status, 404);
+    const nlohmann::json placed = placeAt(teacher, key, assignmentId);
+    ASSERT_EQ(placed.at("placed").size(), 1U) << placed;
+    const nlohmann::json link = placed.at("placed")[0];
+    EXPECT_EQ(link.at("url"), serverUrl() + "/api/v1/lti/launch");
+    EXPECT_EQ(link.at("title"), "Tune the servo");
+    EXPECT_EQ(link.at("custom").at("assignment"), std::to_string(assignmentId));
+    EXPECT_FALSE(link.at("lineitem").is_null()) << "the platform made the line item the answer asked for";
+    EXPECT_EQ(teacher.post("/api/v1/lti/deep-links/" + key, {{"assignment_id", assignmentId}}).status, 404) << "once";
+
+    HttpClient student(server->port());
+    const nlohmann::json studentLaunch = {{"user", person("s-9", "Sam Student", "Learner")},
+                                          {"context", course},
+                                          {"resourceLink", {{"id", link.at("resourceLinkId")}}}};
+    EXPECT_EQ(launchAndSignIn(student, studentLaunch), "/assignment/" + std::to_string(assignmentId))
+        << "the placed link opens the assignment";
+    ASSERT_EQ(student.post(assignmentPath + "/open", nlohmann::json::object()).status / 100, 2);
+    const HttpReply handedIn = student.post(assignmentPath + "/handin", nlohmann::json::object());
+    ASSERT_EQ(handedIn.status, 201) << handedIn.body;
+    const double score = nlohmann::json::parse(handedIn.body).at("score").get<double>();
+
+    const auto delivered = scoresUntil(teacher, assignmentId, [](const nlohmann::json& list) {
+        return list.size() == 1 && list[0].at("state") == "delivered";
+    });
+    ASSERT_EQ(delivered.size(), 1U) << delivered;
+    EXPECT_EQ(delivered[0].at("state"), "delivered") << delivered;
+    EXPECT_EQ(delivered[0].at("user").at("username"), "Sam_Student");
+    EXPECT_EQ(delivered[0].at("platform"), "Test platform");
+    const auto received = platform->control("/control/scores");
+    ASSERT_EQ(received.size(), 1U) << received;
+    EXPECT_EQ(received[0].at("lineitem"), link.at("lineitem"));
+    EXPECT_EQ(received[0].at("score").at("userId"), "s-9") << "the person as the platform knows them";
+    EXPECT_EQ(received[0].at("score").at("scoreGiven"), score);
+    EXPECT_EQ(received[0].at("score").at("scoreMaximum"), 4);
+    EXPECT_EQ(received[0].at("score").at("gradingProgress"), "FullyGraded");
+    EXPECT_EQ(student.get(assignmentPath + "/lti-scores").status, 403) << "for the class's staff";
+
+    // The platform down: the teacher's grade waits in the outbox, then goes once it is back.
+    platform->control("/control/down", nlohmann::json::object());
+    const std::int64_t handInId = nlohmann::json::parse(handedIn.body).at("id").get<std::int64_t>();
+    ASSERT_EQ(teacher.request(http::verb::put, "/api/v1/handins/" + std::to_string(handInId) + "/grade", R"({"grade": 3.5})").status,
+              200);
+    const auto waitingScores = scoresUntil(teacher, assignmentId, [](const nlohmann::json& list) {
+        return !list.empty() && list[0].at("attempts").get<int>() >= 1 && !list[0].at("last_error").get<std::string>().empty();
+    });
+    EXPECT_EQ(waitingScores[0].at("state"), "pending");
+    EXPECT_NE(waitingScores[0].at("last_error").get<std::string>().find("503"), std::string::npos) << waitingScores[0];
+    platform->control("/control/up", nlohmann::json::object());
+    const auto afterUp = scoresUntil(teacher, assignmentId, [](const nlohmann::json& list) {
+        return !list.empty() && list[0].at("state") == "delivered";
+    });
+    EXPECT_EQ(afterUp[0].at("state"), "delivered") << afterUp[0];
+    EXPECT_GE(afterUp[0].at("attempts").get<int>(), 2);
+    const auto all = platform->control("/control/scores");
+    ASSERT_EQ(all.size(), 2U) << all;
+    EXPECT_EQ(all[1].at("score").at("scoreGiven"), 3.5) << "the teacher's grade";
+    const auto results = platform->control("/control/lineitems");
+    EXPECT_NE(results.dump().find("3.5"), std::string::npos) << "read back from the line item: " << results;
+}
+
+TEST_F(LtiPlatformPeer, OnlyATeachersDeepLinkingLaunchPlaces)
+{
+    HttpClient student(server->port());
+    const HttpReply refused = launch(student, {{"user", person("s-10", "Sue Student", "Learner")},
+                                               {"context", {{"id", "placement"}, {"title", "Placement"}}},
+                                               {"messageType", "LtiDeepLinkingRequest"}});
+    EXPECT_EQ(refusalCode(refused), "not_instructor") << refused.body;
 }

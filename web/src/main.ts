@@ -1,6 +1,7 @@
 // App entry: hash routes #/login, #/models, #/model/<id>[?assignment=<id>][&path=<subsystems>], #/account,
-// #/classes, #/class/<id>, #/assignment/<id>, #/watch/<live session id>?class=<id>, #/admin/lti;
-// the ends of a sign-in, #/signed-in/<key>[/class/<id>|/assignment/<id>] and #/sign-in-failed/<reason>.
+// #/classes, #/class/<id>, #/assignment/<id>, #/watch/<live session id>?class=<id>, #/admin/lti,
+// #/lti-place/<key> (placing an assignment in a learning platform's course); the ends of a sign-in,
+// #/signed-in/<key>[/class/<id>|/assignment/<id>|/place/<key>] and #/sign-in-failed/<reason>.
 // Only the hash routes and absolute asset paths: the same index.html also serves as the LTI launch page.
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
@@ -14,6 +15,7 @@ import { renderClassList } from './labs/ClassListView';
 import { renderClass } from './labs/ClassView';
 import { allowedText, renderAssignment } from './labs/AssignmentView';
 import type { LabPage } from './labs/LabPage';
+import { renderLtiPlace } from './labs/LtiPlaceView';
 import { renderWatch } from './live/WatchView';
 import { h } from './ui/dom';
 import { parseModelRoute, sameModel } from './app/modelRoute';
@@ -105,6 +107,7 @@ async function route(): Promise<void> {
     renderTopbar();
     const lab = /^#\/(class|assignment)\/(\d+)$/.exec(hash);
     const watch = /^#\/watch\/(\d+)(?:\?class=(\d+))?$/.exec(hash);
+    const place = /^#\/lti-place\/([A-Za-z0-9_-]+)$/.exec(hash);
     if (hash === '#/login') {
         renderLogin(page, session, () => { location.hash = '#/models'; });
     } else if (hash === '#/account') {
@@ -133,6 +136,8 @@ async function route(): Promise<void> {
         const shown = await renderWatch(page, session, Number(watch[1]), back);
         if (currentHash === hash) labPage = shown;
         else shown.dispose();
+    } else if (place) {
+        await renderLtiPlace(page, session, place[1]);
     } else if (hash === '#/classes') {
         await renderClassList(page, session);
     } else if (lab) {

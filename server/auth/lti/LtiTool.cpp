@@ -133,10 +133,21 @@ LtiOutcome LtiTool::launch(const std::string& idToken, const std::string& state,
     const User user = mUsers.insertLinked("lti " + platform->issuer, token.subject, accountNameFor(message.name), kRoleUser);
     if (user.disabled) return ltiRefused("account_disabled", "the account is disabled");
     LtiOutcome outcome{user, mPublicUrl + "/api/v1/lti/app#/signed-in/" + handOverSignIn(mSignIns, user.id, nowUnix), {}, {}, {}};
-    if (message.contextId.empty()) return outcome;
+    if (message.contextId.empty() && message.messageType == kLtiResourceLinkRequest) return outcome;
+    if (message.messageType == kLtiDeepLinkingRequest && message.classRole != kClassTeacher)
+        return ltiRefused("not_instructor", "only the course's teachers place tlmhub's assignments in it");
+    if (message.contextId.empty() && message.messageType == kLtiDeepLinkingRequest)
+        return ltiRefused("no_course", "a deep-linking launch outside a course has no class to place from");
     LtiOutcome refusal;
     const std::int64_t classId = courseClass(*platform, message, user, refusal);
     if (classId == 0) return refusal;
+    if (message.messageType == kLtiDeepLinkingRequest) {
+        const LtiDeepLinkRequest request{newSignInSecrets().state, platform->id, message.deploymentId,
+                                         message.deepLinkReturnUrl, message.deepLinkData, classId, user.id, nowUnix};
+        mPlatforms.addDeepLink(request, nowUnix - kLaunchSeconds);
+        outcome.location += "/place/" + request.key;
+        return outcome;
+    }
     // A link placed by deep linking names its assignment; its line item takes the scores.
     const auto assignmentId = message.custom.contains("assignment")
         ? assignmentIdOf(message.custom["assignment"].get<std::string>())
@@ -149,6 +160,59 @@ LtiOutcome LtiTool::launch(const std::string& idToken, const std::string& state,
         outcome.location += "/class/" + std::to_string(classId);
     }
     return outcome;
+}
+
+std::optional<LtiDeepLinkRequest> LtiTool::deepLinkOf(const std::string& key, std::int64_t userId, std::int64_t nowUnix)
+{
+    auto request = key.empty() ? std::nullopt : mPlatforms.deepLink(key, nowUnix - kLaunchSeconds, false);
+    if (!request || request->userId != userId) return std::nullopt;
+    return request;
+}
+
+std::optional<std::string> LtiTool::placeAssignment(const LtiDeepLinkRequest& request, const AssignmentInfo& assignment,
+                                                    std::int64_t nowUnix)
+{
+    const auto platform = mPlatforms.platform(request.platformId);
+    if (!platform || !mPlatforms.deepLink(request.key, nowUnix - kLaunchSeconds, true)) return std::nullopt;
+    const std::string id = std::to_string(assignment.id);
+    // The platform scales scores to its line item's maximum, so 100 suits every assignment.
+    const nlohmann::json link = {{"type", "ltiResourceLink"},
+                                 {"title", assignment.title},
+                                 {"url", launchUrl()},
+                                 {"custom", {{"assignment", id}}},
+                                 {"lineItem", {{"scoreMaximum", 100}, {"label", assignment.title}, {"resourceId", "assignment-" + id}}}};
+    nlohmann::json claims = {{"iss", platform->clientId},
+                             {"aud", platform->issuer},
+                             {"iat", nowUnix},
+                             {"exp", nowUnix + 300},
+                             {"nonce", newSignInSecrets().nonce},
+                             {"https://purl.imsglobal.org/spec/lti/claim/deployment_id", request.deploymentId},
+                             {"https://purl.imsglobal.org/spec/lti/claim/message_type", "LtiDeepLinkingResponse"},
+                             {"https://purl.imsglobal.org/spec/lti/claim/version", "1.3.0"},
+                             {"https://purl.imsglobal.org/spec/lti-dl/claim/content_items", nlohmann::json::array({link})}};
+    if (!request.data.empty()) claims["https://purl.imsglobal.org/spec/lti-dl/claim/data"] = request.data;
+    return mKeys.sign(claims);
+}
+
+void LtiTool::queueScore(std::int64_t assignmentId, std::int64_t userId, double scoreGiven, double scoreMaximum,
+                         const std::string& comment, std::int64_t timestampMs)
+{
+    if (scoreMaximum <= 0) return;   // an assignment without points: nothing a grade book can show
+    const auto targets = mPlatforms.scoreTargets(assignmentId, userId);
+    for (const LtiScoreTarget& target : targets) {
+        LtiScore score;
+        score.platformId = target.platformId;
+        score.lineItemUrl = target.lineItemUrl;
+        score.userSubject = target.userSubject;
+        score.userId = userId;
+        score.assignmentId = assignmentId;
+        score.scoreGiven = scoreGiven;
+        score.scoreMaximum = scoreMaximum;
+        score.comment = comment;
+        score.timestampMs = timestampMs;
+        mPlatforms.addScore(score);
+    }
+    if (!targets.empty()) mDelivery.wake();
 }
 
 std::int64_t LtiTool::courseClass(const LtiPlatform& platform, const LtiMessage& message, const User& user,

@@ -8,10 +8,15 @@
 // platform's issuer and their `sub`, made on their first launch, and puts them in the class
 // mapped to the launch's course with the class role their course roles give; a teacher's first
 // launch from a course makes that class. The browser then goes to the app's launch page with a
-// one-time hand-over key, as after a provider sign-in.
+// one-time hand-over key, as after a provider sign-in. A teacher's deep-linking launch leads to
+// the app's page for placing one of the class's assignments in the course; the answer is signed
+// with the tool's key and holds a link that opens the assignment and a line item for its
+// scores. Hand-in scores and teachers' grades then go to that line item through the outbox
+// (LtiScoreDelivery).
 #include "server/app/ServerOptions.h"
 #include "server/auth/LoginRateLimiter.h"
 #include "server/auth/User.h"
+#include "server/auth/lti/LtiScoreDelivery.h"
 #include "server/auth/lti/ToolKeys.h"
 #include "server/auth/oidc/ProviderHttp.h"
 #include "server/auth/oidc/ProviderKeyCache.h"
@@ -53,6 +58,20 @@ public:
     LtiOutcome launch(const std::string& idToken, const std::string& state, const std::string& platformError,
                       const std::string& browserKey, std::int64_t nowUnix);
 
+    // A teacher's deep-linking launch waiting under `key`, when `userId` made it.
+    std::optional<LtiDeepLinkRequest> deepLinkOf(const std::string& key, std::int64_t userId, std::int64_t nowUnix);
+    // The signed deep-linking answer placing `assignment` (of the request's class), once per
+    // key; nullopt when the key was used or is too old.
+    std::optional<std::string> placeAssignment(const LtiDeepLinkRequest& request, const AssignmentInfo& assignment,
+                                               std::int64_t nowUnix);
+
+    // A score of `userId` for the assignment, to every platform line item the assignment has at
+    // a platform the person launched from. `timestampMs`: when it was given.
+    void queueScore(std::int64_t assignmentId, std::int64_t userId, double scoreGiven, double scoreMaximum,
+                    const std::string& comment, std::int64_t timestampMs);
+    void startDelivery() { mDelivery.start(); }
+    void stopDelivery() { mDelivery.stop(); }
+
     const ToolKeys& keys() const { return mKeys; }
     const std::string& publicUrl() const { return mPublicUrl; }
     std::string loginUrl() const { return mPublicUrl + "/api/v1/lti/login"; }
@@ -80,6 +99,7 @@ private:
     ToolKeys mKeys;
     ProviderHttp mHttp;
     LoginRateLimiter mLoginsPerAddress{kMaxLoginsPerAddress, kLoginWindow};
+    LtiScoreDelivery mDelivery{mPlatforms, mKeys, mHttp};
     std::mutex mKeyCachesMutex;
     std::map<std::int64_t, std::pair<std::string, std::shared_ptr<ProviderKeyCache>>> mKeyCaches;
 };

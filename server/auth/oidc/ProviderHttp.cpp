@@ -8,19 +8,28 @@ ProviderHttp::ProviderHttp(std::filesystem::path caFile) : mCaFile(std::move(caF
 
 std::optional<ProviderReply> ProviderHttp::getJson(const std::string& url, std::string& error) const
 {
-    return send(url, false, {}, {}, error);
+    return send(url, false, {}, {}, {}, true, error);
 }
 
 std::optional<ProviderReply> ProviderHttp::postForm(const std::string& url, const std::string& form,
                                                     const std::vector<std::pair<std::string, std::string>>& headers,
                                                     std::string& error) const
 {
-    return send(url, true, form, headers, error);
+    return send(url, true, "application/x-www-form-urlencoded", form, headers, true, error);
 }
 
-std::optional<ProviderReply> ProviderHttp::send(const std::string& url, bool post, const std::string& form,
+std::optional<ProviderReply> ProviderHttp::post(const std::string& url, const std::string& contentType,
+                                                const std::string& body,
                                                 const std::vector<std::pair<std::string, std::string>>& headers,
                                                 std::string& error) const
+{
+    return send(url, true, contentType, body, headers, false, error);
+}
+
+std::optional<ProviderReply> ProviderHttp::send(const std::string& url, bool post, const std::string& contentType,
+                                                const std::string& content,
+                                                const std::vector<std::pair<std::string, std::string>>& headers,
+                                                bool needsJson, std::string& error) const
 {
     constexpr std::string_view scheme = "https://";
     const std::size_t pathStart = url.starts_with(scheme) ? url.find_first_of("/?", scheme.size()) : std::string::npos;
@@ -38,8 +47,8 @@ std::optional<ProviderReply> ProviderHttp::send(const std::string& url, bool pos
     request.headers = headers;
     request.headers.emplace_back("Accept", "application/json");
     if (post) {
-        request.contentType = "application/x-www-form-urlencoded";
-        request.body = form;
+        request.contentType = contentType;
+        request.body = content;
     }
     try {
         net::HttpClient client(*server,
@@ -48,10 +57,11 @@ std::optional<ProviderReply> ProviderHttp::send(const std::string& url, bool pos
                                mCaFile);
         net::HttpResponse response = client.send(request);
         nlohmann::json body = nlohmann::json::parse(response.body, nullptr, false);
-        if (body.is_discarded()) {
+        if (body.is_discarded() && needsJson) {
             error = url.substr(0, 200) + " answered " + std::to_string(response.status) + " without JSON";
             return std::nullopt;
         }
+        if (body.is_discarded()) body = nullptr;
         return ProviderReply{response.status, std::move(body)};
     } catch (const net::ConnectionError& e) {
         error = e.what();

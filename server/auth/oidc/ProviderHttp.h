@@ -1,5 +1,6 @@
 #pragma once
-// The server's requests to an OpenID provider (discovery, key set, token endpoint): https
+// The server's requests to an OpenID provider (discovery, key set, token endpoint) or a
+// learning platform (key set, token endpoint, grade services): https
 // only, the certificate verified against the system's CAs or the administrator's CA file,
 // bounded in time (5 s to connect, 5 s for each wait) and size (1 MiB), one connection per
 // request. Every failure is a message naming the address and why, never an exception.
@@ -29,11 +30,18 @@ public:
                                           const std::vector<std::pair<std::string, std::string>>& headers,
                                           std::string& error) const;
 
+    // POST `body` of `contentType` (a learning platform's grade services); the reply's body is
+    // null when it is empty or not JSON.
+    std::optional<ProviderReply> post(const std::string& url, const std::string& contentType, const std::string& body,
+                                      const std::vector<std::pair<std::string, std::string>>& headers,
+                                      std::string& error) const;
+
     static constexpr std::size_t kMaxReplyBytes = 1 << 20;
 
 private:
-    std::optional<ProviderReply> send(const std::string& url, bool post, const std::string& form,
-                                      const std::vector<std::pair<std::string, std::string>>& headers,
+    std::optional<ProviderReply> send(const std::string& url, bool post, const std::string& contentType,
+                                      const std::string& content,
+                                      const std::vector<std::pair<std::string, std::string>>& headers, bool needsJson,
                                       std::string& error) const;
 
     std::filesystem::path mCaFile;

@@ -46,6 +46,20 @@ constexpr PgStatement kSetLineItem{"lti_set_line_item",
                                    " ON CONFLICT(platform_id, assignment_id) DO UPDATE SET url = excluded.url"};
 constexpr PgStatement kLineItemOf{"lti_line_item_of",
                                   "SELECT url FROM lti_line_items WHERE platform_id = $1 AND assignment_id = $2"};
+constexpr PgStatement kScoreTargets{"lti_score_targets",
+                                    "SELECT l.platform_id, l.url, i.subject FROM lti_line_items l"
+                                    " JOIN lti_platforms p ON p.id = l.platform_id"
+                                    " JOIN identities i ON i.provider = 'lti ' || p.issuer AND i.user_id = $1"
+                                    " WHERE l.assignment_id = $2 ORDER BY l.platform_id"};
+constexpr PgStatement kPurgeDeepLinks{"lti_purge_deep_links", "DELETE FROM lti_deep_links WHERE created_at < $1"};
+constexpr PgStatement kAddDeepLink{"lti_add_deep_link",
+                                   "INSERT INTO lti_deep_links(key, platform_id, deployment_id, return_url, data, class_id,"
+                                   " user_id, created_at) VALUES($1, $2, $3, $4, $5, $6, $7, $8)"};
+constexpr PgStatement kDeepLink{"lti_deep_link", "SELECT platform_id, deployment_id, return_url, data, class_id, user_id,"
+                                                 " created_at FROM lti_deep_links WHERE key = $1"};
+constexpr PgStatement kTakeDeepLink{"lti_take_deep_link",
+                                    "DELETE FROM lti_deep_links WHERE key = $1 RETURNING platform_id, deployment_id,"
+                                    " return_url, data, class_id, user_id, created_at"};
 constexpr PgStatement kSupersede{"lti_supersede",
                                  "UPDATE lti_scores SET state = 'superseded' WHERE state = 'pending'"
                                  " AND platform_id = $1 AND line_item_url = $2 AND user_subject = $3"};
@@ -219,6 +233,48 @@ std::optional<std::string> PostgresLtiStore::lineItemOf(std::int64_t platformId,
         const auto r = c.exec(tx, kLineItemOf, platformId, assignmentId);
         if (r.empty()) return std::nullopt;
         return r[0][0].as<std::string>();
+    });
+}
+
+std::vector<LtiScoreTarget> PostgresLtiStore::scoreTargets(std::int64_t assignmentId, std::int64_t userId)
+{
+    return mDb.run(Idempotent::Yes, [&](PostgresConnection& c) {
+        pqxx::nontransaction tx(c.raw());
+        std::vector<LtiScoreTarget> targets;
+        for (const auto& row : c.exec(tx, kScoreTargets, userId, assignmentId))
+            targets.push_back({row[0].as<std::int64_t>(), row[1].as<std::string>(), row[2].as<std::string>()});
+        return targets;
+    });
+}
+
+void PostgresLtiStore::addDeepLink(const LtiDeepLinkRequest& request, std::int64_t purgeBeforeUnix)
+{
+    mDb.run(Idempotent::No, [&](PostgresConnection& c) {
+        pqxx::work tx(c.raw());
+        c.exec(tx, kPurgeDeepLinks, purgeBeforeUnix);
+        c.exec(tx, kAddDeepLink, request.key, request.platformId, request.deploymentId, request.returnUrl, request.data,
+               request.classId, request.userId, request.createdAt);
+        tx.commit();
+    });
+}
+
+std::optional<LtiDeepLinkRequest> PostgresLtiStore::deepLink(const std::string& key, std::int64_t notBeforeUnix, bool take)
+{
+    // A take is not retried: a delete that committed before the connection broke has taken it.
+    return mDb.run(take ? Idempotent::No : Idempotent::Yes, [&](PostgresConnection& c) -> std::optional<LtiDeepLinkRequest> {
+        pqxx::nontransaction tx(c.raw());
+        const auto r = c.exec(tx, take ? kTakeDeepLink : kDeepLink, key);
+        if (r.empty()) return std::nullopt;
+        LtiDeepLinkRequest request{key,
+                                   r[0][0].as<std::int64_t>(),
+                                   r[0][1].as<std::string>(),
+                                   r[0][2].as<std::string>(),
+                                   r[0][3].as<std::string>(),
+                                   r[0][4].as<std::int64_t>(),
+                                   r[0][5].as<std::int64_t>(),
+                                   r[0][6].as<std::int64_t>()};
+        if (request.createdAt < notBeforeUnix) return std::nullopt;
+        return request;
     });
 }
 

@@ -336,6 +336,15 @@ void addLtiPlatforms(pqxx::transaction_base& tx)
              " delivered_at BIGINT NOT NULL DEFAULT 0,"
              " lease BIGINT NOT NULL DEFAULT 0,"
              " lease_until BIGINT NOT NULL DEFAULT 0)");
+    tx.exec0("CREATE TABLE lti_deep_links ("
+             " key TEXT PRIMARY KEY,"
+             " platform_id BIGINT NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+             " deployment_id TEXT NOT NULL,"
+             " return_url TEXT NOT NULL,"
+             " data TEXT NOT NULL,"
+             " class_id BIGINT NOT NULL REFERENCES classes(id) ON DELETE CASCADE,"
+             " user_id BIGINT NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+             " created_at BIGINT NOT NULL)");
     tx.exec0("CREATE INDEX lti_scores_due ON lti_scores(state, next_attempt_at)");
     tx.exec0("CREATE INDEX lti_scores_assignment ON lti_scores(assignment_id)");
 }

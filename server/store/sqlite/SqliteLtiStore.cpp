@@ -212,6 +212,69 @@ std::optional<std::string> SqliteLtiStore::lineItemOf(std::int64_t platformId, s
     });
 }
 
+std::vector<LtiScoreTarget> SqliteLtiStore::scoreTargets(std::int64_t assignmentId, std::int64_t userId)
+{
+    return mDb.run([&](SqliteConnection& c) {
+        auto query = c.prepared("SELECT l.platform_id, l.url, i.subject FROM lti_line_items l"
+                                " JOIN lti_platforms p ON p.id = l.platform_id"
+                                " JOIN identities i ON i.provider = 'lti ' || p.issuer AND i.user_id = ?"
+                                " WHERE l.assignment_id = ? ORDER BY l.platform_id");
+        query->bind(1, userId);
+        query->bind(2, assignmentId);
+        std::vector<LtiScoreTarget> targets;
+        while (query->executeStep())
+            targets.push_back({query->getColumn(0).getInt64(), query->getColumn(1).getString(), query->getColumn(2).getString()});
+        return targets;
+    });
+}
+
+void SqliteLtiStore::addDeepLink(const LtiDeepLinkRequest& request, std::int64_t purgeBeforeUnix)
+{
+    mDb.run([&](SqliteConnection& c) {
+        SQLite::Transaction transaction(c.db(), SQLite::TransactionBehavior::IMMEDIATE);
+        {
+            auto purge = c.prepared("DELETE FROM lti_deep_links WHERE created_at < ?");
+            purge->bind(1, purgeBeforeUnix);
+            purge->exec();
+        }
+        auto insert = c.prepared("INSERT INTO lti_deep_links(key, platform_id, deployment_id, return_url, data, class_id,"
+                                 " user_id, created_at) VALUES(?, ?, ?, ?, ?, ?, ?, ?)");
+        insert->bind(1, request.key);
+        insert->bind(2, request.platformId);
+        insert->bind(3, request.deploymentId);
+        insert->bind(4, request.returnUrl);
+        insert->bind(5, request.data);
+        insert->bind(6, request.classId);
+        insert->bind(7, request.userId);
+        insert->bind(8, request.createdAt);
+        insert->exec();
+        transaction.commit();
+    });
+}
+
+std::optional<LtiDeepLinkRequest> SqliteLtiStore::deepLink(const std::string& key, std::int64_t notBeforeUnix, bool take)
+{
+    return mDb.run([&](SqliteConnection& c) -> std::optional<LtiDeepLinkRequest> {
+        auto query = take ? c.prepared("DELETE FROM lti_deep_links WHERE key = ? RETURNING platform_id, deployment_id,"
+                                       " return_url, data, class_id, user_id, created_at")
+                          : c.prepared("SELECT platform_id, deployment_id, return_url, data, class_id, user_id, created_at"
+                                       " FROM lti_deep_links WHERE key = ?");
+        query->bind(1, key);
+        if (!query->executeStep()) return std::nullopt;
+        LtiDeepLinkRequest request{key,
+                                   query->getColumn(0).getInt64(),
+                                   query->getColumn(1).getString(),
+                                   query->getColumn(2).getString(),
+                                   query->getColumn(3).getString(),
+                                   query->getColumn(4).getInt64(),
+                                   query->getColumn(5).getInt64(),
+                                   query->getColumn(6).getInt64()};
+        while (query->executeStep()) {}   // the statement runs to its end: a delete is done
+        if (request.createdAt < notBeforeUnix) return std::nullopt;
+        return request;
+    });
+}
+
 std::int64_t SqliteLtiStore::addScore(const LtiScore& score)
 {
     const auto now = static_cast<std::int64_t>(unixNow());

@@ -340,6 +340,15 @@ void addLtiPlatforms(SQLite::Database& db)
             " delivered_at INTEGER NOT NULL DEFAULT 0,"
             " lease INTEGER NOT NULL DEFAULT 0,"
             " lease_until INTEGER NOT NULL DEFAULT 0)");
+    db.exec("CREATE TABLE lti_deep_links ("
+            " key TEXT PRIMARY KEY,"
+            " platform_id INTEGER NOT NULL REFERENCES lti_platforms(id) ON DELETE CASCADE,"
+            " deployment_id TEXT NOT NULL,"
+            " return_url TEXT NOT NULL,"
+            " data TEXT NOT NULL,"
+            " class_id INTEGER NOT NULL REFERENCES classes(id) ON DELETE CASCADE,"
+            " user_id INTEGER NOT NULL REFERENCES users(id) ON DELETE CASCADE,"
+            " created_at INTEGER NOT NULL)");
     db.exec("CREATE INDEX lti_scores_due ON lti_scores(state, next_attempt_at)");
     db.exec("CREATE INDEX lti_scores_assignment ON lti_scores(assignment_id)");
 }

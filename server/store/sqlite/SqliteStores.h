@@ -285,6 +285,9 @@ public:
     std::int64_t linkContext(std::int64_t platformId, const std::string& contextId, std::int64_t classId) override;
     void setLineItem(std::int64_t platformId, const std::string& url, std::int64_t assignmentId) override;
     std::optional<std::string> lineItemOf(std::int64_t platformId, std::int64_t assignmentId) override;
+    std::vector<LtiScoreTarget> scoreTargets(std::int64_t assignmentId, std::int64_t userId) override;
+    void addDeepLink(const LtiDeepLinkRequest& request, std::int64_t purgeBeforeUnix) override;
+    std::optional<LtiDeepLinkRequest> deepLink(const std::string& key, std::int64_t notBeforeUnix, bool take) override;
     std::int64_t addScore(const LtiScore& score) override;
     std::vector<LtiScore> claimScores(std::int64_t nowUnix, std::int64_t leaseSeconds, std::size_t limit) override;
     bool markDelivered(std::int64_t id, std::int64_t lease, std::int64_t nowUnix) override;

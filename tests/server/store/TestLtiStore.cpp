@@ -275,5 +275,59 @@ TEST_P(LtiStoreConformance, RemovingAPlatformRemovesItsCoursesLineItemsAndOutbox
     EXPECT_TRUE(lti.platform(again)->deploymentIds.size() == 2) << "registered again from scratch";
 }
 
+TEST_P(LtiStoreConformance, AScoreGoesToTheLineItemsOfThePlatformsThePersonIsLinkedTo)
+{
+    auto& lti = store().lti();
+    const User teacher = addUser("teacher");
+    const auto assignment = addAssignment(addClass(teacher, "A1"));
+    const auto moodleId = addPlatform(moodle());
+    LtiPlatform canvas = moodle("canvas-tool");
+    canvas.issuer = "https://canvas.example.edu";
+    const auto canvasId = addPlatform(canvas);
+    const User ada = store().users().insertLinked("lti https://moodle.example.edu", "moodle-ada", "ada", kRoleUser);
+    const User bob = addUser("bob");   // a local account, not linked to any platform
+    EXPECT_TRUE(lti.scoreTargets(assignment, ada.id).empty()) << "no line item yet";
+
+    lti.setLineItem(moodleId, "https://moodle.example.edu/lineitems/1", assignment);
+    lti.setLineItem(canvasId, "https://canvas.example.edu/lineitems/9", assignment);
+    const auto targets = lti.scoreTargets(assignment, ada.id);
+    ASSERT_EQ(targets.size(), 1U) << "ada is linked to Moodle only";
+    EXPECT_EQ(targets[0].platformId, moodleId);
+    EXPECT_EQ(targets[0].lineItemUrl, "https://moodle.example.edu/lineitems/1");
+    EXPECT_EQ(targets[0].userSubject, "moodle-ada");
+    EXPECT_TRUE(lti.scoreTargets(assignment, bob.id).empty());
+    EXPECT_TRUE(lti.scoreTargets(assignment + 1, ada.id).empty());
+}
+
+TEST_P(LtiStoreConformance, ADeepLinkRequestIsReadUntilTakenOnceAndPurgedWhenNeverAnswered)
+{
+    auto& lti = store().lti();
+    const User teacher = addUser("teacher");
+    const auto classId = addClass(teacher, "A1");
+    const auto platform = addPlatform(moodle());
+    const LtiDeepLinkRequest request{"key-1", platform, "1", "https://moodle.example.edu/return", "opaque", classId,
+                                     teacher.id, 5000};
+    lti.addDeepLink(request, 0);
+    for (bool take : {false, false, true}) {
+        const auto read = lti.deepLink("key-1", 4000, take);
+        ASSERT_TRUE(read) << "take " << take;
+        EXPECT_EQ(read->platformId, platform);
+        EXPECT_EQ(read->deploymentId, "1");
+        EXPECT_EQ(read->returnUrl, "https://moodle.example.edu/return");
+        EXPECT_EQ(read->data, "opaque");
+        EXPECT_EQ(read->classId, classId);
+        EXPECT_EQ(read->userId, teacher.id);
+        EXPECT_EQ(read->createdAt, 5000);
+    }
+    EXPECT_FALSE(lti.deepLink("key-1", 4000, false)) << "taken";
+    EXPECT_FALSE(lti.deepLink("key-1", 4000, true)) << "once";
+
+    lti.addDeepLink({"old", platform, "1", "https://r", "", classId, teacher.id, 5000}, 0);
+    EXPECT_FALSE(lti.deepLink("old", 5001, false)) << "past its wait";
+    lti.addDeepLink({"new", platform, "1", "https://r", "", classId, teacher.id, 9000}, 6000);
+    EXPECT_FALSE(lti.deepLink("old", 0, false)) << "purged by the next request";
+    EXPECT_TRUE(lti.deepLink("new", 0, false));
+}
+
 } // namespace
 } // namespace tlmhub::test

@@ -1,7 +1,8 @@
 // REST client for /api/v1: bearer token, JSON in and out, errors as ApiError.
 import { ApiError } from './ApiError';
 import type {
-    CatalogueEntry, FmuInterface, JobInfo, LtiPlatform, LtiPlatformList, LtiPlatformSettings, Model, ModelSummary, Preferences,
+    CatalogueEntry, FmuInterface, JobInfo, LtiDeepLink, LtiDeepLinkAnswer, LtiDeepLinkPlace, LtiPlatform, LtiPlatformList,
+    LtiPlatformSettings, Model, ModelSummary, Preferences,
     ResultsJson, SignInProviders, User,
 } from '../protocol/types';
 
@@ -114,6 +115,15 @@ export class RestClient {
     }
     /** Removes the platform with its course links, line items and pending scores (the classes stay). */
     deleteLtiPlatform(id: number): Promise<void> { return this.call('DELETE', `/admin/lti/platforms/${id}`); }
+    /** A deep-linking launch's placement (its teacher only): the class whose assignments may be placed. */
+    ltiDeepLink(key: string): Promise<LtiDeepLink> {
+        return this.call('GET', `/lti/deep-links/${encodeURIComponent(key)}`);
+    }
+    /** Places an assignment (once per key): the signed answer the browser posts to the platform. */
+    placeLtiDeepLink(key: string, assignmentId: number): Promise<LtiDeepLinkAnswer> {
+        const place: LtiDeepLinkPlace = { assignment_id: assignmentId };
+        return this.call('POST', `/lti/deep-links/${encodeURIComponent(key)}`, place);
+    }
 
     listModels(): Promise<ModelSummary[]> { return this.call('GET', '/models'); }
     getModel(id: number): Promise<ModelSummary & { model: Model; writable?: boolean }> { return this.call('GET', `/models/${id}`); }

@@ -24,9 +24,21 @@ describe('sign-in end', () => {
 
     it('is no sign-in end for other addresses or continuations it does not know', () => {
         for (const hash of ['#/models', '#/login', '#/signed-in/', '#/signed-in/KEY/model/3', '#/signed-in/KEY/class/',
-            '#/signed-in/KEY/class/12/x', '#/signed-in/KEY/class/-1', '#/signed-in/K.E.Y', '#/signed-in/KEY/assignment/7?x=1']) {
+            '#/signed-in/KEY/class/12/x', '#/signed-in/KEY/class/-1', '#/signed-in/K.E.Y', '#/signed-in/KEY/assignment/7?x=1',
+            '#/signed-in/KEY/place/', '#/signed-in/KEY/place/D.L', '#/signed-in/KEY/place/DL/x', '#/signed-in/KEY/place/DL?x=1',
+            '#/signed-in/KEY/class/12/place/DL']) {
             expect(parseSignInEnd(hash), hash).toBeNull();
         }
+    });
+
+    it('continues a deep-linking launch to the placement page with its key', () => {
+        expect(parseSignInEnd('#/signed-in/KEY/place/Dl_k-9x')).toEqual({ kind: 'signed-in', key: 'KEY', next: '#/lti-place/Dl_k-9x' });
+    });
+
+    it('takes the key out of the history before trading it, then goes on to the placement page', async () => {
+        const { steps, handlers } = recorder();
+        await finishSignIn(parseSignInEnd('#/signed-in/KEY/place/DLKEY')!, handlers);
+        expect(steps).toEqual(['replace #/login', 'collect KEY', 'go #/lti-place/DLKEY']);
     });
 
     it('takes the key out of the history before trading it, then goes on to the page named', async () => {

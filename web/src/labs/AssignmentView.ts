@@ -1,6 +1,7 @@
 // An assignment's page: title, times, what students may change and the instructions
-// (Markdown); below, a student's own work (StudentAssignment) or the staff's dashboard and
-// checks (Dashboard, ChecksEditor); the teacher also changes or deletes the assignment here.
+// (Markdown); below, a student's own work (StudentAssignment) or the staff's dashboard, the
+// scores sent to learning platforms (LtiScoresSection) and the checks (Dashboard,
+// ChecksEditor); the teacher also changes or deletes the assignment here.
 import { errorText, h, toast } from '../ui/dom';
 import type { Session } from '../app/Session';
 import type { Assignment, Check, LabClass } from './types';
@@ -13,6 +14,7 @@ import { dashboard } from './Dashboard';
 import { checksEditor } from './ChecksEditor';
 import { assignmentForm } from './AssignmentForm';
 import { assignmentWarnings } from './AssignmentWarnings';
+import { ltiScoresSection } from './LtiScoresSection';
 
 /** What students may change, in words. */
 export function allowedText(a: Assignment): string {
@@ -74,6 +76,7 @@ async function showAssignment(root: HTMLElement, session: Session, assignmentId:
         const board = dashboard(session, assignment, theClass, checks, teacher);
         page = board;
         parts.push(section('Students', 'dashboard', board.element));
+        parts.push(ltiScoresSection(labs, assignmentId));
         parts.push(section('Checks', 'checks', checksEditor({
             checks, editable: teacher && !theClass.archived, hasSolution: assignment.has_solution,
             variables: [...new Set(checks.map((c) => c.definition?.variable).filter((v): v is string => !!v))],

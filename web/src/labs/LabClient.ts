@@ -1,6 +1,7 @@
 // The lab calls of the REST API (docs/labs.md), on the app's RestClient: its bearer token,
 // its errors (ApiError with the server's code) and its 401 handling.
 import type { RestClient } from '../api/RestClient';
+import type { LtiScoreInfo, LtiScoreList } from '../protocol/types';
 import type {
     Assignment, AssignmentInput, Check, ClassRole, Copy, DashboardRow, Gradebook, HandIn, HandInComment,
     ImportedAccount, LabClass, Overlay, PretestResult, SharedLiveSession,
@@ -94,6 +95,10 @@ export class LabClient {
     overlay(assignmentId: number, variable: string, points?: number): Promise<Overlay> {
         const query = `variable=${encodeURIComponent(variable)}${points === undefined ? '' : `&points=${id(points)}`}`;
         return this.rest.call('GET', `/assignments/${id(assignmentId)}/overlay?${query}`);
+    }
+    /** The scores on their way to learning platforms' grade books, newest first (staff). */
+    ltiScores(assignmentId: number): Promise<LtiScoreInfo[]> {
+        return this.rest.call<LtiScoreList>('GET', `/assignments/${id(assignmentId)}/lti-scores`).then((r) => r.scores);
     }
 
     // ---- hand-ins

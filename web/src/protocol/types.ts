@@ -5,7 +5,7 @@ import type { DoneEvent, ErrorReply, FrameEvent, Hello, LiveFrameEvent, LiveStat
 export type {
     AssignmentWarning, CatalogueEntry, LiveControl, LiveFrameEvent, LiveModelData, LiveRecordedData, LiveSharedData, LiveSpeed, LiveStartedData, LiveState, LiveStateData, LiveStateEvent, LiveValue, Component, Connection, CurveCheckDefinition, DoneEvent, FmuInterface, FmuPowerPort, FmuVariable, FrameEvent, JobInfo, JobState, Model,
     ModelOpenedData, ModelSummary, Param, Port, PortRef, Pose, Preferences, ProgressEvent, ResultsJson, ResyncEvent, SimulationSettings,
-    LtiPlatform, LtiPlatformList, LtiPlatformSettings, LtiToolSettings,
+    LtiDeepLink, LtiDeepLinkAnswer, LtiDeepLinkPlace, LtiPlatform, LtiPlatformList, LtiPlatformSettings, LtiScoreInfo, LtiScoreList, LtiToolSettings,
     SignInProviders, SysParam, System, SystemPort, User,
 } from './generated';
 
