@@ -81,6 +81,19 @@ TemporaryOidcProvider::~TemporaryOidcProvider()
     std::filesystem::remove_all(mDir, ec);
 }
 
+void TemporaryOidcProvider::restart()
+{
+    stopChild(mPid, std::chrono::seconds(10));
+    std::filesystem::remove(mDir / "provider.log");
+    mPid = spawn({kNode, (kPeerDir / "provider.mjs").string(), (mDir / "config.json").string()}, mDir / "provider.log",
+                 mDir, RunAs{});
+    const auto deadline = Clock::now() + std::chrono::seconds(60);
+    while (Clock::now() < deadline && waitUntil(mPid, Clock::now()) == -1 && logTail().find("ready") == std::string::npos)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (logTail().find("ready") == std::string::npos)
+        throw std::runtime_error("TemporaryOidcProvider: the provider did not start again: " + logTail());
+}
+
 std::string TemporaryOidcProvider::logTail() const
 {
     return tailOf(mDir / "provider.log", 2000);

@@ -27,6 +27,9 @@ public:
     std::filesystem::path caFile() const { return mDir / "ca.pem"; }
     std::filesystem::path otherCaFile() const { return mDir / "other-ca.pem"; }
     std::string logTail() const;
+    // Stops the provider and starts it again on the same port: it signs with a new key (a
+    // rotation), and whatever it held in memory (codes, sessions) is gone.
+    void restart();
 
     // What a browser does from the provider's authorization address: signs in as `login`
     // (any password), consents, and follows the redirects until one leaves the provider;

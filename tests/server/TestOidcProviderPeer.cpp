@@ -151,6 +151,27 @@ TEST_F(OidcProviderPeer, ACodeIsTakenOnceAndOnlyWithItsVerifierAndItsNonce)
         << "a token for another sign-in";
 }
 
+TEST_F(OidcProviderPeer, AnExpiredTokenIsRefusedAndARestartedProvidersNewKeyIsFetched)
+{
+    OidcProvider provider(settings(), http);
+    const SignInSecrets late = newSignInSecrets();
+    const std::string lateCode = queryValue(signIn(provider, late), "code");
+    EXPECT_EQ(peerRefusal(provider.finish(lateCode, late.codeVerifier, late.nonce, kRedirect, std::time(nullptr) + 7200)),
+              "expired")
+        << "taken two hours later, past its exp";
+
+    const SignInSecrets before = newSignInSecrets();
+    ASSERT_EQ(peerRefusal(provider.finish(queryValue(signIn(provider, before), "code"), before.codeVerifier, before.nonce,
+                                          kRedirect, std::time(nullptr))),
+              "");
+    peer->restart();   // a new signing key; the provider object still holds the old key set
+    const SignInSecrets after = newSignInSecrets();
+    const auto rotated = provider.finish(queryValue(signIn(provider, after), "code"), after.codeVerifier, after.nonce,
+                                         kRedirect, std::time(nullptr));
+    EXPECT_EQ(peerRefusal(rotated), "") << "the rotated key fetched at once: "
+                                        << (std::holds_alternative<IdTokenError>(rotated) ? std::get<IdTokenError>(rotated).message : "");
+}
+
 TEST_F(OidcProviderPeer, AProviderOfAnotherCaOrUnreachableCannotBeAskedAndSaysWhy)
 {
     const ProviderHttp otherCa{peer->otherCaFile()};

@@ -10,7 +10,8 @@
 //        lineItem, ags, deepLinkingSettings, tamper} -> {loginUrl, lineitem}
 //   POST /control/rotate-key -> {kid}; POST /control/down, /control/up -> {down}
 //   GET /control/scores, /control/deep-links, /control/lineitems, /control/log
-// README.md gives the shapes. Prints "ready" once it listens.
+// GET /course?launch=<tool login URL> is a course page that frames the tool as Moodle and Canvas
+// embed it. README.md gives the shapes. Prints "ready" once it listens.
 import { readFileSync } from 'node:fs';
 import https from 'node:https';
 import { createRemoteJWKSet, exportJWK, generateKeyPair } from 'jose';
@@ -84,6 +85,33 @@ async function control(req, res, url) {
     }
 }
 
+// GET /course?launch=<url>: a course's page with the tool in a frame, as Moodle ("Embed") and
+// Canvas place an LTI link: the frame starts at the tool's login initiation URL (the loginUrl
+// that /control/launch answers). The course is the launch's context when the URL names a pending
+// launch (login_hint). No sandbox and no `allow`, as those platforms do.
+function coursePage(res, url) {
+    const launch = url.searchParams.get('launch');
+    let target;
+    try {
+        target = new URL(launch ?? '');
+    } catch {
+        return refuse(res, 400, 'invalid_request', 'launch must be the URL the frame opens');
+    }
+    if (target.protocol !== 'http:' && target.protocol !== 'https:')
+        return refuse(res, 400, 'invalid_request', 'launch must be an http(s) URL');
+    const pending = platform.launches.get(target.searchParams.get('login_hint'));
+    const title = pending?.context.title ?? 'Course';
+    sendHtml(res, 200, `<!DOCTYPE html>
+<html><head><meta charset="utf-8"><title>Course</title>
+<style>body { font-family: sans-serif; margin: 1rem 2rem; } iframe { border: 1px solid #999; }</style></head>
+<body>
+  <h1>${escapeHtml(title)}</h1>
+  <p>The course's page on the test LTI platform. The activity below is the tool, embedded.</p>
+  <iframe src="${escapeHtml(target.href)}" title="Activity" width="100%" height="700"></iframe>
+</body></html>
+`);
+}
+
 async function handle(req, res) {
     const url = new URL(req.url, issuer);
     const path = url.pathname;
@@ -109,6 +137,7 @@ async function handle(req, res) {
         }
         return handleAgs(platform, req, res, url);
     }
+    if (path === '/course' && req.method === 'GET') return coursePage(res, url);
     if (path === '/launch-return' && req.method === 'GET') {
         const shown = [...url.searchParams].map(([k, v]) => `<li>${escapeHtml(k)}: ${escapeHtml(v)}</li>`).join('');
         return sendHtml(res, 200, simplePage('Back at the platform', `<ul>${shown}</ul>`));

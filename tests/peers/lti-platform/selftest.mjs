@@ -411,6 +411,16 @@ async function run() {
           && linkClaims[AGS]?.lineitem === link.lineitem && linkClaims[`${LTI}resource_link`]?.title === 'Spring lab',
           'launching the placed link uses its url, custom and line item');
 
+    // The course page that frames the tool.
+    const framed = await postJson(`${issuer}/control/launch`, { context: { id: 'art-1', title: 'Art & <Design>' } });
+    const course = await request(`${issuer}/course?launch=${encodeURIComponent(framed.json.loginUrl)}`);
+    const frameSrc = /<iframe src="([^"]*)"/.exec(course.text)?.[1]?.replaceAll('&#38;', '&');
+    check(course.status === 200 && course.headers['content-type'].startsWith('text/html') && course.text.includes('<title>Course</title>')
+          && course.text.includes('<h1>Art &#38; &#60;Design&#62;</h1>') && frameSrc === framed.json.loginUrl
+          && !/sandbox|allow=/.test(course.text), 'GET /course frames the login URL under the course title', course.text);
+    check((await request(`${issuer}/course?launch=javascript:alert(1)`)).status === 400 && (await request(`${issuer}/course`)).status === 400,
+          'GET /course refuses a launch that is not an http(s) URL');
+
     // Key rotation.
     const { kid } = (await postJson(`${issuer}/control/rotate-key`, {})).json;
     const rotated = (await request(`${issuer}/jwks`)).json.keys.map((k) => k.kid);
