@@ -132,11 +132,15 @@ LtiOutcome LtiTool::launch(const std::string& idToken, const std::string& state,
 
     const User user = mUsers.insertLinked("lti " + platform->issuer, token.subject, accountNameFor(message.name), kRoleUser);
     if (user.disabled) return ltiRefused("account_disabled", "the account is disabled");
-    LtiOutcome outcome{user, mPublicUrl + "/api/v1/lti/app#/signed-in/" + handOverSignIn(mSignIns, user.id, nowUnix), {}, {}, {}};
-    if (message.contextId.empty() && message.messageType == kLtiResourceLinkRequest) return outcome;
+    // Signed in: the app's launch page with a hand-over key, and where the app goes on to.
+    const auto signedIn = [&](const std::string& next) {
+        return LtiOutcome{user, mPublicUrl + "/api/v1/lti/app#/signed-in/" + handOverSignIn(mSignIns, user.id, nowUnix) + next,
+                          {}, {}, {}};
+    };
+    if (message.contextId.empty() && message.messageType == kLtiResourceLinkRequest) return signedIn("");
     if (message.messageType == kLtiDeepLinkingRequest && message.classRole != kClassTeacher)
         return ltiRefused("not_instructor", "only the course's teachers place tlmhub's assignments in it");
-    if (message.contextId.empty() && message.messageType == kLtiDeepLinkingRequest)
+    if (message.contextId.empty())
         return ltiRefused("no_course", "a deep-linking launch outside a course has no class to place from");
     LtiOutcome refusal;
     const std::int64_t classId = courseClass(*platform, message, user, refusal);
@@ -145,21 +149,16 @@ LtiOutcome LtiTool::launch(const std::string& idToken, const std::string& state,
         const LtiDeepLinkRequest request{newSignInSecrets().state, platform->id, message.deploymentId,
                                          message.deepLinkReturnUrl, message.deepLinkData, classId, user.id, nowUnix};
         mPlatforms.addDeepLink(request, nowUnix - kLaunchSeconds);
-        outcome.location += "/place/" + request.key;
-        return outcome;
+        return signedIn("/place/" + request.key);
     }
     // A link placed by deep linking names its assignment; its line item takes the scores.
     const auto assignmentId = message.custom.contains("assignment")
         ? assignmentIdOf(message.custom["assignment"].get<std::string>())
         : std::nullopt;
     const auto assignment = assignmentId ? mLabs.assignment(*assignmentId) : std::nullopt;
-    if (assignment && assignment->classId == classId) {
-        if (!message.lineItem.empty()) mPlatforms.setLineItem(platform->id, message.lineItem, assignment->id);
-        outcome.location += "/assignment/" + std::to_string(assignment->id);
-    } else {
-        outcome.location += "/class/" + std::to_string(classId);
-    }
-    return outcome;
+    if (!assignment || assignment->classId != classId) return signedIn("/class/" + std::to_string(classId));
+    if (!message.lineItem.empty()) mPlatforms.setLineItem(platform->id, message.lineItem, assignment->id);
+    return signedIn("/assignment/" + std::to_string(assignment->id));
 }
 
 std::optional<LtiDeepLinkRequest> LtiTool::deepLinkOf(const std::string& key, std::int64_t userId, std::int64_t nowUnix)
