@@ -3,6 +3,7 @@
 // linking, GET|POST /lti/deep-links/{key}; and the administrators' registry of platforms,
 // /admin/lti/platforms[/{id}].
 #include "server/api/ApiSupport.h"
+#include "server/auth/AccessPolicy.h"
 #include "server/auth/lti/LtiTool.h"
 #include "server/labs/LabService.h"
 #include "server/store/LtiStore.h"
