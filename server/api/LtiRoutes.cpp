@@ -24,13 +24,23 @@ namespace {
 
 // The cookie that ties a platform's launch to the browser its login came through. The launch is
 // a cross-site form post, often inside the platform's frame: only SameSite=None (which needs
-// Secure) is sent along.
+// Secure) is sent along, and inside a frame only a Partitioned cookie (CHIPS: kept for this
+// server under the platform's site) when the browser blocks third-party cookies, as Chromium
+// does by default.
 constexpr const char* kLtiCookie = "tlmhub_lti";
 
 std::string ltiCookie(const std::string& value, int maxAgeSeconds)
 {
     return std::string(kLtiCookie) + "=" + value + "; Path=/api/v1/lti; Max-Age=" + std::to_string(maxAgeSeconds) +
-           "; HttpOnly; Secure; SameSite=None";
+           "; HttpOnly; Secure; SameSite=None; Partitioned";
+}
+
+// Pages shown inside a platform's frame (the launch page, a refused launch) may be framed by the
+// registered platforms.
+void allowPlatformFrames(Services& s, Response& r)
+{
+    r.set("Content-Security-Policy", std::string(kContentSecurityPolicyWithoutFrameAncestors) +
+                                         "; frame-ancestors " + s.lti->frameAncestors());
 }
 
 std::string ltiCookieValue(const Call& call)
@@ -61,7 +71,7 @@ std::string ltiField(const std::map<std::string, std::string>& fields, const cha
 
 // What a person in the platform's frame reads when a launch is refused: the code (the details
 // go to the server's log only) and what to do. Codes are [a-z_] and the text is ours.
-Response ltiRefusalPage(const LtiOutcome& refused)
+Response ltiRefusalPage(Services& s, const LtiOutcome& refused)
 {
     std::cerr << "LTI launch refused (" << refused.code << "): "
               << nlohmann::json(refused.message).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)
@@ -80,6 +90,7 @@ Response ltiRefusalPage(const LtiOutcome& refused)
                               "text/html; charset=utf-8");
     if (busy) r.set(http::field::retry_after, "60");
     r.set(http::field::cache_control, "no-store");
+    allowPlatformFrames(s, r);
     return r;
 }
 
@@ -98,8 +109,7 @@ Response launchPage(Services& s, Call&)
     std::ostringstream page;
     page << in.rdbuf();
     Response r = textResponse(http::status::ok, page.str(), "text/html; charset=utf-8");
-    r.set("Content-Security-Policy", std::string(kContentSecurityPolicyWithoutFrameAncestors) +
-                                         "; frame-ancestors " + s.lti->frameAncestors());
+    allowPlatformFrames(s, r);
     r.set(http::field::cache_control, "no-cache");
     return r;
 }
@@ -121,7 +131,7 @@ Response login(Services& s, Call& call)
                                   ltiField(fields, "target_link_uri"), ltiField(fields, "lti_message_hint"),
                                   ltiField(fields, "client_id"),   ltiField(fields, "lti_deployment_id")};
     const LtiOutcome started = s.lti->login(request, call.clientAddress, std::time(nullptr));
-    if (!started.code.empty()) return ltiRefusalPage(started);
+    if (!started.code.empty()) return ltiRefusalPage(s, started);
     Response r = textResponse(http::status::found, "", "text/plain");
     r.set(http::field::location, started.location);
     r.set(http::field::cache_control, "no-store");
@@ -135,7 +145,7 @@ Response launch(Services& s, Call& call)
     const auto fields = ltiFields(call);
     LtiOutcome launched = s.lti->launch(ltiField(fields, "id_token"), ltiField(fields, "state"), ltiField(fields, "error"),
                                         ltiCookieValue(call), std::time(nullptr));
-    if (!launched.user) return ltiRefusalPage(launched);
+    if (!launched.user) return ltiRefusalPage(s, launched);
     Response r = textResponse(http::status::see_other, "", "text/plain");
     r.set(http::field::location, launched.location);
     r.set(http::field::cache_control, "no-store");

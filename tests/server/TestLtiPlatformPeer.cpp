@@ -287,6 +287,7 @@ TEST_F(LtiPlatformPeer, ALaunchIsTakenOnceAndOnlyInTheBrowserItsLoginCameThrough
     EXPECT_NE(cookie.find("SameSite=None"), std::string::npos) << "sent with the platform's cross-site form post";
     EXPECT_NE(cookie.find("Secure"), std::string::npos);
     EXPECT_NE(cookie.find("Path=/api/v1/lti"), std::string::npos);
+    EXPECT_NE(cookie.find("Partitioned"), std::string::npos) << "kept inside the platform's frame (CHIPS)";
     const std::string authentication = login.headers.at("Location");
     ASSERT_TRUE(authentication.starts_with(platform->issuer() + "/auth?")) << authentication;
     const auto query = tlmhub::server::parseRequestTarget(authentication.substr(platform->issuer().size())).query;
@@ -370,6 +371,12 @@ TEST_F(LtiPlatformPeer, TheLaunchPageMayBeFramedByRegisteredPlatformsOnly)
     const std::string policy = page.headers.at("Content-Security-Policy");
     EXPECT_NE(policy.find("frame-ancestors 'self' " + platform->issuer()), std::string::npos) << policy;
     EXPECT_EQ(policy.find("frame-ancestors", policy.find("frame-ancestors") + 1), std::string::npos) << "one directive";
+    const HttpReply refused = anyone.request(http::verb::post, "/api/v1/lti/launch", "state=x&id_token=y",
+                                             "application/x-www-form-urlencoded");
+    EXPECT_EQ(refusalCode(refused), "launch_expired");
+    EXPECT_NE(refused.headers.at("Content-Security-Policy").find("frame-ancestors 'self' " + platform->issuer()),
+              std::string::npos)
+        << "a refused launch is read inside the platform's frame too";
     const HttpReply app = anyone.get("/");
     EXPECT_NE(app.headers.at("Content-Security-Policy").find("frame-ancestors 'self'"), std::string::npos);
     EXPECT_EQ(app.headers.at("Content-Security-Policy").find(platform->issuer()), std::string::npos)

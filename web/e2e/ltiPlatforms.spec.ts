@@ -3,12 +3,12 @@
 // second one with the same issuer and client id, and removes it. A second server, started as
 // an LTI tool (--lti-key-file, --public-url), shows the addresses a platform's administrator
 // enters; the screenshot docs/screenshots/lti-platforms.png is of that page.
-import { execFileSync, spawn, type ChildProcess } from 'node:child_process';
+import { execFileSync, type ChildProcess } from 'node:child_process';
 import { chmodSync, mkdtempSync, rmSync } from 'node:fs';
-import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { freePort, started } from './processes';
 import { test, expect, type Page } from './fixtures';
 import { api, baseUrl } from './helpers';
 import { ADMIN_PASSWORD } from './globalSetup';
@@ -95,39 +95,6 @@ test('an administrator registers, edits and removes a learning platform; a secon
     });
 
 // ---- a server that is an LTI tool
-
-function freePort(): Promise<number> {
-    return new Promise((done, fail) => {
-        const probe = createServer();
-        probe.once('error', fail);
-        probe.listen(0, '127.0.0.1', () => {
-            const { port } = probe.address() as { port: number };
-            probe.close(() => done(port));
-        });
-    });
-}
-
-// Starts `command` and resolves once its output matches `ready`.
-function started(command: string, args: string[], ready: RegExp, env: NodeJS.ProcessEnv): Promise<ChildProcess> {
-    return new Promise((done, fail) => {
-        const child = spawn(command, args, { env, stdio: ['ignore', 'pipe', 'pipe'] });
-        let output = '';
-        const timer = setTimeout(() => fail(new Error(`${command} did not start:\n${output}`)), 30_000);
-        const read = (chunk: Buffer) => {
-            output += chunk.toString();
-            if (ready.test(output)) {
-                clearTimeout(timer);
-                child.stdout!.removeAllListeners('data');
-                child.stdout!.resume();
-                child.stderr!.resume();
-                done(child);
-            }
-        };
-        child.stdout!.on('data', read);
-        child.stderr!.on('data', read);
-        child.on('exit', (code) => { clearTimeout(timer); fail(new Error(`${command} exited (${code}):\n${output}`)); });
-    });
-}
 
 test.describe('with launches on', () => {
     const publicUrl = 'https://tlmhub.uni.edu';

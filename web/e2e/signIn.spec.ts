@@ -3,49 +3,16 @@
 // back in the app signed in to an account of their own. The provider is a real one (npm's
 // oidc-provider, tests/peers/oidc-provider) that this spec starts over TLS on loopback, with a
 // second tlmhub-server configured for it.
-import { execFileSync, spawn, type ChildProcess } from 'node:child_process';
+import { execFileSync, type ChildProcess } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync, chmodSync, existsSync } from 'node:fs';
-import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { freePort, started } from './processes';
 import { test, expect } from './fixtures';
 
 const webDir = fileURLToPath(new URL('..', import.meta.url));
 const peerDir = resolve(webDir, '../tests/peers/oidc-provider');
-
-function freePort(): Promise<number> {
-    return new Promise((done, fail) => {
-        const probe = createServer();
-        probe.once('error', fail);
-        probe.listen(0, '127.0.0.1', () => {
-            const { port } = probe.address() as { port: number };
-            probe.close(() => done(port));
-        });
-    });
-}
-
-// Starts `command` and resolves once its output matches `ready`.
-function started(command: string, args: string[], ready: RegExp, env: NodeJS.ProcessEnv = process.env): Promise<ChildProcess> {
-    return new Promise((done, fail) => {
-        const child = spawn(command, args, { env, stdio: ['ignore', 'pipe', 'pipe'] });
-        let output = '';
-        const timer = setTimeout(() => fail(new Error(`${command} did not start:\n${output}`)), 30_000);
-        const read = (chunk: Buffer) => {
-            output += chunk.toString();
-            if (ready.test(output)) {
-                clearTimeout(timer);
-                child.stdout!.removeAllListeners('data');
-                child.stdout!.resume();
-                child.stderr!.resume();
-                done(child);
-            }
-        };
-        child.stdout!.on('data', read);
-        child.stderr!.on('data', read);
-        child.on('exit', (code) => { clearTimeout(timer); fail(new Error(`${command} exited (${code}):\n${output}`)); });
-    });
-}
 
 let dir = '';
 let provider: ChildProcess | undefined;

@@ -3,6 +3,8 @@
 // #/lti-place/<key> (placing an assignment in a learning platform's course); the ends of a sign-in,
 // #/signed-in/<key>[/class/<id>|/assignment/<id>|/place/<key>] and #/sign-in-failed/<reason>.
 // Only the hash routes and absolute asset paths: the same index.html also serves as the LTI launch page.
+// First: the modules below may touch storage as they load (storageFallback.ts).
+import './app/installStorageFallback';
 import 'uplot/dist/uPlot.min.css';
 import './styles.css';
 import { Session } from './app/Session';
