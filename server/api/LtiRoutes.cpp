@@ -3,6 +3,7 @@
 // linking, GET|POST /lti/deep-links/{key}; and the administrators' registry of platforms,
 // /admin/lti/platforms[/{id}].
 #include "server/api/ApiSupport.h"
+#include "server/http/HeaderValues.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/auth/lti/LtiTool.h"
 #include "server/labs/LabService.h"
@@ -41,19 +42,6 @@ void allowPlatformFrames(Services& s, Response& r)
 {
     r.set("Content-Security-Policy", std::string(kContentSecurityPolicyWithoutFrameAncestors) +
                                          "; frame-ancestors " + s.lti->frameAncestors());
-}
-
-std::string ltiCookieValue(const Call& call)
-{
-    const std::string cookies(call.request[http::field::cookie]);
-    const std::string prefix = std::string(kLtiCookie) + "=";
-    for (std::size_t at = 0; at < cookies.size();) {
-        while (at < cookies.size() && (cookies[at] == ' ' || cookies[at] == ';')) ++at;
-        const std::size_t end = std::min(cookies.find(';', at), cookies.size());
-        if (cookies.compare(at, prefix.size(), prefix) == 0) return cookies.substr(at + prefix.size(), end - at - prefix.size());
-        at = end;
-    }
-    return {};
 }
 
 // A form post's fields (application/x-www-form-urlencoded), or the query's for a GET.
@@ -144,7 +132,7 @@ Response launch(Services& s, Call& call)
     if (!s.lti) return ltiOff();
     const auto fields = ltiFields(call);
     LtiOutcome launched = s.lti->launch(ltiField(fields, "id_token"), ltiField(fields, "state"), ltiField(fields, "error"),
-                                        ltiCookieValue(call), std::time(nullptr));
+                                        requestCookie(call.request, kLtiCookie), std::time(nullptr));
     if (!launched.user) return ltiRefusalPage(s, launched);
     Response r = textResponse(http::status::see_other, "", "text/plain");
     r.set(http::field::location, launched.location);

@@ -2,6 +2,7 @@
 // /auth/oidc/{name}/callback, POST /auth/oidc/collect (docs/sign-in.md). All public: they
 // are how someone without a login gets one.
 #include "server/api/ApiSupport.h"
+#include "server/http/HeaderValues.h"
 #include "server/app/ServerOptions.h"
 #include "server/auth/SignInHandOver.h"
 #include "server/auth/oidc/OidcSignIn.h"
@@ -42,20 +43,6 @@ std::string signInCookie(const std::string& value, const std::string& publicUrl,
            std::to_string(maxAgeSeconds) + "; HttpOnly; SameSite=Lax" + (publicUrl.starts_with("https://") ? "; Secure" : "");
 }
 
-// The sign-in cookie's value in the request; "" without one.
-std::string signInCookieValue(const Call& call)
-{
-    const std::string cookies(call.request[http::field::cookie]);
-    const std::string prefix = std::string(kSignInCookie) + "=";
-    for (std::size_t at = 0; at < cookies.size();) {
-        while (at < cookies.size() && (cookies[at] == ' ' || cookies[at] == ';')) ++at;
-        const std::size_t end = std::min(cookies.find(';', at), cookies.size());
-        if (cookies.compare(at, prefix.size(), prefix) == 0) return cookies.substr(at + prefix.size(), end - at - prefix.size());
-        at = end;
-    }
-    return {};
-}
-
 std::string queryValue(const Call& call, const char* name)
 {
     const auto it = call.params.query.find(name);
@@ -92,9 +79,9 @@ Response callback(Services& s, Call& call)
 {
     if (!s.oidc) return apiError(http::status::not_found, "not_found", "no such sign-in provider");
     const std::string app = s.oidc->publicUrl() + "/";
-    OidcOutcome finished = s.oidc->finish(call.params.path.at("name"), queryValue(call, "code"), queryValue(call, "state"),
-                                          queryValue(call, "iss"), queryValue(call, "error"), signInCookieValue(call),
-                                          std::time(nullptr));
+    OidcOutcome finished =
+        s.oidc->finish(call.params.path.at("name"), queryValue(call, "code"), queryValue(call, "state"), queryValue(call, "iss"),
+                       queryValue(call, "error"), requestCookie(call.request, kSignInCookie), std::time(nullptr));
     if (finished.user && finished.user->disabled) finished = OidcOutcome::refused("account_disabled", "the account is disabled");
     Response r = finished.user
         ? redirect(http::status::see_other, app + "#/signed-in/" + s.oidc->handOver(*finished.user, std::time(nullptr)))

@@ -1,5 +1,7 @@
 #include "server/http/HeaderValues.h"
 
+#include <algorithm>
+
 namespace tlmhub::server {
 
 namespace {
@@ -47,6 +49,19 @@ bool hasSafeHeaders(const Response& response)
     for (const auto& field : response)
         if (!isSafeHeaderValue(field.value()) || !isSafeHeaderValue(field.name_string())) return false;
     return true;
+}
+
+std::string requestCookie(const Request& request, std::string_view name)
+{
+    const std::string cookies(request[http::field::cookie]);
+    const std::string prefix = std::string(name) + "=";
+    for (std::size_t at = 0; at < cookies.size();) {
+        while (at < cookies.size() && (cookies[at] == ' ' || cookies[at] == ';')) ++at;
+        const std::size_t end = std::min(cookies.find(';', at), cookies.size());
+        if (cookies.compare(at, prefix.size(), prefix) == 0) return cookies.substr(at + prefix.size(), end - at - prefix.size());
+        at = end;
+    }
+    return {};
 }
 
 } // namespace tlmhub::server

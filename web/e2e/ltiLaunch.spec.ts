@@ -11,7 +11,7 @@ import https from 'node:https';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { freePort, started } from './processes';
+import { freePort, makeTestCertificates, started } from './processes';
 import { test, expect, type Browser, type Page } from './fixtures';
 
 const webDir = fileURLToPath(new URL('..', import.meta.url));
@@ -82,12 +82,8 @@ function appFrame(page: Page) {
 test.beforeAll(async () => {
     if (!existsSync(join(peerDir, 'node_modules/jose'))) throw new Error('npm ci --prefix tests/peers/lti-platform');
     dir = mkdtempSync(join(tmpdir(), 'tlmhub-e2e-lti-launch-'));
+    makeTestCertificates(dir);
     const openssl = (...args: string[]) => execFileSync('openssl', args, { cwd: dir, stdio: 'ignore' });
-    openssl('req', '-x509', '-newkey', 'rsa:2048', '-nodes', '-keyout', 'ca.key', '-out', 'ca.pem', '-days', '2', '-subj', '/CN=e2e CA');
-    openssl('req', '-newkey', 'rsa:2048', '-nodes', '-keyout', 'key.pem', '-out', 'request.csr', '-subj', '/CN=127.0.0.1');
-    writeFileSync(join(dir, 'san.ext'), 'subjectAltName=IP:127.0.0.1\n');
-    openssl('x509', '-req', '-in', 'request.csr', '-CA', 'ca.pem', '-CAkey', 'ca.key', '-CAcreateserial', '-out', 'cert.pem',
-        '-days', '2', '-extfile', 'san.ext');
     openssl('genpkey', '-algorithm', 'RSA', '-pkeyopt', 'rsa_keygen_bits:2048', '-out', 'tool-key.pem');
     chmodSync(join(dir, 'tool-key.pem'), 0o600);
 

@@ -3,12 +3,12 @@
 // back in the app signed in to an account of their own. The provider is a real one (npm's
 // oidc-provider, tests/peers/oidc-provider) that this spec starts over TLS on loopback, with a
 // second tlmhub-server configured for it.
-import { execFileSync, type ChildProcess } from 'node:child_process';
+import { type ChildProcess } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync, chmodSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { freePort, started } from './processes';
+import { freePort, makeTestCertificates, started } from './processes';
 import { test, expect } from './fixtures';
 
 const webDir = fileURLToPath(new URL('..', import.meta.url));
@@ -22,12 +22,7 @@ let appUrl = '';
 test.beforeAll(async () => {
     if (!existsSync(join(peerDir, 'node_modules/oidc-provider'))) throw new Error('npm ci --prefix tests/peers/oidc-provider');
     dir = mkdtempSync(join(tmpdir(), 'tlmhub-e2e-oidc-'));
-    const openssl = (...args: string[]) => execFileSync('openssl', args, { cwd: dir, stdio: 'ignore' });
-    openssl('req', '-x509', '-newkey', 'rsa:2048', '-nodes', '-keyout', 'ca.key', '-out', 'ca.pem', '-days', '2', '-subj', '/CN=e2e CA');
-    openssl('req', '-newkey', 'rsa:2048', '-nodes', '-keyout', 'key.pem', '-out', 'request.csr', '-subj', '/CN=127.0.0.1');
-    writeFileSync(join(dir, 'san.ext'), 'subjectAltName=IP:127.0.0.1\n');
-    openssl('x509', '-req', '-in', 'request.csr', '-CA', 'ca.pem', '-CAkey', 'ca.key', '-CAcreateserial', '-out', 'cert.pem',
-        '-days', '2', '-extfile', 'san.ext');
+    makeTestCertificates(dir);
     const [providerPort, serverPort] = [await freePort(), await freePort()];
     appUrl = `http://127.0.0.1:${serverPort}`;
     writeFileSync(join(dir, 'provider.json'), JSON.stringify({
