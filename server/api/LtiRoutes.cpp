@@ -3,14 +3,13 @@
 // linking, GET|POST /lti/deep-links/{key}; and the administrators' registry of platforms,
 // /admin/lti/platforms[/{id}].
 #include "server/api/ApiSupport.h"
-#include "server/http/HeaderValues.h"
 #include "server/auth/AccessPolicy.h"
 #include "server/auth/lti/LtiTool.h"
+#include "server/http/HeaderValues.h"
+#include "server/http/SecurityHeaders.h"
 #include "server/labs/LabService.h"
 #include "server/store/LtiStore.h"
 #include "server/store/ModelName.h"
-
-#include "server/http/SecurityHeaders.h"
 
 #include <ctime>
 #include <filesystem>
@@ -101,7 +100,6 @@ Response launchPage(Services& s, Call&)
     r.set(http::field::cache_control, "no-cache");
     return r;
 }
-
 
 Response keySet(Services& s, Call&)
 {
