@@ -1,73 +1,20 @@
 #include "TemporaryLtiPlatform.h"
 
-#include "ChildProcess.h"
-#include "ServerHarness.h"
-#include "TestCertificates.h"
-
 #include "net/HttpClient.h"
 
-#include <fstream>
 #include <stdexcept>
-#include <thread>
-#include <unistd.h>
 
 namespace tlmhub::test {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-constexpr const char* kLtiNode = "/usr/bin/node";
-const std::filesystem::path kLtiPeerDir = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/peers/lti-platform";
-
-} // namespace
-
 TemporaryLtiPlatform::TemporaryLtiPlatform(const std::string& toolUrl)
+    : mPeer("lti-platform", "platform.mjs", "jose",
+            {{"clientId", kClientId},
+             {"deploymentId", kDeploymentId},
+             {"tool",
+              {{"loginUrl", toolUrl + "/api/v1/lti/login"},
+               {"launchUrl", toolUrl + "/api/v1/lti/launch"},
+               {"jwksUrl", toolUrl + "/api/v1/lti/jwks"}}}})
 {
-    if (::access(kLtiNode, X_OK) != 0) throw std::runtime_error("TemporaryLtiPlatform: Node.js is missing (apt-get install nodejs)");
-    if (!std::filesystem::exists(kLtiPeerDir / "node_modules/jose"))
-        throw std::runtime_error("TemporaryLtiPlatform: the peer is not installed (npm ci --prefix tests/peers/lti-platform)");
-    char pattern[] = "/tmp/tlmhub-lti-XXXXXX";
-    if (!::mkdtemp(pattern)) throw std::runtime_error("TemporaryLtiPlatform: mkdtemp failed");
-    mDir = pattern;
-    makeTestCertificates(mDir);
-    const auto deadline = Clock::now() + std::chrono::seconds(60);
-    for (int attempt = 0;; ++attempt) {
-        mPort = freeLoopbackPort();
-        const nlohmann::json config = {{"port", mPort},
-                                       {"certFile", (mDir / "cert.pem").string()},
-                                       {"keyFile", (mDir / "key.pem").string()},
-                                       {"clientId", kClientId},
-                                       {"deploymentId", kDeploymentId},
-                                       {"tool",
-                                        {{"loginUrl", toolUrl + "/api/v1/lti/login"},
-                                         {"launchUrl", toolUrl + "/api/v1/lti/launch"},
-                                         {"jwksUrl", toolUrl + "/api/v1/lti/jwks"}}}};
-        std::ofstream(mDir / "config.json") << config.dump();
-        mPid = spawn({kLtiNode, (kLtiPeerDir / "platform.mjs").string(), (mDir / "config.json").string()},
-                     mDir / "platform.log", mDir, RunAs{});
-        while (Clock::now() < deadline && waitUntil(mPid, Clock::now()) == -1 && logTail().find("ready") == std::string::npos)
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        if (logTail().find("ready") != std::string::npos) return;
-        stopChild(mPid, std::chrono::seconds(0));   // ended (its port taken meanwhile) or too slow: again
-        mPid = -1;
-        if (Clock::now() >= deadline || attempt == 3) {
-            const std::string log = logTail();
-            std::filesystem::remove_all(mDir);
-            throw std::runtime_error("TemporaryLtiPlatform: the platform did not start: " + log);
-        }
-    }
-}
-
-TemporaryLtiPlatform::~TemporaryLtiPlatform()
-{
-    if (mPid > 0) stopChild(mPid, std::chrono::seconds(10));
-    std::error_code ec;
-    std::filesystem::remove_all(mDir, ec);
-}
-
-std::string TemporaryLtiPlatform::logTail() const
-{
-    return tailOf(mDir / "platform.log", 2000);
 }
 
 nlohmann::json TemporaryLtiPlatform::registration() const

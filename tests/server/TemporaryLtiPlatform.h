@@ -1,9 +1,9 @@
 #pragma once
 // Test support for LTI 1.3: a learning platform (tests/peers/lti-platform, on npm's jose)
-// started by the test on Node.js, over TLS on a free loopback port with a certificate from a CA
-// made for it, registered with the tool at `toolUrl`. Its control routes stage launches (with
-// one claim or the signature broken on purpose) and report what the tool sent it. A missing
-// Node.js or peer install throws (the test fails, naming the command that installs it).
+// started by the test (NodePeer.h), knowing the tool at `toolUrl`. Its control routes stage
+// launches (with one claim or the signature broken on purpose) and report what the tool sent it.
+#include "NodePeer.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -17,13 +17,10 @@ public:
     static constexpr const char* kDeploymentId = "deployment-1";
 
     explicit TemporaryLtiPlatform(const std::string& toolUrl);
-    ~TemporaryLtiPlatform();
-    TemporaryLtiPlatform(const TemporaryLtiPlatform&) = delete;
-    TemporaryLtiPlatform& operator=(const TemporaryLtiPlatform&) = delete;
 
-    std::string issuer() const { return "https://127.0.0.1:" + std::to_string(mPort); }
-    std::filesystem::path caFile() const { return mDir / "ca.pem"; }
-    std::string logTail() const;
+    std::string issuer() const { return "https://127.0.0.1:" + std::to_string(mPeer.port()); }
+    std::filesystem::path caFile() const { return mPeer.dir() / "ca.pem"; }
+    std::string logTail() const { return mPeer.logTail(); }
     // The body of POST /admin/lti/platforms that registers this platform.
     nlohmann::json registration() const;
 
@@ -39,9 +36,7 @@ public:
     nlohmann::json deepLinkReturn(const std::string& returnUrl, const std::string& jwt) const;
 
 private:
-    std::filesystem::path mDir;
-    unsigned short mPort = 0;
-    int mPid = -1;
+    NodePeer mPeer;
 };
 
 } // namespace tlmhub::test

@@ -1,27 +1,16 @@
 #include "TemporaryOidcProvider.h"
 
-#include "ChildProcess.h"
-#include "ServerHarness.h"
-#include "TestCertificates.h"
-
 #include "net/HttpClient.h"
 
 #include <boost/beast/core/string.hpp>
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <stdexcept>
-#include <thread>
-#include <unistd.h>
 
 namespace tlmhub::test {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-constexpr const char* kNode = "/usr/bin/node";
-const std::filesystem::path kPeerDir = std::filesystem::path(TLMHUB_SOURCE_DIR) / "tests/peers/oidc-provider";
 
 // The text between `before` and the next `after` from `from`; "" when not found.
 std::string between(const std::string& text, const std::string& before, const std::string& after, std::size_t from = 0)
@@ -34,69 +23,27 @@ std::string between(const std::string& text, const std::string& before, const st
 
 } // namespace
 
-TemporaryOidcProvider::TemporaryOidcProvider(const std::vector<std::string>& redirectUris,
-                                             const std::map<std::string, std::string>& accounts)
+namespace {
+
+nlohmann::json providerConfig(const std::vector<std::string>& redirectUris, const std::map<std::string, std::string>& accounts)
 {
-    if (::access(kNode, X_OK) != 0) throw std::runtime_error("TemporaryOidcProvider: Node.js is missing (apt-get install nodejs)");
-    if (!std::filesystem::exists(kPeerDir / "node_modules/oidc-provider"))
-        throw std::runtime_error("TemporaryOidcProvider: the peer is not installed (npm ci --prefix tests/peers/oidc-provider)");
-    char pattern[] = "/tmp/tlmhub-oidc-XXXXXX";
-    if (!::mkdtemp(pattern)) throw std::runtime_error("TemporaryOidcProvider: mkdtemp failed");
-    mDir = pattern;
-    makeTestCertificates(mDir);
     nlohmann::json accountClaims = nlohmann::json::object();
     for (const auto& [login, claims] : accounts) accountClaims[login] = nlohmann::json::parse(claims);
-
-    const auto deadline = Clock::now() + std::chrono::seconds(60);
-    for (int attempt = 0;; ++attempt) {
-        mPort = freeLoopbackPort();
-        const nlohmann::json config = {
-            {"port", mPort},
-            {"certFile", (mDir / "cert.pem").string()},
-            {"keyFile", (mDir / "key.pem").string()},
-            {"clients", {{{"client_id", kClientId}, {"client_secret", kClientSecret}, {"redirect_uris", redirectUris},
-                          {"response_types", {"code"}}, {"grant_types", {"authorization_code"}}}}},
+    return {{"clients",
+             {{{"client_id", TemporaryOidcProvider::kClientId},
+               {"client_secret", TemporaryOidcProvider::kClientSecret},
+               {"redirect_uris", redirectUris},
+               {"response_types", {"code"}},
+               {"grant_types", {"authorization_code"}}}}},
             {"accounts", accountClaims}};
-        std::ofstream(mDir / "config.json") << config.dump();
-        mPid = spawn({kNode, (kPeerDir / "provider.mjs").string(), (mDir / "config.json").string()}, mDir / "provider.log",
-                     mDir, RunAs{});
-        while (Clock::now() < deadline && waitUntil(mPid, Clock::now()) == -1 && logTail().find("ready") == std::string::npos)
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        if (logTail().find("ready") != std::string::npos) return;
-        // Ended (the port taken meanwhile) or too slow: again on another port, while there is time.
-        stopChild(mPid, std::chrono::seconds(0));
-        mPid = -1;
-        if (Clock::now() >= deadline || attempt == 3) {
-            const std::string log = logTail();
-            std::filesystem::remove_all(mDir);
-            throw std::runtime_error("TemporaryOidcProvider: the provider did not start: " + log);
-        }
-    }
 }
 
-TemporaryOidcProvider::~TemporaryOidcProvider()
-{
-    if (mPid > 0) stopChild(mPid, std::chrono::seconds(10));
-    std::error_code ec;
-    std::filesystem::remove_all(mDir, ec);
-}
+} // namespace
 
-void TemporaryOidcProvider::restart()
+TemporaryOidcProvider::TemporaryOidcProvider(const std::vector<std::string>& redirectUris,
+                                             const std::map<std::string, std::string>& accounts)
+    : mPeer("oidc-provider", "provider.mjs", "oidc-provider", providerConfig(redirectUris, accounts))
 {
-    stopChild(mPid, std::chrono::seconds(10));
-    std::filesystem::remove(mDir / "provider.log");
-    mPid = spawn({kNode, (kPeerDir / "provider.mjs").string(), (mDir / "config.json").string()}, mDir / "provider.log",
-                 mDir, RunAs{});
-    const auto deadline = Clock::now() + std::chrono::seconds(60);
-    while (Clock::now() < deadline && waitUntil(mPid, Clock::now()) == -1 && logTail().find("ready") == std::string::npos)
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    if (logTail().find("ready") == std::string::npos)
-        throw std::runtime_error("TemporaryOidcProvider: the provider did not start again: " + logTail());
-}
-
-std::string TemporaryOidcProvider::logTail() const
-{
-    return tailOf(mDir / "provider.log", 2000);
 }
 
 std::string TemporaryOidcProvider::signInThroughBrowser(const std::string& authorizationUrl, const std::string& login) const

@@ -1,9 +1,9 @@
 #pragma once
 // Test support for OpenID Connect sign-in: a real provider (npm's oidc-provider, pinned in
-// tests/peers/oidc-provider) started by the test on Node.js, over TLS on a free loopback port
-// with a certificate from a CA made for it, and a browser's walk through its development
-// login and consent pages. A missing Node.js or peer install throws (the test fails, naming
-// the command that installs it); nothing is skipped.
+// tests/peers/oidc-provider) started by the test (NodePeer.h), and a browser's walk through its
+// development login and consent pages.
+#include "NodePeer.h"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -19,17 +19,14 @@ public:
     // `redirectUris`: the client's registered callbacks; `accounts`: login name -> claims JSON
     // (an object's text, e.g. {"name":"Jane Doe","groups":["teachers"]}).
     TemporaryOidcProvider(const std::vector<std::string>& redirectUris, const std::map<std::string, std::string>& accounts);
-    ~TemporaryOidcProvider();
-    TemporaryOidcProvider(const TemporaryOidcProvider&) = delete;
-    TemporaryOidcProvider& operator=(const TemporaryOidcProvider&) = delete;
 
-    std::string issuer() const { return "https://127.0.0.1:" + std::to_string(mPort); }
-    std::filesystem::path caFile() const { return mDir / "ca.pem"; }
-    std::filesystem::path otherCaFile() const { return mDir / "other-ca.pem"; }
-    std::string logTail() const;
+    std::string issuer() const { return "https://127.0.0.1:" + std::to_string(mPeer.port()); }
+    std::filesystem::path caFile() const { return mPeer.dir() / "ca.pem"; }
+    std::filesystem::path otherCaFile() const { return mPeer.dir() / "other-ca.pem"; }
+    std::string logTail() const { return mPeer.logTail(); }
     // Stops the provider and starts it again on the same port: it signs with a new key (a
     // rotation), and whatever it held in memory (codes, sessions) is gone.
-    void restart();
+    void restart() { mPeer.restart(); }
 
     // What a browser does from the provider's authorization address: signs in as `login`
     // (any password), consents, and follows the redirects until one leaves the provider;
@@ -37,9 +34,7 @@ public:
     std::string signInThroughBrowser(const std::string& authorizationUrl, const std::string& login) const;
 
 private:
-    std::filesystem::path mDir;
-    unsigned short mPort = 0;
-    int mPid = -1;
+    NodePeer mPeer;
 };
 
 } // namespace tlmhub::test

@@ -247,15 +247,8 @@ std::shared_ptr<ProviderKeyCache> LtiTool::keyCache(const LtiPlatform& platform)
     auto& [url, cache] = mKeyCaches[platform.id];
     if (!cache || url != platform.jwksUrl) {
         url = platform.jwksUrl;
-        cache = std::make_shared<ProviderKeyCache>([this, keysUrl = platform.jwksUrl](std::string& error) {
-            const auto reply = mHttp.getJson(keysUrl, error);
-            if (!reply) return std::optional<JsonWebKeySet>{};
-            if (reply->status != 200) {
-                error = "the platform's key set answered " + std::to_string(reply->status);
-                return std::optional<JsonWebKeySet>{};
-            }
-            return JsonWebKeySet::parse(reply->body, error);
-        });
+        cache = std::make_shared<ProviderKeyCache>(
+            [this, keysUrl = platform.jwksUrl](std::string& error) { return mHttp.getKeySet(keysUrl, error); });
     }
     return cache;
 }

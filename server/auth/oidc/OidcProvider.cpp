@@ -33,13 +33,7 @@ OidcProvider::OidcProvider(OidcProviderSettings settings, const ProviderHttp& ht
     : mSettings(std::move(settings)), mHttp(http), mKeys([this](std::string& error) -> std::optional<JsonWebKeySet> {
           const auto provider = metadata(error);
           if (!provider) return std::nullopt;
-          const auto reply = mHttp.getJson(provider->jwksUri, error);
-          if (!reply) return std::nullopt;
-          if (reply->status != 200) {
-              error = "the provider's key set answered " + std::to_string(reply->status);
-              return std::nullopt;
-          }
-          return JsonWebKeySet::parse(reply->body, error);
+          return mHttp.getKeySet(provider->jwksUri, error);
       })
 {
 }

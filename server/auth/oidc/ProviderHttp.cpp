@@ -11,6 +11,17 @@ std::optional<ProviderReply> ProviderHttp::getJson(const std::string& url, std::
     return send(url, false, {}, {}, {}, true, error);
 }
 
+std::optional<JsonWebKeySet> ProviderHttp::getKeySet(const std::string& url, std::string& error) const
+{
+    const auto reply = getJson(url, error);
+    if (!reply) return std::nullopt;
+    if (reply->status != 200) {
+        error = "the key set " + url.substr(0, 200) + " answered " + std::to_string(reply->status);
+        return std::nullopt;
+    }
+    return JsonWebKeySet::parse(reply->body, error);
+}
+
 std::optional<ProviderReply> ProviderHttp::postForm(const std::string& url, const std::string& form,
                                                     const std::vector<std::pair<std::string, std::string>>& headers,
                                                     std::string& error) const

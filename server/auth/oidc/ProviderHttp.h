@@ -4,6 +4,8 @@
 // only, the certificate verified against the system's CAs or the administrator's CA file,
 // bounded in time (5 s to connect, 5 s for each wait) and size (1 MiB), one connection per
 // request. Every failure is a message naming the address and why, never an exception.
+#include "server/auth/oidc/JsonWebKeySet.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -25,6 +27,8 @@ public:
 
     // GET `url`, which must be https; nullopt with `error` when there is no JSON reply.
     std::optional<ProviderReply> getJson(const std::string& url, std::string& error) const;
+    // The key set at `url` (a provider's or a platform's), parsed; nullopt with `error`.
+    std::optional<JsonWebKeySet> getKeySet(const std::string& url, std::string& error) const;
     // POST `form` (application/x-www-form-urlencoded) to `url` with more header fields.
     std::optional<ProviderReply> postForm(const std::string& url, const std::string& form,
                                           const std::vector<std::pair<std::string, std::string>>& headers,
