@@ -79,7 +79,7 @@ TlmhubApp::TlmhubApp(const ServerOptions& options)
         mOidcSignIn = std::make_unique<OidcSignIn>(mOptions, mStorage->users(), mStorage->signIns());
     if (!mOptions.ltiKeyFiles.empty())
         mLtiTool = std::make_unique<LtiTool>(mOptions, mStorage->users(), mStorage->signIns(), mStorage->lti(),
-                                             mStorage->labs());
+                                             *mLabs);
     mServices.reset(new Services{mOptions, *mUsers, mStorage->models(), *mTokens, *mApiTokens, *mLoginLimiter,
                                  *mAddressLimiter, *mQueue, *mStreams, *mStudies, *mLabs, *mJoinLimiter, *mJoinAddressLimiter,
                                  *mLiveSessions, *mDownloadLinks, *mPools, *mJobStreams,

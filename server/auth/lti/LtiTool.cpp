@@ -5,7 +5,6 @@
 #include "server/auth/lti/LtiMessage.h"
 #include "server/auth/oidc/AuthorizationRequest.h"
 #include "server/auth/oidc/IdTokenVerifier.h"
-#include "server/labs/LabService.h"
 #include "server/store/ModelName.h"
 
 #include <openssl/crypto.h>
@@ -56,7 +55,7 @@ std::string className(const LtiPlatform& platform, const std::string& title)
 } // namespace
 
 LtiTool::LtiTool(const ServerOptions& options, UserStore& users, SignInStore& signIns, LtiStore& platforms,
-                 LabStore& labs)
+                 LabService& labs)
     : mUsers(users), mSignIns(signIns), mPlatforms(platforms), mLabs(labs), mPublicUrl(options.publicUrl),
       mKeys(options.ltiKeyFiles), mHttp(options.ltiCaFile)
 {
@@ -155,7 +154,7 @@ LtiOutcome LtiTool::launch(const std::string& idToken, const std::string& state,
     const auto assignmentId = message.custom.contains("assignment")
         ? assignmentIdOf(message.custom["assignment"].get<std::string>())
         : std::nullopt;
-    const auto assignment = assignmentId ? mLabs.assignment(*assignmentId) : std::nullopt;
+    const auto assignment = assignmentId ? mLabs.store().assignment(*assignmentId) : std::nullopt;
     if (!assignment || assignment->classId != classId) return signedIn("/class/" + std::to_string(classId));
     if (!message.lineItem.empty()) mPlatforms.setLineItem(platform->id, message.lineItem, assignment->id);
     return signedIn("/assignment/" + std::to_string(assignment->id));
@@ -223,21 +222,19 @@ std::int64_t LtiTool::courseClass(const LtiPlatform& platform, const LtiMessage&
             refusal = ltiRefused("course_not_ready", "the course's teacher has not launched tlmhub from it yet");
             return 0;
         }
-        std::optional<std::int64_t> made;
-        for (int attempt = 0; attempt < 4 && !made; ++attempt)
-            made = mLabs.createClass(user.id, className(platform, message.contextTitle), LabService::newJoinCode());
+        const auto made = mLabs.createClass(user, className(platform, message.contextTitle));
         if (!made) {
             refusal = ltiRefused("internal", "cannot make the course's class");
             return 0;
         }
         classId = mPlatforms.linkContext(platform.id, message.contextId, *made);
-        if (*classId != *made) mLabs.removeClass(*made);   // another first launch won
+        if (*classId != *made) mLabs.store().removeClass(*made);   // another first launch won
     }
     if (message.classRole.empty()) {
         refusal = ltiRefused("no_course_role", "the launch gives no role in the course this tool knows");
         return 0;
     }
-    mLabs.setMember(*classId, user.id, message.classRole);
+    mLabs.store().setMember(*classId, user.id, message.classRole);
     return *classId;
 }
 

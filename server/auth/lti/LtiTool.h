@@ -20,7 +20,7 @@
 #include "server/auth/lti/ToolKeys.h"
 #include "server/auth/oidc/ProviderHttp.h"
 #include "server/auth/oidc/ProviderKeyCache.h"
-#include "server/store/LabStore.h"
+#include "server/labs/LabService.h"
 #include "server/store/LtiStore.h"
 #include "server/store/SignInStore.h"
 #include "server/store/UserStore.h"
@@ -50,7 +50,7 @@ struct LtiOutcome {
 class LtiTool {
 public:
     // Reads the tool's keys (throws naming the file when it cannot).
-    LtiTool(const ServerOptions& options, UserStore& users, SignInStore& signIns, LtiStore& platforms, LabStore& labs);
+    LtiTool(const ServerOptions& options, UserStore& users, SignInStore& signIns, LtiStore& platforms, LabService& labs);
 
     LtiOutcome login(const LtiLoginRequest& request, const std::string& clientAddress, std::int64_t nowUnix);
     // The platform's form post (id_token and state, or error) in the browser whose launch
@@ -94,7 +94,7 @@ private:
     UserStore& mUsers;
     SignInStore& mSignIns;
     LtiStore& mPlatforms;
-    LabStore& mLabs;
+    LabService& mLabs;
     const std::string mPublicUrl;
     ToolKeys mKeys;
     ProviderHttp mHttp;
