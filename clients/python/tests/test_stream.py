@@ -33,8 +33,10 @@ class Stream(unittest.TestCase):
 
     @unittest.skipUnless(HAVE_WEBSOCKET, "streaming: the venv with websocket-client")
     def test_frames_of_a_running_job_add_up_to_its_result(self):
-        # 20 s of model time (200 000 steps) runs long enough to stream several frames.
-        job = self.client.run(self.model, stop=20, log_samples=4000, wait=False)
+        # 400 s of model time (4 000 000 steps) runs about a second in a Release build: frames
+        # come 30 a second, so several arrive even when subscribing lags the start by a lot.
+        # 20 s (56 ms) once finished before a loaded CI machine subscribed: one frame.
+        job = self.client.run(self.model, stop=400, log_samples=4000, wait=False)
         frames = list(self.client.stream(job.id, VARIABLES))
         self.assertGreater(len(frames), 1)
         self.assertEqual(set(frames[0]), {"time", *VARIABLES})
