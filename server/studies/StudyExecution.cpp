@@ -49,6 +49,7 @@ StudyExecution::StudyExecution(PreparedStudy prepared, const JobLimits& jobLimit
     : mId(prepared.id), mOwnerId(prepared.ownerId), mNode(std::move(prepared.node)), mRequest(std::move(prepared.request)),
       mParameterNames(mRequest.parameterNames()), mModel(std::move(prepared.model)),
       mSettings(prepared.settings), mJobLimits(jobLimits), mStudyLimits(studyLimits), mStore(store), mHub(hub),
+      mHubGeneration(hub.generation(mId)),
       mSimulations(workers), mSpare(std::move(prepared.compiled)), mStoredRuns(std::move(prepared.storedRuns)),
       mPlan(mRequest)
 {
@@ -311,7 +312,7 @@ void StudyExecution::record(const PlannedRun& run, const RunOutcome& outcome)
             mStore.setSummary(mId, dumped(summary()));
             mFailuresChanged = false;
         }
-        mHub.publish(mId, progressEvent(false));
+        mHub.publish(mId, mHubGeneration, progressEvent(false));
     }
 }
 
@@ -458,7 +459,7 @@ void StudyExecution::finalise()
     nlohmann::json event = progressEvent(true);
     event["state"] = jobStateName(state);
     if (!error.empty()) event["error"] = error;
-    mHub.finish(mId, event);
+    mHub.finish(mId, mHubGeneration, event);
 }
 
 } // namespace tlmhub::server

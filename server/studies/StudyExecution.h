@@ -113,6 +113,7 @@ private:
     const StudyLimits mStudyLimits;
     StudyStore& mStore;
     StudyProgressHub& mHub;
+    const std::uint64_t mHubGeneration;   // this run of the study's (a resume starts another)
     std::stop_source mStop;   // cancel / shutdown: ends the runs in flight
 
     // One per worker, touched only by that worker.

@@ -22,16 +22,30 @@ void StudyProgressHub::unsubscribe(std::uint64_t subscription)
     mSubscriptions.erase(subscription);
 }
 
-void StudyProgressHub::publish(std::int64_t studyId, const nlohmann::json& event)
+std::uint64_t StudyProgressHub::current(std::int64_t studyId) const
+{
+    const auto found = mGenerations.find(studyId);
+    return found == mGenerations.end() ? 0 : found->second;
+}
+
+std::uint64_t StudyProgressHub::generation(std::int64_t studyId) const
 {
     std::lock_guard lock(mMutex);
+    return current(studyId);
+}
+
+void StudyProgressHub::publish(std::int64_t studyId, std::uint64_t generation, const nlohmann::json& event)
+{
+    std::lock_guard lock(mMutex);
+    if (generation != current(studyId)) return;
     for (const auto& [id, subscription] : mSubscriptions)
         if (subscription.studyId == studyId) subscription.sink(event);
 }
 
-void StudyProgressHub::finish(std::int64_t studyId, const nlohmann::json& event)
+void StudyProgressHub::finish(std::int64_t studyId, std::uint64_t generation, const nlohmann::json& event)
 {
     std::lock_guard lock(mMutex);
+    if (generation != current(studyId)) return;
     for (auto it = mSubscriptions.begin(); it != mSubscriptions.end();) {
         if (it->second.studyId != studyId) {
             ++it;
@@ -51,6 +65,7 @@ void StudyProgressHub::reopen(std::int64_t studyId)
 {
     std::lock_guard lock(mMutex);
     if (mFinished.erase(studyId)) std::erase(mFinishedOrder, studyId);
+    ++mGenerations[studyId];
 }
 
 std::size_t StudyProgressHub::subscriptionCount() const

@@ -1,13 +1,16 @@
-// The parts of a study that need no server: reading a request, the measures of a run, and
-// the plan that hands out runs.
+// The parts of a study that need no server: reading a request, the measures of a run, the
+// plan that hands out runs, and the hub that passes its events on.
 #include "server/studies/RunMeasures.h"
 #include "server/studies/StudyPlan.h"
+#include "server/studies/StudyProgressHub.h"
 #include "server/studies/StudyRequest.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <set>
+#include <string>
 #include <vector>
 
 using namespace tlmhub::server;
@@ -181,4 +184,41 @@ TEST(StudyPlan, OptimiserBatchesWaitForTheirLastRun)
     EXPECT_LT(plan.optimiser()->bestValue(), 1e-3);
     EXPECT_NEAR(plan.optimiser()->best()[0], 0.5, 0.05);
     EXPECT_NEAR(plan.optimiser()->best()[1], -0.25, 0.05);
+}
+
+TEST(StudyProgressHub, ASubscriberThatComesAfterTheEndGetsTheLastEvent)
+{
+    StudyProgressHub hub;
+    std::vector<nlohmann::json> seen;
+    const std::uint64_t generation = hub.generation(7);
+    hub.publish(7, generation, {{"state", "running"}});
+    hub.finish(7, generation, {{"state", "done"}});
+    EXPECT_EQ(hub.subscribe(7, [&](const nlohmann::json& e) { seen.push_back(e); }), 0u);
+    ASSERT_EQ(seen.size(), 1u);
+    EXPECT_EQ(seen[0]["state"], "done");
+}
+
+// A run stores its end before it publishes it, and a client that read `cancelled` may resume
+// the study in between: the late end of the run before must not end the resumed one.
+TEST(StudyProgressHub, TheLateEndOfTheRunBeforeAResumeEndsNeitherItNorItsSubscribers)
+{
+    StudyProgressHub hub;
+    const std::uint64_t before = hub.generation(7);
+    hub.reopen(7);   // the resume
+    const std::uint64_t resumed = hub.generation(7);
+    EXPECT_NE(resumed, before);
+
+    std::vector<std::string> states;
+    const auto sink = [&](const nlohmann::json& e) { states.push_back(e["state"].get<std::string>()); };
+    EXPECT_NE(hub.subscribe(7, sink), 0u);
+    hub.finish(7, before, {{"state", "cancelled"}});
+    hub.publish(7, before, {{"state", "running"}});
+    EXPECT_TRUE(states.empty());
+    EXPECT_EQ(hub.subscriptionCount(), 1u);
+    EXPECT_NE(hub.subscribe(7, sink), 0u) << "a subscriber after the late end follows the resumed run";
+
+    hub.publish(7, resumed, {{"state", "running"}});
+    hub.finish(7, resumed, {{"state", "done"}});
+    EXPECT_EQ(states, (std::vector<std::string>{"running", "running", "done", "done"}));
+    EXPECT_EQ(hub.subscriptionCount(), 0u);
 }
