@@ -36,7 +36,7 @@ if(TARGET tlmhub-server)
                WORKING_DIRECTORY ${TLMHUB_PYTHON_CLIENT}/tests)
       set_tests_properties(python/${venv}/${module} PROPERTIES LABELS "python" TIMEOUT 180
         FIXTURES_REQUIRED tlmhub-python-venvs
-        ENVIRONMENT "${TLMHUB_PYTHON_TEST_ENV};TLMHUB_EXPECT_NUMPY=${has};TLMHUB_EXPECT_WEBSOCKET=${has};TLMHUB_EXPECT_PANDAS=${has}")
+        ENVIRONMENT "${TLMHUB_PYTHON_TEST_ENV};TLMHUB_EXPECT_NUMPY=${has};TLMHUB_EXPECT_WEBSOCKET=${has};TLMHUB_EXPECT_PANDAS=${has};TLMHUB_HANG_REPORT_SECONDS=165")
     endforeach()
   endforeach()
 

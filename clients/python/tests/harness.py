@@ -7,9 +7,13 @@ skips them:
   TLMHUB_SHARED_DIR   ../shared (the Hopsan models)
   TLMHUB_EXPECT_NUMPY, TLMHUB_EXPECT_WEBSOCKET, TLMHUB_EXPECT_PANDAS   "1" or "0": whether
                       this environment must have NumPy / websocket-client / pandas (ctest
-                      sets them per venv; when unset the tests follow what is installed)"""
+                      sets them per venv; when unset the tests follow what is installed)
+  TLMHUB_HANG_REPORT_SECONDS   optional: after this long, print every thread's stack and the
+                      servers' recent output (ctest sets it a little under its timeout, which
+                      would otherwise cut off unittest's report and leave a hang unexplained)"""
 from __future__ import annotations
 
+import faulthandler
 import importlib.util
 import os
 import shutil
@@ -89,10 +93,32 @@ class _Process:
             self.process.stdout.close()
 
 
+_servers: list["Server"] = []
+_hang_report: threading.Timer | None = None
+
+
+def _report_hang() -> None:
+    print("\n--- still running: each thread's stack, then each server's last output ---",
+          file=sys.__stderr__, flush=True)
+    faulthandler.dump_traceback(file=sys.__stderr__, all_threads=True)
+    for server in list(_servers):
+        print(f"--- {server.url}:\n{server.output()[-8000:]}", file=sys.__stderr__, flush=True)
+
+
+def _arm_hang_report() -> None:
+    global _hang_report
+    seconds = os.environ.get("TLMHUB_HANG_REPORT_SECONDS")
+    if seconds and _hang_report is None:
+        _hang_report = threading.Timer(float(seconds), _report_hang)
+        _hang_report.daemon = True
+        _hang_report.start()
+
+
 class Server:
     """`Server.start()` ... `server.stop()`; `server.url` is `http://127.0.0.1:PORT`."""
 
     def __init__(self, workers: int = 2, extra_args: tuple = ()) -> None:
+        _arm_hang_report()
         self._binary = required_env("TLMHUB_SERVER_BIN")
         if not os.access(self._binary, os.X_OK):
             raise RuntimeError(f"TLMHUB_SERVER_BIN={self._binary} is not an executable")
@@ -103,6 +129,7 @@ class Server:
         self._process = self._start("127.0.0.1:0")
         self.url = self._process.line.rsplit(" ", 1)[1]
         self._proxies: list[_Process] = []
+        _servers.append(self)
 
     def _start(self, listen: str) -> "_Process":
         env = {**os.environ, "TLMHUB_ADMIN_PASSWORD": ADMIN_PASSWORD}
@@ -135,6 +162,8 @@ class Server:
             proxy.stop()
         self._process.stop()
         shutil.rmtree(self.directory, ignore_errors=True)
+        if self in _servers:
+            _servers.remove(self)
 
     def output(self) -> str:
         return "".join(self._process.output)
