@@ -376,9 +376,19 @@ paths = {
         "Reset the student's copy to the current template", {**ok("{copy}", ANY), **errors("401", "403", "404", "409")},
         params=[ID], tag="labs")},
     "/assignments/{id}/pretest": {"post": op(
-        "Run the student's copy on the server and judge it by the pretests",
-        {**ok("{checks, score, max_score}", ANY), **errors("400", "401", "403", "404", "409", "422")},
+        "Run the student's copy on the job queue and judge it by the pretests (202 when the run "
+        "has not ended within --lab-wait-seconds: ask its Location again)",
+        {**ok("{checks, score, max_score, job_id}", ANY),
+         **ok("{job_id, state, location}: still queued or running", ANY, "202"),
+         **errors("400", "401", "403", "404", "409", "422", "429")},
         params=[ID], tag="labs")},
+    "/assignments/{id}/pretests/{job}": {"get": op(
+        "The pretests' outcome of run `job` of the student's copy, or 202 while it is queued or running",
+        {**ok("{checks, score, max_score, job_id}", ANY),
+         **ok("{job_id, state, location}: still queued or running", ANY, "202"),
+         **errors("400", "401", "403", "404", "409")},
+        params=[ID, {"name": "job", "in": "path", "required": True, "schema": {"type": "integer", "minimum": 1}}],
+        tag="labs")},
     "/assignments/{id}/handin": {"post": op(
         "Hand in the copy: frozen, run and judged by every check; again before the deadline, once late after it",
         {**ok("The hand-in", ANY, "201"), **errors("400", "401", "403", "404", "409", "422")},

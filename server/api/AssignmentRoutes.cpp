@@ -235,6 +235,31 @@ Response resetCopy(Services& s, Call& call)
     return jsonResponse(http::status::ok, {{"copy", s.labs.copyJson(view->assignment, *copy)}});
 }
 
+// The pretests' outcome of run `jobId` once it has ended (waiting up to `wait` for that), or
+// 202 with where to ask again.
+Response pretestReply(Services& s, const AssignmentInfo& assignment, std::int64_t jobId, std::chrono::milliseconds wait)
+{
+    const auto run = s.labs.waitForRun(jobId, wait);
+    if (!run) return apiError(http::status::not_found, "not_found", "the pretests' run was deleted");
+    if (!isFinished(run->state)) {
+        const std::string location =
+            "/api/v1/assignments/" + std::to_string(assignment.id) + "/pretests/" + std::to_string(jobId);
+        Response r = jsonResponse(http::status::accepted,
+                                  {{"job_id", jobId}, {"state", jobStateName(run->state)}, {"location", location}});
+        r.set(http::field::location, location);
+        r.set(http::field::retry_after, "1");
+        return r;
+    }
+    LabError failure;
+    const auto judgement = s.labs.judgeRun(assignment, *run, true, failure);
+    if (!judgement) return labErrorResponse(failure);
+    nlohmann::json body = judgement->toJson();
+    body["job_id"] = jobId;
+    return jsonResponse(http::status::ok, body);
+}
+
+// The copy runs as a job of the student's on the job queue, named "pretest" (it is one of
+// their runs), on whichever node claims it; the reply waits for it up to --lab-wait-seconds.
 Response pretest(Services& s, Call& call)
 {
     Response error;
@@ -243,10 +268,29 @@ Response pretest(Services& s, Call& call)
     const auto copy = s.labs.store().copy(view->assignment.id, call.who().id);
     const auto hmf = copy ? s.models.hmf(copy->modelId) : std::nullopt;
     if (!hmf) return apiError(http::status::conflict, "conflict", "open the assignment first");
-    LabError failure;
-    const auto judgement = s.labs.judge(view->assignment, *hmf, true, failure);
-    if (!judgement) return labErrorResponse(failure);
-    return jsonResponse(http::status::ok, judgement->toJson());
+    JobRequest request;
+    request.ownerId = call.who().id;
+    request.modelId = copy->modelId;
+    request.hmf = *hmf;
+    const auto submitted = s.queue.submit(request);
+    if (!submitted.id) return refusal(submitted.code, "the pretests cannot run: " + submitted.message);
+    s.queue.store().label(*submitted.id, std::string("pretest"), std::nullopt);
+    return pretestReply(s, view->assignment, *submitted.id, s.options.labWait);
+}
+
+// GET /assignments/{id}/pretests/{job}: a pretest answered 202 asks again here.
+Response pretestOutcome(Services& s, Call& call)
+{
+    Response error;
+    const auto view = studentAssignment(s, call, "run pretests", error);
+    if (!view) return error;
+    const auto copy = s.labs.store().copy(view->assignment.id, call.who().id);
+    const auto jobId = parseId(call.params.path["job"]);
+    const auto run = jobId ? s.queue.store().info(*jobId) : std::nullopt;
+    // Only a run of the caller's own copy of this assignment.
+    if (!copy || !run || run->ownerId != call.who().id || run->modelId != copy->modelId)
+        return apiError(http::status::not_found, "not_found", "no such pretest run");
+    return pretestReply(s, view->assignment, run->id, std::chrono::milliseconds(0));
 }
 
 Response handIn(Services& s, Call& call)
@@ -351,6 +395,7 @@ void addAssignmentRoutes(std::vector<RouteSpec>& routes)
     routes.push_back({http::verb::post, "/assignments/{id}/open", true, openAssignment});
     routes.push_back({http::verb::post, "/assignments/{id}/reset", true, resetCopy});
     routes.push_back({http::verb::post, "/assignments/{id}/pretest", true, pretest, RouteWork::Checks});
+    routes.push_back({http::verb::get, "/assignments/{id}/pretests/{job}", true, pretestOutcome});
     routes.push_back({http::verb::post, "/assignments/{id}/handin", true, handIn, RouteWork::Checks});
     routes.push_back({http::verb::get, "/assignments/{id}/lti-scores", true, ltiScores});
     routes.push_back({http::verb::get, "/assignments/{id}/handins", true, listHandIns});

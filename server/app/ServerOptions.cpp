@@ -56,6 +56,8 @@ const std::string kHelp = std::string(
     "  --max-running-checks-per-user N  a user's lab check runs (pretests, hand-ins,\n"
     "                           reference runs) at once; users take turns (default 2)\n"
     "  --max-queued-checks-per-user N   a user's check runs waiting (default 10)\n"
+    "  --lab-wait-seconds S     a pretest's reply waits this long for its run on the job\n"
+    "                           queue, then answers 202 with where to ask again (default 60)\n"
     "  --max-study-bytes N      run results one study keeps (default 536870912)\n") +
     "  --max-body-bytes N       request body limit (default " + std::to_string(protocol::kMaxBodyBytes) + ")\n" +
     "  --max-model-bytes N      size of a model's .hmf (default 16777216)\n"
@@ -179,6 +181,10 @@ bool parseServerOptions(int argc, char** argv, ServerOptions& o, std::string& er
             ok = parseNumber(value, o.maxRunningChecksPerUser) && o.maxRunningChecksPerUser > 0;
         } else if (flag == "--max-queued-checks-per-user") {
             ok = parseNumber(value, o.maxQueuedChecksPerUser) && o.maxQueuedChecksPerUser > 0;
+        } else if (flag == "--lab-wait-seconds") {
+            double s = 0;
+            ok = parseNumber(value, s) && s >= 0 && s <= 600;
+            o.labWait = std::chrono::milliseconds(static_cast<long long>(s * 1000));
         } else if (flag == "--trusted-proxy") {
             ok = TrustedProxies().add(value);
             o.trustedProxies.push_back(value);

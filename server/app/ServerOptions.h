@@ -80,6 +80,9 @@ struct ServerOptions {
     unsigned checkThreads = 0;   // check runs at once on this server; 0: one per core
     std::size_t maxRunningChecksPerUser = 2;
     std::size_t maxQueuedChecksPerUser = 10;
+    // How long a pretest's reply waits for its run on the job queue before it answers 202
+    // with where to ask again (docs/labs.md).
+    std::chrono::milliseconds labWait{60'000};
     int addressMaxFailures = 500;
     std::chrono::seconds addressWindow{600};
     // --trusted-proxy: reverse proxies whose X-Forwarded-For names the client (CIDR ranges).

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <thread>
 
 namespace tlmhub::server {
 
@@ -233,6 +234,45 @@ std::optional<Judgement> LabService::judge(const AssignmentInfo& assignment, con
         error = {failed->code, "the model does not run: " + failed->message};
         return std::nullopt;
     }
+    return evaluate(assignment, checks, run, variables, pretestsOnly);
+}
+
+std::optional<JobInfo> LabService::waitForRun(std::int64_t jobId, std::chrono::milliseconds wait)
+{
+    const auto deadline = Clock::now() + wait;
+    // Short first looks (a small model ends in milliseconds), then at most 5 a second.
+    std::chrono::milliseconds pause{5};
+    for (;;) {
+        std::optional<JobInfo> info = mJobs.info(jobId);
+        const auto now = Clock::now();
+        if (!info || isFinished(info->state) || now >= deadline) return info;
+        std::this_thread::sleep_for(std::min<Clock::duration>(pause, deadline - now));
+        pause = std::min(pause * 2, std::chrono::milliseconds(200));
+    }
+}
+
+std::optional<Judgement> LabService::judgeRun(const AssignmentInfo& assignment, const JobInfo& run, bool pretestsOnly,
+                                              LabError& error)
+{
+    if (run.state != JobState::Done) {
+        const std::string why = run.error.empty() ? std::string("its run ended ") + jobStateName(run.state) : run.error;
+        error = {"simulation_failed", "the model does not run: " + why};
+        return std::nullopt;
+    }
+    const std::vector<AssignmentCheck> checks = mLabs.checks(assignment.id);
+    const std::vector<std::string> variables = checkedVariables(checks, pretestsOnly);
+    const auto blob = mResults.blob(run.id);
+    const auto table = blob ? decodeResult(*blob, variables) : std::nullopt;
+    if (!table) {
+        error = {"conflict", "the results of run " + std::to_string(run.id) + " are no longer kept: run the pretests again"};
+        return std::nullopt;
+    }
+    return evaluate(assignment, checks, *table, variables, pretestsOnly);
+}
+
+Judgement LabService::evaluate(const AssignmentInfo& assignment, const std::vector<AssignmentCheck>& checks,
+                               const ResultTable& run, const std::vector<std::string>& variables, bool pretestsOnly)
+{
     const auto blob = assignment.hasSolution && !variables.empty() ? mLabs.referenceResult(assignment.id) : std::nullopt;
     const auto reference = blob ? decodeResult(*blob, variables) : std::nullopt;
     Judgement judgement;

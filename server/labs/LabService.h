@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,13 @@ public:
     // it by the assignment's checks (or its pretests only).
     std::optional<Judgement> judge(const AssignmentInfo& assignment, const std::string& hmf, bool pretestsOnly,
                                    LabError& error);
+    // A check run that went through the job queue (a pretest): its info once it has ended, or
+    // as it is when `wait` has passed first (polling the store: the run may be on another node).
+    std::optional<JobInfo> waitForRun(std::int64_t jobId, std::chrono::milliseconds wait);
+    // Judges the stored result of an ended run by the assignment's checks (or its pretests
+    // only); a run that did not end done is an error saying why.
+    std::optional<Judgement> judgeRun(const AssignmentInfo& assignment, const JobInfo& run, bool pretestsOnly,
+                                      LabError& error);
     // Freezes the student's copy with its latest run, judges it and stores the hand-in.
     // `receivedAt` (unix seconds): when the request had been read whole; the hand-in's time and
     // what the deadline is judged by, however long it waited for a check thread.
@@ -89,6 +97,9 @@ public:
     static constexpr double kCheckWallSeconds = 60;
 
 private:
+    // The checks' outcomes for `run` (holding `variables`, those the checks read).
+    Judgement evaluate(const AssignmentInfo& assignment, const std::vector<AssignmentCheck>& checks,
+                       const ResultTable& run, const std::vector<std::string>& variables, bool pretestsOnly);
     // The student's newest job on model `modelId` (in any state, or only a finished one), if any.
     std::optional<JobInfo> latestRun(std::int64_t studentId, std::int64_t modelId, bool doneOnly = false);
     struct GradebookData;

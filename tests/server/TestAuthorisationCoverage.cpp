@@ -118,6 +118,7 @@ const std::map<std::string, RouteCase>& routeCases()
         {"POST /assignments/{id}/open", {Case::Foreign, ""}},
         {"POST /assignments/{id}/reset", {Case::Foreign, ""}},
         {"POST /assignments/{id}/pretest", {Case::Foreign, ""}},
+        {"GET /assignments/{id}/pretests/{job}", {Case::Foreign, ""}},
         {"POST /assignments/{id}/handin", {Case::Foreign, ""}},
         {"GET /assignments/{id}/handins", {Case::Foreign, ""}},
         {"GET /assignments/{id}/dashboard", {Case::Foreign, ""}},
@@ -269,6 +270,7 @@ protected:
             replace("{id}", object->second == "user" ? std::to_string(userIds["sam"]) : std::to_string(ids[object->second]));
         replace("{user_id}", std::to_string(userIds["sue"]));
         replace("{index}", "0");
+        replace("{job}", std::to_string(ids["job"]));
         return "/api/v1" + path + (path.find("/overlay") != std::string::npos ? "?variable=x" : "");
     }
 

@@ -162,6 +162,20 @@ TEST_F(Labs, StudentWorksOnACopyWithinTheLockPretestsAndHandsIn)
     ASSERT_EQ(pretest.json()["checks"].size(), 1u);
     EXPECT_TRUE(pretest.json()["checks"][0]["passed"]) << pretest.body;
     EXPECT_EQ(pretest.json()["score"], 2);
+    // It ran on the job queue, as one of sam's runs of the copy, named so.
+    ASSERT_TRUE(pretest.json().contains("job_id")) << pretest.body;
+    const std::string pretestRun = idText(pretest.json()["job_id"]);
+    const auto ran = sam.get("/api/v1/jobs/" + pretestRun);
+    ASSERT_EQ(ran.status, 200) << ran.body;
+    EXPECT_EQ(ran.json()["state"], "done");
+    EXPECT_EQ(ran.json()["name"], "pretest");
+    EXPECT_EQ(ran.json()["model_id"], copy);
+    // Asked again by its run, the outcome is the same; nobody else may ask.
+    const auto again = sam.get(lab.path() + "/pretests/" + pretestRun);
+    ASSERT_EQ(again.status, 200) << again.body;
+    EXPECT_EQ(again.json(), pretest.json());
+    EXPECT_EQ(as("sue").get(lab.path() + "/pretests/" + pretestRun).status, 404);
+    EXPECT_EQ(as("tina").get(lab.path() + "/pretests/" + pretestRun).status, 403);
 
     // Locks: PUT, job overrides, studies, deleting.
     EXPECT_EQ(sam.request(http::verb::put, copyPath, withGain(sam, copy, "0.0501"), "application/xml").status, 200);

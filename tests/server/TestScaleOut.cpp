@@ -836,3 +836,58 @@ TEST(ScaleOut, StudiesOutliveAnotherNodesRestartAndResumeAfterTheirNodeDies)
     }
     EXPECT_EQ(byNode, (std::map<std::string, int>{{"a", kept}, {"b", kRuns - kept}}));
 }
+
+// A pretest runs on the job queue (issue 40): an API node alone does not run it, so its reply
+// is 202 with where to ask again once --lab-wait-seconds has passed; a worker that starts later
+// claims the run, and the place the reply named then gives the pretests' outcome.
+TEST(ScaleOut, APretestWaitsForAWorkerAndIsJudgedOnceOneRunsIt)
+{
+    Cluster cluster("pretest");
+    ServerProcess& api = cluster.start("api1", "api", {"--lab-wait-seconds", "1"});
+    createTestTeachers(api, {"tina"});
+    createTestUsers(api, {"sam"});
+    HttpClient tina = loggedInAs(api, "tina");
+    HttpClient sam = loggedInAs(api, "sam");
+    const std::int64_t templateId = uploadModel(tina, kPositionServo, "template");
+    const std::int64_t solutionId = uploadModel(tina, kPositionServo, "solution");
+    const auto created = tina.post("/api/v1/classes", {{"name", "Fluid power"}});
+    ASSERT_EQ(created.status, 201) << created.body;
+    ASSERT_EQ(sam.post("/api/v1/classes/join", {{"code", created.json()["join_code"]}}).status, 200);
+    const auto assignment = tina.post("/api/v1/classes/" + std::to_string(created.json()["id"].get<std::int64_t>()) + "/assignments",
+                                      {{"title", "Tune the servo"}, {"template_model_id", templateId},
+                                       {"solution_model_id", solutionId}});
+    ASSERT_EQ(assignment.status, 201) << assignment.body;
+    const std::string path = "/api/v1/assignments/" + std::to_string(assignment.json()["id"].get<std::int64_t>());
+    const auto checks = tina.request(
+        http::verb::put, path + "/checks",
+        nlohmann::json{{"checks",
+                        {{{"name", "Follows the reference"}, {"points", 2}, {"pretest", true},
+                          {"definition", {{"kind", "curve"}, {"variable", kPositionVariable}, {"tolerance", 0.05}}}}}}}
+            .dump());
+    ASSERT_EQ(checks.status, 200) << checks.body;
+    ASSERT_EQ(sam.post(path + "/open", nlohmann::json::object()).status, 201);
+
+    const auto pending = sam.post(path + "/pretest", nlohmann::json::object());
+    ASSERT_EQ(pending.status, 202) << "no worker runs it yet: " << pending.body;
+    const std::int64_t job = pending.json()["job_id"].get<std::int64_t>();
+    const std::string location = pending.headers.count("Location") ? pending.headers.at("Location") : "";
+    EXPECT_EQ(location, path + "/pretests/" + std::to_string(job));
+    EXPECT_EQ(pending.json()["state"], "queued");
+    EXPECT_EQ(sam.get(location).status, 202);
+
+    cluster.start("w1", "worker");
+    nlohmann::json outcome;
+    for (const auto deadline = Clock::now() + 60s; Clock::now() < deadline; std::this_thread::sleep_for(100ms)) {
+        const auto asked = sam.get(location);
+        ASSERT_TRUE(asked.status == 200 || asked.status == 202) << asked.status << " " << asked.body;
+        if (asked.status == 200) {
+            outcome = asked.json();
+            break;
+        }
+    }
+    ASSERT_FALSE(outcome.is_null()) << "the worker did not run the pretest within 60 s";
+    EXPECT_EQ(outcome["job_id"], job);
+    EXPECT_EQ(outcome["score"], 2) << outcome.dump();
+    // Claimed once, by the worker (an API node claims none; the lease's node is cleared at the end).
+    EXPECT_EQ(leaseOf(cluster.postgres(), job).number, 1);
+}

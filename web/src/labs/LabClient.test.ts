@@ -120,6 +120,20 @@ describe('LabClient', () => {
         expect((error as ApiError).message).toBe('too many wrong codes: try again later');
     });
 
+    it('asks again where a pretest answered 202 until its run has been judged', async () => {
+        const pending = { job_id: 31, state: 'queued', location: '/api/v1/assignments/4/pretests/31' };
+        const outcome = { checks: [{ name: 'c', passed: true }], score: 2, max_score: 2, job_id: 31 };
+        const replies = [{ status: 202, body: pending }, { status: 202, body: { ...pending, state: 'running' } },
+            { body: outcome }];
+        const { labs, sent } = fake(() => replies.shift()!);
+        const seen: string[] = [];
+        expect(await labs.pretest(4, (state) => seen.push(state), 0)).toEqual(outcome);
+        expect(seen).toEqual(['queued', 'running']);
+        expect(sent.map((s) => `${s.method} ${s.url}`)).toEqual([
+            'POST /api/v1/assignments/4/pretest', 'GET /api/v1/assignments/4/pretests/31',
+            'GET /api/v1/assignments/4/pretests/31']);
+    });
+
     it('lists the live sessions a teacher shares with the class', async () => {
         const shared = { session_id: 3, model_name: 'Servo demo', teacher: { id: 2, username: 'tina' } };
         const { labs, sent } = fake(() => ({ body: { sessions: [shared] } }));

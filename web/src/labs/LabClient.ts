@@ -4,10 +4,13 @@ import type { RestClient } from '../api/RestClient';
 import type { LtiScoreInfo, LtiScoreList } from '../protocol/types';
 import type {
     Assignment, AssignmentInput, Check, ClassRole, Copy, DashboardRow, Gradebook, HandIn, HandInComment,
-    ImportedAccount, LabClass, Overlay, PretestResult, SharedLiveSession,
+    ImportedAccount, LabClass, Overlay, PretestPending, PretestResult, SharedLiveSession,
 } from './types';
 
 const id = (n: number) => encodeURIComponent(String(n));
+
+const isPending = (reply: PretestResult | PretestPending): reply is PretestPending =>
+    !('checks' in reply) && 'location' in reply;
 
 export class LabClient {
     constructor(private readonly rest: RestClient) {}
@@ -76,8 +79,21 @@ export class LabClient {
     reset(assignmentId: number): Promise<Copy> {
         return this.rest.call<{ copy: Copy }>('POST', `/assignments/${id(assignmentId)}/reset`).then((r) => r.copy);
     }
-    pretest(assignmentId: number): Promise<PretestResult> {
-        return this.rest.call('POST', `/assignments/${id(assignmentId)}/pretest`);
+    /**
+     * Runs the pretests. The run goes through the server's job queue; the server waits for it
+     * up to a minute (--lab-wait-seconds), then answers 202 with the run's state and where to
+     * ask again: this asks there every `pollMs` (telling `onWaiting` the state) until the
+     * outcome is in.
+     */
+    async pretest(assignmentId: number, onWaiting?: (state: string) => void, pollMs = 1000): Promise<PretestResult> {
+        let reply = await this.rest.call<PretestResult | PretestPending>('POST', `/assignments/${id(assignmentId)}/pretest`);
+        while (isPending(reply)) {
+            onWaiting?.(reply.state);
+            await new Promise((resolve) => setTimeout(resolve, pollMs));
+            reply = await this.rest.call<PretestResult | PretestPending>(
+                'GET', `/assignments/${id(assignmentId)}/pretests/${id(reply.job_id)}`);
+        }
+        return reply;
     }
     handIn(assignmentId: number): Promise<HandIn> {
         return this.rest.call('POST', `/assignments/${id(assignmentId)}/handin`);

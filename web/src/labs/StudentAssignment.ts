@@ -88,7 +88,10 @@ export function studentAssignment(session: Session, assignment: Assignment, theC
             pretestButton.disabled = true;
             pretestResult.replaceChildren(h('p', { class: 'muted' }, 'Running your copy…'));
             try {
-                const result = await labs.pretest(assignment.id);
+                const result = await labs.pretest(assignment.id, (state) => {
+                    pretestResult.replaceChildren(h('p', { class: 'muted', 'data-testid': 'pretest-waiting' },
+                        state === 'queued' ? 'Your copy waits for a free worker…' : 'Your copy is still running…'));
+                });
                 pretestResult.replaceChildren(
                     h('p', {}, 'Pretests: ', h('strong', { 'data-testid': 'pretest-score' }, formatScore(result.score, result.max_score)),
                         ` · ${result.checks.filter((c) => c.passed).length} of ${result.checks.length} passed`),

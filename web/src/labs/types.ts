@@ -115,7 +115,9 @@ export interface CheckOutcome {
     message: string;
 }
 
-export interface PretestResult { checks: CheckOutcome[]; score: number; max_score: number }
+export interface PretestResult { checks: CheckOutcome[]; score: number; max_score: number; job_id?: number }
+/** A pretest whose run has not ended yet (202): ask again at `location`. */
+export interface PretestPending { job_id: number; state: string; location: string }
 
 export interface HandIn {
     id: number;
