@@ -19,9 +19,12 @@ std::string isoTimestamp(std::int64_t unixMs)
     const std::time_t seconds = static_cast<std::time_t>(unixMs / 1000);
     std::tm utc{};
     gmtime_r(&seconds, &utc);
-    char text[40];
-    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900, utc.tm_mon + 1,
-                  utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(unixMs % 1000));
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%S", &utc);
+    const int millis = static_cast<int>(unixMs % 1000);
+    std::string text = date;
+    text += {'.', static_cast<char>('0' + millis / 100), static_cast<char>('0' + millis / 10 % 10),
+             static_cast<char>('0' + millis % 10), 'Z'};
     return text;
 }
 
